@@ -1,0 +1,1 @@
+int vct_placeholder_options;

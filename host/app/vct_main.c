@@ -1,0 +1,2 @@
+int vct_placeholder_vct_main;
+int main(void){return 0;}

@@ -1,0 +1,223 @@
+/* vct: OpenCL global illumination engine — public C API.
+ *
+ * Shape: an opaque context (one OpenCL device, queue, program cache and stage
+ * statistics), a host scene of flat arrays, and stages that take both. Every
+ * call reports failure through a vct_error the caller owns; there is no global
+ * state. */
+#ifndef VCT_VCT_H
+#define VCT_VCT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum vct_status {
+    VCT_OK = 0,
+    VCT_ERR_OPENCL,   /* an OpenCL call failed */
+    VCT_ERR_INPUT,    /* the scene or an option is invalid */
+    VCT_ERR_MEMORY,   /* a buffer would not fit the device or host */
+    VCT_ERR_IO,       /* a file could not be read or written */
+    VCT_ERR_OVERFLOW, /* a count exceeded what the structure can index */
+} vct_status;
+
+typedef struct vct_error {
+    vct_status status;
+    char message[2048];
+} vct_error;
+
+/* ---- devices ------------------------------------------------------------ */
+
+typedef struct vct_device_info {
+    int index; /* global index over all platforms, as used by --device N */
+    char platform[128];
+    char name[256];
+    char version[128];
+    char driver[128];
+    int is_gpu;
+    unsigned compute_units;
+    uint64_t global_mem;
+    uint64_t max_alloc;
+    size_t max_work_group;
+    int image_support;
+    int fp64;
+    int gl_sharing;
+    char extensions[4096];
+} vct_device_info;
+
+/* Lists every device of every platform. Returns the count (at most max). */
+int vct_list_devices(vct_device_info *out, int max, vct_error *err);
+
+typedef struct vct_context vct_context;
+
+/* selector: NULL or "" = $VCT_DEVICE, else first GPU, else first CPU;
+ * a number = global device index; otherwise a case-insensitive substring of
+ * the device or platform name. */
+vct_context *vct_context_create(const char *selector, vct_error *err);
+void vct_context_destroy(vct_context *ctx);
+const vct_device_info *vct_context_device(const vct_context *ctx);
+
+/* ---- statistics ----------------------------------------------------------- */
+
+typedef struct vct_stage_stat {
+    char name[48];
+    double device_ms; /* sum of kernel/copy event durations */
+    double host_ms;   /* wall time the host spent in the stage */
+    double mib;       /* device memory the stage holds at its end */
+    int launches;
+} vct_stage_stat;
+
+int vct_stats(const vct_context *ctx, const vct_stage_stat **stages);
+void vct_stats_reset(vct_context *ctx);
+/* Kernels launched so far by name (for plan tests): count of launches. */
+int vct_kernel_launches(const vct_context *ctx, const char *kernel_name);
+
+/* ---- scene ------------------------------------------------------------------ */
+
+typedef struct vct_material {
+    char name[64];
+    float albedo[3];   /* diffuse reflectance */
+    float emission[3]; /* emitted radiance Le */
+    float specular[3]; /* specular reflectance (or metallic tint) */
+    float metallic;
+    float roughness;    /* 0 = mirror, 1 = diffuse-like */
+    float transmission; /* 0..1 */
+    float ior;
+} vct_material;
+
+typedef enum vct_light_type {
+    VCT_LIGHT_POINT = 0,
+    VCT_LIGHT_SPOT = 1,
+    VCT_LIGHT_DIRECTIONAL = 2,
+} vct_light_type;
+
+typedef struct vct_light {
+    vct_light_type type;
+    float position[3];
+    float direction[3]; /* direction the light travels (spot, directional) */
+    float color[3];     /* point/spot: radiant intensity W/sr; directional: irradiance */
+    float inner_cone;   /* spot: radians, full intensity inside */
+    float outer_cone;   /* spot: radians, zero outside */
+} vct_light;
+
+typedef struct vct_camera {
+    float position[3];
+    float look_at[3];
+    float up[3];
+    float fov_y_deg;
+} vct_camera;
+
+typedef struct vct_scene {
+    char source[512];
+    uint32_t vertex_count;
+    uint32_t triangle_count;
+    uint32_t material_count;
+    uint32_t light_count;
+    float *positions;        /* 3 * vertex_count */
+    uint32_t *triangles;     /* 3 * triangle_count */
+    uint32_t *triangle_material;
+    vct_material *materials;
+    vct_light *lights;
+    vct_camera camera;
+    int has_camera;
+    uint32_t degenerate_triangles; /* zero-area triangles, kept but never hit */
+    float bounds_min[3], bounds_max[3];
+} vct_scene;
+
+/* Loads OBJ+MTL, glTF 2.0 or anything assimp reads; flattens the node tree. */
+vct_scene *vct_scene_load(const char *path, vct_error *err);
+/* Builds a scene from arrays (copied); validates like a loaded file. */
+vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
+                                 const uint32_t *triangles, uint32_t triangle_count,
+                                 const uint32_t *triangle_material,
+                                 const vct_material *materials, uint32_t material_count,
+                                 vct_error *err);
+int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_error *err);
+/* Checks indices, finite values, non-empty; counts degenerates; sets bounds. */
+int vct_scene_validate(vct_scene *scene, vct_error *err);
+/* A default camera framing the scene's bounds, looking down -z. */
+void vct_scene_default_camera(const vct_scene *scene, vct_camera *camera);
+void vct_scene_free(vct_scene *scene);
+vct_material vct_material_default(void);
+
+/* ---- parallel primitives (device buffers are cl_mem passed as void*) ----- */
+
+/* out[i] = sum of in[0..i) (exclusive) or in[0..i] (inclusive); n may be 0.
+ * total receives the sum of all n inputs; a total above UINT32_MAX fails with
+ * VCT_ERR_OVERFLOW instead of wrapping. in and out may be the same buffer. */
+int vct_scan_u32(vct_context *ctx, void *in_mem, void *out_mem, uint32_t n, int inclusive,
+                 uint64_t *total, vct_error *err);
+/* out receives in[i] for every i with flags[i] != 0, in order; count returned. */
+int vct_compact_u32(vct_context *ctx, void *in_mem, void *flags_mem, void *out_mem, uint32_t n,
+                    uint32_t *count, vct_error *err);
+/* Stable LSD radix sort of (key, value) pairs on the low key_bits bits. */
+int vct_sort_pairs_u32(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
+                       int key_bits, vct_error *err);
+int vct_sort_pairs_u64(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
+                       int key_bits, vct_error *err);
+/* keys sorted; sums float4 values of equal-key runs in input order.
+ * Writes unique keys and their sums; returns the number of runs. */
+int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
+                         void *out_keys_mem, void *out_sums_mem, uint32_t *runs, vct_error *err);
+
+/* ---- triangle grid and ray casting ----------------------------------------- */
+
+typedef struct vct_grid vct_grid;
+
+typedef struct vct_grid_info {
+    uint32_t res[3];
+    uint32_t references; /* (cell, triangle) pairs */
+    uint32_t empty_cells;
+    float cell_size[3];
+} vct_grid_info;
+
+/* res NULL or {0,0,0}: chosen from triangle count and extent. */
+vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *scene, const uint32_t *res,
+                         vct_error *err);
+void vct_grid_info_get(const vct_grid *grid, vct_grid_info *info);
+/* Reads back the cell ranges and the sorted triangle list (for tests). */
+int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start,
+                  uint32_t *cell_end, uint32_t *tri_ids, vct_error *err);
+void vct_grid_free(vct_grid *grid);
+
+typedef struct vct_hit {
+    float t; /* < 0: miss */
+    uint32_t triangle;
+    float u, v;
+} vct_hit;
+
+/* Closest hits for n rays (origin xyz, tmin; direction xyz, tmax). */
+int vct_trace_rays(vct_context *ctx, const vct_grid *grid, const float *rays, uint32_t n,
+                   vct_hit *hits, vct_error *err);
+
+typedef struct vct_image {
+    int width, height;
+    float *rgba; /* linear radiance, width*height*4 */
+} vct_image;
+
+typedef struct vct_render_options {
+    int width, height;
+    uint32_t grid_res[3]; /* 0 = automatic */
+} vct_render_options;
+
+/* Direct illumination with hard shadows by ray casting. */
+int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                       const vct_render_options *options, vct_image *image, vct_error *err);
+void vct_image_free(vct_image *image);
+
+/* ---- images --------------------------------------------------------------------- */
+
+/* PFM: raw linear radiance. PNG: radiance * 2^exposure, clamped, sRGB encoded.
+ * Written to a temporary file and renamed, so a failure leaves nothing. */
+int vct_image_write_pfm(const vct_image *image, const char *path, vct_error *err);
+int vct_image_write_png(const vct_image *image, const char *path, float exposure,
+                        vct_error *err);
+int vct_image_write(const vct_image *image, const char *path, float exposure, vct_error *err);
+int vct_image_read_pfm(const char *path, vct_image *image, vct_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,119 @@
+/* Library-internal declarations shared by host/src files. */
+#ifndef VCT_INTERNAL_H
+#define VCT_INTERNAL_H
+
+#define CL_TARGET_OPENCL_VERSION 120
+#include <CL/cl.h>
+
+#include "vct/vct.h"
+
+#define VCT_MAX_STAGES 32
+#define VCT_MAX_PROGRAMS 32
+#define VCT_MAX_KERNEL_NAMES 64
+#define VCT_MAX_PENDING_EVENTS 256
+
+/* ---- errors ---- */
+const char *vct_cl_error_name(cl_int code);
+/* Formats the message, sets err->status; returns status (for `return vct_fail(...)`). */
+int vct_fail(vct_error *err, vct_status status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* Checks an OpenCL result: on failure fills err with stage, call, name and a hint. */
+int vct_cl_check(vct_error *err, cl_int code, const char *stage, const char *call);
+#define VCT_CL(err, stage, call)                                                                   \
+    do {                                                                                           \
+        cl_int vct_cl_rc_ = (call);                                                                \
+        if (vct_cl_rc_ != CL_SUCCESS)                                                              \
+            return vct_cl_check((err), vct_cl_rc_, (stage), #call);                                \
+    } while (0)
+
+/* ---- programs ---- */
+typedef struct vct_program {
+    char key[64];
+    cl_program program;
+} vct_program;
+
+typedef struct vct_kernel_count {
+    char name[64];
+    int launches;
+} vct_kernel_count;
+
+struct vct_context {
+    cl_platform_id platform;
+    cl_device_id device;
+    cl_context context;
+    cl_command_queue queue;
+    vct_device_info info;
+    vct_program programs[VCT_MAX_PROGRAMS];
+    int program_count;
+    vct_stage_stat stages[VCT_MAX_STAGES];
+    int stage_count;
+    int current_stage;
+    double stage_host_start;
+    cl_event pending[VCT_MAX_PENDING_EVENTS];
+    int pending_count;
+    vct_kernel_count kernel_counts[VCT_MAX_KERNEL_NAMES];
+    int kernel_count_n;
+    double bytes_live; /* device bytes currently allocated through vct_buffer */
+    /* Tuning chosen from the device type (see primitives.c). */
+    size_t scan_group_size;
+    size_t scan_groups;
+    int radix_bits;
+    /* Program cache statistics, for reporting cold/warm starts. */
+    int cache_hits, cache_misses;
+    double build_ms;
+};
+
+/* Builds (or loads from the disk cache) kernels/<file> with options. */
+int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_program *out,
+                    vct_error *err);
+cl_kernel vct_kernel_create(vct_context *ctx, cl_program program, const char *name,
+                            vct_error *err);
+/* Expands #include "x" against the kernel directory or the embedded copies. */
+char *vct_kernel_source_expand(const char *file, vct_error *err);
+/* Path of the kernel-binary cache directory (created on demand). */
+const char *vct_cache_dir(void);
+
+/* ---- buffers ---- */
+cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, size_t bytes,
+                         cl_mem_flags flags, const void *host, vct_error *err);
+void vct_buffer_release(vct_context *ctx, cl_mem mem);
+int vct_buffer_read(vct_context *ctx, const char *stage, cl_mem mem, size_t offset, size_t bytes,
+                    void *dst, vct_error *err);
+int vct_buffer_write(vct_context *ctx, const char *stage, cl_mem mem, size_t offset,
+                     size_t bytes, const void *src, vct_error *err);
+int vct_buffer_fill_u32(vct_context *ctx, const char *stage, cl_mem mem, uint32_t value,
+                        size_t count, vct_error *err);
+
+/* ---- launches and statistics ---- */
+void vct_stage_begin(vct_context *ctx, const char *name);
+void vct_stage_end(vct_context *ctx);
+/* Enqueues a 1D kernel over `global` work-items rounded up to `local`
+ * (local 0 = let the runtime choose), records the event in the current stage. */
+int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, vct_error *err);
+int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global[2],
+                  const size_t local[2], vct_error *err);
+int vct_record_event(vct_context *ctx, cl_event event, const char *kernel_name, vct_error *err);
+int vct_finish(vct_context *ctx, const char *stage, vct_error *err);
+double vct_now_ms(void);
+
+#define VCT_ARG(err, stage, kernel, index, value)                                                  \
+    VCT_CL(err, stage, clSetKernelArg((kernel), (index), sizeof(value), &(value)))
+
+/* ---- grid internals used by renderers ---- */
+struct vct_grid {
+    cl_mem cell_start, cell_end, tri_ids;
+    cl_mem positions, triangles; /* per-triangle vertices: 3 float4 per triangle */
+    cl_mem tri_vertices;
+    uint32_t res[3];
+    float origin[3], cell_size[3];
+    float scene_extent;
+    uint32_t references;
+    uint32_t empty_cells;
+    uint32_t triangle_count;
+    vct_context *ctx;
+};
+
+/* Grid description passed to kernels (must match kernels/grid_types.h). */
+void vct_grid_kernel_args(const vct_grid *grid, void *out_desc);
+
+#endif

@@ -1,0 +1,161 @@
+/* Launches and per-stage statistics from profiling events. */
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "internal.h"
+
+double vct_now_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+static int drain_events(vct_context *ctx, vct_error *err);
+
+void vct_stage_begin(vct_context *ctx, const char *name) {
+    if (ctx->current_stage >= 0)
+        vct_stage_end(ctx);
+    int i = 0;
+    for (; i < ctx->stage_count; ++i)
+        if (strcmp(ctx->stages[i].name, name) == 0)
+            break;
+    if (i == ctx->stage_count) {
+        if (ctx->stage_count == VCT_MAX_STAGES)
+            i = VCT_MAX_STAGES - 1; /* fold overflow into the last row */
+        else
+            ctx->stage_count++;
+        memset(&ctx->stages[i], 0, sizeof ctx->stages[i]);
+        snprintf(ctx->stages[i].name, sizeof ctx->stages[i].name, "%s", name);
+    }
+    ctx->current_stage = i;
+    ctx->stage_host_start = vct_now_ms();
+}
+
+void vct_stage_end(vct_context *ctx) {
+    if (ctx->current_stage < 0)
+        return;
+    clFinish(ctx->queue);
+    drain_events(ctx, NULL);
+    vct_stage_stat *s = &ctx->stages[ctx->current_stage];
+    s->host_ms += vct_now_ms() - ctx->stage_host_start;
+    s->mib = ctx->bytes_live / (1024.0 * 1024.0);
+    ctx->current_stage = -1;
+}
+
+static void count_kernel(vct_context *ctx, const char *name) {
+    for (int i = 0; i < ctx->kernel_count_n; ++i) {
+        if (strcmp(ctx->kernel_counts[i].name, name) == 0) {
+            ctx->kernel_counts[i].launches++;
+            return;
+        }
+    }
+    if (ctx->kernel_count_n < VCT_MAX_KERNEL_NAMES) {
+        vct_kernel_count *k = &ctx->kernel_counts[ctx->kernel_count_n++];
+        snprintf(k->name, sizeof k->name, "%s", name);
+        k->launches = 1;
+    }
+}
+
+/* Events are kept until the stage ends, so launches stay asynchronous; their
+ * device times are summed then. */
+static int drain_events(vct_context *ctx, vct_error *err) {
+    int rc = VCT_OK;
+    if (ctx->pending_count == 0)
+        return rc;
+    cl_int wait = clWaitForEvents((cl_uint)ctx->pending_count, ctx->pending);
+    if (wait != CL_SUCCESS)
+        rc = vct_cl_check(err, wait, "statistics", "clWaitForEvents");
+    for (int i = 0; i < ctx->pending_count; ++i) {
+        cl_ulong start = 0, end = 0;
+        if (rc == VCT_OK && ctx->current_stage >= 0 &&
+            clGetEventProfilingInfo(ctx->pending[i], CL_PROFILING_COMMAND_START, sizeof start,
+                                    &start, NULL) == CL_SUCCESS &&
+            clGetEventProfilingInfo(ctx->pending[i], CL_PROFILING_COMMAND_END, sizeof end, &end,
+                                    NULL) == CL_SUCCESS &&
+            end >= start)
+            ctx->stages[ctx->current_stage].device_ms += (double)(end - start) * 1e-6;
+        clReleaseEvent(ctx->pending[i]);
+    }
+    ctx->pending_count = 0;
+    return rc;
+}
+
+int vct_record_event(vct_context *ctx, cl_event event, const char *kernel_name, vct_error *err) {
+    if (!event)
+        return VCT_OK;
+    count_kernel(ctx, kernel_name);
+    if (ctx->current_stage < 0) {
+        clReleaseEvent(event);
+        return VCT_OK;
+    }
+    ctx->stages[ctx->current_stage].launches++;
+    if (ctx->pending_count == VCT_MAX_PENDING_EVENTS) {
+        int rc = drain_events(ctx, err);
+        if (rc != VCT_OK) {
+            clReleaseEvent(event);
+            return rc;
+        }
+    }
+    ctx->pending[ctx->pending_count++] = event;
+    return VCT_OK;
+}
+
+static int kernel_name_of(cl_kernel kernel, char *name, size_t size) {
+    name[0] = '\0';
+    return clGetKernelInfo(kernel, CL_KERNEL_FUNCTION_NAME, size, name, NULL);
+}
+
+int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, vct_error *err) {
+    char name[64];
+    kernel_name_of(kernel, name, sizeof name);
+    if (global == 0)
+        return VCT_OK; /* nothing to do; zero-sized NDRanges are invalid in OpenCL 1.2 */
+    if (local)
+        global = (global + local - 1) / local * local;
+    cl_event ev = NULL;
+    const char *stage = ctx->current_stage >= 0 ? ctx->stages[ctx->current_stage].name : name;
+    VCT_CL(err, stage,
+           clEnqueueNDRangeKernel(ctx->queue, kernel, 1, NULL, &global, local ? &local : NULL, 0,
+                                  NULL, &ev));
+    return vct_record_event(ctx, ev, name, err);
+}
+
+int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global_in[2],
+                  const size_t local[2], vct_error *err) {
+    char name[64];
+    kernel_name_of(kernel, name, sizeof name);
+    size_t global[2] = {global_in[0], global_in[1]};
+    if (global[0] == 0 || global[1] == 0)
+        return VCT_OK;
+    for (int i = 0; local && i < 2; ++i)
+        global[i] = (global[i] + local[i] - 1) / local[i] * local[i];
+    cl_event ev = NULL;
+    const char *stage = ctx->current_stage >= 0 ? ctx->stages[ctx->current_stage].name : name;
+    VCT_CL(err, stage,
+           clEnqueueNDRangeKernel(ctx->queue, kernel, 2, NULL, global, local, 0, NULL, &ev));
+    return vct_record_event(ctx, ev, name, err);
+}
+
+int vct_finish(vct_context *ctx, const char *stage, vct_error *err) {
+    VCT_CL(err, stage, clFinish(ctx->queue));
+    return VCT_OK;
+}
+
+int vct_stats(const vct_context *ctx, const vct_stage_stat **stages) {
+    *stages = ctx->stages;
+    return ctx->stage_count;
+}
+
+void vct_stats_reset(vct_context *ctx) {
+    ctx->stage_count = 0;
+    ctx->current_stage = -1;
+    ctx->kernel_count_n = 0;
+}
+
+int vct_kernel_launches(const vct_context *ctx, const char *kernel_name) {
+    for (int i = 0; i < ctx->kernel_count_n; ++i)
+        if (strcmp(ctx->kernel_counts[i].name, kernel_name) == 0)
+            return ctx->kernel_counts[i].launches;
+    return 0;
+}

@@ -1,0 +1,58 @@
+/* Types shared by host C and OpenCL C. Every struct is made of 16-byte
+ * float4/uint4 members so that its layout is identical on both sides. */
+#ifndef VCT_TYPES_H
+#define VCT_TYPES_H
+
+#ifdef __OPENCL_VERSION__
+typedef float4 vct_f4;
+typedef uint4 vct_u4;
+#else
+#define CL_TARGET_OPENCL_VERSION 120
+#include <CL/cl.h>
+typedef cl_float4 vct_f4;
+typedef cl_uint4 vct_u4;
+#endif
+
+/* Uniform grid over triangles: cells [0,res) per axis from origin. */
+typedef struct vct_grid_desc {
+    vct_f4 origin;    /* xyz; w = scene extent (for relative epsilons) */
+    vct_f4 cell_size; /* xyz; w = 1 / max cell size */
+    vct_f4 inv_cell;  /* 1 / cell_size */
+    vct_u4 res;       /* xyz; w = triangle count */
+} vct_grid_desc;
+
+typedef struct vct_camera_desc {
+    vct_f4 position; /* w = tan(fov_y / 2) */
+    vct_f4 forward;  /* w = aspect (width / height) */
+    vct_f4 right;
+    vct_f4 up;
+    vct_u4 size;     /* width, height */
+} vct_camera_desc;
+
+#define VCT_LIGHT_KIND_POINT 0u
+#define VCT_LIGHT_KIND_SPOT 1u
+#define VCT_LIGHT_KIND_DIRECTIONAL 2u
+
+typedef struct vct_light_desc {
+    vct_f4 position;  /* xyz; w = kind */
+    vct_f4 direction; /* xyz normalised, direction of travel; w = cos(outer cone) */
+    vct_f4 color;     /* intensity (W/sr) or irradiance; w = cos(inner cone) */
+} vct_light_desc;
+
+typedef struct vct_material_desc {
+    vct_f4 albedo;   /* rgb; w = metallic */
+    vct_f4 emission; /* rgb; w = roughness */
+    vct_f4 specular; /* rgb; w = transmission */
+    vct_f4 extra;    /* x = ior */
+} vct_material_desc;
+
+/* Ray for vct_trace_rays: origin.w = tmin, direction.w = tmax. */
+typedef struct vct_ray_desc {
+    vct_f4 origin;
+    vct_f4 direction;
+} vct_ray_desc;
+
+/* Hit: x = t (negative for a miss), y = triangle (as bits), z = u, w = v. */
+typedef vct_f4 vct_hit_desc;
+
+#endif

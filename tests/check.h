@@ -1,0 +1,65 @@
+/* Minimal test support: CHECK records a failure with file and line and goes on;
+ * a test's main returns check_exit() so ctest sees any failure. */
+#ifndef VCT_CHECK_H
+#define VCT_CHECK_H
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "vct/vct.h"
+
+static int check_failures;
+static int check_count;
+
+#define CHECK(cond, ...)                                                                           \
+    do {                                                                                           \
+        ++check_count;                                                                             \
+        if (!(cond)) {                                                                             \
+            ++check_failures;                                                                      \
+            fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond);               \
+            fprintf(stderr, __VA_ARGS__);                                                          \
+            fputc('\n', stderr);                                                                   \
+        }                                                                                          \
+    } while (0)
+
+/* For calls that must succeed before the test can go on. */
+#define REQUIRE_OK(call, err)                                                                      \
+    do {                                                                                           \
+        if ((call) != VCT_OK) {                                                                    \
+            fprintf(stderr, "%s:%d: %s failed: %s\n", __FILE__, __LINE__, #call, (err).message);   \
+            exit(1);                                                                               \
+        }                                                                                          \
+    } while (0)
+
+static inline int check_exit(const char *name) {
+    if (check_count == 0) {
+        fprintf(stderr, "%s: no checks ran\n", name);
+        return 1;
+    }
+    printf("%s: %d checks, %d failed\n", name, check_count, check_failures);
+    return check_failures ? 1 : 0;
+}
+
+static inline vct_context *check_context(void) {
+    vct_error err = {0};
+    vct_context *ctx = vct_context_create(NULL, &err);
+    if (!ctx) {
+        fprintf(stderr, "no OpenCL context: %s\n", err.message);
+        exit(1);
+    }
+    return ctx;
+}
+
+/* Deterministic generator for test inputs (xorshift64*). */
+static inline uint64_t check_rand(uint64_t *s) {
+    *s ^= *s >> 12;
+    *s ^= *s << 25;
+    *s ^= *s >> 27;
+    return *s * 0x2545F4914F6CDD1Dull;
+}
+
+static inline float check_randf(uint64_t *s) {
+    return (float)(check_rand(s) >> 40) / (float)(1ull << 24);
+}
+
+#endif
