@@ -16,7 +16,7 @@ typedef cl_uint4 vct_u4;
 /* Uniform grid over triangles: cells [0,res) per axis from origin. */
 typedef struct vct_grid_desc {
     vct_f4 origin;    /* xyz; w = scene extent (for relative epsilons) */
-    vct_f4 cell_size; /* xyz; w = 1 / max cell size */
+    vct_f4 cell_size; /* xyz; w = distance tolerance: extent and float spacing */
     vct_f4 inv_cell;  /* 1 / cell_size */
     vct_u4 res;       /* xyz; w = triangle count */
 } vct_grid_desc;

@@ -1,1 +1,181 @@
-int vct_placeholder_commands;
+/* vct devices | info | render. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "commands.h"
+
+#include <stdarg.h>
+
+static int vct_fail_app(vct_error *err, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err->message, sizeof err->message, fmt, ap);
+    va_end(ap);
+    err->status = VCT_ERR_INPUT;
+    return VCT_ERR_INPUT;
+}
+
+static int fail(const vct_error *err) {
+    fprintf(stderr, "vct: %s\n", err->message);
+    return 1;
+}
+
+int cmd_devices(const cli_options *opt) {
+    (void)opt;
+    vct_error err = {0};
+    vct_device_info info[32];
+    int n = vct_list_devices(info, 32, &err);
+    if (n < 0)
+        return fail(&err);
+    for (int i = 0; i < n; ++i) {
+        const vct_device_info *d = &info[i];
+        printf("[%d] %s — %s (%s)\n", d->index, d->name, d->platform, d->is_gpu ? "GPU" : "CPU");
+        printf("    %s, driver %s\n", d->version, d->driver);
+        printf("    compute units %u, global memory %.0f MiB, max allocation %.0f MiB, "
+               "work-group %zu\n",
+               d->compute_units, d->global_mem / 1048576.0, d->max_alloc / 1048576.0,
+               d->max_work_group);
+        printf("    images %s, fp64 %s, GL sharing %s\n", d->image_support ? "yes" : "no",
+               d->fp64 ? "yes" : "no", d->gl_sharing ? "yes" : "no");
+        printf("    extensions: %s\n", d->extensions);
+    }
+    if (n == 0)
+        printf("no OpenCL devices\n");
+    return 0;
+}
+
+static vct_scene *load_scene(const cli_options *opt, vct_error *err) {
+    if (opt->input_count < 1) {
+        vct_fail_app(err, "%s needs a scene file", opt->command);
+        return NULL;
+    }
+    vct_scene *s = vct_scene_load(opt->inputs[0], err);
+    if (s && cli_apply_scene_overrides(opt, s, err) != VCT_OK) {
+        vct_scene_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+static void print_scene(const vct_scene *s, FILE *out) {
+    fprintf(out, "scene %s: %u triangles (%u degenerate, never hit), %u vertices, %u materials, "
+                 "%u lights\n",
+            s->source, s->triangle_count, s->degenerate_triangles, s->vertex_count,
+            s->material_count, s->light_count);
+}
+
+int cmd_info(const cli_options *opt) {
+    vct_error err = {0};
+    vct_scene *s = load_scene(opt, &err);
+    if (!s)
+        return fail(&err);
+    print_scene(s, stdout);
+    printf("bounds (%g %g %g) .. (%g %g %g)\n", s->bounds_min[0], s->bounds_min[1],
+           s->bounds_min[2], s->bounds_max[0], s->bounds_max[1], s->bounds_max[2]);
+    printf("camera %s: position (%g %g %g), look-at (%g %g %g), up (%g %g %g), fov %g\n",
+           s->has_camera ? "from the file" : "default", s->camera.position[0],
+           s->camera.position[1], s->camera.position[2], s->camera.look_at[0],
+           s->camera.look_at[1], s->camera.look_at[2], s->camera.up[0], s->camera.up[1],
+           s->camera.up[2], s->camera.fov_y_deg);
+    static const char *kinds[] = {"point", "spot", "directional"};
+    for (uint32_t i = 0; i < s->light_count; ++i) {
+        const vct_light *l = &s->lights[i];
+        printf("light %u: %s at (%g %g %g) towards (%g %g %g), colour (%g %g %g)\n", i,
+               kinds[l->type], l->position[0], l->position[1], l->position[2], l->direction[0],
+               l->direction[1], l->direction[2], l->color[0], l->color[1], l->color[2]);
+    }
+    for (uint32_t i = 0; i < s->material_count; ++i) {
+        const vct_material *m = &s->materials[i];
+        printf("material %u \"%s\": albedo (%g %g %g), emission (%g %g %g), roughness %g, "
+               "metallic %g, transmission %g, ior %g\n",
+               i, m->name, m->albedo[0], m->albedo[1], m->albedo[2], m->emission[0],
+               m->emission[1], m->emission[2], m->roughness, m->metallic, m->transmission,
+               m->ior);
+    }
+    vct_scene_free(s);
+    return 0;
+}
+
+static void print_stats(const vct_context *ctx) {
+    const vct_stage_stat *st;
+    int n = vct_stats(ctx, &st);
+    printf("%-20s %10s %10s %10s %9s\n", "stage", "device ms", "host ms", "MiB held", "launches");
+    for (int i = 0; i < n; ++i)
+        printf("%-20s %10.2f %10.2f %10.2f %9d\n", st[i].name, st[i].device_ms, st[i].host_ms,
+               st[i].mib, st[i].launches);
+}
+
+/* Creates the output's parent directory, so `-o out/x.png` works from a clean tree. */
+static int make_parent_dir(const char *path, vct_error *err) {
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (!slash || slash == dir)
+        return VCT_OK;
+    *slash = '\0';
+    for (char *p = dir + 1; *p; ++p) {
+        if (*p == '/') {
+            *p = '\0';
+            mkdir(dir, 0755);
+            *p = '/';
+        }
+    }
+    if (mkdir(dir, 0755) != 0 && errno != EEXIST)
+        return vct_fail_app(err, "cannot create directory %s for the output", dir);
+    return VCT_OK;
+}
+
+int cmd_render(const cli_options *opt) {
+    vct_error err = {0};
+    const char *out = opt->output ? opt->output : "render.png";
+    const char *dot = strrchr(out, '.');
+    if (!dot || (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0)) {
+        fprintf(stderr, "vct: output %s must end in .png or .pfm\n", out);
+        return 1;
+    }
+    if (strcmp(opt->method, "raycast") != 0) {
+        fprintf(stderr, "vct: unknown --method %s (available: raycast)\n", opt->method);
+        return 1;
+    }
+    vct_scene *s = load_scene(opt, &err);
+    if (!s)
+        return fail(&err);
+    print_scene(s, stderr);
+    if (s->light_count == 0)
+        fprintf(stderr, "vct: the scene has no lights: only emissive surfaces will show (add "
+                        "--point-light or --dir-light)\n");
+    vct_context *ctx = vct_context_create(opt->device, &err);
+    if (!ctx) {
+        vct_scene_free(s);
+        return fail(&err);
+    }
+    fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
+            vct_context_device(ctx)->platform);
+    vct_image image = {0};
+    vct_grid *grid = vct_grid_build(ctx, s, opt->grid_res, &err);
+    vct_render_options ro = {opt->width, opt->height, {0, 0, 0}};
+    int rc = grid ? vct_render_raycast(ctx, s, grid, &ro, &image, &err) : (int)err.status;
+    if (rc == VCT_OK)
+        rc = make_parent_dir(out, &err);
+    if (rc == VCT_OK)
+        rc = vct_image_write(&image, out, opt->exposure, &err);
+    if (rc == VCT_OK) {
+        vct_grid_info gi;
+        vct_grid_info_get(grid, &gi);
+        fprintf(stderr, "grid: %ux%ux%u cells, %u references\n", gi.res[0], gi.res[1], gi.res[2],
+                gi.references);
+        if (opt->stats)
+            print_stats(ctx);
+        printf("wrote %s (%dx%d, %s)\n", out, image.width, image.height,
+               strcmp(dot, ".pfm") == 0 ? "linear radiance"
+                                        : "exposed and sRGB encoded");
+    }
+    vct_image_free(&image);
+    vct_grid_free(grid);
+    vct_context_destroy(ctx);
+    vct_scene_free(s);
+    return rc == VCT_OK ? 0 : fail(&err);
+}

@@ -1,1 +1,202 @@
-int vct_placeholder_options;
+/* Command-line parsing: every numeric argument is checked, every error names
+ * the option. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "options.h"
+
+void cli_usage(void) {
+    fputs("usage:\n"
+          "  vct devices                      list OpenCL devices and their limits\n"
+          "  vct info SCENE                   load and validate a scene, print what it holds\n"
+          "  vct render SCENE [-o OUT.png|OUT.pfm] [options]\n"
+          "\n"
+          "render options:\n"
+          "  --method raycast                 direct light with hard shadows (default)\n"
+          "  --size W H                       image size in pixels (default 512 512)\n"
+          "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
+          "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
+          "  --dir-light DX DY DZ R G B       irradiance, travelling along D (repeatable)\n"
+          "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
+          "  --exposure STOPS                 PNG only: scale by 2^STOPS before sRGB (default 0)\n"
+          "  --stats                          per-stage device time and memory\n"
+          "  --device N|NAME                  OpenCL device (default $VCT_DEVICE, else first GPU,\n"
+          "                                   else first CPU)\n",
+          stderr);
+}
+
+static int parse_floats(int argc, char **argv, int *i, int count, float *out) {
+    const char *name = argv[*i];
+    if (*i + count >= argc) {
+        fprintf(stderr, "vct: %s needs %d numbers\n", name, count);
+        return 1;
+    }
+    for (int k = 0; k < count; ++k) {
+        char *end = NULL;
+        const char *arg = argv[*i + 1 + k];
+        out[k] = strtof(arg, &end);
+        if (!end || *end || end == arg || !isfinite(out[k])) {
+            fprintf(stderr, "vct: %s: \"%s\" is not a finite number\n", name, arg);
+            return 1;
+        }
+    }
+    *i += count;
+    return 0;
+}
+
+static int parse_int(int argc, char **argv, int *i, int lo, int hi, int *out) {
+    const char *name = argv[*i];
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "vct: %s needs a number\n", name);
+        return 1;
+    }
+    char *end = NULL;
+    long v = strtol(argv[*i + 1], &end, 10);
+    if (!end || *end || v < lo || v > hi) {
+        fprintf(stderr, "vct: %s: \"%s\" is not an integer in %d..%d\n", name, argv[*i + 1], lo,
+                hi);
+        return 1;
+    }
+    *out = (int)v;
+    *i += 1;
+    return 0;
+}
+
+static int add_light(cli_options *opt, vct_light_type type, const float v[6]) {
+    if (opt->light_count == MAX_CLI_LIGHTS) {
+        fprintf(stderr, "vct: at most %d lights on the command line\n", MAX_CLI_LIGHTS);
+        return 1;
+    }
+    vct_light *l = &opt->lights[opt->light_count++];
+    memset(l, 0, sizeof *l);
+    l->type = type;
+    for (int k = 0; k < 3; ++k) {
+        if (type == VCT_LIGHT_DIRECTIONAL)
+            l->direction[k] = v[k];
+        else
+            l->position[k] = v[k];
+        l->color[k] = v[3 + k];
+    }
+    if (type == VCT_LIGHT_DIRECTIONAL && v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f) {
+        fprintf(stderr, "vct: --dir-light: the direction must not be zero\n");
+        return 1;
+    }
+    return 0;
+}
+
+int cli_parse(int argc, char **argv, cli_options *opt) {
+    memset(opt, 0, sizeof *opt);
+    opt->width = opt->height = 512;
+    opt->method = "raycast";
+    if (argc < 2) {
+        cli_usage();
+        return 1;
+    }
+    opt->command = argv[1];
+    for (int i = 2; i < argc; ++i) {
+        const char *a = argv[i];
+        float v[6];
+        int n = 0;
+        if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "vct: %s needs a file name\n", a);
+                return 1;
+            }
+            opt->output = argv[++i];
+        } else if (strcmp(a, "--device") == 0 || strcmp(a, "--method") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "vct: %s needs a value\n", a);
+                return 1;
+            }
+            if (strcmp(a, "--device") == 0)
+                opt->device = argv[++i];
+            else
+                opt->method = argv[++i];
+        } else if (strcmp(a, "--size") == 0) {
+            if (parse_int(argc, argv, &i, 1, 16384, &opt->width) ||
+                parse_int(argc, argv, &i, 1, 16384, &opt->height))
+                return 1;
+        } else if (strcmp(a, "--camera-pos") == 0) {
+            if (parse_floats(argc, argv, &i, 3, opt->camera_pos))
+                return 1;
+            opt->has_camera_pos = 1;
+        } else if (strcmp(a, "--look-at") == 0) {
+            if (parse_floats(argc, argv, &i, 3, opt->look_at))
+                return 1;
+            opt->has_look_at = 1;
+        } else if (strcmp(a, "--up") == 0) {
+            if (parse_floats(argc, argv, &i, 3, opt->up))
+                return 1;
+            opt->has_up = 1;
+        } else if (strcmp(a, "--fov") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->fov))
+                return 1;
+            if (!(opt->fov > 0.0f && opt->fov < 179.0f)) {
+                fprintf(stderr, "vct: --fov must lie in (0, 179) degrees\n");
+                return 1;
+            }
+            opt->has_fov = 1;
+        } else if (strcmp(a, "--point-light") == 0) {
+            if (parse_floats(argc, argv, &i, 6, v) || add_light(opt, VCT_LIGHT_POINT, v))
+                return 1;
+        } else if (strcmp(a, "--dir-light") == 0) {
+            if (parse_floats(argc, argv, &i, 6, v) || add_light(opt, VCT_LIGHT_DIRECTIONAL, v))
+                return 1;
+        } else if (strcmp(a, "--grid-res") == 0) {
+            int r[3];
+            if (parse_int(argc, argv, &i, 1, 1024, &r[0]))
+                return 1;
+            /* One number or three. */
+            n = 1;
+            while (n < 3 && i + 1 < argc && argv[i + 1][0] >= '0' && argv[i + 1][0] <= '9') {
+                if (parse_int(argc, argv, &i, 1, 1024, &r[n]))
+                    return 1;
+                ++n;
+            }
+            if (n == 2) {
+                fprintf(stderr, "vct: --grid-res takes one number or three\n");
+                return 1;
+            }
+            for (int k = 0; k < 3; ++k)
+                opt->grid_res[k] = (uint32_t)(n == 1 ? r[0] : r[k]);
+        } else if (strcmp(a, "--exposure") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->exposure))
+                return 1;
+        } else if (strcmp(a, "--stats") == 0) {
+            opt->stats = 1;
+        } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            cli_usage();
+            exit(0);
+        } else if (a[0] == '-' && a[1] != '\0') {
+            fprintf(stderr, "vct: unknown option %s (see vct --help)\n", a);
+            return 1;
+        } else if (opt->input_count < 2) {
+            opt->inputs[opt->input_count++] = a;
+        } else {
+            fprintf(stderr, "vct: unexpected argument %s\n", a);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+int cli_apply_scene_overrides(const cli_options *opt, vct_scene *s, vct_error *err) {
+    for (int k = 0; k < 3; ++k) {
+        if (opt->has_camera_pos)
+            s->camera.position[k] = opt->camera_pos[k];
+        if (opt->has_look_at)
+            s->camera.look_at[k] = opt->look_at[k];
+        if (opt->has_up)
+            s->camera.up[k] = opt->up[k];
+    }
+    if (opt->has_fov)
+        s->camera.fov_y_deg = opt->fov;
+    for (int i = 0; i < opt->light_count; ++i) {
+        int rc = vct_scene_add_light(s, &opt->lights[i], err);
+        if (rc)
+            return rc;
+    }
+    return VCT_OK;
+}

@@ -7,6 +7,7 @@
 
 #include "vct/vct.h"
 
+#define VCT_PI_F 3.14159265358979f
 #define VCT_MAX_STAGES 32
 #define VCT_MAX_PROGRAMS 32
 #define VCT_MAX_KERNEL_NAMES 64
@@ -102,13 +103,12 @@ double vct_now_ms(void);
 /* ---- grid internals used by renderers ---- */
 struct vct_grid {
     cl_mem cell_start, cell_end, tri_ids;
-    cl_mem positions, triangles; /* per-triangle vertices: 3 float4 per triangle */
-    cl_mem tri_vertices;
+    cl_mem tri_vertices; /* 3 float4 per triangle */
     uint32_t res[3];
     float origin[3], cell_size[3];
     float scene_extent;
+    float tolerance; /* distance below which positions are not told apart */
     uint32_t references;
-    uint32_t empty_cells;
     uint32_t triangle_count;
     vct_context *ctx;
 };

@@ -52,7 +52,7 @@ static int scan_impl(vct_context *ctx, cl_mem in, cl_mem out, uint32_t n, int in
     cl_kernel reduce = vct_kernel_create(ctx, p, "scan_reduce", err);
     cl_kernel offsets = reduce ? vct_kernel_create(ctx, p, "scan_group_offsets", err) : NULL;
     cl_kernel down = offsets ? vct_kernel_create(ctx, p, "scan_downsweep", err) : NULL;
-    rc = down ? VCT_OK : err->status;
+    rc = down ? VCT_OK : (int)err->status;
     cl_uint flags = (cl_uint)as_flags, incl = (cl_uint)inclusive;
 #define TRY(x)                                                                                     \
     do {                                                                                           \
@@ -174,7 +174,7 @@ static int sort_impl(vct_context *ctx, cl_mem keys, cl_mem values, uint32_t n, i
                              : NULL;
     cl_kernel histogram = hist ? vct_kernel_create(ctx, p, "radix_histogram", err) : NULL;
     cl_kernel scatter = histogram ? vct_kernel_create(ctx, p, "radix_scatter", err) : NULL;
-    rc = scatter ? VCT_OK : err->status;
+    rc = scatter ? VCT_OK : (int)err->status;
     cl_mem src_k = keys, src_v = values, dst_k = keys_tmp, dst_v = values_tmp;
     for (int shift = 0; rc == VCT_OK && shift < key_bits; shift += bits) {
         cl_uint sh = (cl_uint)shift;
@@ -265,7 +265,7 @@ int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uin
     cl_kernel k_heads = index ? vct_kernel_create(ctx, p, "segment_heads", err) : NULL;
     cl_kernel k_starts = k_heads ? vct_kernel_create(ctx, p, "segment_starts", err) : NULL;
     cl_kernel k_sum = k_starts ? vct_kernel_create(ctx, p, "segment_sum_f4", err) : NULL;
-    rc = k_sum ? VCT_OK : err->status;
+    rc = k_sum ? VCT_OK : (int)err->status;
     cl_mem keys = keys_mem, values = values_mem, out_keys = out_keys_mem, sums = out_sums_mem;
     uint64_t total = 0;
     if (rc == VCT_OK) {
@@ -282,7 +282,7 @@ int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uin
     if (rc == VCT_OK) {
         starts = vct_buffer_create(ctx, STAGE, "segment starts", total * 4ull, CL_MEM_READ_WRITE,
                                    NULL, err);
-        rc = starts ? VCT_OK : err->status;
+        rc = starts ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK) {
         clSetKernelArg(k_starts, 0, sizeof keys, &keys);

@@ -169,7 +169,6 @@ typedef struct vct_grid vct_grid;
 typedef struct vct_grid_info {
     uint32_t res[3];
     uint32_t references; /* (cell, triangle) pairs */
-    uint32_t empty_cells;
     float cell_size[3];
 } vct_grid_info;
 

@@ -1,0 +1,32 @@
+/* Command-line options shared by the vct commands. */
+#ifndef VCT_APP_OPTIONS_H
+#define VCT_APP_OPTIONS_H
+
+#include "vct/vct.h"
+
+#define MAX_CLI_LIGHTS 16
+
+typedef struct cli_options {
+    const char *command;
+    const char *inputs[2];
+    int input_count;
+    const char *output;
+    const char *device;
+    const char *method;
+    int width, height;
+    int stats;
+    float exposure;
+    uint32_t grid_res[3];
+    int has_camera_pos, has_look_at, has_up, has_fov;
+    float camera_pos[3], look_at[3], up[3], fov;
+    vct_light lights[MAX_CLI_LIGHTS];
+    int light_count;
+} cli_options;
+
+/* Parses argv into opt; on error prints the reason and returns non-zero. */
+int cli_parse(int argc, char **argv, cli_options *opt);
+void cli_usage(void);
+/* Applies camera and light overrides to a loaded scene. */
+int cli_apply_scene_overrides(const cli_options *opt, vct_scene *scene, vct_error *err);
+
+#endif

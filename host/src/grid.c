@@ -1,0 +1,265 @@
+/* Uniform triangle grid: resolution choice and the device build. */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+#include "vct_types.h"
+
+#define STAGE "grid build"
+#define MAX_AXIS_RES 1024u
+#define MAX_CELLS (1u << 25)
+#define CELLS_PER_TRIANGLE 2.0
+
+/* Grid bounds: the scene's box with a margin, and a distance tolerance that
+ * covers both the extent and float spacing at the coordinates' magnitude. */
+static void grid_frame(const vct_scene *s, float lo[3], float hi[3], float *extent,
+                       float *tolerance) {
+    float ext = 0.0f, mag = 0.0f;
+    for (int k = 0; k < 3; ++k) {
+        ext = fmaxf(ext, s->bounds_max[k] - s->bounds_min[k]);
+        mag = fmaxf(mag, fmaxf(fabsf(s->bounds_min[k]), fabsf(s->bounds_max[k])));
+    }
+    if (!(ext > 0.0f))
+        ext = fmaxf(mag * 1e-3f, 1e-3f); /* a point-like scene still gets a box */
+    const float margin = ext * 1e-4f + mag * 8.0f * FLT_EPSILON;
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = s->bounds_min[k] - margin;
+        hi[k] = s->bounds_max[k] + margin;
+        /* Flat axes get a slab a thousandth of the extent thick. */
+        if (hi[k] - lo[k] < ext * 1e-3f) {
+            float mid = 0.5f * (lo[k] + hi[k]);
+            lo[k] = mid - ext * 5e-4f;
+            hi[k] = mid + ext * 5e-4f;
+        }
+    }
+    *extent = ext;
+    *tolerance = ext * 1e-5f + mag * 4.0f * FLT_EPSILON;
+}
+
+static void choose_resolution(const vct_scene *s, const float lo[3], const float hi[3],
+                              uint32_t res[3]) {
+    double e[3], volume = 1.0;
+    for (int k = 0; k < 3; ++k) {
+        e[k] = (double)hi[k] - lo[k];
+        volume *= e[k];
+    }
+    double cells = CELLS_PER_TRIANGLE * s->triangle_count;
+    if (cells > MAX_CELLS)
+        cells = MAX_CELLS;
+    double per_unit = cbrt(cells / volume);
+    for (int k = 0; k < 3; ++k) {
+        double r = ceil(e[k] * per_unit);
+        res[k] = (uint32_t)(r < 1 ? 1 : (r > MAX_AXIS_RES ? MAX_AXIS_RES : r));
+    }
+}
+
+static int set_args(vct_error *err, cl_kernel k, int count, const size_t *sizes,
+                    const void *const *values) {
+    for (int i = 0; i < count; ++i)
+        VCT_CL(err, STAGE, clSetKernelArg(k, (cl_uint)i, sizes[i], values[i]));
+    return VCT_OK;
+}
+#define ARGS(...) __VA_ARGS__
+
+void vct_grid_kernel_args(const vct_grid *grid, void *out) {
+    vct_grid_desc *d = out;
+    memset(d, 0, sizeof *d);
+    for (int k = 0; k < 3; ++k) {
+        d->origin.s[k] = grid->origin[k];
+        d->cell_size.s[k] = grid->cell_size[k];
+        d->inv_cell.s[k] = 1.0f / grid->cell_size[k];
+        d->res.s[k] = grid->res[k];
+    }
+    d->origin.s[3] = grid->scene_extent;
+    d->cell_size.s[3] = grid->tolerance;
+    d->res.s[3] = grid->triangle_count;
+}
+
+void vct_grid_free(vct_grid *g) {
+    if (!g)
+        return;
+    vct_buffer_release(g->ctx, g->cell_start);
+    vct_buffer_release(g->ctx, g->cell_end);
+    vct_buffer_release(g->ctx, g->tri_ids);
+    vct_buffer_release(g->ctx, g->tri_vertices);
+    free(g);
+}
+
+void vct_grid_info_get(const vct_grid *g, vct_grid_info *info) {
+    memset(info, 0, sizeof *info);
+    for (int k = 0; k < 3; ++k) {
+        info->res[k] = g->res[k];
+        info->cell_size[k] = g->cell_size[k];
+    }
+    info->references = g->references;
+}
+
+static int gather_vertices(vct_context *ctx, vct_grid *g, const vct_scene *s, cl_program p,
+                           vct_error *err) {
+    cl_mem pos = vct_buffer_create(ctx, STAGE, "vertex positions", 12ull * s->vertex_count,
+                                   CL_MEM_READ_ONLY, s->positions, err);
+    cl_mem tri = pos ? vct_buffer_create(ctx, STAGE, "triangle indices",
+                                         12ull * s->triangle_count, CL_MEM_READ_ONLY,
+                                         s->triangles, err)
+                     : NULL;
+    g->tri_vertices = tri ? vct_buffer_create(ctx, STAGE, "triangle vertices",
+                                              48ull * s->triangle_count, CL_MEM_READ_WRITE, NULL,
+                                              err)
+                          : NULL;
+    cl_kernel k = g->tri_vertices ? vct_kernel_create(ctx, p, "grid_gather_vertices", err) : NULL;
+    int rc = k ? VCT_OK : (int)err->status;
+    uint32_t n = s->triangle_count;
+    if (rc == VCT_OK)
+        rc = set_args(err, k, 4, ARGS((size_t[]){sizeof pos, sizeof tri, sizeof n, sizeof(cl_mem)}),
+                      ARGS((const void *[]){&pos, &tri, &n, &g->tri_vertices}));
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k, n, 0, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, STAGE, err);
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, tri);
+    vct_buffer_release(ctx, pos);
+    return rc;
+}
+
+static int bits_for(uint64_t count) {
+    int b = 1;
+    while (b < 32 && (1ull << b) < count)
+        ++b;
+    return b;
+}
+
+vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *res_in,
+                         vct_error *err) {
+    vct_grid *g = calloc(1, sizeof *g);
+    if (!g) {
+        vct_fail(err, VCT_ERR_MEMORY, "grid: out of host memory");
+        return NULL;
+    }
+    g->ctx = ctx;
+    g->triangle_count = s->triangle_count;
+    float lo[3], hi[3];
+    grid_frame(s, lo, hi, &g->scene_extent, &g->tolerance);
+    if (res_in && res_in[0] && res_in[1] && res_in[2]) {
+        for (int k = 0; k < 3; ++k)
+            g->res[k] = res_in[k];
+    } else {
+        choose_resolution(s, lo, hi, g->res);
+    }
+    uint64_t cells = (uint64_t)g->res[0] * g->res[1] * g->res[2];
+    if (cells > (1ull << 30)) {
+        vct_fail(err, VCT_ERR_INPUT, "grid: %ux%ux%u cells is more than 2^30: lower --grid-res",
+                 g->res[0], g->res[1], g->res[2]);
+        free(g);
+        return NULL;
+    }
+    for (int k = 0; k < 3; ++k) {
+        g->origin[k] = lo[k];
+        g->cell_size[k] = (hi[k] - lo[k]) / (float)g->res[k];
+    }
+    vct_stage_begin(ctx, STAGE);
+    cl_program p;
+    int rc = vct_program_get(ctx, "grid_build.cl", "", &p, err);
+    if (rc == VCT_OK)
+        rc = gather_vertices(ctx, g, s, p, err);
+    vct_grid_desc desc;
+    vct_grid_kernel_args(g, &desc);
+    float max_cell = fmaxf(g->cell_size[0], fmaxf(g->cell_size[1], g->cell_size[2]));
+    float pad = max_cell * 1e-5f + g->tolerance;
+    uint32_t n = s->triangle_count;
+    cl_mem counts = NULL, keys = NULL;
+    cl_kernel k_count = NULL, k_write = NULL, k_ranges = NULL;
+    if (rc == VCT_OK) {
+        counts = vct_buffer_create(ctx, STAGE, "cell counts", 4ull * n, CL_MEM_READ_WRITE, NULL,
+                                   err);
+        k_count = counts ? vct_kernel_create(ctx, p, "grid_count", err) : NULL;
+        k_write = k_count ? vct_kernel_create(ctx, p, "grid_write", err) : NULL;
+        k_ranges = k_write ? vct_kernel_create(ctx, p, "grid_ranges", err) : NULL;
+        rc = k_ranges ? VCT_OK : (int)err->status;
+    }
+    if (rc == VCT_OK)
+        rc = set_args(err, k_count, 5,
+                      ARGS((size_t[]){sizeof(cl_mem), sizeof n, sizeof desc, sizeof pad,
+                                      sizeof counts}),
+                      ARGS((const void *[]){&g->tri_vertices, &n, &desc, &pad, &counts}));
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k_count, n, 0, err);
+    uint64_t total = 0;
+    if (rc == VCT_OK)
+        rc = vct_scan_u32(ctx, counts, counts, n, 0, &total, err);
+    if (rc == VCT_ERR_OVERFLOW)
+        rc = vct_fail(err, VCT_ERR_MEMORY,
+                      "grid: %llu (cell, triangle) references do not fit 32-bit offsets: lower "
+                      "--grid-res",
+                      (unsigned long long)total);
+    g->references = (uint32_t)total;
+    if (rc == VCT_OK) {
+        keys = vct_buffer_create(ctx, STAGE, "cell keys", 4ull * total, CL_MEM_READ_WRITE, NULL,
+                                 err);
+        g->tri_ids = keys ? vct_buffer_create(ctx, STAGE, "cell triangle lists", 4ull * total,
+                                              CL_MEM_READ_WRITE, NULL, err)
+                          : NULL;
+        rc = g->tri_ids ? VCT_OK : (int)err->status;
+    }
+    if (rc == VCT_OK)
+        rc = set_args(err, k_write, 7,
+                      ARGS((size_t[]){sizeof(cl_mem), sizeof n, sizeof desc, sizeof pad,
+                                      sizeof counts, sizeof keys, sizeof(cl_mem)}),
+                      ARGS((const void *[]){&g->tri_vertices, &n, &desc, &pad, &counts, &keys,
+                                            &g->tri_ids}));
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k_write, n, 0, err);
+    if (rc == VCT_OK)
+        rc = vct_sort_pairs_u32(ctx, keys, g->tri_ids, g->references, bits_for(cells), err);
+    if (rc == VCT_OK) {
+        g->cell_start = vct_buffer_create(ctx, STAGE, "cell starts", 4ull * cells,
+                                          CL_MEM_READ_WRITE, NULL, err);
+        g->cell_end = g->cell_start ? vct_buffer_create(ctx, STAGE, "cell ends", 4ull * cells,
+                                                        CL_MEM_READ_WRITE, NULL, err)
+                                    : NULL;
+        rc = g->cell_end ? VCT_OK : (int)err->status;
+    }
+    if (rc == VCT_OK)
+        rc = vct_buffer_fill_u32(ctx, STAGE, g->cell_start, 0, cells, err);
+    if (rc == VCT_OK)
+        rc = vct_buffer_fill_u32(ctx, STAGE, g->cell_end, 0, cells, err);
+    if (rc == VCT_OK)
+        rc = set_args(err, k_ranges, 4,
+                      ARGS((size_t[]){sizeof keys, sizeof(cl_uint), sizeof(cl_mem),
+                                      sizeof(cl_mem)}),
+                      ARGS((const void *[]){&keys, &g->references, &g->cell_start,
+                                            &g->cell_end}));
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k_ranges, g->references, 0, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, STAGE, err);
+    if (k_count)
+        clReleaseKernel(k_count);
+    if (k_write)
+        clReleaseKernel(k_write);
+    if (k_ranges)
+        clReleaseKernel(k_ranges);
+    vct_buffer_release(ctx, counts);
+    vct_buffer_release(ctx, keys);
+    vct_stage_end(ctx);
+    if (rc != VCT_OK) {
+        vct_grid_free(g);
+        return NULL;
+    }
+    return g;
+}
+
+int vct_grid_read(vct_context *ctx, const vct_grid *g, uint32_t *cell_start, uint32_t *cell_end,
+                  uint32_t *tri_ids, vct_error *err) {
+    size_t cells = (size_t)g->res[0] * g->res[1] * g->res[2];
+    int rc = vct_buffer_read(ctx, "grid read", g->cell_start, 0, cells * 4, cell_start, err);
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, "grid read", g->cell_end, 0, cells * 4, cell_end, err);
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, "grid read", g->tri_ids, 0, g->references * 4ull, tri_ids, err);
+    return rc;
+}

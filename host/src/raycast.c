@@ -1,0 +1,163 @@
+/* Ray casting through the triangle grid: images of direct light with hard
+ * shadows, and closest hits for arbitrary rays. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+#include "scene_device.h"
+
+static int set_grid_args(vct_context *ctx, cl_kernel k, const vct_grid *g, const char *stage,
+                         vct_error *err) {
+    vct_grid_desc desc;
+    vct_grid_kernel_args(g, &desc);
+    VCT_CL(err, stage, clSetKernelArg(k, 0, sizeof desc, &desc));
+    VCT_CL(err, stage, clSetKernelArg(k, 1, sizeof(cl_mem), &g->cell_start));
+    VCT_CL(err, stage, clSetKernelArg(k, 2, sizeof(cl_mem), &g->cell_end));
+    VCT_CL(err, stage, clSetKernelArg(k, 3, sizeof(cl_mem), &g->tri_ids));
+    VCT_CL(err, stage, clSetKernelArg(k, 4, sizeof(cl_mem), &g->tri_vertices));
+    (void)ctx;
+    return VCT_OK;
+}
+
+int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint32_t n,
+                   vct_hit *hits, vct_error *err) {
+    const char *stage = "trace rays";
+    if (n == 0)
+        return VCT_OK;
+    cl_program p;
+    int rc = vct_program_get(ctx, "raycast.cl", "", &p, err);
+    if (rc)
+        return rc;
+    cl_mem rb = vct_buffer_create(ctx, stage, "rays", 32ull * n, CL_MEM_READ_ONLY, rays, err);
+    cl_mem hb = rb ? vct_buffer_create(ctx, stage, "hits", 16ull * n, CL_MEM_WRITE_ONLY, NULL, err)
+                   : NULL;
+    cl_kernel k = hb ? vct_kernel_create(ctx, p, "trace_rays", err) : NULL;
+    rc = k ? set_grid_args(ctx, k, g, stage, err) : (int)err->status;
+    if (rc == VCT_OK) {
+        clSetKernelArg(k, 5, sizeof rb, &rb);
+        clSetKernelArg(k, 6, sizeof n, &n);
+        rc = vct_cl_check(err, clSetKernelArg(k, 7, sizeof hb, &hb), stage, "clSetKernelArg");
+    }
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k, n, 0, err);
+    float *raw = rc == VCT_OK ? malloc(16ull * n) : NULL;
+    if (rc == VCT_OK && !raw)
+        rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, stage, hb, 0, 16ull * n, raw, err);
+    if (rc == VCT_OK) {
+        for (uint32_t i = 0; i < n; ++i) {
+            hits[i].t = raw[4 * i];
+            memcpy(&hits[i].triangle, &raw[4 * i + 1], 4);
+            hits[i].u = raw[4 * i + 2];
+            hits[i].v = raw[4 * i + 3];
+        }
+    }
+    free(raw);
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, hb);
+    vct_buffer_release(ctx, rb);
+    return rc;
+}
+
+/* Materials, per-triangle material ids and lights on the device. */
+typedef struct scene_buffers {
+    cl_mem materials, tri_material, lights;
+    cl_uint light_count;
+} scene_buffers;
+
+static void scene_buffers_release(vct_context *ctx, scene_buffers *b) {
+    vct_buffer_release(ctx, b->materials);
+    vct_buffer_release(ctx, b->tri_material);
+    vct_buffer_release(ctx, b->lights);
+}
+
+static int scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
+                              scene_buffers *b, vct_error *err) {
+    memset(b, 0, sizeof *b);
+    vct_material_desc *mats = calloc(s->material_count, sizeof *mats);
+    vct_light_desc *lights = calloc(s->light_count + 1, sizeof *lights);
+    if (!mats || !lights) {
+        free(mats);
+        free(lights);
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
+    }
+    for (uint32_t i = 0; i < s->material_count; ++i)
+        vct_material_desc_make(&s->materials[i], &mats[i]);
+    for (uint32_t i = 0; i < s->light_count; ++i)
+        vct_light_desc_make(&s->lights[i], &lights[i]);
+    b->light_count = s->light_count;
+    b->materials = vct_buffer_create(ctx, stage, "materials", sizeof *mats * s->material_count,
+                                     CL_MEM_READ_ONLY, mats, err);
+    b->tri_material = b->materials ? vct_buffer_create(ctx, stage, "triangle materials",
+                                                       4ull * s->triangle_count, CL_MEM_READ_ONLY,
+                                                       s->triangle_material, err)
+                                   : NULL;
+    b->lights = b->tri_material ? vct_buffer_create(ctx, stage, "lights",
+                                                    sizeof *lights * (s->light_count + 1),
+                                                    CL_MEM_READ_ONLY, lights, err)
+                                : NULL;
+    free(mats);
+    free(lights);
+    if (!b->lights) {
+        scene_buffers_release(ctx, b);
+        return err->status;
+    }
+    return VCT_OK;
+}
+
+int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                       const vct_render_options *opt, vct_image *image, vct_error *err) {
+    const char *stage = "ray cast";
+    memset(image, 0, sizeof *image);
+    vct_camera_desc cam;
+    int rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &cam, err);
+    if (rc)
+        return rc;
+    vct_stage_begin(ctx, stage);
+    cl_program p;
+    rc = vct_program_get(ctx, "raycast.cl", "", &p, err);
+    scene_buffers sb = {0};
+    if (rc == VCT_OK)
+        rc = scene_buffers_make(ctx, s, stage, &sb, err);
+    const size_t pixels = (size_t)opt->width * opt->height;
+    cl_mem img = rc == VCT_OK ? vct_buffer_create(ctx, stage, "image", 16 * pixels,
+                                                  CL_MEM_WRITE_ONLY, NULL, err)
+                              : NULL;
+    cl_kernel k = img ? vct_kernel_create(ctx, p, "render_direct", err) : NULL;
+    if (rc == VCT_OK)
+        rc = k ? set_grid_args(ctx, k, g, stage, err) : (int)err->status;
+    if (rc == VCT_OK) {
+        clSetKernelArg(k, 5, sizeof cam, &cam);
+        clSetKernelArg(k, 6, sizeof(cl_mem), &sb.materials);
+        clSetKernelArg(k, 7, sizeof(cl_mem), &sb.tri_material);
+        clSetKernelArg(k, 8, sizeof(cl_mem), &sb.lights);
+        clSetKernelArg(k, 9, sizeof(cl_uint), &sb.light_count);
+        rc = vct_cl_check(err, clSetKernelArg(k, 10, sizeof img, &img), stage, "clSetKernelArg");
+    }
+    const size_t global[2] = {(size_t)opt->width, (size_t)opt->height};
+    const size_t local[2] = {8, 8};
+    if (rc == VCT_OK)
+        rc = vct_launch_2d(ctx, k, global, local, err);
+    if (rc == VCT_OK) {
+        image->width = opt->width;
+        image->height = opt->height;
+        image->rgba = malloc(16 * pixels);
+        rc = image->rgba ? vct_buffer_read(ctx, stage, img, 0, 16 * pixels, image->rgba, err)
+                         : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
+    }
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, img);
+    scene_buffers_release(ctx, &sb);
+    vct_stage_end(ctx);
+    if (rc != VCT_OK)
+        vct_image_free(image);
+    return rc;
+}
+
+void vct_image_free(vct_image *image) {
+    free(image->rgba);
+    image->rgba = NULL;
+}

@@ -1,0 +1,61 @@
+/* Direct illumination from punctual lights at a surface point, with hard
+ * shadows from any-hit rays through the grid. Lambert: albedo / pi. */
+#ifndef VCT_DIRECT_LIGHT_H
+#define VCT_DIRECT_LIGHT_H
+
+#include "grid_traverse.h"
+#include "vct_types.h"
+
+#define VCT_INV_PI 0.318309886f
+
+/* Offset that lifts a point off its surface: relative to the scene extent and
+ * to the point's own magnitude (float spacing grows with it). */
+inline float surface_epsilon(const grid_view *g, float3 p) {
+    const float3 ap = fabs(p);
+    return g->desc.origin.w * 1e-5f + fmax(ap.x, fmax(ap.y, ap.z)) * 2e-6f;
+}
+
+/* Radiance reflected towards the viewer by a Lambertian point p with normal n
+ * (facing the viewer) from every light. */
+inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *lights,
+                             uint light_count, float3 p, float3 n, float3 albedo) {
+    float3 sum = (float3)(0.0f);
+    const float eps = surface_epsilon(g, p);
+    const float3 origin = p + n * eps;
+    for (uint i = 0; i < light_count; ++i) {
+        const vct_light_desc L = lights[i];
+        const uint kind = (uint)L.position.w;
+        float3 wi, radiant;
+        float dist;
+        if (kind == VCT_LIGHT_KIND_DIRECTIONAL) {
+            wi = -L.direction.xyz;
+            dist = INFINITY;
+            radiant = L.color.xyz;
+        } else {
+            const float3 to = L.position.xyz - origin;
+            const float d2 = dot(to, to);
+            if (!(d2 > 0.0f))
+                continue;
+            dist = sqrt(d2);
+            wi = to / dist;
+            radiant = L.color.xyz / d2;
+            if (kind == VCT_LIGHT_KIND_SPOT) {
+                const float cd = dot(-wi, L.direction.xyz);
+                const float cos_outer = L.direction.w, cos_inner = L.color.w;
+                const float x = clamp((cd - cos_outer) / fmax(cos_inner - cos_outer, 1e-6f), 0.0f,
+                                      1.0f);
+                radiant *= x * x;
+            }
+        }
+        const float cos_theta = dot(n, wi);
+        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
+            continue;
+        hit_record h;
+        if (grid_trace(g, origin, wi, 0.0f, dist * (1.0f - 1e-6f) - eps, 1, &h))
+            continue;
+        sum += radiant * cos_theta;
+    }
+    return albedo * VCT_INV_PI * sum;
+}
+
+#endif

@@ -1,0 +1,95 @@
+/* Ray traversal of the uniform triangle grid by 3D-DDA (Amanatides and Woo).
+ * A triangle stored in several cells is accepted only when its hit lies in
+ * the cell being visited (up to a small slack), so the first hit found is the
+ * closest. Epsilons are relative to the scene's extent. */
+#ifndef VCT_GRID_TRAVERSE_H
+#define VCT_GRID_TRAVERSE_H
+
+#include "ray_tri.h"
+#include "vct_types.h"
+
+typedef struct grid_view {
+    vct_grid_desc desc;
+    __global const uint *cell_start;
+    __global const uint *cell_end;
+    __global const uint *tri_ids;
+    __global const float4 *tri_vertices; /* 3 per triangle */
+} grid_view;
+
+typedef struct hit_record {
+    float t, u, v;
+    uint tri;
+} hit_record;
+
+inline uint grid_cell_index(uint3 c, uint4 res) {
+    return c.x + res.x * (c.y + res.y * c.z);
+}
+
+/* Closest hit in (tmin, tmax]; any_hit: stop at the first one (shadow rays). */
+inline int grid_trace(const grid_view *g, float3 org, float3 dir, float tmin, float tmax,
+                      int any_hit, hit_record *hit) {
+    const float3 lo = g->desc.origin.xyz;
+    const float3 size = g->desc.cell_size.xyz;
+    const uint4 res = g->desc.res;
+    const float3 hi = lo + size * convert_float3(res.xyz);
+    const float3 inv = 1.0f / dir; /* +-inf on zero components */
+    /* fmin/fmax drop the NaN of 0 * inf, so axis-parallel rays work. */
+    const float3 t0 = (lo - org) * inv, t1 = (hi - org) * inv;
+    const float3 tnear = fmin(t0, t1), tfar = fmax(t0, t1);
+    float enter = fmax(fmax(tnear.x, tnear.y), fmax(tnear.z, tmin));
+    float leave = fmin(fmin(tfar.x, tfar.y), fmin(tfar.z, tmax));
+    if (!(enter <= leave))
+        return 0;
+    const ray_shear shear = ray_shear_make(org, dir);
+    const float slack = g->desc.cell_size.w / length(dir);
+
+    const float3 p = org + dir * enter;
+    const int3 last = convert_int3(res.xyz) - 1;
+    int3 cell = clamp(convert_int3_rtn((p - lo) * g->desc.inv_cell.xyz), (int3)(0), last);
+    const int3 step = (int3)(dir.x > 0.0f ? 1 : -1, dir.y > 0.0f ? 1 : -1, dir.z > 0.0f ? 1 : -1);
+
+    float best = tmax;
+    int found = 0;
+    for (;;) {
+        /* Exit distances of this cell, from its bounds (no accumulated drift). */
+        const float3 next_bound =
+            lo + size * convert_float3(cell + (int3)(step.x > 0, step.y > 0, step.z > 0));
+        float3 tnext = (next_bound - org) * inv;
+        tnext = select(tnext, (float3)(INFINITY), isnan(tnext) || dir == 0.0f);
+        const float cell_exit = fmin(fmin(tnext.x, tnext.y), tnext.z);
+        const uint index = grid_cell_index(convert_uint3(cell), res);
+        const uint end = g->cell_end[index];
+        for (uint i = g->cell_start[index]; i < end; ++i) {
+            const uint tri = g->tri_ids[i];
+            float t, u, v;
+            if (ray_triangle(&shear, g->tri_vertices[3 * tri].xyz,
+                             g->tri_vertices[3 * tri + 1].xyz, g->tri_vertices[3 * tri + 2].xyz,
+                             tmin, best, &t, &u, &v) &&
+                t <= cell_exit + slack) {
+                best = t;
+                found = 1;
+                hit->t = t;
+                hit->u = u;
+                hit->v = v;
+                hit->tri = tri;
+                if (any_hit)
+                    return 1;
+            }
+        }
+        if (found && best <= cell_exit)
+            return 1;
+        if (cell_exit > leave)
+            return found;
+        /* Step along the axis whose boundary comes first. */
+        if (tnext.x <= tnext.y && tnext.x <= tnext.z)
+            cell.x += step.x;
+        else if (tnext.y <= tnext.z)
+            cell.y += step.y;
+        else
+            cell.z += step.z;
+        if (any(cell < (int3)(0)) || any(cell > last))
+            return found;
+    }
+}
+
+#endif

@@ -1,0 +1,69 @@
+/* Ray casting: primary visibility through the triangle grid, direct light
+ * from every punctual light with hard shadows, emission, Lambert shading. */
+#include "camera.h"
+#include "direct_light.h"
+#include "grid_traverse.h"
+#include "vct_types.h"
+
+#define GRID_ARGS                                                                                  \
+    vct_grid_desc grid, __global const uint *cell_start, __global const uint *cell_end,            \
+        __global const uint *tri_ids, __global const float4 *tri_vertices
+
+inline grid_view make_grid_view(vct_grid_desc desc, __global const uint *cell_start,
+                                __global const uint *cell_end, __global const uint *tri_ids,
+                                __global const float4 *tri_vertices) {
+    grid_view g;
+    g.desc = desc;
+    g.cell_start = cell_start;
+    g.cell_end = cell_end;
+    g.tri_ids = tri_ids;
+    g.tri_vertices = tri_vertices;
+    return g;
+}
+
+/* Geometric normal of triangle tri facing against dir; position from barycentrics. */
+inline float3 surface_at(const grid_view *g, const hit_record *h, float3 dir, float3 *normal) {
+    const float3 a = g->tri_vertices[3 * h->tri].xyz, b = g->tri_vertices[3 * h->tri + 1].xyz,
+                 c = g->tri_vertices[3 * h->tri + 2].xyz;
+    float3 n = cross(b - a, c - a);
+    const float len = length(n);
+    n = len > 0.0f ? n / len : -dir;
+    *normal = dot(n, dir) > 0.0f ? -n : n;
+    return a + h->u * (b - a) + h->v * (c - a);
+}
+
+__kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
+                            __global const vct_material_desc *materials,
+                            __global const uint *tri_material,
+                            __global const vct_light_desc *lights, uint light_count,
+                            __global float4 *image) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= cam.size.x || y >= cam.size.y)
+        return;
+    const grid_view g = make_grid_view(grid, cell_start, cell_end, tri_ids, tri_vertices);
+    const float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
+    float3 radiance = (float3)(0.0f);
+    hit_record h;
+    if (grid_trace(&g, cam.position.xyz, dir, 0.0f, INFINITY, 0, &h)) {
+        float3 n;
+        const float3 p = surface_at(&g, &h, dir, &n);
+        const vct_material_desc m = materials[tri_material[h.tri]];
+        radiance = m.emission.xyz + direct_lambert(&g, lights, light_count, p, n, m.albedo.xyz);
+    }
+    image[y * cam.size.x + x] = (float4)(radiance, 1.0f);
+}
+
+/* Closest hits for arbitrary rays (tests, tools): t < 0 on a miss. */
+__kernel void trace_rays(GRID_ARGS, __global const vct_ray_desc *rays, uint n,
+                         __global vct_hit_desc *hits) {
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const grid_view g = make_grid_view(grid, cell_start, cell_end, tri_ids, tri_vertices);
+    const vct_ray_desc r = rays[i];
+    hit_record h;
+    if (grid_trace(&g, r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w, 0, &h))
+        hits[i] = (float4)(h.t, as_float(h.tri), h.u, h.v);
+    else
+        hits[i] = (float4)(-1.0f, as_float(0xffffffffu), 0.0f, 0.0f);
+}
