@@ -32,7 +32,7 @@ inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *
             dist = INFINITY;
             radiant = L.color.xyz;
         } else {
-            const float3 to = L.position.xyz - origin;
+            const float3 to = L.position.xyz - p;
             const float d2 = dot(to, to);
             if (!(d2 > 0.0f))
                 continue;
@@ -50,8 +50,9 @@ inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *
         const float cos_theta = dot(n, wi);
         if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
             continue;
+        /* The shadow ray starts lifted off the surface; shading uses p itself. */
         hit_record h;
-        if (grid_trace(g, origin, wi, 0.0f, dist * (1.0f - 1e-6f) - eps, 1, &h))
+        if (grid_trace(g, origin, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h))
             continue;
         sum += radiant * cos_theta;
     }

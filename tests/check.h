@@ -8,6 +8,8 @@
 
 #include "vct/vct.h"
 
+#define CHECK_PI 3.14159265358979323846
+
 static int check_failures;
 static int check_count;
 

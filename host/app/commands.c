@@ -102,7 +102,7 @@ int cmd_info(const cli_options *opt) {
 static void print_stats(const vct_context *ctx) {
     const vct_stage_stat *st;
     int n = vct_stats(ctx, &st);
-    printf("%-20s %10s %10s %10s %9s\n", "stage", "device ms", "host ms", "MiB held", "launches");
+    printf("%-20s %10s %10s %10s %9s\n", "stage", "device ms", "host ms", "peak MiB", "launches");
     for (int i = 0; i < n; ++i)
         printf("%-20s %10.2f %10.2f %10.2f %9d\n", st[i].name, st[i].device_ms, st[i].host_ms,
                st[i].mib, st[i].launches);

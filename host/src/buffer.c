@@ -37,6 +37,8 @@ cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, 
         return NULL;
     }
     ctx->bytes_live += (double)bytes;
+    if (ctx->bytes_live > ctx->bytes_stage_peak)
+        ctx->bytes_stage_peak = ctx->bytes_live;
     return mem;
 }
 

@@ -55,6 +55,7 @@ struct vct_context {
     vct_kernel_count kernel_counts[VCT_MAX_KERNEL_NAMES];
     int kernel_count_n;
     double bytes_live; /* device bytes currently allocated through vct_buffer */
+    double bytes_stage_peak; /* most bytes live during the current stage */
     /* Tuning chosen from the device type (see primitives.c). */
     size_t scan_group_size;
     size_t scan_groups;

@@ -30,6 +30,7 @@ void vct_stage_begin(vct_context *ctx, const char *name) {
     }
     ctx->current_stage = i;
     ctx->stage_host_start = vct_now_ms();
+    ctx->bytes_stage_peak = ctx->bytes_live;
 }
 
 void vct_stage_end(vct_context *ctx) {
@@ -39,7 +40,9 @@ void vct_stage_end(vct_context *ctx) {
     drain_events(ctx, NULL);
     vct_stage_stat *s = &ctx->stages[ctx->current_stage];
     s->host_ms += vct_now_ms() - ctx->stage_host_start;
-    s->mib = ctx->bytes_live / (1024.0 * 1024.0);
+    const double mib = ctx->bytes_stage_peak / (1024.0 * 1024.0);
+    if (mib > s->mib)
+        s->mib = mib;
     ctx->current_stage = -1;
 }
 

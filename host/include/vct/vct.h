@@ -65,7 +65,7 @@ typedef struct vct_stage_stat {
     char name[48];
     double device_ms; /* sum of kernel/copy event durations */
     double host_ms;   /* wall time the host spent in the stage */
-    double mib;       /* device memory the stage holds at its end */
+    double mib;       /* peak device memory allocated through vct while the stage ran */
     int launches;
 } vct_stage_stat;
 

@@ -1,0 +1,283 @@
+/* The triangle grid and its traversal: per-cell lists against an exact
+ * triangle/box test on the host; closest hits against a double-precision
+ * brute force over every triangle on random and axis-parallel rays; and
+ * watertightness: rays through shared vertices and edges of a closed mesh
+ * never pass through. */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "mesh_gen.h"
+#include "internal.h"
+#include "tri_box.h"
+
+/* Möller-Trumbore in double: the independent reference. Returns t or -1, and
+ * the distance of the hit to the triangle's border in barycentric units. */
+static double ref_intersect(const double o[3], const double d[3], const float *a, const float *b,
+                            const float *c, double *border) {
+    double e1[3], e2[3], p[3], s[3], q[3];
+    for (int k = 0; k < 3; ++k) {
+        e1[k] = (double)b[k] - a[k];
+        e2[k] = (double)c[k] - a[k];
+        s[k] = o[k] - a[k];
+    }
+    p[0] = d[1] * e2[2] - d[2] * e2[1];
+    p[1] = d[2] * e2[0] - d[0] * e2[2];
+    p[2] = d[0] * e2[1] - d[1] * e2[0];
+    double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+    if (det == 0.0)
+        return -1;
+    double inv = 1.0 / det;
+    double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) * inv;
+    q[0] = s[1] * e1[2] - s[2] * e1[1];
+    q[1] = s[2] * e1[0] - s[0] * e1[2];
+    q[2] = s[0] * e1[1] - s[1] * e1[0];
+    double v = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) * inv;
+    double t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) * inv;
+    *border = fmin(fmin(u, v), 1.0 - u - v);
+    if (u < 0 || v < 0 || u + v > 1 || t <= 0)
+        return -1;
+    return t;
+}
+
+static vct_scene *scene_of(const test_mesh *m) {
+    vct_error err = {0};
+    uint32_t *mats = calloc(m->nt, 4);
+    vct_scene *s = vct_scene_from_arrays(m->pos, m->nv, m->tri, m->nt, mats, NULL, 0, &err);
+    free(mats);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    return s;
+}
+
+/* Every triangle that truly overlaps a cell is listed there (conservative);
+ * every listed one overlaps the cell widened by 2e-5 of the scene's extent
+ * plus 8 float ulps of its coordinates (tight); lists are ascending
+ * (deterministic). */
+static void check_cells(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                        const char *name) {
+    size_t cells = (size_t)g->res[0] * g->res[1] * g->res[2];
+    uint32_t *start = malloc(4 * cells), *end = malloc(4 * cells);
+    uint32_t *ids = malloc(4ull * g->references + 4);
+    vct_error err = {0};
+    REQUIRE_OK(vct_grid_read(ctx, g, start, end, ids, &err), err);
+    uint32_t missing = 0, loose = 0, unordered = 0;
+    char *listed = calloc(s->triangle_count, 1);
+    float extent = 0.0f, magnitude = 0.0f;
+    for (int k = 0; k < 3; ++k) {
+        extent = fmaxf(extent, s->bounds_max[k] - s->bounds_min[k]);
+        magnitude = fmaxf(magnitude, fmaxf(fabsf(s->bounds_min[k]), fabsf(s->bounds_max[k])));
+    }
+    const float widen = 2e-5f * extent + 8.0f * FLT_EPSILON * magnitude;
+    for (uint32_t z = 0; z < g->res[2]; ++z)
+        for (uint32_t y = 0; y < g->res[1]; ++y)
+            for (uint32_t x = 0; x < g->res[0]; ++x) {
+                size_t c = x + g->res[0] * ((size_t)y + g->res[1] * z);
+                float centre[3], half[3], wide[3];
+                uint32_t idx[3] = {x, y, z};
+                for (int k = 0; k < 3; ++k) {
+                    centre[k] = g->origin[k] + (idx[k] + 0.5f) * g->cell_size[k];
+                    half[k] = 0.5f * g->cell_size[k] * (1.0f - 1e-4f);
+                    wide[k] = 0.5f * g->cell_size[k] + widen;
+                }
+                for (uint32_t i = start[c]; i < end[c]; ++i) {
+                    listed[ids[i]] = 1;
+                    if (i > start[c] && ids[i] <= ids[i - 1])
+                        ++unordered;
+                }
+                for (uint32_t t = 0; t < s->triangle_count; ++t) {
+                    const uint32_t *tr = &s->triangles[3 * t];
+                    const float *a = &s->positions[3 * tr[0]], *b = &s->positions[3 * tr[1]],
+                                *cc = &s->positions[3 * tr[2]];
+                    int in_list = 0;
+                    for (uint32_t i = start[c]; i < end[c] && !in_list; ++i)
+                        in_list = ids[i] == t;
+                    if (!in_list && tri_box_overlap(a, b, cc, centre, half))
+                        ++missing;
+                    if (in_list && !tri_box_overlap(a, b, cc, centre, wide) && loose++ < 3)
+                        fprintf(stderr, "%s: triangle %u listed in cell (%u %u %u)\n", name,
+                                t, x, y, z);
+                }
+            }
+    CHECK(missing == 0, "%s: %u (cell, triangle) overlaps missing from the grid", name, missing);
+    CHECK(loose == 0, "%s: %u listed triangles do not touch their cell", name, loose);
+    CHECK(unordered == 0, "%s: %u cell lists not ascending", name, unordered);
+    free(listed);
+    free(start);
+    free(end);
+    free(ids);
+}
+
+/* Random rays (some axis-parallel, some starting inside the scene) against
+ * the brute force; disagreements are allowed only for grazing hits within
+ * 1e-5 (barycentric) of a triangle's border. */
+static void check_rays(vct_context *ctx, const vct_scene *s, const vct_grid *g, uint32_t n,
+                       uint64_t seed, const char *name) {
+    float *rays = malloc(32ull * n);
+    vct_hit *hits = malloc(sizeof *hits * n);
+    float lo[3], ext[3];
+    double extent = 0;
+    for (int k = 0; k < 3; ++k) {
+        ext[k] = s->bounds_max[k] - s->bounds_min[k];
+        lo[k] = s->bounds_min[k] - 0.25f * ext[k];
+        extent = fmax(extent, ext[k]);
+    }
+    for (uint32_t i = 0; i < n; ++i) {
+        float *r = &rays[8 * i];
+        double len = 0;
+        for (int k = 0; k < 3; ++k) {
+            r[k] = lo[k] + 1.5f * ext[k] * check_randf(&seed);
+            r[4 + k] = check_randf(&seed) * 2.0f - 1.0f;
+        }
+        if (i % 7 == 0) /* axis-parallel: zero direction components */
+            r[4 + (i / 7) % 3] = 0.0f, r[4 + (i / 7 + 1) % 3] = 0.0f;
+        for (int k = 0; k < 3; ++k)
+            len += (double)r[4 + k] * r[4 + k];
+        if (len == 0)
+            r[4] = 1.0f, len = 1;
+        for (int k = 0; k < 3; ++k)
+            r[4 + k] = (float)(r[4 + k] / sqrt(len));
+        r[3] = 0.0f;
+        r[7] = INFINITY;
+    }
+    vct_error err = {0};
+    REQUIRE_OK(vct_trace_rays(ctx, g, rays, n, hits, &err), err);
+    uint32_t wrong = 0, grazing = 0, hits_ref = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+        const float *r = &rays[8 * i];
+        double o[3] = {r[0], r[1], r[2]}, d[3] = {r[4], r[5], r[6]};
+        double best = INFINITY, best_border = 0;
+        int any_grazing = 0;
+        for (uint32_t t = 0; t < s->triangle_count; ++t) {
+            const uint32_t *tr = &s->triangles[3 * t];
+            double border = 1.0;
+            double th = ref_intersect(o, d, &s->positions[3 * tr[0]], &s->positions[3 * tr[1]],
+                                      &s->positions[3 * tr[2]], &border);
+            if (fabs(border) < 1e-5)
+                any_grazing = 1;
+            if (th > 0 && th < best)
+                best = th, best_border = border;
+        }
+        (void)best_border;
+        double got = hits[i].t >= 0 ? hits[i].t : INFINITY;
+        hits_ref += isfinite(best);
+        int agree = (!isfinite(best) && !isfinite(got)) ||
+                    (isfinite(best) && isfinite(got) &&
+                     fabs(best - got) <= 1e-5 * (extent + fabs(o[0]) + fabs(o[1]) + fabs(o[2])));
+        if (!agree && any_grazing) {
+            ++grazing;
+        } else if (!agree && wrong++ < 5) {
+            fprintf(stderr, "%s: ray %u: grid t=%.9g, brute force t=%.9g\n", name, i, got, best);
+        }
+    }
+    CHECK(wrong == 0, "%s: %u of %u rays disagree with the brute force", name, wrong, n);
+    CHECK(hits_ref > n / 20, "%s: only %u rays hit anything: a weak test", name, hits_ref);
+    printf("%s: %u rays, %u hits, %u grazing disagreements tolerated\n", name, n, hits_ref,
+           grazing);
+    free(rays);
+    free(hits);
+}
+
+/* Rays aimed exactly at vertices and edge midpoints of a closed mesh, from
+ * inside and from outside: each must hit. */
+static void check_watertight(vct_context *ctx, const test_mesh *m, const float centre[3],
+                             const char *name) {
+    vct_scene *s = scene_of(m);
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    uint32_t n = m->nv + 3 * m->nt;
+    float *rays = malloc(32ull * 2 * n);
+    vct_hit *hits = malloc(sizeof *hits * 2 * n);
+    for (uint32_t i = 0; i < n; ++i) {
+        float target[3];
+        if (i < m->nv) {
+            memcpy(target, &m->pos[3 * i], 12);
+        } else {
+            uint32_t e = i - m->nv, t = e / 3, k = e % 3;
+            const float *a = &m->pos[3 * m->tri[3 * t + k]],
+                        *b = &m->pos[3 * m->tri[3 * t + (k + 1) % 3]];
+            for (int c = 0; c < 3; ++c)
+                target[c] = 0.5f * a[c] + 0.5f * b[c];
+        }
+        float *in = &rays[16 * i], *out = &rays[16 * i + 8];
+        for (int c = 0; c < 3; ++c) {
+            /* From inside: centre towards the target. */
+            in[c] = centre[c];
+            in[4 + c] = target[c] - centre[c];
+            /* From outside: through the target towards the centre. */
+            out[c] = centre[c] + 3.0f * (target[c] - centre[c]);
+            out[4 + c] = centre[c] - out[c];
+        }
+        in[3] = out[3] = 0.0f;
+        in[7] = out[7] = INFINITY;
+    }
+    REQUIRE_OK(vct_trace_rays(ctx, g, rays, 2 * n, hits, &err), err);
+    uint32_t leaks = 0;
+    for (uint32_t i = 0; i < 2 * n; ++i)
+        leaks += !(hits[i].t > 0);
+    CHECK(leaks == 0, "%s: %u of %u rays through vertices and edges leaked", name, leaks, 2 * n);
+    printf("%s: %u rays through shared vertices and edges, %u leaks\n", name, 2 * n, leaks);
+    free(rays);
+    free(hits);
+    vct_grid_free(g);
+    vct_scene_free(s);
+}
+
+static void run_scene(vct_context *ctx, vct_scene *s, const uint32_t *res, uint32_t rays,
+                      int cells, const char *name) {
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, s, res, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    printf("%s: %u triangles, grid %ux%ux%u, %u references\n", name, s->triangle_count,
+           g->res[0], g->res[1], g->res[2], g->references);
+    if (cells)
+        check_cells(ctx, s, g, name);
+    check_rays(ctx, s, g, rays, 42, name);
+    vct_grid_free(g);
+}
+
+int main(void) {
+    vct_context *ctx = check_context();
+    const float origin[3] = {0, 0, 0}, far_centre[3] = {1e5f, -2e5f, 3e5f};
+
+    test_mesh soup = mesh_soup(1500, 0.0f, 7);
+    vct_scene *s = scene_of(&soup);
+    run_scene(ctx, s, NULL, 4000, 1, "soup");
+    const uint32_t coarse[3] = {1, 1, 1}, fine[3] = {37, 5, 64};
+    run_scene(ctx, s, coarse, 2000, 1, "soup, one cell");
+    run_scene(ctx, s, fine, 4000, 1, "soup, 37x5x64");
+    CHECK(s->degenerate_triangles >= 15, "soup: %u degenerate triangles counted",
+          s->degenerate_triangles);
+    vct_scene_free(s);
+    mesh_free(&soup);
+
+    test_mesh far_soup = mesh_soup(800, 1e5f, 9);
+    s = scene_of(&far_soup);
+    run_scene(ctx, s, NULL, 3000, 1, "soup at 1e5");
+    vct_scene_free(s);
+    mesh_free(&far_soup);
+
+    test_mesh sphere = mesh_icosphere(3, 1.0f, origin);
+    s = scene_of(&sphere);
+    run_scene(ctx, s, NULL, 3000, 1, "icosphere");
+    vct_scene_free(s);
+    check_watertight(ctx, &sphere, origin, "icosphere watertight");
+    mesh_free(&sphere);
+
+    test_mesh far_sphere = mesh_icosphere(3, 10.0f, far_centre);
+    check_watertight(ctx, &far_sphere, far_centre, "icosphere at 3e5 watertight");
+    mesh_free(&far_sphere);
+
+    char path[1024];
+    const char *src = getenv("VCT_SOURCE_DIR");
+    snprintf(path, sizeof path, "%s/scenes/cornell_box.obj", src ? src : ".");
+    vct_error err = {0};
+    s = vct_scene_load(path, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    run_scene(ctx, s, NULL, 4000, 1, "cornell box");
+    vct_scene_free(s);
+
+    vct_context_destroy(ctx);
+    return check_exit("test_grid");
+}
