@@ -1,0 +1,77 @@
+#!/bin/sh
+# Bad input to `vct render`: each case must exit non-zero, print a message
+# naming the problem, and leave no output file behind.
+# Usage: cli_errors.sh PATH/TO/vct
+set -u
+VCT="$1"
+DIR=$(mktemp -d)
+trap 'rm -rf "$DIR"' EXIT
+cd "$DIR" || exit 1
+failures=0
+
+# expect_failure NAME EXPECTED-TEXT ARGS...
+expect_failure() {
+    name="$1"
+    text="$2"
+    shift 2
+    rm -f out.png out.pfm
+    "$VCT" "$@" >stdout.txt 2>stderr.txt
+    rc=$?
+    if [ "$rc" -eq 0 ]; then
+        echo "FAIL $name: exit code 0"; failures=$((failures + 1)); return
+    fi
+    if ! grep -q -- "$text" stderr.txt; then
+        echo "FAIL $name: stderr lacks \"$text\":"; cat stderr.txt; failures=$((failures + 1)); return
+    fi
+    if ls out.* >/dev/null 2>&1; then
+        echo "FAIL $name: an output file was left behind"; failures=$((failures + 1)); return
+    fi
+    echo "ok   $name (exit $rc): $(head -n 1 stderr.txt)"
+}
+
+printf 'v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > nan.obj
+printf 'v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n' > inf.obj
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' > index.obj
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n' > empty.obj
+printf 'mtllib t.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > texture.obj
+printf 'newmtl m\nKd 1 1 1\nmap_Kd missing.png\n' > t.mtl
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > ok.obj
+printf 'this is not a scene\n' > garbage.gltf
+
+expect_failure "missing file" "absent.obj" render absent.obj -o out.png
+expect_failure "NaN vertex" "nan.obj: mesh \"defaultobject\" vertex 0 is not finite" render nan.obj -o out.png
+expect_failure "infinite vertex" "vertex 1 is not finite" render inf.obj -o out.png
+expect_failure "index out of range" "index.obj: .*index out of range" render index.obj -o out.png
+expect_failure "empty scene" "empty.obj: no triangles" render empty.obj -o out.png
+expect_failure "missing texture" "names texture \"missing.png\", which does not exist" render texture.obj -o out.png
+expect_failure "unreadable glTF" "garbage.gltf" render garbage.gltf -o out.png
+expect_failure "bad output name" "must end in .png or .pfm" render ok.obj -o out.jpg
+expect_failure "bad size" "--size" render ok.obj --size 0 10 -o out.png
+expect_failure "bad number" "not a finite number" render ok.obj --point-light 1 2 x 1 1 1 -o out.png
+expect_failure "unknown option" "unknown option --bogus" render ok.obj --bogus -o out.png
+expect_failure "no such device" "device 99 does not exist" render ok.obj --device 99 -o out.png
+expect_failure "degenerate camera" "do not define a view" render ok.obj --camera-pos 0 0 5 --look-at 0 0 5 -o out.png
+expect_failure "unwritable output" "could not write\|cannot create" render ok.obj -o /proc/out.png
+
+# A scene with degenerate triangles renders, and says how many it has.
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 0 1\nv 1 0 1\nf 1 2 3\nf 1 2 5\nf 1 5 4\n' > degenerate.obj
+if "$VCT" render degenerate.obj --point-light 0.5 2 0.5 1 1 1 --size 32 32 -o out.pfm 2>stderr.txt >/dev/null &&
+    grep -q "1 degenerate" stderr.txt && [ -s out.pfm ]; then
+    echo "ok   degenerate triangles counted and rendered"
+else
+    echo "FAIL degenerate triangles:"; cat stderr.txt; failures=$((failures + 1))
+fi
+
+# A copy of the binary with no kernel directory beside it uses its embedded
+# kernels and renders the same image bit for bit.
+mkdir -p lone && cp "$VCT" lone/vct
+if "$VCT" render ok.obj --point-light 0.2 0.2 1 1 1 1 --size 40 30 -o a.pfm >/dev/null 2>&1 &&
+    VCT_KERNEL_DIR= ./lone/vct render ok.obj --point-light 0.2 0.2 1 1 1 1 --size 40 30 -o b.pfm \
+        >/dev/null 2>&1 && cmp -s a.pfm b.pfm; then
+    echo "ok   a copied binary renders with its embedded kernels, identically"
+else
+    echo "FAIL copied binary"; failures=$((failures + 1))
+fi
+
+[ "$failures" -eq 0 ] || { echo "$failures failures"; exit 1; }
+echo "all bad-input cases rejected cleanly"
