@@ -42,8 +42,8 @@ inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *
             if (kind == VCT_LIGHT_KIND_SPOT) {
                 const float cd = dot(-wi, L.direction.xyz);
                 const float cos_outer = L.direction.w, cos_inner = L.color.w;
-                const float x = clamp((cd - cos_outer) / fmax(cos_inner - cos_outer, 1e-6f), 0.0f,
-                                      1.0f);
+                const float x =
+                    clamp((cd - cos_outer) / fmax(cos_inner - cos_outer, 1e-6f), 0.0f, 1.0f);
                 radiant *= x * x;
             }
         }

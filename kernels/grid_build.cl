@@ -4,7 +4,7 @@
  * that the exact triangle/box test accepts; the host scans the counts into
  * write offsets; grid_write emits (cell, triangle) pairs in triangle order; a
  * stable radix sort by cell then keeps triangles ascending within a cell;
- * grid_ranges records each cell's [start, end). Cell boxes are widened by a
+ * grid_ranges records each cell's [start, end) and an occupancy bit. Cell boxes are widened by a
  * small fraction of a cell so that a triangle on a cell face is kept by both
  * cells: the grid is conservative, never missing a triangle. */
 #include "tri_box.h"
@@ -65,22 +65,25 @@ __kernel void grid_write(__global const float4 *tri_vertices, uint triangles, vc
                 }
 }
 
-__kernel void grid_ranges(__global const uint *cell_keys, uint n, __global uint *cell_start,
-                          __global uint *cell_end) {
+/* cell_ranges: (start, end) pairs, zeroed beforehand; cell_bits: one bit per
+ * non-empty cell, zeroed beforehand (atomic_or: the result is order-free). */
+__kernel void grid_ranges(__global const uint *cell_keys, uint n, __global uint *cell_ranges,
+                          __global uint *cell_bits) {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
     const uint key = cell_keys[i];
-    if (i == 0 || cell_keys[i - 1] != key)
-        cell_start[key] = i;
+    if (i == 0 || cell_keys[i - 1] != key) {
+        cell_ranges[2 * key] = i;
+        atomic_or(&cell_bits[key >> 5], 1u << (key & 31u));
+    }
     if (i == n - 1 || cell_keys[i + 1] != key)
-        cell_end[key] = i + 1;
+        cell_ranges[2 * key + 1] = i + 1;
 }
 
 /* Triangle vertices gathered once into 3 float4 per triangle for traversal. */
-__kernel void grid_gather_vertices(__global const float *positions,
-                                   __global const uint *triangles, uint count,
-                                   __global float4 *tri_vertices) {
+__kernel void grid_gather_vertices(__global const float *positions, __global const uint *triangles,
+                                   uint count, __global float4 *tri_vertices) {
     const uint t = get_global_id(0);
     if (t >= count)
         return;

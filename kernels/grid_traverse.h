@@ -10,8 +10,8 @@
 
 typedef struct grid_view {
     vct_grid_desc desc;
-    __global const uint *cell_start;
-    __global const uint *cell_end;
+    __global const uint *cell_bits;   /* 1 bit per cell: holds any triangle */
+    __global const uint *cell_ranges; /* (start, end) per cell into tri_ids */
     __global const uint *tri_ids;
     __global const float4 *tri_vertices; /* 3 per triangle */
 } grid_view;
@@ -26,8 +26,9 @@ inline uint grid_cell_index(uint3 c, uint4 res) {
 }
 
 /* Closest hit in (tmin, tmax]; any_hit: stop at the first one (shadow rays). */
-inline int grid_trace(const grid_view *g, float3 org, float3 dir, float tmin, float tmax,
-                      int any_hit, hit_record *hit) {
+__attribute__((always_inline)) inline int grid_trace(const grid_view *g, float3 org, float3 dir,
+                                                     float tmin, float tmax, int any_hit,
+                                                     hit_record *hit) {
     const float3 lo = g->desc.origin.xyz;
     const float3 size = g->desc.cell_size.xyz;
     const uint4 res = g->desc.res;
@@ -47,46 +48,56 @@ inline int grid_trace(const grid_view *g, float3 org, float3 dir, float tmin, fl
     const int3 last = convert_int3(res.xyz) - 1;
     int3 cell = clamp(convert_int3_rtn((p - lo) * g->desc.inv_cell.xyz), (int3)(0), last);
     const int3 step = (int3)(dir.x > 0.0f ? 1 : -1, dir.y > 0.0f ? 1 : -1, dir.z > 0.0f ? 1 : -1);
+    /* Exit distances of the first cell from its bounds, then one cell width
+     * (tdelta) per step; axes the ray does not move along never come first. */
+    const int3 parallel = dir == 0.0f;
+    const float3 next_bound =
+        lo + size * convert_float3(cell + (int3)(step.x > 0, step.y > 0, step.z > 0));
+    float3 tnext = select((next_bound - org) * inv, (float3)(INFINITY), parallel);
+    const float3 tdelta = select(fabs(size * inv), (float3)(INFINITY), parallel);
 
     float best = tmax;
     int found = 0;
     for (;;) {
-        /* Exit distances of this cell, from its bounds (no accumulated drift). */
-        const float3 next_bound =
-            lo + size * convert_float3(cell + (int3)(step.x > 0, step.y > 0, step.z > 0));
-        float3 tnext = (next_bound - org) * inv;
-        tnext = select(tnext, (float3)(INFINITY), isnan(tnext) || dir == 0.0f);
         const float cell_exit = fmin(fmin(tnext.x, tnext.y), tnext.z);
         const uint index = grid_cell_index(convert_uint3(cell), res);
-        const uint end = g->cell_end[index];
-        for (uint i = g->cell_start[index]; i < end; ++i) {
-            const uint tri = g->tri_ids[i];
-            float t, u, v;
-            if (ray_triangle(&shear, g->tri_vertices[3 * tri].xyz,
-                             g->tri_vertices[3 * tri + 1].xyz, g->tri_vertices[3 * tri + 2].xyz,
-                             tmin, best, &t, &u, &v) &&
-                t <= cell_exit + slack) {
-                best = t;
-                found = 1;
-                hit->t = t;
-                hit->u = u;
-                hit->v = v;
-                hit->tri = tri;
-                if (any_hit)
-                    return 1;
+        /* The bitmask is small enough to stay in cache: empty cells cost no
+         * trip to the range array. */
+        if (g->cell_bits[index >> 5] & (1u << (index & 31u))) {
+            const uint2 range = vload2(index, g->cell_ranges);
+            for (uint i = range.x; i < range.y; ++i) {
+                const uint tri = g->tri_ids[i];
+                float t, u, v;
+                if (ray_triangle(&shear, g->tri_vertices[3 * tri].xyz,
+                                 g->tri_vertices[3 * tri + 1].xyz, g->tri_vertices[3 * tri + 2].xyz,
+                                 tmin, best, &t, &u, &v) &&
+                    t <= cell_exit + slack) {
+                    best = t;
+                    found = 1;
+                    hit->t = t;
+                    hit->u = u;
+                    hit->v = v;
+                    hit->tri = tri;
+                    if (any_hit)
+                        return 1;
+                }
             }
+            if (found && best <= cell_exit)
+                return 1;
         }
-        if (found && best <= cell_exit)
-            return 1;
         if (cell_exit > leave)
             return found;
         /* Step along the axis whose boundary comes first. */
-        if (tnext.x <= tnext.y && tnext.x <= tnext.z)
+        if (tnext.x <= tnext.y && tnext.x <= tnext.z) {
             cell.x += step.x;
-        else if (tnext.y <= tnext.z)
+            tnext.x += tdelta.x;
+        } else if (tnext.y <= tnext.z) {
             cell.y += step.y;
-        else
+            tnext.y += tdelta.y;
+        } else {
             cell.z += step.z;
+            tnext.z += tdelta.z;
+        }
         if (any(cell < (int3)(0)) || any(cell > last))
             return found;
     }

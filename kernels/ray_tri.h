@@ -16,8 +16,8 @@
 #endif
 
 typedef struct ray_shear {
-    float3 org;
-    int kx, ky, kz;
+    float4 org;
+    uint4 perm; /* (kx, ky, kz, 3): vertex components in sheared order */
     float sx, sy, sz;
 } ray_shear;
 
@@ -27,31 +27,36 @@ inline float axis_of(float3 v, int k) {
 
 inline ray_shear ray_shear_make(float3 org, float3 dir) {
     ray_shear r;
-    float3 ad = fabs(dir);
-    r.kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-    r.kx = r.kz == 2 ? 0 : r.kz + 1;
-    r.ky = r.kx == 2 ? 0 : r.kx + 1;
-    if (axis_of(dir, r.kz) < 0.0f) { /* keep the winding */
-        int t = r.kx;
-        r.kx = r.ky;
-        r.ky = t;
+    const float3 ad = fabs(dir);
+    const int kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    int kx = kz == 2 ? 0 : kz + 1;
+    int ky = kx == 2 ? 0 : kx + 1;
+    if (axis_of(dir, kz) < 0.0f) { /* keep the winding */
+        const int t = kx;
+        kx = ky;
+        ky = t;
     }
-    float dz = axis_of(dir, r.kz);
-    r.sx = axis_of(dir, r.kx) / dz;
-    r.sy = axis_of(dir, r.ky) / dz;
+    const float dz = axis_of(dir, kz);
+    r.sx = axis_of(dir, kx) / dz;
+    r.sy = axis_of(dir, ky) / dz;
     r.sz = 1.0f / dz;
-    r.org = org;
+    r.perm = (uint4)((uint)kx, (uint)ky, (uint)kz, 3u);
+    r.org = (float4)(org, 0.0f);
     return r;
 }
 
 /* On a hit in (tmin, tmax]: returns 1 with t and barycentrics of v1 (u), v2 (v). */
-inline int ray_triangle(const ray_shear *r, float3 v0, float3 v1, float3 v2, float tmin,
-                        float tmax, float *t_out, float *u_out, float *v_out) {
-    const float3 A = v0 - r->org, B = v1 - r->org, C = v2 - r->org;
-    const float Az = axis_of(A, r->kz), Bz = axis_of(B, r->kz), Cz = axis_of(C, r->kz);
-    const float Ax = axis_of(A, r->kx) - r->sx * Az, Ay = axis_of(A, r->ky) - r->sy * Az;
-    const float Bx = axis_of(B, r->kx) - r->sx * Bz, By = axis_of(B, r->ky) - r->sy * Bz;
-    const float Cx = axis_of(C, r->kx) - r->sx * Cz, Cy = axis_of(C, r->ky) - r->sy * Cz;
+__attribute__((always_inline)) inline int ray_triangle(const ray_shear *r, float3 v0, float3 v1,
+                                                       float3 v2, float tmin, float tmax,
+                                                       float *t_out, float *u_out, float *v_out) {
+    /* Vertices relative to the origin, components permuted to (kx, ky, kz). */
+    const float4 A = shuffle((float4)(v0, 0.0f) - r->org, r->perm);
+    const float4 B = shuffle((float4)(v1, 0.0f) - r->org, r->perm);
+    const float4 C = shuffle((float4)(v2, 0.0f) - r->org, r->perm);
+    const float Az = A.z, Bz = B.z, Cz = C.z;
+    const float Ax = A.x - r->sx * Az, Ay = A.y - r->sy * Az;
+    const float Bx = B.x - r->sx * Bz, By = B.y - r->sy * Bz;
+    const float Cx = C.x - r->sx * Cz, Cy = C.y - r->sy * Cz;
     float U = Cx * By - Cy * Bx;
     float V = Ax * Cy - Ay * Cx;
     float W = Bx * Ay - By * Ax;

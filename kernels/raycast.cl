@@ -6,16 +6,16 @@
 #include "vct_types.h"
 
 #define GRID_ARGS                                                                                  \
-    vct_grid_desc grid, __global const uint *cell_start, __global const uint *cell_end,            \
+    vct_grid_desc grid, __global const uint *cell_bits, __global const uint *cell_ranges,          \
         __global const uint *tri_ids, __global const float4 *tri_vertices
 
-inline grid_view make_grid_view(vct_grid_desc desc, __global const uint *cell_start,
-                                __global const uint *cell_end, __global const uint *tri_ids,
+inline grid_view make_grid_view(vct_grid_desc desc, __global const uint *cell_bits,
+                                __global const uint *cell_ranges, __global const uint *tri_ids,
                                 __global const float4 *tri_vertices) {
     grid_view g;
     g.desc = desc;
-    g.cell_start = cell_start;
-    g.cell_end = cell_end;
+    g.cell_bits = cell_bits;
+    g.cell_ranges = cell_ranges;
     g.tri_ids = tri_ids;
     g.tri_vertices = tri_vertices;
     return g;
@@ -40,7 +40,7 @@ __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    const grid_view g = make_grid_view(grid, cell_start, cell_end, tri_ids, tri_vertices);
+    const grid_view g = make_grid_view(grid, cell_bits, cell_ranges, tri_ids, tri_vertices);
     const float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
     float3 radiance = (float3)(0.0f);
     hit_record h;
@@ -53,16 +53,16 @@ __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
     image[y * cam.size.x + x] = (float4)(radiance, 1.0f);
 }
 
-/* Closest hits for arbitrary rays (tests, tools): t < 0 on a miss. */
-__kernel void trace_rays(GRID_ARGS, __global const vct_ray_desc *rays, uint n,
+/* Closest (or any) hits for arbitrary rays: t < 0 on a miss. */
+__kernel void trace_rays(GRID_ARGS, __global const vct_ray_desc *rays, uint n, uint any_hit,
                          __global vct_hit_desc *hits) {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
-    const grid_view g = make_grid_view(grid, cell_start, cell_end, tri_ids, tri_vertices);
+    const grid_view g = make_grid_view(grid, cell_bits, cell_ranges, tri_ids, tri_vertices);
     const vct_ray_desc r = rays[i];
     hit_record h;
-    if (grid_trace(&g, r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w, 0, &h))
+    if (grid_trace(&g, r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w, any_hit, &h))
         hits[i] = (float4)(h.t, as_float(h.tri), h.u, h.v);
     else
         hits[i] = (float4)(-1.0f, as_float(0xffffffffu), 0.0f, 0.0f);

@@ -23,8 +23,7 @@ inline uint scan_value(uint x, uint as_flags) {
 }
 
 __kernel __attribute__((reqd_work_group_size(WG, 1, 1))) void
-scan_reduce(__global const uint *in, uint n, uint span, uint as_flags,
-            __global ulong *group_sums) {
+scan_reduce(__global const uint *in, uint n, uint span, uint as_flags, __global ulong *group_sums) {
     __local ulong partial[WG];
     const uint lid = get_local_id(0);
     uint begin, end;

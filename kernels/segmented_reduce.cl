@@ -26,8 +26,8 @@ __kernel void segment_starts(__global const KEY_T *keys, __global const uint *he
     }
 }
 
-__kernel void segment_sum_f4(__global const float4 *values, __global const uint *starts,
-                             uint runs, uint n, __global float4 *sums) {
+__kernel void segment_sum_f4(__global const float4 *values, __global const uint *starts, uint runs,
+                             uint n, __global float4 *sums) {
     const uint r = get_global_id(0);
     if (r >= runs)
         return;

@@ -60,8 +60,10 @@ static inline int tri_box_overlap(const float *v0, const float *v1, const float 
     const float *edges[3] = {e0, e1, e2};
     for (int i = 0; i < 3; ++i) {
         const float *e = edges[i];
-        if (!tb_axis_overlaps(0.0f, -e[2], e[1], a, b, c, half_size[0], half_size[1], half_size[2]) ||
-            !tb_axis_overlaps(e[2], 0.0f, -e[0], a, b, c, half_size[0], half_size[1], half_size[2]) ||
+        if (!tb_axis_overlaps(0.0f, -e[2], e[1], a, b, c, half_size[0], half_size[1],
+                              half_size[2]) ||
+            !tb_axis_overlaps(e[2], 0.0f, -e[0], a, b, c, half_size[0], half_size[1],
+                              half_size[2]) ||
             !tb_axis_overlaps(-e[1], e[0], 0.0f, a, b, c, half_size[0], half_size[1], half_size[2]))
             return 0;
     }

@@ -26,7 +26,7 @@ typedef struct vct_camera_desc {
     vct_f4 forward;  /* w = aspect (width / height) */
     vct_f4 right;
     vct_f4 up;
-    vct_u4 size;     /* width, height */
+    vct_u4 size; /* width, height */
 } vct_camera_desc;
 
 #define VCT_LIGHT_KIND_POINT 0u

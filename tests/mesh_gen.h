@@ -48,7 +48,8 @@ static test_mesh mesh_icosphere(int levels, float radius, const float centre[3])
     uint32_t max_t = 20u << (2 * levels), max_v = 12 + max_t * 3 / 2;
     test_mesh m = {malloc(12ull * max_v), malloc(12ull * max_t), 12, 20};
     for (int i = 0; i < 12; ++i) {
-        float len = sqrtf(base[i][0] * base[i][0] + base[i][1] * base[i][1] + base[i][2] * base[i][2]);
+        float len =
+            sqrtf(base[i][0] * base[i][0] + base[i][1] * base[i][1] + base[i][2] * base[i][2]);
         for (int k = 0; k < 3; ++k)
             m.pos[3 * i + k] = base[i][k] / len;
     }
@@ -93,8 +94,8 @@ static test_mesh mesh_soup(uint32_t n, float offset, uint64_t seed) {
             }
         if (t % 50 == 1) /* sliver: third vertex a hair off the first edge */
             for (int k = 0; k < 3; ++k)
-                m.pos[9 * t + 6 + k] = 0.5f * (m.pos[9 * t + k] + m.pos[9 * t + 3 + k]) +
-                                       (k == 1 ? 1e-7f : 0.0f);
+                m.pos[9 * t + 6 + k] =
+                    0.5f * (m.pos[9 * t + k] + m.pos[9 * t + 3 + k]) + (k == 1 ? 1e-7f : 0.0f);
         if (t % 97 == 2)
             for (int k = 0; k < 3; ++k)
                 m.pos[9 * t + 6 + k] = m.pos[9 * t + k];

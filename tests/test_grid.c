@@ -54,8 +54,7 @@ static vct_scene *scene_of(const test_mesh *m) {
  * every listed one overlaps the cell widened by 2e-5 of the scene's extent
  * plus 8 float ulps of its coordinates (tight); lists are ascending
  * (deterministic). */
-static void check_cells(vct_context *ctx, const vct_scene *s, const vct_grid *g,
-                        const char *name) {
+static void check_cells(vct_context *ctx, const vct_scene *s, const vct_grid *g, const char *name) {
     size_t cells = (size_t)g->res[0] * g->res[1] * g->res[2];
     uint32_t *start = malloc(4 * cells), *end = malloc(4 * cells);
     uint32_t *ids = malloc(4ull * g->references + 4);
@@ -95,8 +94,8 @@ static void check_cells(vct_context *ctx, const vct_scene *s, const vct_grid *g,
                     if (!in_list && tri_box_overlap(a, b, cc, centre, half))
                         ++missing;
                     if (in_list && !tri_box_overlap(a, b, cc, centre, wide) && loose++ < 3)
-                        fprintf(stderr, "%s: triangle %u listed in cell (%u %u %u)\n", name,
-                                t, x, y, z);
+                        fprintf(stderr, "%s: triangle %u listed in cell (%u %u %u)\n", name, t, x,
+                                y, z);
                 }
             }
     CHECK(missing == 0, "%s: %u (cell, triangle) overlaps missing from the grid", name, missing);
@@ -141,7 +140,16 @@ static void check_rays(vct_context *ctx, const vct_scene *s, const vct_grid *g, 
         r[7] = INFINITY;
     }
     vct_error err = {0};
-    REQUIRE_OK(vct_trace_rays(ctx, g, rays, n, hits, &err), err);
+    REQUIRE_OK(vct_trace_rays(ctx, g, rays, n, 0, hits, &err), err);
+    /* Any-hit (occlusion) queries agree with closest hits on hit or miss. */
+    vct_hit *any = malloc(sizeof *any * n);
+    REQUIRE_OK(vct_trace_rays(ctx, g, rays, n, 1, any, &err), err);
+    uint32_t any_wrong = 0;
+    for (uint32_t i = 0; i < n; ++i)
+        any_wrong += (any[i].t >= 0) != (hits[i].t >= 0) ||
+                     (any[i].t >= 0 && any[i].t < hits[i].t * (1.0f - 1e-6f));
+    CHECK(any_wrong == 0, "%s: %u any-hit answers disagree with closest hits", name, any_wrong);
+    free(any);
     uint32_t wrong = 0, grazing = 0, hits_ref = 0;
     for (uint32_t i = 0; i < n; ++i) {
         const float *r = &rays[8 * i];
@@ -212,7 +220,7 @@ static void check_watertight(vct_context *ctx, const test_mesh *m, const float c
         in[3] = out[3] = 0.0f;
         in[7] = out[7] = INFINITY;
     }
-    REQUIRE_OK(vct_trace_rays(ctx, g, rays, 2 * n, hits, &err), err);
+    REQUIRE_OK(vct_trace_rays(ctx, g, rays, 2 * n, 0, hits, &err), err);
     uint32_t leaks = 0;
     for (uint32_t i = 0; i < 2 * n; ++i)
         leaks += !(hits[i].t > 0);
@@ -224,13 +232,13 @@ static void check_watertight(vct_context *ctx, const test_mesh *m, const float c
     vct_scene_free(s);
 }
 
-static void run_scene(vct_context *ctx, vct_scene *s, const uint32_t *res, uint32_t rays,
-                      int cells, const char *name) {
+static void run_scene(vct_context *ctx, vct_scene *s, const uint32_t *res, uint32_t rays, int cells,
+                      const char *name) {
     vct_error err = {0};
     vct_grid *g = vct_grid_build(ctx, s, res, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    printf("%s: %u triangles, grid %ux%ux%u, %u references\n", name, s->triangle_count,
-           g->res[0], g->res[1], g->res[2], g->references);
+    printf("%s: %u triangles, grid %ux%ux%u, %u references\n", name, s->triangle_count, g->res[0],
+           g->res[1], g->res[2], g->references);
     if (cells)
         check_cells(ctx, s, g, name);
     check_rays(ctx, s, g, rays, 42, name);

@@ -40,7 +40,7 @@ static v3 norm(v3 a) {
 /* Plane y = height, quad of half-size 50 around the origin, plus an optional
  * small occluding square above it. */
 static vct_scene *plane_scene(double height, int occluder) {
-    float pos[8 * 3] = {-50, 0, -50, 50, 0, -50, 50, 0, 50, -50, 0, 50,
+    float pos[8 * 3] = {-50,   0,    -50,   50,   0,    -50,   50,   0,    50,   -50,   0,    50,
                         -0.5f, 1.5f, -0.5f, 0.5f, 1.5f, -0.5f, 0.5f, 1.5f, 0.5f, -0.5f, 1.5f, 0.5f};
     for (int i = 0; i < 4; ++i)
         pos[3 * i + 1] = (float)height;
@@ -82,7 +82,8 @@ static v3 analytic(const vct_light *l, v3 p, v3 albedo, int spot_scale) {
     cos_theta = wi.y; /* plane normal +y */
     if (cos_theta <= 0)
         return v(0, 0, 0);
-    return v(albedo.x / CHECK_PI * radiant.x * cos_theta, albedo.y / CHECK_PI * radiant.y * cos_theta,
+    return v(albedo.x / CHECK_PI * radiant.x * cos_theta,
+             albedo.y / CHECK_PI * radiant.y * cos_theta,
              albedo.z / CHECK_PI * radiant.z * cos_theta);
 }
 
@@ -163,8 +164,8 @@ static void run_case(vct_context *ctx, const char *name, vct_light light, double
                 if (e > worst)
                     worst = e;
                 if (e > TOL && bad++ < 5)
-                    fprintf(stderr, "%s: pixel (%d,%d) channel %d: %.8g, expected %.8g\n", name,
-                            x, y, c, px[c], want[c]);
+                    fprintf(stderr, "%s: pixel (%d,%d) channel %d: %.8g, expected %.8g\n", name, x,
+                            y, c, px[c], want[c]);
             }
             ++compared;
         }
@@ -182,10 +183,10 @@ static void run_case(vct_context *ctx, const char *name, vct_light light, double
 int main(void) {
     vct_context *ctx = check_context();
     vct_light point = {VCT_LIGHT_POINT, {1.0f, 3.0f, -0.5f}, {0, 0, 0}, {10, 20, 30}, 0, 0};
-    vct_light spot = {VCT_LIGHT_SPOT, {0.5f, 4.0f, 0.0f}, {0.2f, -1.0f, 0.1f}, {40, 40, 40},
-                      0.3f, 0.6f};
-    vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {0.3f, -1.0f, -0.4f}, {2.0f, 1.5f, 1.0f},
-                     0, 0};
+    vct_light spot = {
+        VCT_LIGHT_SPOT, {0.5f, 4.0f, 0.0f}, {0.2f, -1.0f, 0.1f}, {40, 40, 40}, 0.3f, 0.6f};
+    vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {0.3f, -1.0f, -0.4f},
+                     {2.0f, 1.5f, 1.0f},    0,         0};
     run_case(ctx, "point", point, 0.0, 0);
     run_case(ctx, "spot", spot, 0.0, 0);
     run_case(ctx, "directional", sun, 0.0, 0);

@@ -137,8 +137,8 @@ static void test_compact(vct_context *ctx) {
             }
             vct_error err = {0};
             cl_mem a = upload(ctx, in, n * 4ull + 4), f = upload(ctx, flags, n * 4ull + 4);
-            cl_mem o = vct_buffer_create(ctx, "test", "out", n * 4ull + 4, CL_MEM_READ_WRITE,
-                                         NULL, &err);
+            cl_mem o =
+                vct_buffer_create(ctx, "test", "out", n * 4ull + 4, CL_MEM_READ_WRITE, NULL, &err);
             uint32_t count = 0;
             REQUIRE_OK(vct_compact_u32(ctx, a, f, o, n, &count, &err), err);
             REQUIRE_OK(vct_buffer_read(ctx, "test", o, 0, count * 4ull, out, &err), err);
@@ -146,8 +146,8 @@ static void test_compact(vct_context *ctx) {
             for (uint32_t i = 0; i < n; ++i)
                 if (flags[i])
                     bad += (k < count && out[k] != in[i]), ++k;
-            CHECK(k == count && bad == 0, "compact n=%u mode %d: count %u vs %u, %u wrong", n,
-                  mode, count, k, bad);
+            CHECK(k == count && bad == 0, "compact n=%u mode %d: count %u vs %u, %u wrong", n, mode,
+                  count, k, bad);
             vct_buffer_release(ctx, a);
             vct_buffer_release(ctx, f);
             vct_buffer_release(ctx, o);
@@ -170,7 +170,8 @@ static uint32_t count_sort_errors(const uint64_t *orig, const uint64_t *keys,
         if (ok)
             seen[values[i]] = 1;
         if (i > 0)
-            ok = ok && (keys[i - 1] < keys[i] || (keys[i - 1] == keys[i] && values[i - 1] < values[i]));
+            ok = ok &&
+                 (keys[i - 1] < keys[i] || (keys[i - 1] == keys[i] && values[i - 1] < values[i]));
         if (!ok && bad++ == 0)
             *first = i;
     }
@@ -194,16 +195,16 @@ static void test_sort(vct_context *ctx, int key64) {
                 uint64_t *orig = malloc(n * 8ull + 8), *got = malloc(n * 8ull + 8);
                 fill(k32, n, (enum pattern)p, narrow ? 0x1fff : 0xffffffffu, &seed);
                 for (uint32_t i = 0; i < n; ++i) {
-                    k64[i] = narrow ? k32[i]
-                                    : ((uint64_t)k32[i] << 32 | (uint32_t)check_rand(&seed));
+                    k64[i] =
+                        narrow ? k32[i] : ((uint64_t)k32[i] << 32 | (uint32_t)check_rand(&seed));
                     if (p == SORTED || p == REVERSED)
                         k64[i] = narrow ? k32[i] : (uint64_t)k32[i] << 32;
                     val[i] = i;
                     orig[i] = key64 ? k64[i] : k32[i];
                 }
                 vct_error err = {0};
-                cl_mem kb = upload(ctx, key64 ? (void *)k64 : (void *)k32,
-                                   n * (key64 ? 8ull : 4ull) + 8);
+                cl_mem kb =
+                    upload(ctx, key64 ? (void *)k64 : (void *)k32, n * (key64 ? 8ull : 4ull) + 8);
                 cl_mem vb = upload(ctx, val, n * 4ull + 4);
                 if (key64)
                     REQUIRE_OK(vct_sort_pairs_u64(ctx, kb, vb, n, bits, &err), err);
@@ -217,8 +218,8 @@ static void test_sort(vct_context *ctx, int key64) {
                     got[i] = key64 ? k64[i] : k32[i];
                 uint32_t first = 0;
                 uint32_t bad = count_sort_errors(orig, got, val, n, &first);
-                CHECK(bad == 0, "sort%s n=%u %s bits=%d: %u wrong, first at %u", key64 ? "64" : "32",
-                      n, pattern_name[p], bits, bad, first);
+                CHECK(bad == 0, "sort%s n=%u %s bits=%d: %u wrong, first at %u",
+                      key64 ? "64" : "32", n, pattern_name[p], bits, bad, first);
                 vct_buffer_release(ctx, kb);
                 vct_buffer_release(ctx, vb);
                 free(k32);
@@ -259,10 +260,10 @@ static void test_segmented_sum(vct_context *ctx) {
         }
         vct_error err = {0};
         cl_mem kb = upload(ctx, keys, n * 4ull + 4), vb = upload(ctx, vals, n * 16ull + 16);
-        cl_mem ok = vct_buffer_create(ctx, "test", "keys", n * 4ull + 4, CL_MEM_READ_WRITE, NULL,
-                                      &err);
-        cl_mem os = vct_buffer_create(ctx, "test", "sums", n * 16ull + 16, CL_MEM_READ_WRITE,
-                                      NULL, &err);
+        cl_mem ok =
+            vct_buffer_create(ctx, "test", "keys", n * 4ull + 4, CL_MEM_READ_WRITE, NULL, &err);
+        cl_mem os =
+            vct_buffer_create(ctx, "test", "sums", n * 16ull + 16, CL_MEM_READ_WRITE, NULL, &err);
         uint32_t runs = 0;
         REQUIRE_OK(vct_segmented_sum_f4(ctx, kb, vb, n, ok, os, &runs, &err), err);
         CHECK(runs == runs_ref, "segmented n=%u: %u runs, expected %u", n, runs, runs_ref);

@@ -77,9 +77,8 @@ int main(void) {
 
     /* The other kernel shapes (wide work-groups, local splits) sort the grid
      * identically, so the image is identical too. */
-    const char *other = getenv("VCT_TUNING") && strcmp(getenv("VCT_TUNING"), "gpu") == 0
-                            ? "cpu"
-                            : "gpu";
+    const char *other =
+        getenv("VCT_TUNING") && strcmp(getenv("VCT_TUNING"), "gpu") == 0 ? "cpu" : "gpu";
     setenv("VCT_TUNING", other, 1);
     ctx = check_context();
     vct_image d = render(ctx, s);

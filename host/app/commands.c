@@ -61,8 +61,9 @@ static vct_scene *load_scene(const cli_options *opt, vct_error *err) {
 }
 
 static void print_scene(const vct_scene *s, FILE *out) {
-    fprintf(out, "scene %s: %u triangles (%u degenerate, never hit), %u vertices, %u materials, "
-                 "%u lights\n",
+    fprintf(out,
+            "scene %s: %u triangles (%u degenerate, never hit), %u vertices, %u materials, "
+            "%u lights\n",
             s->source, s->triangle_count, s->degenerate_triangles, s->vertex_count,
             s->material_count, s->light_count);
 }
@@ -77,9 +78,9 @@ int cmd_info(const cli_options *opt) {
            s->bounds_min[2], s->bounds_max[0], s->bounds_max[1], s->bounds_max[2]);
     printf("camera %s: position (%g %g %g), look-at (%g %g %g), up (%g %g %g), fov %g\n",
            s->has_camera ? "from the file" : "default", s->camera.position[0],
-           s->camera.position[1], s->camera.position[2], s->camera.look_at[0],
-           s->camera.look_at[1], s->camera.look_at[2], s->camera.up[0], s->camera.up[1],
-           s->camera.up[2], s->camera.fov_y_deg);
+           s->camera.position[1], s->camera.position[2], s->camera.look_at[0], s->camera.look_at[1],
+           s->camera.look_at[2], s->camera.up[0], s->camera.up[1], s->camera.up[2],
+           s->camera.fov_y_deg);
     static const char *kinds[] = {"point", "spot", "directional"};
     for (uint32_t i = 0; i < s->light_count; ++i) {
         const vct_light *l = &s->lights[i];
@@ -91,9 +92,8 @@ int cmd_info(const cli_options *opt) {
         const vct_material *m = &s->materials[i];
         printf("material %u \"%s\": albedo (%g %g %g), emission (%g %g %g), roughness %g, "
                "metallic %g, transmission %g, ior %g\n",
-               i, m->name, m->albedo[0], m->albedo[1], m->albedo[2], m->emission[0],
-               m->emission[1], m->emission[2], m->roughness, m->metallic, m->transmission,
-               m->ior);
+               i, m->name, m->albedo[0], m->albedo[1], m->albedo[2], m->emission[0], m->emission[1],
+               m->emission[2], m->roughness, m->metallic, m->transmission, m->ior);
     }
     vct_scene_free(s);
     return 0;
@@ -170,8 +170,7 @@ int cmd_render(const cli_options *opt) {
         if (opt->stats)
             print_stats(ctx);
         printf("wrote %s (%dx%d, %s)\n", out, image.width, image.height,
-               strcmp(dot, ".pfm") == 0 ? "linear radiance"
-                                        : "exposed and sRGB encoded");
+               strcmp(dot, ".pfm") == 0 ? "linear radiance" : "exposed and sRGB encoded");
     }
     vct_image_free(&image);
     vct_grid_free(grid);

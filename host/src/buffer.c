@@ -61,8 +61,8 @@ int vct_buffer_read(vct_context *ctx, const char *stage, cl_mem mem, size_t offs
     return vct_record_event(ctx, ev, "read", err);
 }
 
-int vct_buffer_write(vct_context *ctx, const char *stage, cl_mem mem, size_t offset,
-                     size_t bytes, const void *src, vct_error *err) {
+int vct_buffer_write(vct_context *ctx, const char *stage, cl_mem mem, size_t offset, size_t bytes,
+                     const void *src, vct_error *err) {
     if (bytes == 0)
         return VCT_OK;
     cl_event ev = NULL;

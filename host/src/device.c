@@ -18,8 +18,7 @@ static int enumerate(device_ref *refs, int max, vct_error *err) {
     cl_platform_id platforms[MAX_PLATFORMS];
     cl_uint platform_count = 0;
     cl_int rc = clGetPlatformIDs(MAX_PLATFORMS, platforms, &platform_count);
-    if (rc == -1001 || platform_count == 0)
-    {
+    if (rc == -1001 || platform_count == 0) {
         vct_fail(err, VCT_ERR_OPENCL,
                  "devices: no OpenCL platform found: install an ICD such as "
                  "pocl-opencl-icd (CPU) or your GPU vendor's OpenCL driver");
@@ -52,8 +51,7 @@ static int enumerate(device_ref *refs, int max, vct_error *err) {
 static void describe(const device_ref *ref, int index, vct_device_info *info) {
     memset(info, 0, sizeof *info);
     info->index = index;
-    clGetPlatformInfo(ref->platform, CL_PLATFORM_NAME, sizeof info->platform, info->platform,
-                      NULL);
+    clGetPlatformInfo(ref->platform, CL_PLATFORM_NAME, sizeof info->platform, info->platform, NULL);
     clGetDeviceInfo(ref->device, CL_DEVICE_NAME, sizeof info->name, info->name, NULL);
     clGetDeviceInfo(ref->device, CL_DEVICE_VERSION, sizeof info->version, info->version, NULL);
     clGetDeviceInfo(ref->device, CL_DRIVER_VERSION, sizeof info->driver, info->driver, NULL);
@@ -74,8 +72,8 @@ static void describe(const device_ref *ref, int index, vct_device_info *info) {
     cl_bool images = CL_FALSE;
     clGetDeviceInfo(ref->device, CL_DEVICE_IMAGE_SUPPORT, sizeof images, &images, NULL);
     info->image_support = images == CL_TRUE;
-    clGetDeviceInfo(ref->device, CL_DEVICE_EXTENSIONS, sizeof info->extensions,
-                    info->extensions, NULL);
+    clGetDeviceInfo(ref->device, CL_DEVICE_EXTENSIONS, sizeof info->extensions, info->extensions,
+                    NULL);
     info->extensions[sizeof info->extensions - 1] = '\0';
     info->fp64 = strstr(info->extensions, "cl_khr_fp64") != NULL;
     info->gl_sharing = strstr(info->extensions, "cl_khr_gl_sharing") != NULL;
@@ -95,7 +93,8 @@ static int contains_nocase(const char *hay, const char *needle) {
     size_t n = strlen(needle);
     for (; *hay; ++hay) {
         size_t i = 0;
-        while (i < n && hay[i] && tolower((unsigned char)hay[i]) == tolower((unsigned char)needle[i]))
+        while (i < n && hay[i] &&
+               tolower((unsigned char)hay[i]) == tolower((unsigned char)needle[i]))
             ++i;
         if (i == n)
             return 1;
@@ -161,8 +160,7 @@ vct_context *vct_context_create(const char *selector, vct_error *err) {
     ctx->current_stage = -1;
 
     cl_int rc = CL_SUCCESS;
-    cl_context_properties props[] = {CL_CONTEXT_PLATFORM, (cl_context_properties)ctx->platform,
-                                     0};
+    cl_context_properties props[] = {CL_CONTEXT_PLATFORM, (cl_context_properties)ctx->platform, 0};
     ctx->context = clCreateContext(props, 1, &ctx->device, NULL, NULL, &rc);
     if (rc != CL_SUCCESS) {
         vct_cl_check(err, rc, "context", "clCreateContext");
@@ -196,6 +194,9 @@ vct_context *vct_context_create(const char *selector, vct_error *err) {
         ctx->scan_group_size = 1;
         ctx->radix_bits = 8;
     }
+    const char *bits = getenv("VCT_RADIX_BITS");
+    if (bits && atoi(bits) >= 1 && atoi(bits) <= 12)
+        ctx->radix_bits = atoi(bits);
     if (ctx->scan_groups < 4)
         ctx->scan_groups = 4;
     if (ctx->scan_groups > 1024)

@@ -81,8 +81,8 @@ void vct_grid_kernel_args(const vct_grid *grid, void *out) {
 void vct_grid_free(vct_grid *g) {
     if (!g)
         return;
-    vct_buffer_release(g->ctx, g->cell_start);
-    vct_buffer_release(g->ctx, g->cell_end);
+    vct_buffer_release(g->ctx, g->cell_ranges);
+    vct_buffer_release(g->ctx, g->cell_bits);
     vct_buffer_release(g->ctx, g->tri_ids);
     vct_buffer_release(g->ctx, g->tri_vertices);
     free(g);
@@ -101,14 +101,13 @@ static int gather_vertices(vct_context *ctx, vct_grid *g, const vct_scene *s, cl
                            vct_error *err) {
     cl_mem pos = vct_buffer_create(ctx, STAGE, "vertex positions", 12ull * s->vertex_count,
                                    CL_MEM_READ_ONLY, s->positions, err);
-    cl_mem tri = pos ? vct_buffer_create(ctx, STAGE, "triangle indices",
-                                         12ull * s->triangle_count, CL_MEM_READ_ONLY,
-                                         s->triangles, err)
+    cl_mem tri = pos ? vct_buffer_create(ctx, STAGE, "triangle indices", 12ull * s->triangle_count,
+                                         CL_MEM_READ_ONLY, s->triangles, err)
                      : NULL;
-    g->tri_vertices = tri ? vct_buffer_create(ctx, STAGE, "triangle vertices",
-                                              48ull * s->triangle_count, CL_MEM_READ_WRITE, NULL,
-                                              err)
-                          : NULL;
+    g->tri_vertices =
+        tri ? vct_buffer_create(ctx, STAGE, "triangle vertices", 48ull * s->triangle_count,
+                                CL_MEM_READ_WRITE, NULL, err)
+            : NULL;
     cl_kernel k = g->tri_vertices ? vct_kernel_create(ctx, p, "grid_gather_vertices", err) : NULL;
     int rc = k ? VCT_OK : (int)err->status;
     uint32_t n = s->triangle_count;
@@ -174,18 +173,18 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
     cl_mem counts = NULL, keys = NULL;
     cl_kernel k_count = NULL, k_write = NULL, k_ranges = NULL;
     if (rc == VCT_OK) {
-        counts = vct_buffer_create(ctx, STAGE, "cell counts", 4ull * n, CL_MEM_READ_WRITE, NULL,
-                                   err);
+        counts =
+            vct_buffer_create(ctx, STAGE, "cell counts", 4ull * n, CL_MEM_READ_WRITE, NULL, err);
         k_count = counts ? vct_kernel_create(ctx, p, "grid_count", err) : NULL;
         k_write = k_count ? vct_kernel_create(ctx, p, "grid_write", err) : NULL;
         k_ranges = k_write ? vct_kernel_create(ctx, p, "grid_ranges", err) : NULL;
         rc = k_ranges ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = set_args(err, k_count, 5,
-                      ARGS((size_t[]){sizeof(cl_mem), sizeof n, sizeof desc, sizeof pad,
-                                      sizeof counts}),
-                      ARGS((const void *[]){&g->tri_vertices, &n, &desc, &pad, &counts}));
+        rc = set_args(
+            err, k_count, 5,
+            ARGS((size_t[]){sizeof(cl_mem), sizeof n, sizeof desc, sizeof pad, sizeof counts}),
+            ARGS((const void *[]){&g->tri_vertices, &n, &desc, &pad, &counts}));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_count, n, 0, err);
     uint64_t total = 0;
@@ -198,41 +197,41 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
                       (unsigned long long)total);
     g->references = (uint32_t)total;
     if (rc == VCT_OK) {
-        keys = vct_buffer_create(ctx, STAGE, "cell keys", 4ull * total, CL_MEM_READ_WRITE, NULL,
-                                 err);
+        keys =
+            vct_buffer_create(ctx, STAGE, "cell keys", 4ull * total, CL_MEM_READ_WRITE, NULL, err);
         g->tri_ids = keys ? vct_buffer_create(ctx, STAGE, "cell triangle lists", 4ull * total,
                                               CL_MEM_READ_WRITE, NULL, err)
                           : NULL;
         rc = g->tri_ids ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = set_args(err, k_write, 7,
-                      ARGS((size_t[]){sizeof(cl_mem), sizeof n, sizeof desc, sizeof pad,
-                                      sizeof counts, sizeof keys, sizeof(cl_mem)}),
-                      ARGS((const void *[]){&g->tri_vertices, &n, &desc, &pad, &counts, &keys,
-                                            &g->tri_ids}));
+        rc = set_args(
+            err, k_write, 7,
+            ARGS((size_t[]){sizeof(cl_mem), sizeof n, sizeof desc, sizeof pad, sizeof counts,
+                            sizeof keys, sizeof(cl_mem)}),
+            ARGS((const void *[]){&g->tri_vertices, &n, &desc, &pad, &counts, &keys, &g->tri_ids}));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_write, n, 0, err);
     if (rc == VCT_OK)
         rc = vct_sort_pairs_u32(ctx, keys, g->tri_ids, g->references, bits_for(cells), err);
     if (rc == VCT_OK) {
-        g->cell_start = vct_buffer_create(ctx, STAGE, "cell starts", 4ull * cells,
-                                          CL_MEM_READ_WRITE, NULL, err);
-        g->cell_end = g->cell_start ? vct_buffer_create(ctx, STAGE, "cell ends", 4ull * cells,
-                                                        CL_MEM_READ_WRITE, NULL, err)
-                                    : NULL;
-        rc = g->cell_end ? VCT_OK : (int)err->status;
+        g->cell_ranges = vct_buffer_create(ctx, STAGE, "cell ranges", 8ull * cells,
+                                           CL_MEM_READ_WRITE, NULL, err);
+        g->cell_bits = g->cell_ranges ? vct_buffer_create(ctx, STAGE, "cell occupancy",
+                                                          4ull * ((cells + 31) / 32),
+                                                          CL_MEM_READ_WRITE, NULL, err)
+                                      : NULL;
+        rc = g->cell_bits ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = vct_buffer_fill_u32(ctx, STAGE, g->cell_start, 0, cells, err);
+        rc = vct_buffer_fill_u32(ctx, STAGE, g->cell_ranges, 0, 2 * cells, err);
     if (rc == VCT_OK)
-        rc = vct_buffer_fill_u32(ctx, STAGE, g->cell_end, 0, cells, err);
+        rc = vct_buffer_fill_u32(ctx, STAGE, g->cell_bits, 0, (cells + 31) / 32, err);
     if (rc == VCT_OK)
-        rc = set_args(err, k_ranges, 4,
-                      ARGS((size_t[]){sizeof keys, sizeof(cl_uint), sizeof(cl_mem),
-                                      sizeof(cl_mem)}),
-                      ARGS((const void *[]){&keys, &g->references, &g->cell_start,
-                                            &g->cell_end}));
+        rc =
+            set_args(err, k_ranges, 4,
+                     ARGS((size_t[]){sizeof keys, sizeof(cl_uint), sizeof(cl_mem), sizeof(cl_mem)}),
+                     ARGS((const void *[]){&keys, &g->references, &g->cell_ranges, &g->cell_bits}));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_ranges, g->references, 0, err);
     if (rc == VCT_OK)
@@ -256,10 +255,24 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
 int vct_grid_read(vct_context *ctx, const vct_grid *g, uint32_t *cell_start, uint32_t *cell_end,
                   uint32_t *tri_ids, vct_error *err) {
     size_t cells = (size_t)g->res[0] * g->res[1] * g->res[2];
-    int rc = vct_buffer_read(ctx, "grid read", g->cell_start, 0, cells * 4, cell_start, err);
+    uint32_t *ranges = malloc(8 * cells), *bits = malloc(4 * ((cells + 31) / 32));
+    if (!ranges || !bits) {
+        free(ranges);
+        free(bits);
+        return vct_fail(err, VCT_ERR_MEMORY, "grid read: out of host memory");
+    }
+    int rc = vct_buffer_read(ctx, "grid read", g->cell_ranges, 0, cells * 8, ranges, err);
     if (rc == VCT_OK)
-        rc = vct_buffer_read(ctx, "grid read", g->cell_end, 0, cells * 4, cell_end, err);
+        rc = vct_buffer_read(ctx, "grid read", g->cell_bits, 0, 4 * ((cells + 31) / 32), bits, err);
     if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, "grid read", g->tri_ids, 0, g->references * 4ull, tri_ids, err);
+    /* A cell's range counts only where its occupancy bit is set, as in traversal. */
+    for (size_t c = 0; rc == VCT_OK && c < cells; ++c) {
+        int occupied = (bits[c >> 5] >> (c & 31)) & 1u;
+        cell_start[c] = occupied ? ranges[2 * c] : 0;
+        cell_end[c] = occupied ? ranges[2 * c + 1] : 0;
+    }
+    free(ranges);
+    free(bits);
     return rc;
 }

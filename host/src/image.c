@@ -74,8 +74,7 @@ int vct_image_write_png(const vct_image *im, const char *path, float exposure, v
         free(rgb);
         return vct_fail(err, VCT_ERR_IO, "image: cannot create %s", path);
     }
-    int ok = stbi_write_png_to_func(write_to_file, f, im->width, im->height, 3, rgb,
-                                    im->width * 3);
+    int ok = stbi_write_png_to_func(write_to_file, f, im->width, im->height, 3, rgb, im->width * 3);
     free(rgb);
     if (!ok) {
         fclose(f);

@@ -54,7 +54,7 @@ struct vct_context {
     int pending_count;
     vct_kernel_count kernel_counts[VCT_MAX_KERNEL_NAMES];
     int kernel_count_n;
-    double bytes_live; /* device bytes currently allocated through vct_buffer */
+    double bytes_live;       /* device bytes currently allocated through vct_buffer */
     double bytes_stage_peak; /* most bytes live during the current stage */
     /* Tuning chosen from the device type (see primitives.c). */
     size_t scan_group_size;
@@ -68,8 +68,7 @@ struct vct_context {
 /* Builds (or loads from the disk cache) kernels/<file> with options. */
 int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_program *out,
                     vct_error *err);
-cl_kernel vct_kernel_create(vct_context *ctx, cl_program program, const char *name,
-                            vct_error *err);
+cl_kernel vct_kernel_create(vct_context *ctx, cl_program program, const char *name, vct_error *err);
 /* Expands #include "x" against the kernel directory or the embedded copies. */
 char *vct_kernel_source_expand(const char *file, vct_error *err);
 /* Path of the kernel-binary cache directory (created on demand). */
@@ -81,8 +80,8 @@ cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, 
 void vct_buffer_release(vct_context *ctx, cl_mem mem);
 int vct_buffer_read(vct_context *ctx, const char *stage, cl_mem mem, size_t offset, size_t bytes,
                     void *dst, vct_error *err);
-int vct_buffer_write(vct_context *ctx, const char *stage, cl_mem mem, size_t offset,
-                     size_t bytes, const void *src, vct_error *err);
+int vct_buffer_write(vct_context *ctx, const char *stage, cl_mem mem, size_t offset, size_t bytes,
+                     const void *src, vct_error *err);
 int vct_buffer_fill_u32(vct_context *ctx, const char *stage, cl_mem mem, uint32_t value,
                         size_t count, vct_error *err);
 
@@ -92,8 +91,8 @@ void vct_stage_end(vct_context *ctx);
 /* Enqueues a 1D kernel over `global` work-items rounded up to `local`
  * (local 0 = let the runtime choose), records the event in the current stage. */
 int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, vct_error *err);
-int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global[2],
-                  const size_t local[2], vct_error *err);
+int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global[2], const size_t local[2],
+                  vct_error *err);
 int vct_record_event(vct_context *ctx, cl_event event, const char *kernel_name, vct_error *err);
 int vct_finish(vct_context *ctx, const char *stage, vct_error *err);
 double vct_now_ms(void);
@@ -103,7 +102,7 @@ double vct_now_ms(void);
 
 /* ---- grid internals used by renderers ---- */
 struct vct_grid {
-    cl_mem cell_start, cell_end, tri_ids;
+    cl_mem cell_ranges, cell_bits, tri_ids;
     cl_mem tri_vertices; /* 3 float4 per triangle */
     uint32_t res[3];
     float origin[3], cell_size[3];

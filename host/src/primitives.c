@@ -61,15 +61,12 @@ static int scan_impl(vct_context *ctx, cl_mem in, cl_mem out, uint32_t n, int in
     } while (0)
     TRY(vct_cl_check(err, clSetKernelArg(reduce, 0, sizeof in, &in), STAGE, "clSetKernelArg"));
     TRY(vct_cl_check(err, clSetKernelArg(reduce, 1, sizeof n, &n), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(reduce, 2, sizeof span, &span), STAGE,
-                     "clSetKernelArg"));
+    TRY(vct_cl_check(err, clSetKernelArg(reduce, 2, sizeof span, &span), STAGE, "clSetKernelArg"));
     TRY(vct_cl_check(err, clSetKernelArg(reduce, 3, sizeof flags, &flags), STAGE,
                      "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(reduce, 4, sizeof sums, &sums), STAGE,
-                     "clSetKernelArg"));
+    TRY(vct_cl_check(err, clSetKernelArg(reduce, 4, sizeof sums, &sums), STAGE, "clSetKernelArg"));
     TRY(vct_launch(ctx, reduce, groups * wg, wg, err));
-    TRY(vct_cl_check(err, clSetKernelArg(offsets, 0, sizeof sums, &sums), STAGE,
-                     "clSetKernelArg"));
+    TRY(vct_cl_check(err, clSetKernelArg(offsets, 0, sizeof sums, &sums), STAGE, "clSetKernelArg"));
     TRY(vct_cl_check(err, clSetKernelArg(offsets, 1, sizeof groups, &groups), STAGE,
                      "clSetKernelArg"));
     TRY(vct_launch(ctx, offsets, 1, 1, err));
@@ -77,8 +74,7 @@ static int scan_impl(vct_context *ctx, cl_mem in, cl_mem out, uint32_t n, int in
     TRY(vct_cl_check(err, clSetKernelArg(down, 1, sizeof out, &out), STAGE, "clSetKernelArg"));
     TRY(vct_cl_check(err, clSetKernelArg(down, 2, sizeof n, &n), STAGE, "clSetKernelArg"));
     TRY(vct_cl_check(err, clSetKernelArg(down, 3, sizeof span, &span), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(down, 4, sizeof flags, &flags), STAGE,
-                     "clSetKernelArg"));
+    TRY(vct_cl_check(err, clSetKernelArg(down, 4, sizeof flags, &flags), STAGE, "clSetKernelArg"));
     TRY(vct_cl_check(err, clSetKernelArg(down, 5, sizeof incl, &incl), STAGE, "clSetKernelArg"));
     TRY(vct_cl_check(err, clSetKernelArg(down, 6, sizeof sums, &sums), STAGE, "clSetKernelArg"));
     TRY(vct_launch(ctx, down, groups * wg, wg, err));
@@ -164,8 +160,8 @@ static int sort_impl(vct_context *ctx, cl_mem keys, cl_mem values, uint32_t n, i
     uint32_t span, groups;
     split(ctx, n, wg, &span, &groups);
     const uint32_t hist_n = radix * groups;
-    cl_mem keys_tmp = vct_buffer_create(ctx, STAGE, "sort keys", n * key_size, CL_MEM_READ_WRITE,
-                                        NULL, err);
+    cl_mem keys_tmp =
+        vct_buffer_create(ctx, STAGE, "sort keys", n * key_size, CL_MEM_READ_WRITE, NULL, err);
     cl_mem values_tmp = keys_tmp ? vct_buffer_create(ctx, STAGE, "sort values", n * 4ull,
                                                      CL_MEM_READ_WRITE, NULL, err)
                                  : NULL;
@@ -213,17 +209,15 @@ static int sort_impl(vct_context *ctx, cl_mem keys, cl_mem values, uint32_t n, i
     }
     if (rc == VCT_OK && src_k != keys) {
         cl_event e1 = NULL, e2 = NULL;
-        rc = vct_cl_check(err,
-                          clEnqueueCopyBuffer(ctx->queue, src_k, keys, 0, 0, n * key_size, 0,
-                                              NULL, &e1),
-                          STAGE, "clEnqueueCopyBuffer");
+        rc = vct_cl_check(
+            err, clEnqueueCopyBuffer(ctx->queue, src_k, keys, 0, 0, n * key_size, 0, NULL, &e1),
+            STAGE, "clEnqueueCopyBuffer");
         if (rc == VCT_OK)
             rc = vct_record_event(ctx, e1, "copy", err);
         if (rc == VCT_OK)
-            rc = vct_cl_check(err,
-                              clEnqueueCopyBuffer(ctx->queue, src_v, values, 0, 0, n * 4ull, 0,
-                                                  NULL, &e2),
-                              STAGE, "clEnqueueCopyBuffer");
+            rc = vct_cl_check(
+                err, clEnqueueCopyBuffer(ctx->queue, src_v, values, 0, 0, n * 4ull, 0, NULL, &e2),
+                STAGE, "clEnqueueCopyBuffer");
         if (rc == VCT_OK)
             rc = vct_record_event(ctx, e2, "copy", err);
     }
@@ -237,19 +231,18 @@ static int sort_impl(vct_context *ctx, cl_mem keys, cl_mem values, uint32_t n, i
     return rc;
 }
 
-int vct_sort_pairs_u32(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
-                       int key_bits, vct_error *err) {
+int vct_sort_pairs_u32(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n, int key_bits,
+                       vct_error *err) {
     return sort_impl(ctx, (cl_mem)keys_mem, (cl_mem)values_mem, n, key_bits, 0, err);
 }
 
-int vct_sort_pairs_u64(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
-                       int key_bits, vct_error *err) {
+int vct_sort_pairs_u64(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n, int key_bits,
+                       vct_error *err) {
     return sort_impl(ctx, (cl_mem)keys_mem, (cl_mem)values_mem, n, key_bits, 1, err);
 }
 
 int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
-                         void *out_keys_mem, void *out_sums_mem, uint32_t *runs,
-                         vct_error *err) {
+                         void *out_keys_mem, void *out_sums_mem, uint32_t *runs, vct_error *err) {
     *runs = 0;
     if (n == 0)
         return VCT_OK;
@@ -257,8 +250,8 @@ int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uin
     int rc = vct_program_get(ctx, "segmented_reduce.cl", "-D KEY_T=uint", &p, err);
     if (rc)
         return rc;
-    cl_mem heads = vct_buffer_create(ctx, STAGE, "segment heads", n * 4ull, CL_MEM_READ_WRITE,
-                                     NULL, err);
+    cl_mem heads =
+        vct_buffer_create(ctx, STAGE, "segment heads", n * 4ull, CL_MEM_READ_WRITE, NULL, err);
     cl_mem index = heads ? vct_buffer_create(ctx, STAGE, "segment index", n * 4ull,
                                              CL_MEM_READ_WRITE, NULL, err)
                          : NULL;

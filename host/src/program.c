@@ -56,8 +56,8 @@ static void mkdirs(const char *path) {
 static void cache_key(const vct_context *ctx, const char *source, const char *options,
                       char out[40]) {
     uint64_t a = 0xcbf29ce484222325ull, b = 0x84222325cbf29ce4ull;
-    const char *parts[] = {source, options, ctx->info.name, ctx->info.version, ctx->info.driver,
-                           ctx->info.platform};
+    const char *parts[] = {source,           options,           ctx->info.name, ctx->info.version,
+                           ctx->info.driver, ctx->info.platform};
     for (size_t i = 0; i < sizeof parts / sizeof parts[0]; ++i) {
         a = hash_str(a, parts[i]);
         b = hash_str(b ^ (i + 1) * 0x9e3779b97f4a7c15ull, parts[i]);

@@ -11,17 +11,17 @@ static int set_grid_args(vct_context *ctx, cl_kernel k, const vct_grid *g, const
     vct_grid_desc desc;
     vct_grid_kernel_args(g, &desc);
     VCT_CL(err, stage, clSetKernelArg(k, 0, sizeof desc, &desc));
-    VCT_CL(err, stage, clSetKernelArg(k, 1, sizeof(cl_mem), &g->cell_start));
-    VCT_CL(err, stage, clSetKernelArg(k, 2, sizeof(cl_mem), &g->cell_end));
+    VCT_CL(err, stage, clSetKernelArg(k, 1, sizeof(cl_mem), &g->cell_bits));
+    VCT_CL(err, stage, clSetKernelArg(k, 2, sizeof(cl_mem), &g->cell_ranges));
     VCT_CL(err, stage, clSetKernelArg(k, 3, sizeof(cl_mem), &g->tri_ids));
     VCT_CL(err, stage, clSetKernelArg(k, 4, sizeof(cl_mem), &g->tri_vertices));
     (void)ctx;
     return VCT_OK;
 }
 
-int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint32_t n,
+int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint32_t n, int any_hit,
                    vct_hit *hits, vct_error *err) {
-    const char *stage = "trace rays";
+    const char *stage = any_hit ? "trace rays (any hit)" : "trace rays";
     if (n == 0)
         return VCT_OK;
     cl_program p;
@@ -29,17 +29,22 @@ int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint3
     if (rc)
         return rc;
     cl_mem rb = vct_buffer_create(ctx, stage, "rays", 32ull * n, CL_MEM_READ_ONLY, rays, err);
-    cl_mem hb = rb ? vct_buffer_create(ctx, stage, "hits", 16ull * n, CL_MEM_WRITE_ONLY, NULL, err)
-                   : NULL;
+    cl_mem hb =
+        rb ? vct_buffer_create(ctx, stage, "hits", 16ull * n, CL_MEM_WRITE_ONLY, NULL, err) : NULL;
     cl_kernel k = hb ? vct_kernel_create(ctx, p, "trace_rays", err) : NULL;
     rc = k ? set_grid_args(ctx, k, g, stage, err) : (int)err->status;
     if (rc == VCT_OK) {
         clSetKernelArg(k, 5, sizeof rb, &rb);
+        cl_uint any = any_hit != 0;
         clSetKernelArg(k, 6, sizeof n, &n);
-        rc = vct_cl_check(err, clSetKernelArg(k, 7, sizeof hb, &hb), stage, "clSetKernelArg");
+        clSetKernelArg(k, 7, sizeof any, &any);
+        rc = vct_cl_check(err, clSetKernelArg(k, 8, sizeof hb, &hb), stage, "clSetKernelArg");
     }
-    if (rc == VCT_OK)
-        rc = vct_launch(ctx, k, n, 0, err);
+    if (rc == VCT_OK) {
+        vct_stage_begin(ctx, stage);
+        rc = vct_launch(ctx, k, n, 64, err);
+        vct_stage_end(ctx);
+    }
     float *raw = rc == VCT_OK ? malloc(16ull * n) : NULL;
     if (rc == VCT_OK && !raw)
         rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
@@ -90,14 +95,14 @@ static int scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *
     b->light_count = s->light_count;
     b->materials = vct_buffer_create(ctx, stage, "materials", sizeof *mats * s->material_count,
                                      CL_MEM_READ_ONLY, mats, err);
-    b->tri_material = b->materials ? vct_buffer_create(ctx, stage, "triangle materials",
-                                                       4ull * s->triangle_count, CL_MEM_READ_ONLY,
-                                                       s->triangle_material, err)
-                                   : NULL;
-    b->lights = b->tri_material ? vct_buffer_create(ctx, stage, "lights",
-                                                    sizeof *lights * (s->light_count + 1),
-                                                    CL_MEM_READ_ONLY, lights, err)
-                                : NULL;
+    b->tri_material =
+        b->materials ? vct_buffer_create(ctx, stage, "triangle materials", 4ull * s->triangle_count,
+                                         CL_MEM_READ_ONLY, s->triangle_material, err)
+                     : NULL;
+    b->lights = b->tri_material
+                    ? vct_buffer_create(ctx, stage, "lights", sizeof *lights * (s->light_count + 1),
+                                        CL_MEM_READ_ONLY, lights, err)
+                    : NULL;
     free(mats);
     free(lights);
     if (!b->lights) {

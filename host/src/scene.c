@@ -43,9 +43,8 @@ int vct_scene_validate(vct_scene *s, vct_error *err) {
     for (uint32_t i = 0; i < s->vertex_count; ++i)
         if (!finite3(&s->positions[3 * i]))
             return vct_fail(err, VCT_ERR_INPUT,
-                            "scene %s: vertex %u is not finite (%g, %g, %g): fix the file", src,
-                            i, s->positions[3 * i], s->positions[3 * i + 1],
-                            s->positions[3 * i + 2]);
+                            "scene %s: vertex %u is not finite (%g, %g, %g): fix the file", src, i,
+                            s->positions[3 * i], s->positions[3 * i + 1], s->positions[3 * i + 2]);
     s->degenerate_triangles = 0;
     float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (uint32_t t = 0; t < s->triangle_count; ++t) {
@@ -58,8 +57,8 @@ int vct_scene_validate(vct_scene *s, vct_error *err) {
                                 src, t, tri[k], s->vertex_count);
         if (s->triangle_material[t] >= s->material_count)
             return vct_fail(err, VCT_ERR_INPUT,
-                            "scene %s: triangle %u uses material %u but there are only %u", src,
-                            t, s->triangle_material[t], s->material_count);
+                            "scene %s: triangle %u uses material %u but there are only %u", src, t,
+                            s->triangle_material[t], s->material_count);
         const float *a = &s->positions[3 * tri[0]], *b = &s->positions[3 * tri[1]],
                     *c = &s->positions[3 * tri[2]];
         double e1[3], e2[3];
@@ -96,9 +95,8 @@ int vct_scene_validate(vct_scene *s, vct_error *err) {
 
 vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
                                  const uint32_t *triangles, uint32_t triangle_count,
-                                 const uint32_t *triangle_material,
-                                 const vct_material *materials, uint32_t material_count,
-                                 vct_error *err) {
+                                 const uint32_t *triangle_material, const vct_material *materials,
+                                 uint32_t material_count, vct_error *err) {
     vct_scene *s = calloc(1, sizeof *s);
     if (!s) {
         vct_fail(err, VCT_ERR_MEMORY, "scene: out of host memory");
@@ -113,8 +111,7 @@ vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
     s->materials = malloc(s->material_count * sizeof(vct_material));
     if (!s->positions || !s->triangles || !s->triangle_material || !s->materials) {
         vct_scene_free(s);
-        vct_fail(err, VCT_ERR_MEMORY, "scene: out of host memory for %u triangles",
-                 triangle_count);
+        vct_fail(err, VCT_ERR_MEMORY, "scene: out of host memory for %u triangles", triangle_count);
         return NULL;
     }
     memcpy(s->positions, positions, 3ull * vertex_count * sizeof(float));

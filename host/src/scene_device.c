@@ -1,34 +1,21 @@
 /* Scene data in the kernels' layout: camera, lights and materials. */
+#include <cglm/vec3.h>
 #include <math.h>
 #include <string.h>
 
 #include "internal.h"
 #include "scene_device.h"
 
-static void normalize3(float v[3]) {
-    float len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (len > 0.0f)
-        for (int k = 0; k < 3; ++k)
-            v[k] /= len;
-}
-
-static void cross3(const float a[3], const float b[3], float out[3]) {
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 int vct_camera_desc_make(const vct_camera *cam, int width, int height, vct_camera_desc *d,
                          vct_error *err) {
-    float f[3], r[3], u[3];
-    for (int k = 0; k < 3; ++k)
-        f[k] = cam->look_at[k] - cam->position[k];
-    normalize3(f);
-    cross3(f, cam->up, r);
-    normalize3(r);
-    cross3(r, f, u);
-    float rl = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-    float fl = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+    vec3 f, r, u, up = {cam->up[0], cam->up[1], cam->up[2]};
+    vec3 eye = {cam->position[0], cam->position[1], cam->position[2]};
+    vec3 at = {cam->look_at[0], cam->look_at[1], cam->look_at[2]};
+    glm_vec3_sub(at, eye, f);
+    glm_vec3_normalize(f);
+    glm_vec3_crossn(f, up, r);
+    glm_vec3_cross(r, f, u);
+    float rl = glm_vec3_norm2(r), fl = glm_vec3_norm2(f);
     if (!(fl > 0.5f) || !(rl > 0.5f))
         return vct_fail(err, VCT_ERR_INPUT,
                         "camera: position, look-at and up do not define a view (look-at equals "
@@ -55,8 +42,8 @@ int vct_camera_desc_make(const vct_camera *cam, int width, int height, vct_camer
 
 void vct_light_desc_make(const vct_light *l, vct_light_desc *d) {
     memset(d, 0, sizeof *d);
-    float dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
-    normalize3(dir);
+    vec3 dir = {l->direction[0], l->direction[1], l->direction[2]};
+    glm_vec3_normalize(dir);
     for (int k = 0; k < 3; ++k) {
         d->position.s[k] = l->position[k];
         d->direction.s[k] = dir[k];

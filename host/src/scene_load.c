@@ -40,8 +40,7 @@ static int add_mesh(builder *b, const struct aiMesh *mesh, const struct aiMatrix
     vct_scene *s = b->s;
     uint64_t verts = (uint64_t)s->vertex_count + mesh->mNumVertices;
     if (verts > UINT32_MAX / 2)
-        return vct_fail(b->err, VCT_ERR_INPUT, "scene %s: more vertices than vct indexes",
-                        b->path);
+        return vct_fail(b->err, VCT_ERR_INPUT, "scene %s: more vertices than vct indexes", b->path);
     uint32_t vcap = b->vertex_cap;
     if (!grow((void **)&s->positions, &vcap, (uint32_t)verts, 3 * sizeof(float)))
         return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
@@ -57,8 +56,8 @@ static int add_mesh(builder *b, const struct aiMesh *mesh, const struct aiMatrix
         if (!isfinite(v.x) || !isfinite(v.y) || !isfinite(v.z) || !isfinite(out[0]) ||
             !isfinite(out[1]) || !isfinite(out[2]))
             return vct_fail(b->err, VCT_ERR_INPUT,
-                            "scene %s: mesh \"%s\" vertex %u is not finite (%g, %g, %g)",
-                            b->path, mesh->mName.data, i, v.x, v.y, v.z);
+                            "scene %s: mesh \"%s\" vertex %u is not finite (%g, %g, %g)", b->path,
+                            mesh->mName.data, i, v.x, v.y, v.z);
     }
     s->vertex_count = (uint32_t)verts;
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
@@ -67,8 +66,7 @@ static int add_mesh(builder *b, const struct aiMesh *mesh, const struct aiMatrix
             continue; /* points and lines carry no surface */
         uint32_t tcap = b->triangle_cap, tcap2 = b->triangle_cap;
         if (!grow((void **)&s->triangles, &tcap, s->triangle_count + 1, 3 * sizeof(uint32_t)) ||
-            !grow((void **)&s->triangle_material, &tcap2, s->triangle_count + 1,
-                  sizeof(uint32_t)))
+            !grow((void **)&s->triangle_material, &tcap2, s->triangle_count + 1, sizeof(uint32_t)))
             return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
         b->triangle_cap = tcap;
         for (int k = 0; k < 3; ++k) {

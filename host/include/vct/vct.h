@@ -115,8 +115,8 @@ typedef struct vct_scene {
     uint32_t triangle_count;
     uint32_t material_count;
     uint32_t light_count;
-    float *positions;        /* 3 * vertex_count */
-    uint32_t *triangles;     /* 3 * triangle_count */
+    float *positions;    /* 3 * vertex_count */
+    uint32_t *triangles; /* 3 * triangle_count */
     uint32_t *triangle_material;
     vct_material *materials;
     vct_light *lights;
@@ -131,9 +131,8 @@ vct_scene *vct_scene_load(const char *path, vct_error *err);
 /* Builds a scene from arrays (copied); validates like a loaded file. */
 vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
                                  const uint32_t *triangles, uint32_t triangle_count,
-                                 const uint32_t *triangle_material,
-                                 const vct_material *materials, uint32_t material_count,
-                                 vct_error *err);
+                                 const uint32_t *triangle_material, const vct_material *materials,
+                                 uint32_t material_count, vct_error *err);
 int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_error *err);
 /* Checks indices, finite values, non-empty; counts degenerates; sets bounds. */
 int vct_scene_validate(vct_scene *scene, vct_error *err);
@@ -153,10 +152,10 @@ int vct_scan_u32(vct_context *ctx, void *in_mem, void *out_mem, uint32_t n, int 
 int vct_compact_u32(vct_context *ctx, void *in_mem, void *flags_mem, void *out_mem, uint32_t n,
                     uint32_t *count, vct_error *err);
 /* Stable LSD radix sort of (key, value) pairs on the low key_bits bits. */
-int vct_sort_pairs_u32(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
-                       int key_bits, vct_error *err);
-int vct_sort_pairs_u64(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
-                       int key_bits, vct_error *err);
+int vct_sort_pairs_u32(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n, int key_bits,
+                       vct_error *err);
+int vct_sort_pairs_u64(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n, int key_bits,
+                       vct_error *err);
 /* keys sorted; sums float4 values of equal-key runs in input order.
  * Writes unique keys and their sums; returns the number of runs. */
 int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
@@ -177,8 +176,8 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *scene, const uint32_
                          vct_error *err);
 void vct_grid_info_get(const vct_grid *grid, vct_grid_info *info);
 /* Reads back the cell ranges and the sorted triangle list (for tests). */
-int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start,
-                  uint32_t *cell_end, uint32_t *tri_ids, vct_error *err);
+int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start, uint32_t *cell_end,
+                  uint32_t *tri_ids, vct_error *err);
 void vct_grid_free(vct_grid *grid);
 
 typedef struct vct_hit {
@@ -187,9 +186,10 @@ typedef struct vct_hit {
     float u, v;
 } vct_hit;
 
-/* Closest hits for n rays (origin xyz, tmin; direction xyz, tmax). */
+/* Hits for n rays, 8 floats each (origin xyz, tmin; direction xyz, tmax):
+ * the closest one, or with any_hit the first found (occlusion queries). */
 int vct_trace_rays(vct_context *ctx, const vct_grid *grid, const float *rays, uint32_t n,
-                   vct_hit *hits, vct_error *err);
+                   int any_hit, vct_hit *hits, vct_error *err);
 
 typedef struct vct_image {
     int width, height;
@@ -211,8 +211,7 @@ void vct_image_free(vct_image *image);
 /* PFM: raw linear radiance. PNG: radiance * 2^exposure, clamped, sRGB encoded.
  * Written to a temporary file and renamed, so a failure leaves nothing. */
 int vct_image_write_pfm(const vct_image *image, const char *path, vct_error *err);
-int vct_image_write_png(const vct_image *image, const char *path, float exposure,
-                        vct_error *err);
+int vct_image_write_png(const vct_image *image, const char *path, float exposure, vct_error *err);
 int vct_image_write(const vct_image *image, const char *path, float exposure, vct_error *err);
 int vct_image_read_pfm(const char *path, vct_image *image, vct_error *err);
 
