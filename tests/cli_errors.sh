@@ -51,6 +51,12 @@ expect_failure "bad number" "not a finite number" render ok.obj --point-light 1 
 expect_failure "unknown option" "unknown option --bogus" render ok.obj --bogus -o out.png
 expect_failure "no such device" "device 99 does not exist" render ok.obj --device 99 -o out.png
 expect_failure "degenerate camera" "do not define a view" render ok.obj --camera-pos 0 0 5 --look-at 0 0 5 -o out.png
+expect_failure "grid beyond the device's memory" "lower" render ok.obj --grid-res 1024 -o out.png
+# A kernel that does not compile: the build log names the file and line.
+cp -r "$(dirname "$VCT")/kernels" broken-kernels
+printf 'this is not OpenCL C;\n' >> broken-kernels/raycast.cl
+VCT_KERNEL_DIR="$DIR/broken-kernels" VCT_CACHE_DIR="$DIR/cache" \
+    expect_failure "kernel build failure" "raycast.cl:[0-9]" render ok.obj -o out.png
 expect_failure "unwritable output" "could not write\|cannot create" render ok.obj -o /proc/out.png
 
 # A scene with degenerate triangles renders, and says how many it has.

@@ -13,14 +13,14 @@ cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, 
     if ((uint64_t)bytes > ctx->info.max_alloc) {
         vct_fail(err, VCT_ERR_MEMORY,
                  "%s: %s needs %.1f MiB but %s allows at most %.1f MiB per buffer: lower the "
-                 "resolution or scene size",
+                 "resolution (--grid-res, --size) or the scene size",
                  stage, what, bytes * mib, ctx->info.name, ctx->info.max_alloc * mib);
         return NULL;
     }
     if (ctx->bytes_live + (double)bytes > (double)ctx->info.global_mem) {
         vct_fail(err, VCT_ERR_MEMORY,
                  "%s: %s needs %.1f MiB with %.1f MiB already in use, beyond the %.1f MiB of "
-                 "%s: lower the resolution or scene size",
+                 "%s: lower the resolution (--grid-res, --size) or the scene size",
                  stage, what, bytes * mib, ctx->bytes_live * mib, ctx->info.global_mem * mib,
                  ctx->info.name);
         return NULL;

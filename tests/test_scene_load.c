@@ -1,0 +1,119 @@
+/* Scene loading through assimp: the shipped Cornell box (OBJ and glTF), and a
+ * generated glTF whose node tree, camera and spot / directional lights must
+ * come out flattened and converted to the engine's conventions. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "check.h"
+
+static int near(float a, float b, float tol) {
+    return fabsf(a - b) <= tol * fmaxf(1.0f, fabsf(b));
+}
+
+static void check_cornell(const char *dir) {
+    char path[1024];
+    vct_error err = {0};
+    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", dir);
+    vct_scene *s = vct_scene_load(path, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    CHECK(s->triangle_count == 30, "cornell glTF: %u triangles", s->triangle_count);
+    CHECK(s->light_count == 1 && s->lights[0].type == VCT_LIGHT_POINT, "cornell glTF: lights");
+    CHECK(s->light_count == 1 && near(s->lights[0].position[1], 538.8f, 1e-6f) &&
+              near(s->lights[0].color[0], 1e6f, 1e-6f),
+          "cornell glTF: light at y %g, intensity %g", s->lights[0].position[1],
+          s->lights[0].color[0]);
+    CHECK(s->has_camera && near(s->camera.position[2], -800.0f, 1e-6f) &&
+              near(s->camera.look_at[2] - s->camera.position[2], 1.0f, 1e-5f) &&
+              near(s->camera.fov_y_deg, 39.3077f, 1e-4f),
+          "cornell glTF camera: z %g, look-at z %g, fov %g", s->camera.position[2],
+          s->camera.look_at[2], s->camera.fov_y_deg);
+    CHECK(near(s->bounds_max[0], 556.0f, 1e-6f) && near(s->bounds_max[2], 559.2f, 1e-6f),
+          "cornell glTF bounds");
+    vct_scene_free(s);
+
+    snprintf(path, sizeof path, "%s/scenes/cornell_box.obj", dir);
+    s = vct_scene_load(path, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    CHECK(s->triangle_count == 30 && s->light_count == 0, "cornell OBJ: %u triangles",
+          s->triangle_count);
+    int red = 0;
+    for (uint32_t m = 0; m < s->material_count; ++m)
+        red += strcmp(s->materials[m].name, "red") == 0 &&
+               near(s->materials[m].albedo[0], 0.63f, 1e-6f) &&
+               near(s->materials[m].albedo[1], 0.065f, 1e-6f);
+    CHECK(red == 1, "cornell OBJ: the red material's albedo");
+    vct_scene_free(s);
+}
+
+/* One triangle in a child node (translated by (10, 0, 0)) of a parent scaled
+ * by 2; a spot light pointing down -y, a sun rotated to travel along -y too. */
+static const char *gltf =
+    "{\"asset\":{\"version\":\"2.0\"},"
+    "\"extensionsUsed\":[\"KHR_lights_punctual\"],"
+    "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":["
+    "{\"name\":\"spot\",\"type\":\"spot\",\"color\":[1,0.5,0.25],\"intensity\":8,"
+    "\"spot\":{\"innerConeAngle\":0.2,\"outerConeAngle\":0.5}},"
+    "{\"name\":\"sun\",\"type\":\"directional\",\"color\":[1,1,1],\"intensity\":3}]}},"
+    "\"scene\":0,\"scenes\":[{\"nodes\":[0,2,3]}],"
+    "\"nodes\":["
+    "{\"name\":\"parent\",\"scale\":[2,2,2],\"children\":[1]},"
+    "{\"name\":\"child\",\"translation\":[10,0,0],\"mesh\":0},"
+    "{\"name\":\"spot\",\"translation\":[0,5,0],\"rotation\":[-0.7071068,0,0,0.7071068],"
+    "\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}}},"
+    "{\"name\":\"sun\",\"rotation\":[-0.7071068,0,0,0.7071068],"
+    "\"extensions\":{\"KHR_lights_punctual\":{\"light\":1}}}],"
+    "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
+    "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
+    "\"min\":[0,0,0],\"max\":[1,1,0]}],"
+    "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
+    "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,"
+    "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}]}";
+
+static void check_hierarchy(void) {
+    char dir[] = "/tmp/vct-scene-XXXXXX", path[64];
+    if (!mkdtemp(dir))
+        exit(1);
+    snprintf(path, sizeof path, "%s/nodes.gltf", dir);
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(gltf, f) < 0 || fclose(f) != 0)
+        exit(1);
+    vct_error err = {0};
+    vct_scene *s = vct_scene_load(path, &err);
+    unlink(path);
+    rmdir(dir);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    CHECK(s->triangle_count == 1, "hierarchy: %u triangles", s->triangle_count);
+    /* Vertex (1, 0, 0) -> child (11, 0, 0) -> parent scale 2 -> (22, 0, 0). */
+    float max_x = -1e9f;
+    for (uint32_t v = 0; v < s->vertex_count; ++v)
+        max_x = fmaxf(max_x, s->positions[3 * v]);
+    CHECK(near(max_x, 22.0f, 1e-6f) && near(s->bounds_min[0], 20.0f, 1e-6f) &&
+              near(s->bounds_max[1], 2.0f, 1e-6f),
+          "hierarchy: x from %g to %g, y up to %g", s->bounds_min[0], max_x, s->bounds_max[1]);
+    CHECK(s->light_count == 2, "hierarchy: %u lights", s->light_count);
+    for (uint32_t i = 0; i < s->light_count; ++i) {
+        const vct_light *l = &s->lights[i];
+        CHECK(near(l->direction[1], -1.0f, 1e-5f) && fabsf(l->direction[0]) < 1e-5f,
+              "light %u travels along (%g %g %g), expected -y", i, l->direction[0], l->direction[1],
+              l->direction[2]);
+        if (l->type == VCT_LIGHT_SPOT) {
+            CHECK(near(l->position[1], 5.0f, 1e-6f), "spot at y %g", l->position[1]);
+            CHECK(near(l->color[1], 4.0f, 1e-6f), "spot intensity %g", l->color[1]);
+            CHECK(near(l->outer_cone, 0.5f, 1e-5f) && near(l->inner_cone, 0.2f, 1e-5f),
+                  "spot cones %g %g", l->inner_cone, l->outer_cone);
+        } else {
+            CHECK(l->type == VCT_LIGHT_DIRECTIONAL && near(l->color[0], 3.0f, 1e-6f),
+                  "sun: type %d, irradiance %g", l->type, l->color[0]);
+        }
+    }
+    vct_scene_free(s);
+}
+
+int main(void) {
+    const char *dir = getenv("VCT_SOURCE_DIR");
+    check_cornell(dir ? dir : ".");
+    check_hierarchy();
+    return check_exit("test_scene_load");
+}
