@@ -16,7 +16,7 @@ typedef struct test_mesh {
     uint32_t nv, nt;
 } test_mesh;
 
-static uint32_t mesh_midpoint(test_mesh *m, uint32_t a, uint32_t b, uint32_t *cache_a,
+static inline uint32_t mesh_midpoint(test_mesh *m, uint32_t a, uint32_t b, uint32_t *cache_a,
                               uint32_t *cache_b, uint32_t *cache_v, uint32_t *ncache) {
     uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
     for (uint32_t i = 0; i < *ncache; ++i)
@@ -36,7 +36,7 @@ static uint32_t mesh_midpoint(test_mesh *m, uint32_t a, uint32_t b, uint32_t *ca
 }
 
 /* Unit icosphere, `levels` subdivisions, scaled and moved to centre. */
-static test_mesh mesh_icosphere(int levels, float radius, const float centre[3]) {
+static inline test_mesh mesh_icosphere(int levels, float radius, const float centre[3]) {
     const float t = (1.0f + sqrtf(5.0f)) / 2.0f;
     const float base[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
                                {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
@@ -81,7 +81,7 @@ static test_mesh mesh_icosphere(int levels, float radius, const float centre[3])
 
 /* n triangles in [offset, offset + 1]^3: mostly small, some large, every 50th
  * a sliver (aspect ~1e6), every 97th degenerate (a repeated vertex). */
-static test_mesh mesh_soup(uint32_t n, float offset, uint64_t seed) {
+static inline test_mesh mesh_soup(uint32_t n, float offset, uint64_t seed) {
     test_mesh m = {malloc(36ull * n), malloc(12ull * n), 3 * n, n};
     for (uint32_t t = 0; t < n; ++t) {
         float c[3], size = (t % 10 == 0) ? 0.5f : 0.05f;
@@ -105,7 +105,7 @@ static test_mesh mesh_soup(uint32_t n, float offset, uint64_t seed) {
     return m;
 }
 
-static void mesh_free(test_mesh *m) {
+static inline void mesh_free(test_mesh *m) {
     free(m->pos);
     free(m->tri);
 }

@@ -56,14 +56,6 @@ static void choose_resolution(const vct_scene *s, const float lo[3], const float
     }
 }
 
-static int set_args(vct_error *err, cl_kernel k, int count, const size_t *sizes,
-                    const void *const *values) {
-    for (int i = 0; i < count; ++i)
-        VCT_CL(err, STAGE, clSetKernelArg(k, (cl_uint)i, sizes[i], values[i]));
-    return VCT_OK;
-}
-#define ARGS(...) __VA_ARGS__
-
 void vct_grid_kernel_args(const vct_grid *grid, void *out) {
     vct_grid_desc *d = out;
     memset(d, 0, sizeof *d);
@@ -112,8 +104,8 @@ static int gather_vertices(vct_context *ctx, vct_grid *g, const vct_scene *s, cl
     int rc = k ? VCT_OK : (int)err->status;
     uint32_t n = s->triangle_count;
     if (rc == VCT_OK)
-        rc = set_args(err, k, 4, ARGS((size_t[]){sizeof pos, sizeof tri, sizeof n, sizeof(cl_mem)}),
-                      ARGS((const void *[]){&pos, &tri, &n, &g->tri_vertices}));
+        rc = vct_set_args(err, STAGE, k, 0, 4, VCT_ARG_OF(pos), VCT_ARG_OF(tri), VCT_ARG_OF(n),
+                          VCT_ARG_OF(g->tri_vertices));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k, n, 0, err);
     if (rc == VCT_OK)
@@ -181,10 +173,8 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
         rc = k_ranges ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = set_args(
-            err, k_count, 5,
-            ARGS((size_t[]){sizeof(cl_mem), sizeof n, sizeof desc, sizeof pad, sizeof counts}),
-            ARGS((const void *[]){&g->tri_vertices, &n, &desc, &pad, &counts}));
+        rc = vct_set_args(err, STAGE, k_count, 0, 5, VCT_ARG_OF(g->tri_vertices), VCT_ARG_OF(n),
+                          VCT_ARG_OF(desc), VCT_ARG_OF(pad), VCT_ARG_OF(counts));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_count, n, 0, err);
     uint64_t total = 0;
@@ -205,11 +195,9 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
         rc = g->tri_ids ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = set_args(
-            err, k_write, 7,
-            ARGS((size_t[]){sizeof(cl_mem), sizeof n, sizeof desc, sizeof pad, sizeof counts,
-                            sizeof keys, sizeof(cl_mem)}),
-            ARGS((const void *[]){&g->tri_vertices, &n, &desc, &pad, &counts, &keys, &g->tri_ids}));
+        rc = vct_set_args(err, STAGE, k_write, 0, 7, VCT_ARG_OF(g->tri_vertices), VCT_ARG_OF(n),
+                          VCT_ARG_OF(desc), VCT_ARG_OF(pad), VCT_ARG_OF(counts), VCT_ARG_OF(keys),
+                          VCT_ARG_OF(g->tri_ids));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_write, n, 0, err);
     if (rc == VCT_OK)
@@ -228,10 +216,8 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
     if (rc == VCT_OK)
         rc = vct_buffer_fill_u32(ctx, STAGE, g->cell_bits, 0, (cells + 31) / 32, err);
     if (rc == VCT_OK)
-        rc =
-            set_args(err, k_ranges, 4,
-                     ARGS((size_t[]){sizeof keys, sizeof(cl_uint), sizeof(cl_mem), sizeof(cl_mem)}),
-                     ARGS((const void *[]){&keys, &g->references, &g->cell_ranges, &g->cell_bits}));
+        rc = vct_set_args(err, STAGE, k_ranges, 0, 4, VCT_ARG_OF(keys), VCT_ARG_OF(g->references),
+                          VCT_ARG_OF(g->cell_ranges), VCT_ARG_OF(g->cell_bits));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_ranges, g->references, 0, err);
     if (rc == VCT_OK)

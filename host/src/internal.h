@@ -97,8 +97,13 @@ int vct_record_event(vct_context *ctx, cl_event event, const char *kernel_name, 
 int vct_finish(vct_context *ctx, const char *stage, vct_error *err);
 double vct_now_ms(void);
 
-#define VCT_ARG(err, stage, kernel, index, value)                                                  \
-    VCT_CL(err, stage, clSetKernelArg((kernel), (index), sizeof(value), &(value)))
+/* Sets `count` kernel arguments from index `first`, given as (size_t size,
+ * const void *value) pairs, most easily written VCT_ARG_OF(variable). */
+int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first, int count, ...);
+#define VCT_ARG_OF(x) sizeof(x), (const void *)&(x)
+
+/* Whole file into a NUL-terminated buffer (size optional); NULL if unreadable. */
+char *vct_read_file(const char *path, size_t *size);
 
 /* ---- grid internals used by renderers ---- */
 struct vct_grid {

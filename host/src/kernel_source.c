@@ -9,6 +9,27 @@
 
 #include "internal.h"
 
+char *vct_read_file(const char *path, size_t *size) {
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    char *buf = NULL;
+    long n = -1;
+    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0)
+        buf = malloc((size_t)n + 1);
+    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    }
+    fclose(f);
+    if (buf) {
+        buf[n] = '\0';
+        if (size)
+            *size = (size_t)n;
+    }
+    return buf;
+}
+
 typedef struct vct_embedded_kernel {
     const char *name;
     const unsigned char *data;
@@ -38,27 +59,6 @@ static int text_append(text *t, const char *s, size_t n) {
     t->len += n;
     t->data[t->len] = '\0';
     return 1;
-}
-
-static char *read_file(const char *path, size_t *size) {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *buf = n >= 0 ? malloc((size_t)n + 1) : NULL;
-    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
-        free(buf);
-        buf = NULL;
-    }
-    fclose(f);
-    if (buf) {
-        buf[n] = '\0';
-        if (size)
-            *size = (size_t)n;
-    }
-    return buf;
 }
 
 static int dir_has_kernels(const char *dir) {
@@ -105,7 +105,7 @@ static char *load_one(const char *name, vct_error *err) {
     if (*dir) {
         char path[PATH_MAX + 256];
         snprintf(path, sizeof path, "%s/%s", dir, name);
-        char *s = read_file(path, NULL);
+        char *s = vct_read_file(path, NULL);
         if (s)
             return s;
     }

@@ -59,24 +59,13 @@ static int scan_impl(vct_context *ctx, cl_mem in, cl_mem out, uint32_t n, int in
         if (rc == VCT_OK)                                                                          \
             rc = (x);                                                                              \
     } while (0)
-    TRY(vct_cl_check(err, clSetKernelArg(reduce, 0, sizeof in, &in), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(reduce, 1, sizeof n, &n), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(reduce, 2, sizeof span, &span), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(reduce, 3, sizeof flags, &flags), STAGE,
-                     "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(reduce, 4, sizeof sums, &sums), STAGE, "clSetKernelArg"));
+    TRY(vct_set_args(err, STAGE, reduce, 0, 5, VCT_ARG_OF(in), VCT_ARG_OF(n), VCT_ARG_OF(span),
+                     VCT_ARG_OF(flags), VCT_ARG_OF(sums)));
     TRY(vct_launch(ctx, reduce, groups * wg, wg, err));
-    TRY(vct_cl_check(err, clSetKernelArg(offsets, 0, sizeof sums, &sums), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(offsets, 1, sizeof groups, &groups), STAGE,
-                     "clSetKernelArg"));
+    TRY(vct_set_args(err, STAGE, offsets, 0, 2, VCT_ARG_OF(sums), VCT_ARG_OF(groups)));
     TRY(vct_launch(ctx, offsets, 1, 1, err));
-    TRY(vct_cl_check(err, clSetKernelArg(down, 0, sizeof in, &in), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(down, 1, sizeof out, &out), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(down, 2, sizeof n, &n), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(down, 3, sizeof span, &span), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(down, 4, sizeof flags, &flags), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(down, 5, sizeof incl, &incl), STAGE, "clSetKernelArg"));
-    TRY(vct_cl_check(err, clSetKernelArg(down, 6, sizeof sums, &sums), STAGE, "clSetKernelArg"));
+    TRY(vct_set_args(err, STAGE, down, 0, 7, VCT_ARG_OF(in), VCT_ARG_OF(out), VCT_ARG_OF(n),
+                     VCT_ARG_OF(span), VCT_ARG_OF(flags), VCT_ARG_OF(incl), VCT_ARG_OF(sums)));
     TRY(vct_launch(ctx, down, groups * wg, wg, err));
     cl_ulong total = 0;
     TRY(vct_buffer_read(ctx, STAGE, sums, groups * sizeof(cl_ulong), sizeof total, &total, err));
@@ -124,11 +113,8 @@ int vct_compact_u32(vct_context *ctx, void *in_mem, void *flags_mem, void *out_m
         rc = err->status;
     if (rc == VCT_OK) {
         cl_mem in = in_mem, flags = flags_mem, out = out_mem;
-        clSetKernelArg(k, 0, sizeof in, &in);
-        clSetKernelArg(k, 1, sizeof flags, &flags);
-        clSetKernelArg(k, 2, sizeof offsets, &offsets);
-        clSetKernelArg(k, 3, sizeof n, &n);
-        rc = vct_cl_check(err, clSetKernelArg(k, 4, sizeof out, &out), STAGE, "clSetKernelArg");
+        rc = vct_set_args(err, STAGE, k, 0, 5, VCT_ARG_OF(in), VCT_ARG_OF(flags),
+                          VCT_ARG_OF(offsets), VCT_ARG_OF(n), VCT_ARG_OF(out));
         if (rc == VCT_OK)
             rc = vct_launch(ctx, k, n, 0, err);
     }
@@ -174,30 +160,17 @@ static int sort_impl(vct_context *ctx, cl_mem keys, cl_mem values, uint32_t n, i
     cl_mem src_k = keys, src_v = values, dst_k = keys_tmp, dst_v = values_tmp;
     for (int shift = 0; rc == VCT_OK && shift < key_bits; shift += bits) {
         cl_uint sh = (cl_uint)shift;
-        clSetKernelArg(histogram, 0, sizeof src_k, &src_k);
-        clSetKernelArg(histogram, 1, sizeof n, &n);
-        clSetKernelArg(histogram, 2, sizeof span, &span);
-        clSetKernelArg(histogram, 3, sizeof sh, &sh);
-        clSetKernelArg(histogram, 4, sizeof groups, &groups);
-        rc = vct_cl_check(err, clSetKernelArg(histogram, 5, sizeof hist, &hist), STAGE,
-                          "clSetKernelArg");
+        rc = vct_set_args(err, STAGE, histogram, 0, 6, VCT_ARG_OF(src_k), VCT_ARG_OF(n),
+                          VCT_ARG_OF(span), VCT_ARG_OF(sh), VCT_ARG_OF(groups), VCT_ARG_OF(hist));
         if (rc == VCT_OK)
             rc = vct_launch(ctx, histogram, groups * wg, wg, err);
         if (rc == VCT_OK)
             rc = scan_impl(ctx, hist, hist, hist_n, 0, 0, NULL, err);
         if (rc != VCT_OK)
             break;
-        cl_mem args[] = {src_k, src_v};
-        clSetKernelArg(scatter, 0, sizeof args[0], &args[0]);
-        clSetKernelArg(scatter, 1, sizeof args[1], &args[1]);
-        clSetKernelArg(scatter, 2, sizeof n, &n);
-        clSetKernelArg(scatter, 3, sizeof span, &span);
-        clSetKernelArg(scatter, 4, sizeof sh, &sh);
-        clSetKernelArg(scatter, 5, sizeof groups, &groups);
-        clSetKernelArg(scatter, 6, sizeof hist, &hist);
-        clSetKernelArg(scatter, 7, sizeof dst_k, &dst_k);
-        rc = vct_cl_check(err, clSetKernelArg(scatter, 8, sizeof dst_v, &dst_v), STAGE,
-                          "clSetKernelArg");
+        rc = vct_set_args(err, STAGE, scatter, 0, 9, VCT_ARG_OF(src_k), VCT_ARG_OF(src_v),
+                          VCT_ARG_OF(n), VCT_ARG_OF(span), VCT_ARG_OF(sh), VCT_ARG_OF(groups),
+                          VCT_ARG_OF(hist), VCT_ARG_OF(dst_k), VCT_ARG_OF(dst_v));
         if (rc == VCT_OK)
             rc = vct_launch(ctx, scatter, groups * wg, wg, err);
         cl_mem t = src_k;
@@ -261,12 +234,9 @@ int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uin
     rc = k_sum ? VCT_OK : (int)err->status;
     cl_mem keys = keys_mem, values = values_mem, out_keys = out_keys_mem, sums = out_sums_mem;
     uint64_t total = 0;
-    if (rc == VCT_OK) {
-        clSetKernelArg(k_heads, 0, sizeof keys, &keys);
-        clSetKernelArg(k_heads, 1, sizeof n, &n);
-        rc = vct_cl_check(err, clSetKernelArg(k_heads, 2, sizeof heads, &heads), STAGE,
-                          "clSetKernelArg");
-    }
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k_heads, 0, 3, VCT_ARG_OF(keys), VCT_ARG_OF(n),
+                          VCT_ARG_OF(heads));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_heads, n, 0, err);
     if (rc == VCT_OK)
@@ -277,26 +247,16 @@ int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uin
                                    NULL, err);
         rc = starts ? VCT_OK : (int)err->status;
     }
-    if (rc == VCT_OK) {
-        clSetKernelArg(k_starts, 0, sizeof keys, &keys);
-        clSetKernelArg(k_starts, 1, sizeof heads, &heads);
-        clSetKernelArg(k_starts, 2, sizeof index, &index);
-        clSetKernelArg(k_starts, 3, sizeof n, &n);
-        clSetKernelArg(k_starts, 4, sizeof starts, &starts);
-        rc = vct_cl_check(err, clSetKernelArg(k_starts, 5, sizeof out_keys, &out_keys), STAGE,
-                          "clSetKernelArg");
-    }
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k_starts, 0, 6, VCT_ARG_OF(keys), VCT_ARG_OF(heads),
+                          VCT_ARG_OF(index), VCT_ARG_OF(n), VCT_ARG_OF(starts),
+                          VCT_ARG_OF(out_keys));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_starts, n, 0, err);
     cl_uint run_count = (cl_uint)total;
-    if (rc == VCT_OK) {
-        clSetKernelArg(k_sum, 0, sizeof values, &values);
-        clSetKernelArg(k_sum, 1, sizeof starts, &starts);
-        clSetKernelArg(k_sum, 2, sizeof run_count, &run_count);
-        clSetKernelArg(k_sum, 3, sizeof n, &n);
-        rc = vct_cl_check(err, clSetKernelArg(k_sum, 4, sizeof sums, &sums), STAGE,
-                          "clSetKernelArg");
-    }
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k_sum, 0, 5, VCT_ARG_OF(values), VCT_ARG_OF(starts),
+                          VCT_ARG_OF(run_count), VCT_ARG_OF(n), VCT_ARG_OF(sums));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_sum, run_count, 0, err);
     if (rc == VCT_OK)

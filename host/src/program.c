@@ -66,20 +66,12 @@ static void cache_key(const vct_context *ctx, const char *source, const char *op
 }
 
 static cl_program load_cached(vct_context *ctx, const char *path) {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    unsigned char *bin = n > 0 ? malloc((size_t)n) : NULL;
-    int ok = bin && fread(bin, 1, (size_t)n, f) == (size_t)n;
-    fclose(f);
-    if (!ok) {
+    size_t size = 0;
+    unsigned char *bin = (unsigned char *)vct_read_file(path, &size);
+    if (!bin || size == 0) {
         free(bin);
         return NULL;
     }
-    size_t size = (size_t)n;
     const unsigned char *bins[1] = {bin};
     cl_int status = CL_SUCCESS, rc = CL_SUCCESS;
     cl_program p =

@@ -6,17 +6,13 @@
 #include "internal.h"
 #include "scene_device.h"
 
-static int set_grid_args(vct_context *ctx, cl_kernel k, const vct_grid *g, const char *stage,
-                         vct_error *err) {
+/* Arguments 0-4 of every kernel that traverses the grid (GRID_ARGS). */
+static int set_grid_args(cl_kernel k, const vct_grid *g, const char *stage, vct_error *err) {
     vct_grid_desc desc;
     vct_grid_kernel_args(g, &desc);
-    VCT_CL(err, stage, clSetKernelArg(k, 0, sizeof desc, &desc));
-    VCT_CL(err, stage, clSetKernelArg(k, 1, sizeof(cl_mem), &g->cell_bits));
-    VCT_CL(err, stage, clSetKernelArg(k, 2, sizeof(cl_mem), &g->cell_ranges));
-    VCT_CL(err, stage, clSetKernelArg(k, 3, sizeof(cl_mem), &g->tri_ids));
-    VCT_CL(err, stage, clSetKernelArg(k, 4, sizeof(cl_mem), &g->tri_vertices));
-    (void)ctx;
-    return VCT_OK;
+    return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(g->cell_bits),
+                        VCT_ARG_OF(g->cell_ranges), VCT_ARG_OF(g->tri_ids),
+                        VCT_ARG_OF(g->tri_vertices));
 }
 
 int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint32_t n, int any_hit,
@@ -32,14 +28,11 @@ int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint3
     cl_mem hb =
         rb ? vct_buffer_create(ctx, stage, "hits", 16ull * n, CL_MEM_WRITE_ONLY, NULL, err) : NULL;
     cl_kernel k = hb ? vct_kernel_create(ctx, p, "trace_rays", err) : NULL;
-    rc = k ? set_grid_args(ctx, k, g, stage, err) : (int)err->status;
-    if (rc == VCT_OK) {
-        clSetKernelArg(k, 5, sizeof rb, &rb);
-        cl_uint any = any_hit != 0;
-        clSetKernelArg(k, 6, sizeof n, &n);
-        clSetKernelArg(k, 7, sizeof any, &any);
-        rc = vct_cl_check(err, clSetKernelArg(k, 8, sizeof hb, &hb), stage, "clSetKernelArg");
-    }
+    rc = k ? set_grid_args(k, g, stage, err) : (int)err->status;
+    cl_uint any = any_hit != 0;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, 5, 4, VCT_ARG_OF(rb), VCT_ARG_OF(n), VCT_ARG_OF(any),
+                          VCT_ARG_OF(hb));
     if (rc == VCT_OK) {
         vct_stage_begin(ctx, stage);
         rc = vct_launch(ctx, k, n, 64, err);
@@ -132,15 +125,11 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
                               : NULL;
     cl_kernel k = img ? vct_kernel_create(ctx, p, "render_direct", err) : NULL;
     if (rc == VCT_OK)
-        rc = k ? set_grid_args(ctx, k, g, stage, err) : (int)err->status;
-    if (rc == VCT_OK) {
-        clSetKernelArg(k, 5, sizeof cam, &cam);
-        clSetKernelArg(k, 6, sizeof(cl_mem), &sb.materials);
-        clSetKernelArg(k, 7, sizeof(cl_mem), &sb.tri_material);
-        clSetKernelArg(k, 8, sizeof(cl_mem), &sb.lights);
-        clSetKernelArg(k, 9, sizeof(cl_uint), &sb.light_count);
-        rc = vct_cl_check(err, clSetKernelArg(k, 10, sizeof img, &img), stage, "clSetKernelArg");
-    }
+        rc = k ? set_grid_args(k, g, stage, err) : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, 5, 6, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
+                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(img));
     const size_t global[2] = {(size_t)opt->width, (size_t)opt->height};
     const size_t local[2] = {8, 8};
     if (rc == VCT_OK)

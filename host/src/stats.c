@@ -1,4 +1,5 @@
 /* Launches and per-stage statistics from profiling events. */
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -161,4 +162,18 @@ int vct_kernel_launches(const vct_context *ctx, const char *kernel_name) {
         if (strcmp(ctx->kernel_counts[i].name, kernel_name) == 0)
             return ctx->kernel_counts[i].launches;
     return 0;
+}
+
+int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first, int count, ...) {
+    va_list ap;
+    va_start(ap, count);
+    int rc = VCT_OK;
+    for (int i = 0; i < count && rc == VCT_OK; ++i) {
+        size_t size = va_arg(ap, size_t);
+        const void *value = va_arg(ap, const void *);
+        rc = vct_cl_check(err, clSetKernelArg(kernel, (cl_uint)(first + i), size, value), stage,
+                          "clSetKernelArg");
+    }
+    va_end(ap);
+    return rc;
 }
