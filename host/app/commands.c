@@ -178,3 +178,38 @@ int cmd_render(const cli_options *opt) {
     vct_scene_free(s);
     return rc == VCT_OK ? 0 : fail(&err);
 }
+
+int cmd_compare(const cli_options *opt) {
+    vct_error err = {0};
+    if (opt->input_count != 2) {
+        fprintf(stderr, "vct: compare needs two PFM images: TEST REFERENCE\n");
+        return 2;
+    }
+    vct_image test = {0}, ref = {0}, map = {0};
+    int rc = vct_image_read_pfm(opt->inputs[0], &test, &err);
+    if (rc == VCT_OK)
+        rc = vct_image_read_pfm(opt->inputs[1], &ref, &err);
+    vct_image_metrics m;
+    if (rc == VCT_OK)
+        rc = vct_image_compare(&test, &ref, &m, &err);
+    if (rc == VCT_OK && opt->error_image) {
+        rc = vct_image_error_map(&test, &ref, opt->error_scale, &map, &err);
+        if (rc == VCT_OK)
+            rc = make_parent_dir(opt->error_image, &err);
+        if (rc == VCT_OK)
+            rc = vct_image_write_png(&map, opt->error_image, 0.0f, &err);
+    }
+    if (rc == VCT_OK) {
+        printf("rmse %.6g\nrelative_rmse %.6g\nrelative_mse %.6g\nmae %.6g\npsnr_db %.4g\n", m.rmse,
+               m.relative_rmse, m.relative_mse, m.mae, m.psnr);
+        if (m.nonfinite)
+            printf("nonfinite %zu\n", m.nonfinite);
+        if (opt->error_image)
+            printf("wrote %s (mean absolute error per pixel, blue 0 to red %s)\n", opt->error_image,
+                   opt->error_scale > 0 ? "at --error-scale" : "at the largest");
+    }
+    vct_image_free(&test);
+    vct_image_free(&ref);
+    vct_image_free(&map);
+    return rc == VCT_OK ? 0 : fail(&err);
+}

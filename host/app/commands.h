@@ -7,5 +7,6 @@
 int cmd_devices(const cli_options *opt);
 int cmd_info(const cli_options *opt);
 int cmd_render(const cli_options *opt);
+int cmd_compare(const cli_options *opt);
 
 #endif

@@ -12,6 +12,8 @@ void cli_usage(void) {
           "  vct devices                      list OpenCL devices and their limits\n"
           "  vct info SCENE                   load and validate a scene, print what it holds\n"
           "  vct render SCENE [-o OUT.png|OUT.pfm] [options]\n"
+          "  vct compare TEST.pfm REFERENCE.pfm [--error-image ERR.png] [--error-scale E]\n"
+          "                                   RMSE, relative MSE, PSNR and mean absolute error\n"
           "\n"
           "render options:\n"
           "  --method raycast                 direct light with hard shadows (default)\n"
@@ -105,15 +107,21 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 return 1;
             }
             opt->output = argv[++i];
-        } else if (strcmp(a, "--device") == 0 || strcmp(a, "--method") == 0) {
+        } else if (strcmp(a, "--device") == 0 || strcmp(a, "--method") == 0 ||
+                   strcmp(a, "--error-image") == 0) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "vct: %s needs a value\n", a);
                 return 1;
             }
             if (strcmp(a, "--device") == 0)
                 opt->device = argv[++i];
-            else
+            else if (strcmp(a, "--method") == 0)
                 opt->method = argv[++i];
+            else
+                opt->error_image = argv[++i];
+        } else if (strcmp(a, "--error-scale") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->error_scale))
+                return 1;
         } else if (strcmp(a, "--size") == 0) {
             if (parse_int(argc, argv, &i, 1, 16384, &opt->width) ||
                 parse_int(argc, argv, &i, 1, 16384, &opt->height))

@@ -13,6 +13,8 @@ typedef struct cli_options {
     const char *output;
     const char *device;
     const char *method;
+    const char *error_image;
+    float error_scale;
     int width, height;
     int stats;
     float exposure;

@@ -14,6 +14,8 @@ int main(int argc, char **argv) {
         return cmd_info(&opt);
     if (strcmp(opt.command, "render") == 0)
         return cmd_render(&opt);
+    if (strcmp(opt.command, "compare") == 0)
+        return cmd_compare(&opt);
     fprintf(stderr, "vct: unknown command \"%s\"\n", opt.command);
     cli_usage();
     return 2;
