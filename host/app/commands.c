@@ -136,8 +136,9 @@ int cmd_render(const cli_options *opt) {
         fprintf(stderr, "vct: output %s must end in .png or .pfm\n", out);
         return 1;
     }
-    if (strcmp(opt->method, "raycast") != 0) {
-        fprintf(stderr, "vct: unknown --method %s (available: raycast)\n", opt->method);
+    const int pt = strcmp(opt->method, "pt") == 0;
+    if (!pt && strcmp(opt->method, "raycast") != 0) {
+        fprintf(stderr, "vct: unknown --method %s (available: raycast, pt)\n", opt->method);
         return 1;
     }
     vct_scene *s = load_scene(opt, &err);
@@ -157,7 +158,23 @@ int cmd_render(const cli_options *opt) {
     vct_image image = {0};
     vct_grid *grid = vct_grid_build(ctx, s, opt->grid_res, &err);
     vct_render_options ro = {opt->width, opt->height, {0, 0, 0}};
-    int rc = grid ? vct_render_raycast(ctx, s, grid, &ro, &image, &err) : (int)err.status;
+    vct_pathtrace_options po = {opt->width,
+                                opt->height,
+                                (uint32_t)(opt->spp ? opt->spp : (opt->time_limit > 0 ? 0 : 64)),
+                                opt->time_limit,
+                                (uint32_t)opt->max_depth,
+                                (uint32_t)opt->seed,
+                                1,
+                                1};
+    vct_pathtrace_result pr = {0};
+    int rc = !grid ? (int)err.status
+             : pt  ? vct_render_pathtrace(ctx, s, grid, &po, &image, &pr, &err)
+                   : vct_render_raycast(ctx, s, grid, &ro, &image, &err);
+    if (rc == VCT_OK && pt)
+        fprintf(stderr,
+                "path tracing: %u spp in %.2f s (%.1f spp/s), %u samples discarded as "
+                "not finite\n",
+                pr.spp, pr.seconds, pr.seconds > 0 ? pr.spp / pr.seconds : 0.0, pr.discarded);
     if (rc == VCT_OK)
         rc = make_parent_dir(out, &err);
     if (rc == VCT_OK)

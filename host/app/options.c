@@ -17,6 +17,8 @@ void cli_usage(void) {
           "\n"
           "render options:\n"
           "  --method raycast                 direct light with hard shadows (default)\n"
+          "  --method pt                      path tracing (the reference): --spp N or --time S,\n"
+          "                                   --max-depth D (default 16), --seed N\n"
           "  --size W H                       image size in pixels (default 512 512)\n"
           "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
           "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
@@ -92,6 +94,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
     memset(opt, 0, sizeof *opt);
     opt->width = opt->height = 512;
     opt->method = "raycast";
+    opt->max_depth = 16;
     if (argc < 2) {
         cli_usage();
         return 1;
@@ -126,6 +129,22 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
             if (parse_int(argc, argv, &i, 1, 16384, &opt->width) ||
                 parse_int(argc, argv, &i, 1, 16384, &opt->height))
                 return 1;
+        } else if (strcmp(a, "--spp") == 0) {
+            if (parse_int(argc, argv, &i, 1, 1 << 24, &opt->spp))
+                return 1;
+        } else if (strcmp(a, "--max-depth") == 0) {
+            if (parse_int(argc, argv, &i, 1, 1024, &opt->max_depth))
+                return 1;
+        } else if (strcmp(a, "--seed") == 0) {
+            if (parse_int(argc, argv, &i, 0, 2147483647, &opt->seed))
+                return 1;
+        } else if (strcmp(a, "--time") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->time_limit))
+                return 1;
+            if (!(opt->time_limit > 0.0f)) {
+                fprintf(stderr, "vct: --time must be positive (seconds)\n");
+                return 1;
+            }
         } else if (strcmp(a, "--camera-pos") == 0) {
             if (parse_floats(argc, argv, &i, 3, opt->camera_pos))
                 return 1;

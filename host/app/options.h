@@ -16,6 +16,8 @@ typedef struct cli_options {
     const char *error_image;
     float error_scale;
     int width, height;
+    int spp, max_depth, seed;
+    float time_limit;
     int stats;
     float exposure;
     uint32_t grid_res[3];

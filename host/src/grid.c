@@ -262,3 +262,11 @@ int vct_grid_read(vct_context *ctx, const vct_grid *g, uint32_t *cell_start, uin
     free(bits);
     return rc;
 }
+
+int vct_grid_set_args(cl_kernel k, const vct_grid *g, const char *stage, vct_error *err) {
+    vct_grid_desc desc;
+    vct_grid_kernel_args(g, &desc);
+    return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(g->cell_bits),
+                        VCT_ARG_OF(g->cell_ranges), VCT_ARG_OF(g->tri_ids),
+                        VCT_ARG_OF(g->tri_vertices));
+}

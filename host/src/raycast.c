@@ -6,15 +6,6 @@
 #include "internal.h"
 #include "scene_device.h"
 
-/* Arguments 0-4 of every kernel that traverses the grid (GRID_ARGS). */
-static int set_grid_args(cl_kernel k, const vct_grid *g, const char *stage, vct_error *err) {
-    vct_grid_desc desc;
-    vct_grid_kernel_args(g, &desc);
-    return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(g->cell_bits),
-                        VCT_ARG_OF(g->cell_ranges), VCT_ARG_OF(g->tri_ids),
-                        VCT_ARG_OF(g->tri_vertices));
-}
-
 int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint32_t n, int any_hit,
                    vct_hit *hits, vct_error *err) {
     const char *stage = any_hit ? "trace rays (any hit)" : "trace rays";
@@ -28,7 +19,7 @@ int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint3
     cl_mem hb =
         rb ? vct_buffer_create(ctx, stage, "hits", 16ull * n, CL_MEM_WRITE_ONLY, NULL, err) : NULL;
     cl_kernel k = hb ? vct_kernel_create(ctx, p, "trace_rays", err) : NULL;
-    rc = k ? set_grid_args(k, g, stage, err) : (int)err->status;
+    rc = k ? vct_grid_set_args(k, g, stage, err) : (int)err->status;
     cl_uint any = any_hit != 0;
     if (rc == VCT_OK)
         rc = vct_set_args(err, stage, k, 5, 4, VCT_ARG_OF(rb), VCT_ARG_OF(n), VCT_ARG_OF(any),
@@ -59,52 +50,6 @@ int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint3
     return rc;
 }
 
-/* Materials, per-triangle material ids and lights on the device. */
-typedef struct scene_buffers {
-    cl_mem materials, tri_material, lights;
-    cl_uint light_count;
-} scene_buffers;
-
-static void scene_buffers_release(vct_context *ctx, scene_buffers *b) {
-    vct_buffer_release(ctx, b->materials);
-    vct_buffer_release(ctx, b->tri_material);
-    vct_buffer_release(ctx, b->lights);
-}
-
-static int scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
-                              scene_buffers *b, vct_error *err) {
-    memset(b, 0, sizeof *b);
-    vct_material_desc *mats = calloc(s->material_count, sizeof *mats);
-    vct_light_desc *lights = calloc(s->light_count + 1, sizeof *lights);
-    if (!mats || !lights) {
-        free(mats);
-        free(lights);
-        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
-    }
-    for (uint32_t i = 0; i < s->material_count; ++i)
-        vct_material_desc_make(&s->materials[i], &mats[i]);
-    for (uint32_t i = 0; i < s->light_count; ++i)
-        vct_light_desc_make(&s->lights[i], &lights[i]);
-    b->light_count = s->light_count;
-    b->materials = vct_buffer_create(ctx, stage, "materials", sizeof *mats * s->material_count,
-                                     CL_MEM_READ_ONLY, mats, err);
-    b->tri_material =
-        b->materials ? vct_buffer_create(ctx, stage, "triangle materials", 4ull * s->triangle_count,
-                                         CL_MEM_READ_ONLY, s->triangle_material, err)
-                     : NULL;
-    b->lights = b->tri_material
-                    ? vct_buffer_create(ctx, stage, "lights", sizeof *lights * (s->light_count + 1),
-                                        CL_MEM_READ_ONLY, lights, err)
-                    : NULL;
-    free(mats);
-    free(lights);
-    if (!b->lights) {
-        scene_buffers_release(ctx, b);
-        return err->status;
-    }
-    return VCT_OK;
-}
-
 int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
                        const vct_render_options *opt, vct_image *image, vct_error *err) {
     const char *stage = "ray cast";
@@ -116,16 +61,16 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     vct_stage_begin(ctx, stage);
     cl_program p;
     rc = vct_program_get(ctx, "raycast.cl", "", &p, err);
-    scene_buffers sb = {0};
+    vct_scene_buffers sb = {0};
     if (rc == VCT_OK)
-        rc = scene_buffers_make(ctx, s, stage, &sb, err);
+        rc = vct_scene_buffers_make(ctx, s, stage, &sb, err);
     const size_t pixels = (size_t)opt->width * opt->height;
     cl_mem img = rc == VCT_OK ? vct_buffer_create(ctx, stage, "image", 16 * pixels,
                                                   CL_MEM_WRITE_ONLY, NULL, err)
                               : NULL;
     cl_kernel k = img ? vct_kernel_create(ctx, p, "render_direct", err) : NULL;
     if (rc == VCT_OK)
-        rc = k ? set_grid_args(k, g, stage, err) : (int)err->status;
+        rc = k ? vct_grid_set_args(k, g, stage, err) : (int)err->status;
     if (rc == VCT_OK)
         rc = vct_set_args(err, stage, k, 5, 6, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
                           VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
@@ -144,7 +89,7 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     if (k)
         clReleaseKernel(k);
     vct_buffer_release(ctx, img);
-    scene_buffers_release(ctx, &sb);
+    vct_scene_buffers_release(ctx, &sb);
     vct_stage_end(ctx);
     if (rc != VCT_OK)
         vct_image_free(image);

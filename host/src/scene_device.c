@@ -1,6 +1,7 @@
 /* Scene data in the kernels' layout: camera, lights and materials. */
 #include <cglm/vec3.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "internal.h"
@@ -65,4 +66,44 @@ void vct_material_desc_make(const vct_material *m, vct_material_desc *d) {
     d->emission.s[3] = m->roughness;
     d->specular.s[3] = m->transmission;
     d->extra.s[0] = m->ior;
+}
+
+void vct_scene_buffers_release(vct_context *ctx, vct_scene_buffers *b) {
+    vct_buffer_release(ctx, b->materials);
+    vct_buffer_release(ctx, b->tri_material);
+    vct_buffer_release(ctx, b->lights);
+}
+
+int vct_scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
+                           vct_scene_buffers *b, vct_error *err) {
+    memset(b, 0, sizeof *b);
+    vct_material_desc *mats = calloc(s->material_count, sizeof *mats);
+    vct_light_desc *lights = calloc(s->light_count + 1, sizeof *lights);
+    if (!mats || !lights) {
+        free(mats);
+        free(lights);
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
+    }
+    for (uint32_t i = 0; i < s->material_count; ++i)
+        vct_material_desc_make(&s->materials[i], &mats[i]);
+    for (uint32_t i = 0; i < s->light_count; ++i)
+        vct_light_desc_make(&s->lights[i], &lights[i]);
+    b->light_count = s->light_count;
+    b->materials = vct_buffer_create(ctx, stage, "materials", sizeof *mats * s->material_count,
+                                     CL_MEM_READ_ONLY, mats, err);
+    b->tri_material =
+        b->materials ? vct_buffer_create(ctx, stage, "triangle materials", 4ull * s->triangle_count,
+                                         CL_MEM_READ_ONLY, s->triangle_material, err)
+                     : NULL;
+    b->lights = b->tri_material
+                    ? vct_buffer_create(ctx, stage, "lights", sizeof *lights * (s->light_count + 1),
+                                        CL_MEM_READ_ONLY, lights, err)
+                    : NULL;
+    free(mats);
+    free(lights);
+    if (!b->lights) {
+        vct_scene_buffers_release(ctx, b);
+        return err->status;
+    }
+    return VCT_OK;
 }

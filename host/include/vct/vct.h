@@ -206,6 +206,28 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_grid 
                        const vct_render_options *options, vct_image *image, vct_error *err);
 void vct_image_free(vct_image *image);
 
+typedef struct vct_pathtrace_options {
+    int width, height;
+    uint32_t spp;              /* samples per pixel; 0: run for time_limit_s */
+    double time_limit_s;       /* used when spp is 0 */
+    uint32_t max_depth;        /* surface interactions per path; 1 = direct light only */
+    uint32_t seed;             /* same seed and spp: same image, bit for bit */
+    uint32_t samples_per_pass; /* samples per launch (0: 1) */
+    int progress;              /* progress bar on a terminal's stderr */
+} vct_pathtrace_options;
+
+typedef struct vct_pathtrace_result {
+    uint32_t spp;       /* samples per pixel done */
+    uint32_t discarded; /* samples dropped because they were not finite */
+    double seconds;
+} vct_pathtrace_result;
+
+/* Unbiased path tracing: next-event estimation with MIS, Lambert, glossy,
+ * mirror and dielectric materials, Russian roulette. */
+int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                         const vct_pathtrace_options *options, vct_image *image,
+                         vct_pathtrace_result *result, vct_error *err);
+
 /* ---- images --------------------------------------------------------------------- */
 
 /* PFM: raw linear radiance. PNG: radiance * 2^exposure, clamped, sRGB encoded.

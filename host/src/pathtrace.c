@@ -1,0 +1,192 @@
+/* Progressive path tracing: passes of a few samples per pixel accumulate on
+ * the device until the requested sample count or time is reached. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "internal.h"
+#include "scene_device.h"
+
+#define STAGE "path trace"
+
+/* Emissive triangles with their area CDF, for next-event estimation. */
+typedef struct emitter_buffers {
+    cl_mem tris, cdf;
+    cl_uint count;
+    float inv_area;
+} emitter_buffers;
+
+static int emitters_make(vct_context *ctx, const vct_scene *s, emitter_buffers *e, vct_error *err) {
+    memset(e, 0, sizeof *e);
+    uint32_t *tris = malloc(4ull * s->triangle_count + 4);
+    double *area = malloc(8ull * s->triangle_count + 8);
+    float *cdf = malloc(4ull * s->triangle_count + 4);
+    if (!tris || !area || !cdf) {
+        free(tris);
+        free(area);
+        free(cdf);
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    }
+    double total = 0.0;
+    for (uint32_t t = 0; t < s->triangle_count; ++t) {
+        const float *le = s->materials[s->triangle_material[t]].emission;
+        if (!(le[0] > 0.0f || le[1] > 0.0f || le[2] > 0.0f))
+            continue;
+        const float *a = &s->positions[3 * s->triangles[3 * t]];
+        const float *b = &s->positions[3 * s->triangles[3 * t + 1]];
+        const float *c = &s->positions[3 * s->triangles[3 * t + 2]];
+        double e1[3], e2[3];
+        for (int k = 0; k < 3; ++k) {
+            e1[k] = (double)b[k] - a[k];
+            e2[k] = (double)c[k] - a[k];
+        }
+        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+               cz = e1[0] * e2[1] - e1[1] * e2[0];
+        double ar = 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
+        if (!(ar > 0.0))
+            continue; /* a degenerate emitter cannot be sampled or hit */
+        tris[e->count] = t;
+        area[e->count] = ar;
+        total += ar;
+        e->count++;
+    }
+    double run = 0.0;
+    for (uint32_t i = 0; i < e->count; ++i) {
+        run += area[i];
+        cdf[i] = i + 1 == e->count ? 1.0f : (float)(run / total);
+    }
+    e->inv_area = total > 0.0 ? (float)(1.0 / total) : 0.0f;
+    e->tris = vct_buffer_create(ctx, STAGE, "emissive triangles", 4ull * e->count, CL_MEM_READ_ONLY,
+                                e->count ? tris : NULL, err);
+    e->cdf = e->tris ? vct_buffer_create(ctx, STAGE, "emitter CDF", 4ull * e->count,
+                                         CL_MEM_READ_ONLY, e->count ? cdf : NULL, err)
+                     : NULL;
+    free(tris);
+    free(area);
+    free(cdf);
+    return e->cdf ? VCT_OK : (int)err->status;
+}
+
+static void progress_line(uint32_t done, uint32_t total, double elapsed_s, double limit_s) {
+    const int width = 30;
+    double frac = total ? (double)done / total : 0.0;
+    if (limit_s > 0.0)
+        frac = fmax(frac, fmin(elapsed_s / limit_s, 1.0));
+    int filled = (int)(frac * width + 0.5);
+    double rate = elapsed_s > 0.0 ? done / elapsed_s : 0.0;
+    double left = frac > 0.0 ? elapsed_s * (1.0 - frac) / frac : 0.0;
+    fprintf(stderr, "\r[%.*s%*s] %u spp, %.1f spp/s, %.0f s left ", filled,
+            "##############################", width - filled, "", done, rate, left);
+    fflush(stderr);
+}
+
+int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                         const vct_pathtrace_options *opt, vct_image *image,
+                         vct_pathtrace_result *result, vct_error *err) {
+    memset(image, 0, sizeof *image);
+    memset(result, 0, sizeof *result);
+    if (opt->spp == 0 && !(opt->time_limit_s > 0.0))
+        return vct_fail(err, VCT_ERR_INPUT, "%s: give a sample count (--spp) or a time (--time)",
+                        STAGE);
+    if (opt->max_depth == 0)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: the path depth must be at least 1", STAGE);
+    vct_camera_desc cam;
+    int rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &cam, err);
+    if (rc)
+        return rc;
+    vct_stage_begin(ctx, STAGE);
+    cl_program p;
+    rc = vct_program_get(ctx, "pathtrace.cl", "", &p, err);
+    vct_scene_buffers sb = {0};
+    emitter_buffers eb = {0};
+    if (rc == VCT_OK)
+        rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
+    if (rc == VCT_OK)
+        rc = emitters_make(ctx, s, &eb, err);
+    const size_t pixels = (size_t)opt->width * opt->height;
+    cl_mem accum = NULL, discarded = NULL;
+    if (rc == VCT_OK) {
+        accum = vct_buffer_create(ctx, STAGE, "accumulation", 16 * pixels, CL_MEM_READ_WRITE, NULL,
+                                  err);
+        discarded = accum ? vct_buffer_create(ctx, STAGE, "discarded count", 4, CL_MEM_READ_WRITE,
+                                              NULL, err)
+                          : NULL;
+        rc = discarded ? VCT_OK : (int)err->status;
+    }
+    if (rc == VCT_OK)
+        rc = vct_buffer_fill_u32(ctx, STAGE, accum, 0, 4 * pixels, err);
+    if (rc == VCT_OK)
+        rc = vct_buffer_fill_u32(ctx, STAGE, discarded, 0, 1, err);
+    cl_kernel k = rc == VCT_OK ? vct_kernel_create(ctx, p, "pathtrace", err) : NULL;
+    if (rc == VCT_OK && !k)
+        rc = err->status;
+    if (rc == VCT_OK)
+        rc = vct_grid_set_args(k, g, STAGE, err);
+    cl_uint max_depth = opt->max_depth, seed = opt->seed;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 5, 9, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
+                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(eb.tris), VCT_ARG_OF(eb.cdf),
+                          VCT_ARG_OF(eb.count), VCT_ARG_OF(eb.inv_area));
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 16, 4, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
+                          VCT_ARG_OF(accum), VCT_ARG_OF(discarded));
+    const size_t global[2] = {(size_t)opt->width, (size_t)opt->height}, local[2] = {8, 8};
+    const int show = opt->progress && isatty(2);
+    const cl_uint per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;
+    const double t0 = vct_now_ms();
+    cl_uint done = 0;
+    while (rc == VCT_OK) {
+        const double elapsed = (vct_now_ms() - t0) * 1e-3;
+        if (opt->spp ? done >= opt->spp : elapsed >= opt->time_limit_s)
+            break;
+        cl_uint n = per_pass;
+        if (opt->spp && done + n > opt->spp)
+            n = opt->spp - done;
+        rc = vct_set_args(err, STAGE, k, 14, 2, VCT_ARG_OF(done), VCT_ARG_OF(n));
+        if (rc == VCT_OK)
+            rc = vct_launch_2d(ctx, k, global, local, err);
+        if (rc == VCT_OK)
+            rc = vct_finish(ctx, STAGE, err);
+        done += n;
+        if (show)
+            progress_line(done, opt->spp, (vct_now_ms() - t0) * 1e-3, opt->time_limit_s);
+    }
+    if (show)
+        fputc('\n', stderr);
+    result->spp = done;
+    result->seconds = (vct_now_ms() - t0) * 1e-3;
+    float *acc = rc == VCT_OK ? malloc(16 * pixels) : NULL;
+    if (rc == VCT_OK && !acc)
+        rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    cl_uint dropped = 0;
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, STAGE, accum, 0, 16 * pixels, acc, err);
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, STAGE, discarded, 0, 4, &dropped, err);
+    if (rc == VCT_OK) {
+        result->discarded = dropped;
+        for (size_t i = 0; i < pixels; ++i) {
+            const float w = acc[4 * i + 3];
+            for (int c = 0; c < 3; ++c)
+                acc[4 * i + c] = w > 0.0f ? acc[4 * i + c] / w : 0.0f;
+            acc[4 * i + 3] = 1.0f;
+        }
+        image->width = opt->width;
+        image->height = opt->height;
+        image->rgba = acc;
+        acc = NULL;
+    }
+    free(acc);
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, accum);
+    vct_buffer_release(ctx, discarded);
+    vct_buffer_release(ctx, eb.tris);
+    vct_buffer_release(ctx, eb.cdf);
+    vct_scene_buffers_release(ctx, &sb);
+    vct_stage_end(ctx);
+    return rc;
+}

@@ -1,0 +1,146 @@
+/* Materials for the path tracer: Lambert, a normalised Phong lobe (glossy, or
+ * an ideal mirror at roughness ~0), and a smooth dielectric with Fresnel
+ * reflection and total internal reflection. Directions point away from the
+ * surface; n faces the incoming ray's side. */
+#ifndef VCT_BSDF_H
+#define VCT_BSDF_H
+
+#include "vct_types.h"
+
+#define BSDF_PI 3.14159265f
+#define MIRROR_ROUGHNESS 0.02f
+
+typedef struct bsdf_sample {
+    float3 wi;
+    float3 weight; /* f cos / pdf */
+    float pdf;     /* solid angle; 0 for a delta lobe */
+    int delta;
+} bsdf_sample;
+
+inline void basis_of(float3 n, float3 *t, float3 *b) {
+    const float s = n.z >= 0.0f ? 1.0f : -1.0f; /* Duff et al. 2017 */
+    const float a = -1.0f / (s + n.z);
+    const float c = n.x * n.y * a;
+    *t = (float3)(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
+    *b = (float3)(c, s + n.y * n.y * a, -n.y);
+}
+
+inline float phong_exponent(float roughness) {
+    const float r = fmax(roughness, 1e-3f);
+    return fmax(2.0f / (r * r) - 2.0f, 0.0f);
+}
+
+inline float3 reflect_dir(float3 wo, float3 n) {
+    return 2.0f * dot(wo, n) * n - wo;
+}
+
+/* Glossy weight: specular colour (or albedo for metals). */
+inline float3 glossy_color(const vct_material_desc *m) {
+    return m->albedo.w > 0.5f ? m->albedo.xyz : m->specular.xyz;
+}
+
+inline float3 diffuse_color(const vct_material_desc *m) {
+    return m->albedo.w > 0.5f ? (float3)(0.0f) : m->albedo.xyz;
+}
+
+/* Probability of choosing the glossy lobe over the diffuse one. */
+inline float glossy_probability(const vct_material_desc *m) {
+    const float g = dot(glossy_color(m), (float3)(1.0f)), d = dot(diffuse_color(m), (float3)(1.0f));
+    return g + d > 0.0f ? g / (g + d) : 0.0f;
+}
+
+inline int is_dielectric(const vct_material_desc *m) {
+    return m->specular.w > 0.0f;
+}
+
+inline int is_mirror(const vct_material_desc *m) {
+    return glossy_probability(m) > 0.0f && m->emission.w < MIRROR_ROUGHNESS;
+}
+
+/* f(wo, wi) cos(wi) and the pdf of sampling wi, for the non-delta lobes. */
+inline float3 bsdf_eval(const vct_material_desc *m, float3 n, float3 wo, float3 wi, float *pdf) {
+    const float cos_i = dot(n, wi);
+    *pdf = 0.0f;
+    if (cos_i <= 0.0f || is_dielectric(m))
+        return (float3)(0.0f);
+    const float pg = glossy_probability(m);
+    float3 f = diffuse_color(m) * (cos_i / BSDF_PI);
+    float pdf_d = cos_i / BSDF_PI, pdf_g = 0.0f;
+    if (pg > 0.0f && !is_mirror(m)) {
+        const float e = phong_exponent(m->emission.w);
+        const float ca = fmax(dot(reflect_dir(wo, n), wi), 0.0f);
+        const float lobe = pow(ca, e) * (e + 1.0f) / (2.0f * BSDF_PI);
+        pdf_g = lobe;
+        f += glossy_color(m) * (lobe * (e + 2.0f) / (e + 1.0f)) * cos_i;
+    }
+    *pdf = (1.0f - pg) * pdf_d + pg * pdf_g;
+    return f;
+}
+
+inline float fresnel_dielectric(float cos_i, float eta) {
+    const float sin2_t = eta * eta * fmax(0.0f, 1.0f - cos_i * cos_i);
+    if (sin2_t >= 1.0f)
+        return 1.0f; /* total internal reflection */
+    const float cos_t = sqrt(1.0f - sin2_t);
+    const float rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    const float rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5f * (rs * rs + rp * rp);
+}
+
+/* front: the ray arrived on the side the geometric normal points to. */
+inline int bsdf_sample_dir(const vct_material_desc *m, float3 n, float3 wo, int front, float u0,
+                           float u1, float u2, bsdf_sample *s) {
+    s->delta = 0;
+    if (is_dielectric(m)) {
+        const float ior = fmax(m->extra.x, 1.0001f);
+        const float eta = front ? 1.0f / ior : ior; /* n_incident / n_transmitted */
+        const float cos_i = fmin(dot(n, wo), 1.0f);
+        const float F = fresnel_dielectric(cos_i, eta);
+        s->delta = 1;
+        s->pdf = 0.0f;
+        if (u0 < F) {
+            s->wi = reflect_dir(wo, n);
+            s->weight = (float3)(1.0f);
+        } else {
+            const float sin2_t = eta * eta * fmax(0.0f, 1.0f - cos_i * cos_i);
+            const float cos_t = sqrt(fmax(0.0f, 1.0f - sin2_t));
+            s->wi = normalize(-eta * wo + (eta * cos_i - cos_t) * n);
+            s->weight = m->albedo.xyz; /* transmitted tint */
+        }
+        return 1;
+    }
+    const float pg = glossy_probability(m);
+    if (pg > 0.0f && is_mirror(m)) {
+        /* A mirror may still have a diffuse part: choose the lobe. */
+        if (u0 < pg) {
+            s->wi = reflect_dir(wo, n);
+            s->weight = glossy_color(m) / pg;
+            s->pdf = 0.0f;
+            s->delta = 1;
+            return dot(s->wi, n) > 0.0f;
+        }
+        u0 = (u0 - pg) / (1.0f - pg);
+    }
+    float3 t, b;
+    if (pg > 0.0f && !is_mirror(m) && u0 < pg) {
+        const float e = phong_exponent(m->emission.w);
+        const float3 r = reflect_dir(wo, n);
+        basis_of(r, &t, &b);
+        const float ct = pow(u1, 1.0f / (e + 1.0f)), st = sqrt(fmax(0.0f, 1.0f - ct * ct));
+        const float phi = 2.0f * BSDF_PI * u2;
+        s->wi = normalize(st * cos(phi) * t + st * sin(phi) * b + ct * r);
+    } else {
+        basis_of(n, &t, &b);
+        const float r = sqrt(u1), phi = 2.0f * BSDF_PI * u2;
+        s->wi = normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(fmax(0.0f, 1.0f - u1)) * n);
+    }
+    float pdf;
+    const float3 fc = bsdf_eval(m, n, wo, s->wi, &pdf);
+    if (!(pdf > 0.0f))
+        return 0;
+    s->pdf = pdf;
+    s->weight = fc / pdf;
+    return 1;
+}
+
+#endif
