@@ -1,0 +1,215 @@
+/* Accuracy against time: runs a list of method settings on one scene, times
+ * each per stage, measures its error against a reference image, and writes a
+ * CSV, a Markdown table and a log-log plot of error against time with the
+ * Pareto front marked.
+ *
+ * usage: accuracy SCENE [--reference REF.pfm] [--reference-spp N] [--size W H]
+ *                       [--max-spp N] [--out DIR]
+ * Without --reference, a path-traced reference of --reference-spp samples
+ * (default 2048, a different seed from the runs) is rendered and saved. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "bench_util.h"
+
+typedef struct run {
+    char name[64];
+    double grid_ms, render_ms, total_ms; /* device time per stage, and their sum */
+    double wall_ms;
+    vct_image_metrics m;
+    int pareto;
+} run;
+
+typedef struct settings {
+    const char *scene, *reference, *out;
+    int width, height;
+    uint32_t reference_spp, max_spp;
+} settings;
+
+static double stage_ms(const vct_context *ctx, const char *name) {
+    const vct_stage_stat *st;
+    int n = vct_stats(ctx, &st);
+    for (int i = 0; i < n; ++i)
+        if (strcmp(st[i].name, name) == 0)
+            return st[i].device_ms;
+    return 0.0;
+}
+
+/* method "raycast" or "pt"; spp for pt. */
+static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cfg,
+                        const char *method, uint32_t spp, uint32_t seed, run *r) {
+    vct_error err = {0};
+    vct_stats_reset(ctx);
+    double t0 = vct_now_ms();
+    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    if (!g)
+        bench_die(&err);
+    vct_image im;
+    if (strcmp(method, "pt") == 0) {
+        vct_pathtrace_options o = {cfg->width, cfg->height,         spp, 0.0, 16,
+                                   seed,       spp < 16 ? spp : 16, 1};
+        vct_pathtrace_result pr;
+        if (vct_render_pathtrace(ctx, s, g, &o, &im, &pr, &err))
+            bench_die(&err);
+        r->render_ms = stage_ms(ctx, "path trace");
+    } else {
+        vct_render_options o = {cfg->width, cfg->height, {0, 0, 0}};
+        if (vct_render_raycast(ctx, s, g, &o, &im, &err))
+            bench_die(&err);
+        r->render_ms = stage_ms(ctx, "ray cast");
+    }
+    r->wall_ms = vct_now_ms() - t0;
+    r->grid_ms = stage_ms(ctx, "grid build");
+    r->total_ms = r->grid_ms + r->render_ms;
+    vct_grid_free(g);
+    return im;
+}
+
+static void mark_pareto(run *runs, int n) {
+    for (int i = 0; i < n; ++i) {
+        runs[i].pareto = 1;
+        for (int j = 0; j < n; ++j)
+            if (j != i && runs[j].total_ms <= runs[i].total_ms &&
+                runs[j].m.relative_rmse <= runs[i].m.relative_rmse &&
+                (runs[j].total_ms < runs[i].total_ms ||
+                 runs[j].m.relative_rmse < runs[i].m.relative_rmse))
+                runs[i].pareto = 0;
+    }
+}
+
+static void write_outputs(const settings *cfg, const run *runs, int n, const char *device) {
+    char path[1200];
+    snprintf(path, sizeof path, "%s/accuracy.csv", cfg->out);
+    FILE *csv = fopen(path, "w");
+    snprintf(path, sizeof path, "%s/accuracy.md", cfg->out);
+    FILE *md = fopen(path, "w");
+    if (!csv || !md) {
+        fprintf(stderr, "accuracy: cannot write into %s\n", cfg->out);
+        exit(1);
+    }
+    fprintf(csv, "setting,grid_ms,render_ms,total_ms,wall_ms,rmse,relative_rmse,relative_mse,"
+                 "mae,psnr_db,pareto\n");
+    fprintf(md, "Scene `%s`, %dx%d, on %s; error against the reference `%s`.\n\n", cfg->scene,
+            cfg->width, cfg->height, device, cfg->reference);
+    fprintf(md, "| setting | grid ms | render ms | total ms | relative RMSE | relative MSE | "
+                "PSNR dB | Pareto |\n|---|---:|---:|---:|---:|---:|---:|:---:|\n");
+    for (int i = 0; i < n; ++i) {
+        const run *r = &runs[i];
+        fprintf(csv, "%s,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.6g,%.4g,%d\n", r->name, r->grid_ms,
+                r->render_ms, r->total_ms, r->wall_ms, r->m.rmse, r->m.relative_rmse,
+                r->m.relative_mse, r->m.mae, r->m.psnr, r->pareto);
+        fprintf(md, "| %s | %.1f | %.1f | %.1f | %.4f | %.4g | %.2f | %s |\n", r->name, r->grid_ms,
+                r->render_ms, r->total_ms, r->m.relative_rmse, r->m.relative_mse, r->m.psnr,
+                r->pareto ? "yes" : "");
+    }
+    fclose(csv);
+    fclose(md);
+    snprintf(path, sizeof path, "%s/accuracy.gp", cfg->out);
+    FILE *gp = fopen(path, "w");
+    if (!gp)
+        exit(1);
+    fprintf(gp,
+            "set terminal pngcairo size 900,600 font ',11'\n"
+            "set output '%s/accuracy.png'\n"
+            "set datafile separator ','\n"
+            "set logscale xy\nset grid\n"
+            "set xlabel 'time (ms, device, grid build + render)'\n"
+            "set ylabel 'relative RMSE against the reference'\n"
+            "set key top right\n"
+            "plot '%s/accuracy.csv' skip 1 using 4:7 with points pt 7 ps 1.2 title 'settings', \\\n"
+            "     '' skip 1 using ($11 == 1 ? $4 : 1/0):7 with linespoints lw 2 pt 6 ps 2 "
+            "title 'Pareto front', \\\n"
+            "     '' skip 1 using 4:7:1 with labels offset 0,1 font ',9' notitle\n",
+            cfg->out, cfg->out);
+    fclose(gp);
+    char cmd[1400];
+    snprintf(cmd, sizeof cmd, "gnuplot '%s/accuracy.gp' 2>/dev/null", cfg->out);
+    if (system(cmd) != 0)
+        fprintf(stderr, "accuracy: gnuplot failed or is missing; the CSV and table are written\n");
+}
+
+int main(int argc, char **argv) {
+    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256};
+    for (int i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--reference") == 0 && i + 1 < argc)
+            cfg.reference = argv[++i];
+        else if (strcmp(argv[i], "--reference-spp") == 0 && i + 1 < argc)
+            cfg.reference_spp = (uint32_t)atoi(argv[++i]);
+        else if (strcmp(argv[i], "--max-spp") == 0 && i + 1 < argc)
+            cfg.max_spp = (uint32_t)atoi(argv[++i]);
+        else if (strcmp(argv[i], "--size") == 0 && i + 2 < argc) {
+            cfg.width = atoi(argv[++i]);
+            cfg.height = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc)
+            cfg.out = argv[++i];
+        else if (argv[i][0] != '-' && !cfg.scene)
+            cfg.scene = argv[i];
+        else {
+            fprintf(stderr, "usage: accuracy SCENE [--reference REF.pfm] [--reference-spp N] "
+                            "[--size W H] [--max-spp N] [--out DIR]\n");
+            return 2;
+        }
+    }
+    if (!cfg.scene) {
+        fprintf(stderr, "accuracy: name a scene\n");
+        return 2;
+    }
+    vct_error err = {0};
+    vct_scene *s = vct_scene_load(cfg.scene, &err);
+    if (!s)
+        bench_die(&err);
+    vct_context *ctx = vct_context_create(NULL, &err);
+    if (!ctx)
+        bench_die(&err);
+    char cmd[1200];
+    snprintf(cmd, sizeof cmd, "mkdir -p '%s'", cfg.out);
+    if (system(cmd) != 0)
+        return 1;
+    vct_image ref;
+    char ref_path[1200];
+    if (cfg.reference) {
+        if (vct_image_read_pfm(cfg.reference, &ref, &err))
+            bench_die(&err);
+        cfg.width = ref.width;
+        cfg.height = ref.height;
+    } else {
+        run r;
+        fprintf(stderr, "rendering the reference: path tracing, %u spp...\n", cfg.reference_spp);
+        ref = render(ctx, s, &cfg, "pt", cfg.reference_spp, 0x5eed, &r);
+        snprintf(ref_path, sizeof ref_path, "%s/reference.pfm", cfg.out);
+        if (vct_image_write_pfm(&ref, ref_path, &err))
+            bench_die(&err);
+        fprintf(stderr, "reference: %.1f s\n", r.wall_ms / 1e3);
+        cfg.reference = ref_path;
+    }
+    run runs[32];
+    int n = 0;
+    {
+        vct_image im = render(ctx, s, &cfg, "raycast", 0, 0, &runs[n]);
+        snprintf(runs[n].name, sizeof runs[n].name, "ray cast (direct only)");
+        if (vct_image_compare(&im, &ref, &runs[n].m, &err))
+            bench_die(&err);
+        vct_image_free(&im);
+        ++n;
+    }
+    for (uint32_t spp = 1; spp <= cfg.max_spp && n < 32; spp *= 2) {
+        vct_image im = render(ctx, s, &cfg, "pt", spp, 1, &runs[n]);
+        snprintf(runs[n].name, sizeof runs[n].name, "path trace %u spp", spp);
+        if (vct_image_compare(&im, &ref, &runs[n].m, &err))
+            bench_die(&err);
+        vct_image_free(&im);
+        fprintf(stderr, "%-24s %9.1f ms  relative RMSE %.4f\n", runs[n].name, runs[n].total_ms,
+                runs[n].m.relative_rmse);
+        ++n;
+    }
+    mark_pareto(runs, n);
+    write_outputs(&cfg, runs, n, ctx->info.name);
+    printf("wrote %s/accuracy.csv, accuracy.md, accuracy.png\n", cfg.out);
+    vct_image_free(&ref);
+    vct_context_destroy(ctx);
+    vct_scene_free(s);
+    return 0;
+}
