@@ -219,6 +219,46 @@ static void adversarial(vct_context *ctx) {
     mesh_free(&soup);
 }
 
+/* A glass slab (IOR 1.5, two parallel faces at z = -1 and -1.2) in front of
+ * an emitter of radiance 1: seen through it, radiance is (1 - F) / (1 + F)
+ * with F the Fresnel reflectance at the viewing angle (all internal
+ * reflections summed; reflected paths leave into the dark). */
+static void glass_slab(vct_context *ctx, float angle_deg) {
+    const float L = 60.0f;
+    const float p[] = {-L, -L, -1.0f,  L, -L, -1.0f,  L, L, -1.0f,  -L, L, -1.0f,
+                       -L, -L, -1.2f,  L, -L, -1.2f,  L, L, -1.2f,  -L, L, -1.2f,
+                       -L, -L, -10.0f, L, -L, -10.0f, L, L, -10.0f, -L, L, -10.0f};
+    /* Outward normals: +z on the front face, -z on the back face. */
+    const uint32_t t[] = {0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6, 8, 9, 10, 8, 10, 11};
+    const uint32_t mats[] = {0, 0, 0, 0, 1, 1};
+    vct_material m[2] = {vct_material_default(), vct_material_default()};
+    m[0].transmission = 1.0f;
+    m[0].ior = 1.5f;
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 1.0f;
+    m[1].albedo[0] = m[1].albedo[1] = m[1].albedo[2] = 0.0f;
+    m[1].emission[0] = m[1].emission[1] = m[1].emission[2] = 1.0f;
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(p, 12, t, 6, mats, m, 2, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const double a = angle_deg * CHECK_PI / 180.0;
+    s->camera = (vct_camera){{0, 0, 0}, {0, (float)-sin(a), (float)-cos(a)}, {0, 1, 0}, 0.5f};
+    vct_pathtrace_result r;
+    vct_image im = trace(ctx, s, 8, 8, 512, 64, 13, &r);
+    const double ci = cos(a), eta = 1.0 / 1.5, ct = sqrt(1.0 - eta * eta * (1.0 - ci * ci));
+    const double rs = (eta * ci - ct) / (eta * ci + ct), rp = (ci - eta * ct) / (ci + eta * ct);
+    const double F = 0.5 * (rs * rs + rp * rp), expect = (1.0 - F) / (1.0 + F);
+    double mean, se;
+    image_mean(&im, 0, &mean, &se);
+    /* Each sample is 0 or 1: its spread gives the bound. */
+    const double sigma = sqrt(expect * (1.0 - expect) / (8.0 * 8.0 * 512.0));
+    CHECK(fabs(mean - expect) <= 5.0 * sigma, "glass slab at %g degrees: %.5f, expected %.5f",
+          angle_deg, mean, expect);
+    printf("glass slab at %2.0f degrees: transmitted %.5f, expected %.5f (5 sigma %.5f)\n",
+           angle_deg, mean, expect, 5.0 * sigma);
+    vct_image_free(&im);
+    vct_scene_free(s);
+}
+
 int main(void) {
     vct_context *ctx = check_context();
     vct_material m = vct_material_default();
@@ -238,6 +278,8 @@ int main(void) {
     }
     mirror.roughness = 0.0f;
     furnace(ctx, "mirror furnace a=0.6", mirror, 2.5);
+    glass_slab(ctx, 0.0f);
+    glass_slab(ctx, 45.0f);
     direct_matches_raycast(ctx);
     open_scene_energy(ctx);
     convergence_and_determinism(ctx);
