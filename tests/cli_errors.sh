@@ -79,5 +79,21 @@ else
     echo "FAIL copied binary"; failures=$((failures + 1))
 fi
 
+# The path tracer and compare commands, end to end.
+e2e_ok=1
+"$VCT" render ok.obj --method pt --spp 4 --point-light 0.2 0.2 1 1 1 1 --size 24 16 -o pt.pfm \
+    >/dev/null 2>stderr.txt && grep -q "4 spp" stderr.txt || e2e_ok=0
+"$VCT" compare pt.pfm pt.pfm >compare.txt && grep -q "^rmse 0$" compare.txt || e2e_ok=0
+"$VCT" compare pt.pfm pt.pfm --error-image err.png >/dev/null && [ -s err.png ] || e2e_ok=0
+# b.pfm (40x30) against pt.pfm (24x16): refused.
+if "$VCT" compare pt.pfm b.pfm >/dev/null 2>&1; then e2e_ok=0; fi
+if [ "$e2e_ok" -eq 1 ]; then
+    echo "ok   path tracing, compare, error image, size mismatch refused"
+else
+    echo "FAIL path tracing or compare:"; cat stderr.txt compare.txt 2>/dev/null; failures=$((failures + 1))
+fi
+expect_failure "pt without samples" "not an integer" render ok.obj --method pt --spp 0 -o out.png
+expect_failure "unknown method" "unknown --method" render ok.obj --method magic -o out.png
+
 [ "$failures" -eq 0 ] || { echo "$failures failures"; exit 1; }
 echo "all bad-input cases rejected cleanly"
