@@ -29,15 +29,6 @@ typedef struct settings {
     uint32_t reference_spp, max_spp;
 } settings;
 
-static double stage_ms(const vct_context *ctx, const char *name) {
-    const vct_stage_stat *st;
-    int n = vct_stats(ctx, &st);
-    for (int i = 0; i < n; ++i)
-        if (strcmp(st[i].name, name) == 0)
-            return st[i].device_ms;
-    return 0.0;
-}
-
 /* method "raycast" or "pt"; spp for pt. */
 static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cfg,
                         const char *method, uint32_t spp, uint32_t seed, run *r) {
@@ -54,15 +45,15 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
         vct_pathtrace_result pr;
         if (vct_render_pathtrace(ctx, s, g, &o, &im, &pr, &err))
             bench_die(&err);
-        r->render_ms = stage_ms(ctx, "path trace");
+        r->render_ms = stage_device_ms(ctx, "path trace");
     } else {
         vct_render_options o = {cfg->width, cfg->height, {0, 0, 0}};
         if (vct_render_raycast(ctx, s, g, &o, &im, &err))
             bench_die(&err);
-        r->render_ms = stage_ms(ctx, "ray cast");
+        r->render_ms = stage_device_ms(ctx, "ray cast");
     }
     r->wall_ms = vct_now_ms() - t0;
-    r->grid_ms = stage_ms(ctx, "grid build");
+    r->grid_ms = stage_device_ms(ctx, "grid build");
     r->total_ms = r->grid_ms + r->render_ms;
     vct_grid_free(g);
     return im;

@@ -8,7 +8,7 @@
 
 #include "internal.h"
 
-static inline double stage_device_ms(vct_context *ctx, const char *name) {
+static inline double stage_device_ms(const vct_context *ctx, const char *name) {
     const vct_stage_stat *st;
     int n = vct_stats(ctx, &st);
     for (int i = 0; i < n; ++i)

@@ -15,46 +15,58 @@ inline float surface_epsilon(const grid_view *g, float3 p) {
     return g->desc.origin.w * 1e-5f + fmax(ap.x, fmax(ap.y, ap.z)) * 2e-6f;
 }
 
+/* Light i as seen from p: direction wi towards it, distance (INFINITY for a
+ * directional light) and incident radiant quantity before the cosine:
+ * I / d^2 (times the spot falloff) or E. Returns 0 if it cannot light p. */
+inline int light_incident(__global const vct_light_desc *lights, uint i, float3 p, float3 *wi,
+                          float *dist, float3 *radiant) {
+    const vct_light_desc L = lights[i];
+    const uint kind = (uint)L.position.w;
+    if (kind == VCT_LIGHT_KIND_DIRECTIONAL) {
+        *wi = -L.direction.xyz;
+        *dist = INFINITY;
+        *radiant = L.color.xyz;
+        return 1;
+    }
+    const float3 to = L.position.xyz - p;
+    const float d2 = dot(to, to);
+    if (!(d2 > 0.0f))
+        return 0;
+    *dist = sqrt(d2);
+    *wi = to / *dist;
+    *radiant = L.color.xyz / d2;
+    if (kind == VCT_LIGHT_KIND_SPOT) {
+        const float cd = dot(-*wi, L.direction.xyz);
+        const float cos_outer = L.direction.w, cos_inner = L.color.w;
+        const float x = clamp((cd - cos_outer) / fmax(cos_inner - cos_outer, 1e-6f), 0.0f, 1.0f);
+        *radiant *= x * x;
+    }
+    return 1;
+}
+
+/* 1 if nothing blocks the segment from p (lifted off its surface along n by
+ * eps) towards wi over dist; shading itself uses p. */
+inline int light_visible(const grid_view *g, float3 p, float3 n, float eps, float3 wi, float dist) {
+    hit_record h;
+    return !grid_trace(g, p + n * eps, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h);
+}
+
 /* Radiance reflected towards the viewer by a Lambertian point p with normal n
  * (facing the viewer) from every light. */
 inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *lights,
                              uint light_count, float3 p, float3 n, float3 albedo) {
     float3 sum = (float3)(0.0f);
     const float eps = surface_epsilon(g, p);
-    const float3 origin = p + n * eps;
     for (uint i = 0; i < light_count; ++i) {
-        const vct_light_desc L = lights[i];
-        const uint kind = (uint)L.position.w;
         float3 wi, radiant;
         float dist;
-        if (kind == VCT_LIGHT_KIND_DIRECTIONAL) {
-            wi = -L.direction.xyz;
-            dist = INFINITY;
-            radiant = L.color.xyz;
-        } else {
-            const float3 to = L.position.xyz - p;
-            const float d2 = dot(to, to);
-            if (!(d2 > 0.0f))
-                continue;
-            dist = sqrt(d2);
-            wi = to / dist;
-            radiant = L.color.xyz / d2;
-            if (kind == VCT_LIGHT_KIND_SPOT) {
-                const float cd = dot(-wi, L.direction.xyz);
-                const float cos_outer = L.direction.w, cos_inner = L.color.w;
-                const float x =
-                    clamp((cd - cos_outer) / fmax(cos_inner - cos_outer, 1e-6f), 0.0f, 1.0f);
-                radiant *= x * x;
-            }
-        }
+        if (!light_incident(lights, i, p, &wi, &dist, &radiant))
+            continue;
         const float cos_theta = dot(n, wi);
         if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
             continue;
-        /* The shadow ray starts lifted off the surface; shading uses p itself. */
-        hit_record h;
-        if (grid_trace(g, origin, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h))
-            continue;
-        sum += radiant * cos_theta;
+        if (light_visible(g, p, n, eps, wi, dist))
+            sum += radiant * cos_theta;
     }
     return albedo * VCT_INV_PI * sum;
 }

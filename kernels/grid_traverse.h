@@ -16,6 +16,13 @@ typedef struct grid_view {
     __global const float4 *tri_vertices; /* 3 per triangle */
 } grid_view;
 
+/* The first kernel arguments of every kernel that traverses the grid, and
+ * the view built from them (set by the host's vct_grid_set_args). */
+#define GRID_ARGS                                                                                  \
+    vct_grid_desc grid, __global const uint *cell_bits, __global const uint *cell_ranges,          \
+        __global const uint *tri_ids, __global const float4 *tri_vertices
+#define GRID_VIEW() ((grid_view){grid, cell_bits, cell_ranges, tri_ids, tri_vertices})
+
 typedef struct hit_record {
     float t, u, v;
     uint tri;

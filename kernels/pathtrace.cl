@@ -14,10 +14,6 @@
 
 #define RR_DEPTH 3
 
-#define GRID_ARGS                                                                                  \
-    vct_grid_desc grid, __global const uint *cell_bits, __global const uint *cell_ranges,          \
-        __global const uint *tri_ids, __global const float4 *tri_vertices
-
 typedef struct emitters {
     __global const uint *tris; /* emissive triangles */
     __global const float *cdf; /* cumulative area, normalised to 1 */
@@ -48,39 +44,16 @@ inline float3 nee_punctual(const grid_view *g, __global const vct_light_desc *li
                            float3 wo) {
     float3 sum = (float3)(0.0f);
     const float eps = surface_epsilon(g, p);
-    const float3 origin = p + n * eps;
     for (uint i = 0; i < light_count; ++i) {
-        const vct_light_desc L = lights[i];
-        const uint kind = (uint)L.position.w;
         float3 wi, radiant;
-        float dist;
-        if (kind == VCT_LIGHT_KIND_DIRECTIONAL) {
-            wi = -L.direction.xyz;
-            dist = INFINITY;
-            radiant = L.color.xyz;
-        } else {
-            const float3 to = L.position.xyz - p;
-            const float d2 = dot(to, to);
-            if (!(d2 > 0.0f))
-                continue;
-            dist = sqrt(d2);
-            wi = to / dist;
-            radiant = L.color.xyz / d2;
-            if (kind == VCT_LIGHT_KIND_SPOT) {
-                const float cd = dot(-wi, L.direction.xyz);
-                const float x = clamp((cd - L.direction.w) / fmax(L.color.w - L.direction.w, 1e-6f),
-                                      0.0f, 1.0f);
-                radiant *= x * x;
-            }
-        }
-        float pdf;
+        float dist, pdf;
+        if (!light_incident(lights, i, p, &wi, &dist, &radiant))
+            continue;
         const float3 fc = bsdf_eval(m, n, wo, wi, &pdf);
         if (all(fc == 0.0f) || all(radiant == 0.0f))
             continue;
-        hit_record h;
-        if (grid_trace(g, origin, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h))
-            continue;
-        sum += radiant * fc;
+        if (light_visible(g, p, n, eps, wi, dist))
+            sum += radiant * fc;
     }
     return sum;
 }
@@ -134,12 +107,7 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    grid_view g;
-    g.desc = grid;
-    g.cell_bits = cell_bits;
-    g.cell_ranges = cell_ranges;
-    g.tri_ids = tri_ids;
-    g.tri_vertices = tri_vertices;
+    const grid_view g = GRID_VIEW();
     emitters em = {emitter_tris, emitter_cdf, emitter_count, emitter_inv_area};
     const uint pixel = y * cam.size.x + x;
     float3 sum = (float3)(0.0f);

@@ -5,22 +5,6 @@
 #include "grid_traverse.h"
 #include "vct_types.h"
 
-#define GRID_ARGS                                                                                  \
-    vct_grid_desc grid, __global const uint *cell_bits, __global const uint *cell_ranges,          \
-        __global const uint *tri_ids, __global const float4 *tri_vertices
-
-inline grid_view make_grid_view(vct_grid_desc desc, __global const uint *cell_bits,
-                                __global const uint *cell_ranges, __global const uint *tri_ids,
-                                __global const float4 *tri_vertices) {
-    grid_view g;
-    g.desc = desc;
-    g.cell_bits = cell_bits;
-    g.cell_ranges = cell_ranges;
-    g.tri_ids = tri_ids;
-    g.tri_vertices = tri_vertices;
-    return g;
-}
-
 /* Geometric normal of triangle tri facing against dir; position from barycentrics. */
 inline float3 surface_at(const grid_view *g, const hit_record *h, float3 dir, float3 *normal) {
     const float3 a = g->tri_vertices[3 * h->tri].xyz, b = g->tri_vertices[3 * h->tri + 1].xyz,
@@ -40,7 +24,7 @@ __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    const grid_view g = make_grid_view(grid, cell_bits, cell_ranges, tri_ids, tri_vertices);
+    const grid_view g = GRID_VIEW();
     const float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
     float3 radiance = (float3)(0.0f);
     hit_record h;
@@ -59,7 +43,7 @@ __kernel void trace_rays(GRID_ARGS, __global const vct_ray_desc *rays, uint n, u
     const uint i = get_global_id(0);
     if (i >= n)
         return;
-    const grid_view g = make_grid_view(grid, cell_bits, cell_ranges, tri_ids, tri_vertices);
+    const grid_view g = GRID_VIEW();
     const vct_ray_desc r = rays[i];
     hit_record h;
     if (grid_trace(&g, r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w, any_hit, &h))

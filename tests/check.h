@@ -52,6 +52,17 @@ static inline vct_context *check_context(void) {
     return ctx;
 }
 
+/* The shipped Cornell box (glTF), from $VCT_SOURCE_DIR. */
+static inline vct_scene *check_cornell_box(void) {
+    char path[1024];
+    const char *src = getenv("VCT_SOURCE_DIR");
+    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", src ? src : ".");
+    vct_error err = {0};
+    vct_scene *s = vct_scene_load(path, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    return s;
+}
+
 /* Deterministic generator for test inputs (xorshift64*). */
 static inline uint64_t check_rand(uint64_t *s) {
     *s ^= *s >> 12;

@@ -17,7 +17,7 @@ typedef struct test_mesh {
 } test_mesh;
 
 static inline uint32_t mesh_midpoint(test_mesh *m, uint32_t a, uint32_t b, uint32_t *cache_a,
-                              uint32_t *cache_b, uint32_t *cache_v, uint32_t *ncache) {
+                                     uint32_t *cache_b, uint32_t *cache_v, uint32_t *ncache) {
     uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
     for (uint32_t i = 0; i < *ncache; ++i)
         if (cache_a[i] == lo && cache_b[i] == hi)

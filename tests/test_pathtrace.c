@@ -141,18 +141,8 @@ static void open_scene_energy(vct_context *ctx) {
     vct_scene_free(s);
 }
 
-static vct_scene *cornell(void) {
-    char path[1024];
-    const char *src = getenv("VCT_SOURCE_DIR");
-    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", src ? src : ".");
-    vct_error err = {0};
-    vct_scene *s = vct_scene_load(path, &err);
-    REQUIRE_OK(s ? VCT_OK : err.status, err);
-    return s;
-}
-
 static void convergence_and_determinism(vct_context *ctx) {
-    vct_scene *s = cornell();
+    vct_scene *s = check_cornell_box();
     vct_pathtrace_result r;
     vct_image ref = trace(ctx, s, 32, 32, 1024, 16, 100, &r);
     double e[3];

@@ -42,12 +42,7 @@ int main(void) {
     if (!mkdtemp(cache))
         return 1;
     setenv("VCT_CACHE_DIR", cache, 1);
-    char path[1024];
-    const char *src = getenv("VCT_SOURCE_DIR");
-    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", src ? src : ".");
-    vct_error err = {0};
-    vct_scene *s = vct_scene_load(path, &err);
-    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    vct_scene *s = check_cornell_box();
 
     /* Cold start: every program compiled. */
     vct_context *ctx = check_context();
