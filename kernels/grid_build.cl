@@ -28,12 +28,11 @@ inline int cell_accepts(vct_grid_desc g, int3 cell, float4 a, float4 b, float4 c
     return tri_box_overlap(v0, v1, v2, ce, h);
 }
 
-/* pad: how far each cell box is widened (relative to the cell, set by host). */
-__kernel void grid_count(__global const float4 *tri_vertices, uint triangles, vct_grid_desc g,
-                         float pad, __global uint *counts) {
-    const uint t = get_global_id(0);
-    if (t >= triangles)
-        return;
+/* Walks the cells triangle t overlaps, in x-fastest order; with `write`
+ * stores (cell, t) pairs from keys[out] and ids[out]. Returns the count, so
+ * the counting and writing passes cannot disagree. */
+inline uint grid_visit(__global const float4 *tri_vertices, uint t, vct_grid_desc g, float pad,
+                       int write, __global uint *keys, __global uint *ids, uint out) {
     const float4 a = tri_vertices[3 * t], b = tri_vertices[3 * t + 1], c = tri_vertices[3 * t + 2];
     int3 lo, hi;
     grid_cell_range(g, a, b, c, pad, &lo, &hi);
@@ -41,32 +40,32 @@ __kernel void grid_count(__global const float4 *tri_vertices, uint triangles, vc
     for (int z = lo.z; z <= hi.z; ++z)
         for (int y = lo.y; y <= hi.y; ++y)
             for (int x = lo.x; x <= hi.x; ++x)
-                n += cell_accepts(g, (int3)(x, y, z), a, b, c, pad);
-    counts[t] = n;
+                if (cell_accepts(g, (int3)(x, y, z), a, b, c, pad)) {
+                    if (write) {
+                        keys[out + n] = (uint)x + g.res.x * ((uint)y + g.res.y * (uint)z);
+                        ids[out + n] = t;
+                    }
+                    ++n;
+                }
+    return n;
+}
+
+/* pad: how far each cell box is widened (relative to the cell, set by host). */
+__kernel void grid_count(__global const float4 *tri_vertices, uint triangles, vct_grid_desc g,
+                         float pad, __global uint *counts) {
+    const uint t = get_global_id(0);
+    if (t < triangles)
+        counts[t] = grid_visit(tri_vertices, t, g, pad, 0, counts, counts, 0);
 }
 
 __kernel void grid_write(__global const float4 *tri_vertices, uint triangles, vct_grid_desc g,
                          float pad, __global const uint *offsets, __global uint *cell_keys,
                          __global uint *tri_ids) {
     const uint t = get_global_id(0);
-    if (t >= triangles)
-        return;
-    const float4 a = tri_vertices[3 * t], b = tri_vertices[3 * t + 1], c = tri_vertices[3 * t + 2];
-    int3 lo, hi;
-    grid_cell_range(g, a, b, c, pad, &lo, &hi);
-    uint out = offsets[t];
-    for (int z = lo.z; z <= hi.z; ++z)
-        for (int y = lo.y; y <= hi.y; ++y)
-            for (int x = lo.x; x <= hi.x; ++x)
-                if (cell_accepts(g, (int3)(x, y, z), a, b, c, pad)) {
-                    cell_keys[out] = (uint)x + g.res.x * ((uint)y + g.res.y * (uint)z);
-                    tri_ids[out] = t;
-                    ++out;
-                }
+    if (t < triangles)
+        grid_visit(tri_vertices, t, g, pad, 1, cell_keys, tri_ids, offsets[t]);
 }
 
-/* cell_ranges: (start, end) pairs, zeroed beforehand; cell_bits: one bit per
- * non-empty cell, zeroed beforehand (atomic_or: the result is order-free). */
 __kernel void grid_ranges(__global const uint *cell_keys, uint n, __global uint *cell_ranges,
                           __global uint *cell_bits) {
     const uint i = get_global_id(0);

@@ -28,6 +28,24 @@ typedef struct hit_record {
     uint tri;
 } hit_record;
 
+/* Where a hit lies: position from barycentrics, unit geometric normal ng and
+ * the normal n turned towards the incoming ray; front: the ray arrived on
+ * ng's side. 0 for a zero-area triangle (which traversal never reports). */
+inline int surface_hit(const grid_view *g, const hit_record *h, float3 dir, float3 *p, float3 *ng,
+                       float3 *n, int *front) {
+    const float3 a = g->tri_vertices[3 * h->tri].xyz, b = g->tri_vertices[3 * h->tri + 1].xyz,
+                 c = g->tri_vertices[3 * h->tri + 2].xyz;
+    const float3 cr = cross(b - a, c - a);
+    const float len = length(cr);
+    if (!(len > 0.0f))
+        return 0;
+    *ng = cr / len;
+    *front = dot(*ng, dir) < 0.0f;
+    *n = *front ? *ng : -*ng;
+    *p = a + h->u * (b - a) + h->v * (c - a);
+    return 1;
+}
+
 inline uint grid_cell_index(uint3 c, uint4 res) {
     return c.x + res.x * (c.y + res.y * c.z);
 }

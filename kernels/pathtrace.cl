@@ -124,16 +124,10 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
             hit_record h;
             if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h))
                 break;
-            const float3 a = tri_vertices[3 * h.tri].xyz, b = tri_vertices[3 * h.tri + 1].xyz,
-                         c = tri_vertices[3 * h.tri + 2].xyz;
-            float3 ng = cross(b - a, c - a);
-            const float glen = length(ng);
-            if (!(glen > 0.0f))
+            float3 p, ng, n;
+            int front;
+            if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
                 break;
-            ng /= glen;
-            const int front = dot(ng, dir) < 0.0f;
-            const float3 n = front ? ng : -ng;
-            const float3 p = a + h.u * (b - a) + h.v * (c - a);
             const float3 wo = -dir;
             const vct_material_desc m = materials[tri_material[h.tri]];
             if (any(m.emission.xyz > 0.0f)) {

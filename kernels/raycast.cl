@@ -5,17 +5,6 @@
 #include "grid_traverse.h"
 #include "vct_types.h"
 
-/* Geometric normal of triangle tri facing against dir; position from barycentrics. */
-inline float3 surface_at(const grid_view *g, const hit_record *h, float3 dir, float3 *normal) {
-    const float3 a = g->tri_vertices[3 * h->tri].xyz, b = g->tri_vertices[3 * h->tri + 1].xyz,
-                 c = g->tri_vertices[3 * h->tri + 2].xyz;
-    float3 n = cross(b - a, c - a);
-    const float len = length(n);
-    n = len > 0.0f ? n / len : -dir;
-    *normal = dot(n, dir) > 0.0f ? -n : n;
-    return a + h->u * (b - a) + h->v * (c - a);
-}
-
 __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
                             __global const vct_material_desc *materials,
                             __global const uint *tri_material,
@@ -29,8 +18,9 @@ __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
     float3 radiance = (float3)(0.0f);
     hit_record h;
     if (grid_trace(&g, cam.position.xyz, dir, 0.0f, INFINITY, 0, &h)) {
-        float3 n;
-        const float3 p = surface_at(&g, &h, dir, &n);
+        float3 p, ng, n;
+        int front;
+        surface_hit(&g, &h, dir, &p, &ng, &n, &front);
         const vct_material_desc m = materials[tri_material[h.tri]];
         radiance = m.emission.xyz + direct_lambert(&g, lights, light_count, p, n, m.albedo.xyz);
     }

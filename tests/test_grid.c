@@ -154,7 +154,7 @@ static void check_rays(vct_context *ctx, const vct_scene *s, const vct_grid *g, 
     for (uint32_t i = 0; i < n; ++i) {
         const float *r = &rays[8 * i];
         double o[3] = {r[0], r[1], r[2]}, d[3] = {r[4], r[5], r[6]};
-        double best = INFINITY, best_border = 0;
+        double best = INFINITY;
         int any_grazing = 0;
         for (uint32_t t = 0; t < s->triangle_count; ++t) {
             const uint32_t *tr = &s->triangles[3 * t];
@@ -164,9 +164,8 @@ static void check_rays(vct_context *ctx, const vct_scene *s, const vct_grid *g, 
             if (fabs(border) < 1e-5)
                 any_grazing = 1;
             if (th > 0 && th < best)
-                best = th, best_border = border;
+                best = th;
         }
-        (void)best_border;
         double got = hits[i].t >= 0 ? hits[i].t : INFINITY;
         hits_ref += isfinite(best);
         int agree = (!isfinite(best) && !isfinite(got)) ||

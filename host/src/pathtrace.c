@@ -148,7 +148,9 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
         rc = vct_set_args(err, STAGE, k, 14, 2, VCT_ARG_OF(done), VCT_ARG_OF(n));
         if (rc == VCT_OK)
             rc = vct_launch_2d(ctx, k, global, local, err);
-        if (rc == VCT_OK)
+        /* Waiting per pass only serves the clock and the progress bar; a fixed
+         * sample count is queued whole and awaited by the final read. */
+        if (rc == VCT_OK && (show || !opt->spp))
             rc = vct_finish(ctx, STAGE, err);
         done += n;
         if (show)

@@ -67,8 +67,12 @@ static int scan_impl(vct_context *ctx, cl_mem in, cl_mem out, uint32_t n, int in
     TRY(vct_set_args(err, STAGE, down, 0, 7, VCT_ARG_OF(in), VCT_ARG_OF(out), VCT_ARG_OF(n),
                      VCT_ARG_OF(span), VCT_ARG_OF(flags), VCT_ARG_OF(incl), VCT_ARG_OF(sums)));
     TRY(vct_launch(ctx, down, groups * wg, wg, err));
+    /* The total costs a blocking read: only callers that need it (to size
+     * an output, or because it may overflow) pass total_out. */
     cl_ulong total = 0;
-    TRY(vct_buffer_read(ctx, STAGE, sums, groups * sizeof(cl_ulong), sizeof total, &total, err));
+    if (total_out)
+        TRY(vct_buffer_read(ctx, STAGE, sums, groups * sizeof(cl_ulong), sizeof total, &total,
+                            err));
 #undef TRY
     if (reduce)
         clReleaseKernel(reduce);
@@ -91,7 +95,11 @@ static int scan_impl(vct_context *ctx, cl_mem in, cl_mem out, uint32_t n, int in
 
 int vct_scan_u32(vct_context *ctx, void *in_mem, void *out_mem, uint32_t n, int inclusive,
                  uint64_t *total, vct_error *err) {
-    return scan_impl(ctx, (cl_mem)in_mem, (cl_mem)out_mem, n, inclusive, 0, total, err);
+    uint64_t sum = 0; /* always read: overflow must be reported */
+    int rc = scan_impl(ctx, (cl_mem)in_mem, (cl_mem)out_mem, n, inclusive, 0, &sum, err);
+    if (total)
+        *total = sum;
+    return rc;
 }
 
 int vct_compact_u32(vct_context *ctx, void *in_mem, void *flags_mem, void *out_mem, uint32_t n,
@@ -165,7 +173,7 @@ static int sort_impl(vct_context *ctx, cl_mem keys, cl_mem values, uint32_t n, i
         if (rc == VCT_OK)
             rc = vct_launch(ctx, histogram, groups * wg, wg, err);
         if (rc == VCT_OK)
-            rc = scan_impl(ctx, hist, hist, hist_n, 0, 0, NULL, err);
+            rc = scan_impl(ctx, hist, hist, hist_n, 0, 0, NULL, err); /* total is n */
         if (rc != VCT_OK)
             break;
         rc = vct_set_args(err, STAGE, scatter, 0, 9, VCT_ARG_OF(src_k), VCT_ARG_OF(src_v),

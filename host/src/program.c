@@ -86,7 +86,7 @@ static cl_program load_cached(vct_context *ctx, const char *path) {
     return p;
 }
 
-static void store_cached(vct_context *ctx, cl_program p, const char *path) {
+static void store_cached(cl_program p, const char *path) {
     size_t size = 0;
     if (clGetProgramInfo(p, CL_PROGRAM_BINARY_SIZES, sizeof size, &size, NULL) != CL_SUCCESS ||
         size == 0)
@@ -108,7 +108,6 @@ static void store_cached(vct_context *ctx, cl_program p, const char *path) {
         }
     }
     free(bin);
-    (void)ctx;
 }
 
 static int build_from_source(vct_context *ctx, const char *file, const char *source,
@@ -170,7 +169,7 @@ int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_
         rc = build_from_source(ctx, file, source, full_options, &p, err);
         if (rc == VCT_OK) {
             ctx->cache_misses++;
-            store_cached(ctx, p, path);
+            store_cached(p, path);
         }
     }
     ctx->build_ms += vct_now_ms() - t0;
