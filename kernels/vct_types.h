@@ -55,4 +55,15 @@ typedef struct vct_ray_desc {
 /* Hit: x = t (negative for a miss), y = triangle (as bits), z = u, w = v. */
 typedef vct_f4 vct_hit_desc;
 
+/* Voxel volume: a cube of R^3 voxels (R = 2^L) from origin. Vertices are
+ * quantised to integers, 2^VCT_VOLUME_UNITS_LOG2 units per cube side, so that
+ * triangle/voxel tests are exact integer arithmetic (Q = units per voxel). */
+#define VCT_VOLUME_UNITS_LOG2 18
+#define VCT_VOXEL_MAX_LEVELS 10
+
+typedef struct vct_volume_desc {
+    vct_f4 origin; /* xyz: world position of the cube's minimum corner; w = side length */
+    vct_u4 res;    /* x = R, y = L, z = Q, w = triangle count */
+} vct_volume_desc;
+
 #endif

@@ -1,4 +1,4 @@
-/* vct devices | info | render. */
+/* vct devices | info | render | compare, and helpers shared by the commands. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,7 +9,7 @@
 
 #include <stdarg.h>
 
-static int vct_fail_app(vct_error *err, const char *fmt, ...) {
+int cli_fail_input(vct_error *err, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(err->message, sizeof err->message, fmt, ap);
@@ -18,7 +18,7 @@ static int vct_fail_app(vct_error *err, const char *fmt, ...) {
     return VCT_ERR_INPUT;
 }
 
-static int fail(const vct_error *err) {
+int cli_fail(const vct_error *err) {
     fprintf(stderr, "vct: %s\n", err->message);
     return 1;
 }
@@ -29,7 +29,7 @@ int cmd_devices(const cli_options *opt) {
     vct_device_info info[32];
     int n = vct_list_devices(info, 32, &err);
     if (n < 0)
-        return fail(&err);
+        return cli_fail(&err);
     for (int i = 0; i < n; ++i) {
         const vct_device_info *d = &info[i];
         printf("[%d] %s — %s (%s)\n", d->index, d->name, d->platform, d->is_gpu ? "GPU" : "CPU");
@@ -47,9 +47,9 @@ int cmd_devices(const cli_options *opt) {
     return 0;
 }
 
-static vct_scene *load_scene(const cli_options *opt, vct_error *err) {
+vct_scene *cli_load_scene(const cli_options *opt, vct_error *err) {
     if (opt->input_count < 1) {
-        vct_fail_app(err, "%s needs a scene file", opt->command);
+        cli_fail_input(err, "%s needs a scene file", opt->command);
         return NULL;
     }
     vct_scene *s = vct_scene_load(opt->inputs[0], err);
@@ -60,7 +60,7 @@ static vct_scene *load_scene(const cli_options *opt, vct_error *err) {
     return s;
 }
 
-static void print_scene(const vct_scene *s, FILE *out) {
+void cli_print_scene(const vct_scene *s, FILE *out) {
     fprintf(out,
             "scene %s: %u triangles (%u degenerate, never hit), %u vertices, %u materials, "
             "%u lights\n",
@@ -70,10 +70,10 @@ static void print_scene(const vct_scene *s, FILE *out) {
 
 int cmd_info(const cli_options *opt) {
     vct_error err = {0};
-    vct_scene *s = load_scene(opt, &err);
+    vct_scene *s = cli_load_scene(opt, &err);
     if (!s)
-        return fail(&err);
-    print_scene(s, stdout);
+        return cli_fail(&err);
+    cli_print_scene(s, stdout);
     printf("bounds (%g %g %g) .. (%g %g %g)\n", s->bounds_min[0], s->bounds_min[1],
            s->bounds_min[2], s->bounds_max[0], s->bounds_max[1], s->bounds_max[2]);
     printf("camera %s: position (%g %g %g), look-at (%g %g %g), up (%g %g %g), fov %g\n",
@@ -99,7 +99,7 @@ int cmd_info(const cli_options *opt) {
     return 0;
 }
 
-static void print_stats(const vct_context *ctx) {
+void cli_print_stats(const vct_context *ctx) {
     const vct_stage_stat *st;
     int n = vct_stats(ctx, &st);
     printf("%-20s %10s %10s %10s %9s\n", "stage", "device ms", "host ms", "peak MiB", "launches");
@@ -109,7 +109,7 @@ static void print_stats(const vct_context *ctx) {
 }
 
 /* Creates the output's parent directory, so `-o out/x.png` works from a clean tree. */
-static int make_parent_dir(const char *path, vct_error *err) {
+int cli_make_parent_dir(const char *path, vct_error *err) {
     char dir[4096];
     snprintf(dir, sizeof dir, "%s", path);
     char *slash = strrchr(dir, '/');
@@ -124,7 +124,7 @@ static int make_parent_dir(const char *path, vct_error *err) {
         }
     }
     if (mkdir(dir, 0755) != 0 && errno != EEXIST)
-        return vct_fail_app(err, "cannot create directory %s for the output", dir);
+        return cli_fail_input(err, "cannot create directory %s for the output", dir);
     return VCT_OK;
 }
 
@@ -141,17 +141,17 @@ int cmd_render(const cli_options *opt) {
         fprintf(stderr, "vct: unknown --method %s (available: raycast, pt)\n", opt->method);
         return 1;
     }
-    vct_scene *s = load_scene(opt, &err);
+    vct_scene *s = cli_load_scene(opt, &err);
     if (!s)
-        return fail(&err);
-    print_scene(s, stderr);
+        return cli_fail(&err);
+    cli_print_scene(s, stderr);
     if (s->light_count == 0)
         fprintf(stderr, "vct: the scene has no lights: only emissive surfaces will show (add "
                         "--point-light or --dir-light)\n");
     vct_context *ctx = vct_context_create(opt->device, &err);
     if (!ctx) {
         vct_scene_free(s);
-        return fail(&err);
+        return cli_fail(&err);
     }
     fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
             vct_context_device(ctx)->platform);
@@ -176,7 +176,7 @@ int cmd_render(const cli_options *opt) {
                 "not finite\n",
                 pr.spp, pr.seconds, pr.seconds > 0 ? pr.spp / pr.seconds : 0.0, pr.discarded);
     if (rc == VCT_OK)
-        rc = make_parent_dir(out, &err);
+        rc = cli_make_parent_dir(out, &err);
     if (rc == VCT_OK)
         rc = vct_image_write(&image, out, opt->exposure, &err);
     if (rc == VCT_OK) {
@@ -185,7 +185,7 @@ int cmd_render(const cli_options *opt) {
         fprintf(stderr, "grid: %ux%ux%u cells, %u references\n", gi.res[0], gi.res[1], gi.res[2],
                 gi.references);
         if (opt->stats)
-            print_stats(ctx);
+            cli_print_stats(ctx);
         printf("wrote %s (%dx%d, %s)\n", out, image.width, image.height,
                strcmp(dot, ".pfm") == 0 ? "linear radiance" : "exposed and sRGB encoded");
     }
@@ -193,7 +193,7 @@ int cmd_render(const cli_options *opt) {
     vct_grid_free(grid);
     vct_context_destroy(ctx);
     vct_scene_free(s);
-    return rc == VCT_OK ? 0 : fail(&err);
+    return rc == VCT_OK ? 0 : cli_fail(&err);
 }
 
 int cmd_compare(const cli_options *opt) {
@@ -212,7 +212,7 @@ int cmd_compare(const cli_options *opt) {
     if (rc == VCT_OK && opt->error_image) {
         rc = vct_image_error_map(&test, &ref, opt->error_scale, &map, &err);
         if (rc == VCT_OK)
-            rc = make_parent_dir(opt->error_image, &err);
+            rc = cli_make_parent_dir(opt->error_image, &err);
         if (rc == VCT_OK)
             rc = vct_image_write_png(&map, opt->error_image, 0.0f, &err);
     }
@@ -228,5 +228,5 @@ int cmd_compare(const cli_options *opt) {
     vct_image_free(&test);
     vct_image_free(&ref);
     vct_image_free(&map);
-    return rc == VCT_OK ? 0 : fail(&err);
+    return rc == VCT_OK ? 0 : cli_fail(&err);
 }

@@ -2,11 +2,22 @@
 #ifndef VCT_APP_COMMANDS_H
 #define VCT_APP_COMMANDS_H
 
+#include <stdio.h>
+
 #include "options.h"
 
 int cmd_devices(const cli_options *opt);
 int cmd_info(const cli_options *opt);
 int cmd_render(const cli_options *opt);
 int cmd_compare(const cli_options *opt);
+int cmd_voxelize(const cli_options *opt);
+
+/* Helpers shared by the commands. */
+int cli_fail(const vct_error *err); /* prints the message; returns 1 */
+int cli_fail_input(vct_error *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+vct_scene *cli_load_scene(const cli_options *opt, vct_error *err);
+void cli_print_scene(const vct_scene *s, FILE *out);
+void cli_print_stats(const vct_context *ctx);
+int cli_make_parent_dir(const char *path, vct_error *err);
 
 #endif

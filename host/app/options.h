@@ -25,6 +25,8 @@ typedef struct cli_options {
     float camera_pos[3], look_at[3], up[3], fov;
     vct_light lights[MAX_CLI_LIGHTS];
     int light_count;
+    int voxel_res, thin_voxels, has_voxel_bounds;
+    float voxel_bounds[4]; /* x, y, z, size */
 } cli_options;
 
 /* Parses argv into opt; on error prints the reason and returns non-zero. */

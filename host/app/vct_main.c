@@ -16,6 +16,8 @@ int main(int argc, char **argv) {
         return cmd_render(&opt);
     if (strcmp(opt.command, "compare") == 0)
         return cmd_compare(&opt);
+    if (strcmp(opt.command, "voxelize") == 0)
+        return cmd_voxelize(&opt);
     fprintf(stderr, "vct: unknown command \"%s\"\n", opt.command);
     cli_usage();
     return 2;

@@ -101,6 +101,10 @@ double vct_now_ms(void);
  * const void *value) pairs, most easily written VCT_ARG_OF(variable). */
 int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first, int count, ...);
 #define VCT_ARG_OF(x) sizeof(x), (const void *)&(x)
+/* Creates kernel `name`, sets its `count` arguments (as vct_set_args) and
+ * launches it over `global` work-items (none when global is 0). */
+int vct_run_kernel(vct_context *ctx, cl_program program, const char *name, const char *stage,
+                   size_t global, vct_error *err, int count, ...);
 
 /* Whole file into a NUL-terminated buffer (size optional); NULL if unreadable. */
 char *vct_read_file(const char *path, size_t *size);

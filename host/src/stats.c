@@ -164,9 +164,8 @@ int vct_kernel_launches(const vct_context *ctx, const char *kernel_name) {
     return 0;
 }
 
-int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first, int count, ...) {
-    va_list ap;
-    va_start(ap, count);
+static int set_args_v(vct_error *err, const char *stage, cl_kernel kernel, int first, int count,
+                      va_list ap) {
     int rc = VCT_OK;
     for (int i = 0; i < count && rc == VCT_OK; ++i) {
         size_t size = va_arg(ap, size_t);
@@ -174,6 +173,30 @@ int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first,
         rc = vct_cl_check(err, clSetKernelArg(kernel, (cl_uint)(first + i), size, value), stage,
                           "clSetKernelArg");
     }
+    return rc;
+}
+
+int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first, int count, ...) {
+    va_list ap;
+    va_start(ap, count);
+    int rc = set_args_v(err, stage, kernel, first, count, ap);
     va_end(ap);
+    return rc;
+}
+
+int vct_run_kernel(vct_context *ctx, cl_program program, const char *name, const char *stage,
+                   size_t global, vct_error *err, int count, ...) {
+    if (global == 0)
+        return VCT_OK;
+    cl_kernel k = vct_kernel_create(ctx, program, name, err);
+    if (!k)
+        return err->status;
+    va_list ap;
+    va_start(ap, count);
+    int rc = set_args_v(err, stage, k, 0, count, ap);
+    va_end(ap);
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k, global, 0, err);
+    clReleaseKernel(k);
     return rc;
 }

@@ -228,6 +228,62 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_gri
                          const vct_pathtrace_options *options, vct_image *image,
                          vct_pathtrace_result *result, vct_error *err);
 
+/* ---- voxelization and the sparse voxel octree ---------------------------------- */
+
+#define VCT_VOXEL_MAX_RES 1024u
+#define VCT_NODE_NULL 0xffffffffu /* no node, no child, no neighbour */
+
+typedef struct vct_voxel_options {
+    uint32_t resolution; /* voxels per axis: a power of two from 2 to VCT_VOXEL_MAX_RES */
+    int thin;            /* 0: conservative (26-separating); 1: thin (6-separating) */
+    int has_bounds;      /* 0: a cube around the scene with a one-voxel margin */
+    double bounds_min[3];
+    double bounds_size; /* side of the cube when has_bounds */
+} vct_voxel_options;
+
+typedef struct vct_voxels vct_voxels;
+
+typedef struct vct_voxel_info {
+    uint32_t resolution, levels; /* resolution = 2^levels */
+    /* Vertex quantisation: q = round((p - origin) * units / side), in double;
+     * a voxel spans units / resolution integers per axis. */
+    uint32_t units;
+    double origin[3], side;
+    uint32_t triangles, fragments, voxels;
+    /* Octree (after vct_octree_build): nodes per level, level 0 = root. */
+    uint32_t nodes, level_nodes[11], level_start[11];
+    uint64_t voxel_bytes;     /* per-voxel keys and attributes */
+    uint64_t node_bytes;      /* child pointers and tile parents */
+    uint64_t neighbour_bytes; /* 6 links per node */
+    uint64_t fragment_bytes;  /* transient: fragments and their sort */
+} vct_voxel_info;
+
+/* Triangle-parallel voxelization. Voxels are sorted by Morton key (bit 3k =
+ * x bit k); each holds the mean of its fragments. Zero-area triangles make no
+ * voxels; geometry outside the bounds is cut off at the cube's faces. */
+vct_voxels *vct_voxelize(vct_context *ctx, const vct_scene *scene, const vct_voxel_options *options,
+                         vct_error *err);
+/* Builds the sparse voxel octree over the voxels, with neighbour links. */
+int vct_octree_build(vct_context *ctx, vct_voxels *voxels, vct_error *err);
+void vct_voxels_info_get(const vct_voxels *voxels, vct_voxel_info *info);
+/* Per voxel: Morton key; albedo rgb + opacity; unit normal + coherence (the
+ * mean unit normal's length); emission rgb + fragment count. NULL skips one. */
+int vct_voxels_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *keys, float *albedo,
+                    float *normal, float *emission, vct_error *err);
+/* Per node: child (first node of the child tile, or at the leaf level the
+ * voxel index; VCT_NODE_NULL when empty) and 6 neighbour links (+x, +y, +z,
+ * -x, -y, -z). Either may be NULL. */
+int vct_octree_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *child,
+                    uint32_t *neighbours, vct_error *err);
+/* Runs the kernels' traversal: for each query (x, y, z, level), cell
+ * coordinates at that level, the node covering it or VCT_NODE_NULL. */
+int vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels, const uint32_t *queries,
+                      uint32_t n, uint32_t *nodes, vct_error *err);
+/* The voxels as the scene camera sees them, ray marched through the octree. */
+int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels,
+                      int width, int height, vct_image *image, vct_error *err);
+void vct_voxels_free(vct_voxels *voxels);
+
 /* ---- images --------------------------------------------------------------------- */
 
 /* PFM: raw linear radiance. PNG: radiance * 2^exposure, clamped, sRGB encoded.

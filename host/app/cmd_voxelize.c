@@ -1,0 +1,79 @@
+/* vct voxelize: the voxel list and sparse voxel octree of a scene, with
+ * counts, memory per structure and time per stage; optionally an image of
+ * the voxels ray marched through the octree. */
+#include <stdio.h>
+#include <string.h>
+
+#include "commands.h"
+
+static double mib(uint64_t bytes) { return bytes / 1048576.0; }
+
+static void print_voxels(const vct_voxel_info *v) {
+    printf("volume: %u^3 voxels of %g, cube from (%g %g %g), side %g (%s)\n", v->resolution,
+           v->side / v->resolution, v->origin[0], v->origin[1], v->origin[2], v->side,
+           "vertices snapped to 1/2^18 of the side");
+    printf("fragments %u, voxels %u (%.2f fragments per voxel)\n", v->fragments, v->voxels,
+           v->voxels ? (double)v->fragments / v->voxels : 0.0);
+    printf("octree: %u levels, %u nodes\n", v->levels + 1, v->nodes);
+    for (uint32_t l = 0; l <= v->levels; ++l)
+        printf("  level %2u (%4u^3): %u nodes\n", l, 1u << l, v->level_nodes[l]);
+    const uint64_t dense = 4ull * v->resolution * v->resolution * v->resolution;
+    printf("memory: voxels %.2f MiB, nodes %.2f MiB, neighbour links %.2f MiB, "
+           "fragments (transient) %.2f MiB\n",
+           mib(v->voxel_bytes), mib(v->node_bytes), mib(v->neighbour_bytes),
+           mib(v->fragment_bytes));
+    printf("        a dense RGBA8 %u^3 texture would take %.2f MiB\n", v->resolution, mib(dense));
+}
+
+int cmd_voxelize(const cli_options *opt) {
+    vct_error err = {0};
+    const char *out = opt->output;
+    if (out) {
+        const char *dot = strrchr(out, '.');
+        if (!dot || (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0)) {
+            fprintf(stderr, "vct: output %s must end in .png or .pfm\n", out);
+            return 1;
+        }
+    }
+    vct_scene *s = cli_load_scene(opt, &err);
+    if (!s)
+        return cli_fail(&err);
+    cli_print_scene(s, stderr);
+    vct_context *ctx = vct_context_create(opt->device, &err);
+    if (!ctx) {
+        vct_scene_free(s);
+        return cli_fail(&err);
+    }
+    fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
+            vct_context_device(ctx)->platform);
+    vct_voxel_options vo = {0};
+    vo.resolution = (uint32_t)opt->voxel_res;
+    vo.thin = opt->thin_voxels;
+    vo.has_bounds = opt->has_voxel_bounds;
+    for (int k = 0; k < 3; ++k)
+        vo.bounds_min[k] = opt->voxel_bounds[k];
+    vo.bounds_size = opt->voxel_bounds[3];
+    vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
+    int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
+    vct_image image = {0};
+    if (rc == VCT_OK && out)
+        rc = vct_render_voxels(ctx, s, v, opt->width, opt->height, &image, &err);
+    if (rc == VCT_OK && out)
+        rc = cli_make_parent_dir(out, &err);
+    if (rc == VCT_OK && out)
+        rc = vct_image_write(&image, out, opt->exposure, &err);
+    if (rc == VCT_OK) {
+        vct_voxel_info info;
+        vct_voxels_info_get(v, &info);
+        print_voxels(&info);
+        cli_print_stats(ctx);
+        if (out)
+            printf("wrote %s (%dx%d, the voxels seen from the scene camera)\n", out, image.width,
+                   image.height);
+    }
+    vct_image_free(&image);
+    vct_voxels_free(v);
+    vct_context_destroy(ctx);
+    vct_scene_free(s);
+    return rc == VCT_OK ? 0 : cli_fail(&err);
+}

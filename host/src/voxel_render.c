@@ -1,0 +1,51 @@
+/* Voxel view: the octree ray marched from the scene camera (kernels/voxel_render.cl). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+#include "scene_device.h"
+#include "vct_types.h"
+#include "voxels.h"
+
+int vct_render_voxels(vct_context *ctx, const vct_scene *s, const vct_voxels *v, int width,
+                      int height, vct_image *image, vct_error *err) {
+    const char *stage = "voxel render";
+    memset(image, 0, sizeof *image);
+    if (!v->child)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: build the octree first (vct_octree_build)", stage);
+    vct_camera_desc cam;
+    int rc = vct_camera_desc_make(&s->camera, width, height, &cam, err);
+    if (rc)
+        return rc;
+    vct_volume_desc vol;
+    vct_voxels_volume_desc(v, &vol);
+    vct_stage_begin(ctx, stage);
+    cl_program p;
+    rc = vct_program_get(ctx, "voxel_render.cl", "", &p, err);
+    const size_t pixels = (size_t)width * height;
+    cl_mem img = rc == VCT_OK ? vct_buffer_create(ctx, stage, "image", 16 * pixels,
+                                                  CL_MEM_WRITE_ONLY, NULL, err)
+                              : NULL;
+    cl_kernel k = img ? vct_kernel_create(ctx, p, "voxel_render", err) : NULL;
+    rc = k ? vct_set_args(err, stage, k, 0, 7, VCT_ARG_OF(cam), VCT_ARG_OF(vol),
+                          VCT_ARG_OF(v->child), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
+                          VCT_ARG_OF(v->emission), VCT_ARG_OF(img))
+           : (int)err->status;
+    const size_t global[2] = {(size_t)width, (size_t)height}, local[2] = {8, 8};
+    if (rc == VCT_OK)
+        rc = vct_launch_2d(ctx, k, global, local, err);
+    if (rc == VCT_OK) {
+        image->width = width;
+        image->height = height;
+        image->rgba = malloc(16 * pixels);
+        rc = image->rgba ? vct_buffer_read(ctx, stage, img, 0, 16 * pixels, image->rgba, err)
+                         : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
+    }
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, img);
+    vct_stage_end(ctx);
+    if (rc != VCT_OK)
+        vct_image_free(image);
+    return rc;
+}
