@@ -197,6 +197,11 @@ vct_context *vct_context_create(const char *selector, vct_error *err) {
     const char *bits = getenv("VCT_RADIX_BITS");
     if (bits && atoi(bits) >= 1 && atoi(bits) <= 12)
         ctx->radix_bits = atoi(bits);
+    /* VCT_MAX_ALLOC_MIB lowers the per-buffer limit, to see how a smaller
+     * device would fail without one at hand. */
+    const char *limit = getenv("VCT_MAX_ALLOC_MIB");
+    if (limit && atof(limit) > 0.0 && atof(limit) * 1048576.0 < (double)ctx->info.max_alloc)
+        ctx->info.max_alloc = (uint64_t)(atof(limit) * 1048576.0);
     if (ctx->scan_groups < 4)
         ctx->scan_groups = 4;
     if (ctx->scan_groups > 1024)

@@ -1,0 +1,306 @@
+/* Voxelization against the plain-C reference (voxel_ref.h): the same voxel
+ * set, fragment counts and averaged attributes on random soups, a sphere, a
+ * far-offset mesh and hard cases, plus analytic counts where geometry sits
+ * exactly on voxel faces, edges and the volume's boundary. */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "mesh_gen.h"
+#include "voxel_ref.h"
+
+static vct_context *ctx;
+
+static const vct_material test_materials[3] = {
+    {"red", {0.9f, 0.1f, 0.1f}, {0, 0, 0}, {0, 0, 0}, 0, 1, 0, 1.5f},
+    {"lamp", {0.5f, 0.5f, 0.5f}, {4, 3, 2}, {0, 0, 0}, 0, 1, 0, 1.5f},
+    {"glass", {0.2f, 0.6f, 0.9f}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0.75f, 1.5f},
+};
+
+static vct_scene *scene_of(const float *pos, uint32_t nv, const uint32_t *tri, uint32_t nt) {
+    uint32_t *mat = malloc(4ull * (nt ? nt : 1));
+    for (uint32_t t = 0; t < nt; ++t)
+        mat[t] = t % 3;
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(pos, nv, tri, nt, mat, test_materials, 3, &err);
+    free(mat);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    return s;
+}
+
+static vct_scene *scene_of_mesh(const test_mesh *m) { return scene_of(m->pos, m->nv, m->tri, m->nt); }
+
+/* Bounds [0, res]^3 by hand, so that world units are voxels. */
+static vct_voxel_options unit_voxels(uint32_t res, int thin) {
+    vct_voxel_options o = {0};
+    o.resolution = res;
+    o.thin = thin;
+    o.has_bounds = 1;
+    o.bounds_size = res;
+    return o;
+}
+
+static vct_voxel_options auto_voxels(uint32_t res, int thin) {
+    vct_voxel_options o = {0};
+    o.resolution = res;
+    o.thin = thin;
+    return o;
+}
+
+/* Voxelizes s, compares every voxel and attribute with the reference;
+ * returns the voxel count. */
+static uint32_t check_against_reference(const char *name, const vct_scene *s,
+                                        const vct_voxel_options *o) {
+    vct_error err = {0};
+    vct_voxels *v = vct_voxelize(ctx, s, o, &err);
+    REQUIRE_OK(v ? VCT_OK : err.status, err);
+    vct_voxel_info info;
+    vct_voxels_info_get(v, &info);
+    ref_voxels r = ref_voxelize(s, &info, o->thin);
+    CHECK(info.voxels == r.voxels, "%s: %u voxels, reference %u", name, info.voxels, r.voxels);
+    CHECK(info.fragments == r.count, "%s: %u fragments, reference %zu", name, info.fragments,
+          r.count);
+    const uint32_t n = info.voxels < r.voxels ? info.voxels : r.voxels;
+    uint32_t *keys = malloc(4ull * (info.voxels + 1));
+    float *albedo = malloc(16ull * (info.voxels + 1)), *normal = malloc(16ull * (info.voxels + 1)),
+          *emission = malloc(16ull * (info.voxels + 1));
+    REQUIRE_OK(vct_voxels_read(ctx, v, keys, albedo, normal, emission, &err), err);
+    int key_bad = 0, attr_bad = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+        if (keys[i] != r.keys[i]) {
+            if (key_bad++ < 5)
+                CHECK(0, "%s: voxel %u key %u, reference %u", name, i, keys[i], r.keys[i]);
+            continue;
+        }
+        double a[4] = {0}, e[3] = {0}, nrm[3] = {0};
+        const uint32_t count = r.first[i + 1] - r.first[i];
+        for (uint32_t f = r.first[i]; f < r.first[i + 1]; ++f) {
+            const uint32_t t = r.frags[f].tri;
+            const vct_material *m = &s->materials[s->triangle_material[t]];
+            int64_t q[3][3];
+            ref_quantise(s, &info, t, q);
+            double e0[3], e1[3], len = 0.0, nn[3];
+            for (int k = 0; k < 3; ++k) {
+                a[k] += m->albedo[k];
+                e[k] += m->emission[k];
+                e0[k] = (double)(q[1][k] - q[0][k]);
+                e1[k] = (double)(q[2][k] - q[1][k]);
+            }
+            a[3] += 1.0 - m->transmission;
+            nn[0] = e0[1] * e1[2] - e0[2] * e1[1];
+            nn[1] = e0[2] * e1[0] - e0[0] * e1[2];
+            nn[2] = e0[0] * e1[1] - e0[1] * e1[0];
+            len = sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
+            for (int k = 0; k < 3; ++k)
+                nrm[k] += nn[k] / len;
+        }
+        const double nlen = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+        double worst = fabs(emission[4 * i + 3] - count);
+        for (int k = 0; k < 4; ++k)
+            worst = fmax(worst, fabs(albedo[4 * i + k] - a[k] / count));
+        for (int k = 0; k < 3; ++k) {
+            worst = fmax(worst, fabs(emission[4 * i + k] - e[k] / count) / 4.0);
+            if (nlen / count > 1e-3)
+                worst = fmax(worst, fabs(normal[4 * i + k] - nrm[k] / nlen));
+        }
+        worst = fmax(worst, fabs(normal[4 * i + 3] - nlen / count));
+        if (!(worst < 1e-4) && attr_bad++ < 5)
+            CHECK(0, "%s: voxel %u (key %u, %u fragments) attributes off by %g", name, i, keys[i],
+                  count, worst);
+    }
+    CHECK(key_bad == 0 && attr_bad == 0, "%s: %d keys and %d attribute sets differ", name,
+          key_bad, attr_bad);
+    free(keys);
+    free(albedo);
+    free(normal);
+    free(emission);
+    ref_free(&r);
+    const uint32_t voxels = info.voxels;
+    vct_voxels_free(v);
+    printf("%-34s %2s %4u^3: %7u voxels, %7u fragments\n", name, o->thin ? "6" : "26",
+           o->resolution, voxels, info.fragments);
+    return voxels;
+}
+
+static void test_random_and_sphere(void) {
+    test_mesh soup = mesh_soup(3000, 0.0f, 7);
+    vct_scene *s = scene_of_mesh(&soup);
+    const uint32_t res[] = {2, 16, 64, 256};
+    for (int i = 0; i < 4; ++i) {
+        vct_voxel_options o = auto_voxels(res[i], 0);
+        check_against_reference("random soup", s, &o);
+        o.thin = 1;
+        check_against_reference("random soup", s, &o);
+    }
+    vct_scene_free(s);
+    mesh_free(&soup);
+
+    const float centre[3] = {0.5f, 0.5f, 0.5f};
+    test_mesh sphere = mesh_icosphere(4, 0.4f, centre);
+    s = scene_of_mesh(&sphere);
+    vct_voxel_options o = auto_voxels(128, 0);
+    const uint32_t near = check_against_reference("icosphere", s, &o);
+    o.thin = 1;
+    const uint32_t thin = check_against_reference("icosphere", s, &o);
+    CHECK(thin < near, "thin voxels (%u) are fewer than conservative ones (%u)", thin, near);
+    vct_scene_free(s);
+    mesh_free(&sphere);
+
+    /* The same sphere a million units away: as many voxels, give or take
+     * the float spacing of its vertices there (1/16). */
+    const float far_centre[3] = {1e6f, 1e6f + 500.0f, 1e6f};
+    test_mesh far = mesh_icosphere(4, 400.0f, far_centre);
+    s = scene_of_mesh(&far);
+    o = auto_voxels(128, 0);
+    const uint32_t far_voxels = check_against_reference("icosphere offset by 1e6", s, &o);
+    CHECK(fabs((double)far_voxels - near) < 0.02 * near, "offset sphere: %u voxels, near %u",
+          far_voxels, near);
+    vct_scene_free(s);
+    mesh_free(&far);
+}
+
+/* Counts voxels of s at unit bounds and checks the analytic expectation
+ * (expected < 0: reference only). */
+static uint32_t check_unit_case(const char *name, const float *pos, uint32_t nt, uint32_t res,
+                                long expected, int thin) {
+    uint32_t *tri = malloc(12ull * nt);
+    for (uint32_t i = 0; i < 3 * nt; ++i)
+        tri[i] = i;
+    vct_scene *s = scene_of(pos, 3 * nt, tri, nt);
+    vct_voxel_options o = unit_voxels(res, thin);
+    const uint32_t got = check_against_reference(name, s, &o);
+    if (expected >= 0)
+        CHECK(got == (uint32_t)expected, "%s: %u voxels, expected %ld", name, got, expected);
+    vct_scene_free(s);
+    free(tri);
+    return got;
+}
+
+static void test_hard_cases(void) {
+    /* An axis-aligned quad on the face z = 3: both layers of closed boxes,
+     * x and y from 0 (touching x = 1) to 5. */
+    const float quad_z[] = {1, 1, 3, 5, 1, 3, 5, 5, 3, 1, 1, 3, 5, 5, 3, 1, 5, 3};
+    check_unit_case("quad on a voxel face", quad_z, 2, 16, 6 * 6 * 2, 0);
+    check_unit_case("quad on a voxel face", quad_z, 2, 16, -1, 1);
+    /* A triangle in the plane x = 4 with an edge along the voxel edge y = 4. */
+    const float on_edge[] = {4, 4, 1, 4, 4, 9, 4, 8.5f, 5};
+    check_unit_case("triangle with an edge on voxel edges", on_edge, 1, 16, -1, 0);
+    check_unit_case("triangle with an edge on voxel edges", on_edge, 1, 16, -1, 1);
+    /* A segment-like triangle lying along a voxel edge line. */
+    const float along[] = {2, 3, 3, 12, 3, 3, 7, 3.25f, 3};
+    check_unit_case("triangle along a voxel edge line", along, 1, 16, -1, 0);
+    /* A sliver along the diagonal: edges (N, N + 1) and (N - 1, N) in units
+     * of 1/16384 with N = 10 voxels, area half a unit, aspect about 5e10. It
+     * passes through the 11 diagonal voxels and, above each voxel corner,
+     * one more. */
+    const float u = 1.0f / 16384.0f;
+    const float sliver[] = {0.5f, 0.5f, 0.5f, 10.5f, 10.5f + u, 0.5f, 10.5f - u, 10.5f, 0.5f};
+    CHECK(check_unit_case("sliver, aspect 5e10", sliver, 1, 16, 21, 0) == 21, "sliver voxels");
+    check_unit_case("sliver, aspect 5e10", sliver, 1, 16, -1, 1);
+    /* Zero-area triangles (repeated and collinear vertices): no surface. */
+    const float zero[] = {1, 1, 1, 1, 1, 1, 5, 5, 5, 1, 2, 3, 2, 3, 4, 3, 4, 5};
+    check_unit_case("zero-area triangles", zero, 2, 16, 0, 0);
+    /* Smaller than a voxel, inside voxel (3, 4, 5). */
+    const float tiny[] = {3.2f, 4.2f, 5.2f, 3.3f, 4.2f, 5.2f, 3.2f, 4.3f, 5.25f};
+    check_unit_case("triangle smaller than a voxel", tiny, 1, 16, 1, 0);
+    check_unit_case("triangle smaller than a voxel", tiny, 1, 16, 1, 1);
+    /* On the volume's faces x = 0 and x = 16: one layer each. */
+    const float walls[] = {0, 0, 0, 0, 16, 0, 0, 16, 16, 0, 0, 0, 0, 16, 16, 0, 0, 16,
+                           16, 0, 0, 16, 16, 0, 16, 16, 16, 16, 0, 0, 16, 16, 16, 16, 0, 16};
+    check_unit_case("quads on the volume's faces", walls, 4, 16, 2 * 16 * 16, 0);
+    /* Partly and wholly outside: cut at the faces, or nothing. */
+    const float outside[] = {-3, 2, 2, 8, 2, 2, 8, 9, 2, 20, 1, 1, 30, 1, 1, 25, 9, 1};
+    check_unit_case("triangles partly and wholly outside", outside, 2, 16, -1, 0);
+    /* One triangle across the whole volume: thousands of columns, split into chunks. */
+    const float big[] = {0.3f, 0.2f, 63.1f, 63.7f, 0.9f, 0.4f, 31.5f, 63.9f, 31.0f};
+    check_unit_case("one triangle across the volume", big, 1, 64, -1, 0);
+    check_unit_case("one triangle across the volume", big, 1, 64, -1, 1);
+}
+
+/* 1200 small triangles in one voxel, of three materials: one voxel holding
+ * the plain mean, with no counter that saturates. */
+static void test_many_fragments(void) {
+    const uint32_t n = 1200;
+    float *pos = malloc(36ull * n);
+    uint32_t *tri = malloc(12ull * n);
+    uint64_t seed = 11;
+    for (uint32_t t = 0; t < n; ++t) {
+        for (int i = 0; i < 9; ++i)
+            pos[9 * t + i] = 5.1f + 0.8f * check_randf(&seed);
+        for (int i = 0; i < 3; ++i)
+            tri[3 * t + i] = 3 * t + i;
+    }
+    vct_scene *s = scene_of(pos, 3 * n, tri, n);
+    vct_voxel_options o = unit_voxels(16, 0);
+    CHECK(check_against_reference("1200 fragments in one voxel", s, &o) == 1,
+          "1200 fragments make one voxel");
+    vct_error err = {0};
+    vct_voxels *v = vct_voxelize(ctx, s, &o, &err);
+    REQUIRE_OK(v ? VCT_OK : err.status, err);
+    float albedo[4], emission[4];
+    REQUIRE_OK(vct_voxels_read(ctx, v, NULL, albedo, NULL, emission, &err), err);
+    /* 400 of each material: mean albedo.r = (0.9 + 0.5 + 0.2) / 3 exactly in
+     * the limit; float sums of 1200 terms stay within 1e-5. */
+    CHECK(fabs(emission[3] - 1200.0) < 0.5, "fragment count %g", emission[3]);
+    CHECK(fabs(albedo[0] - (0.9 + 0.5 + 0.2) / 3) < 1e-5, "mean albedo %g", albedo[0]);
+    CHECK(fabs(albedo[3] - (1.0 + 1.0 + 0.25) / 3) < 1e-5, "mean opacity %g", albedo[3]);
+    CHECK(fabs(emission[0] - 4.0 / 3) < 1e-5, "mean emission %g", emission[0]);
+    vct_voxels_free(v);
+    vct_scene_free(s);
+    free(pos);
+    free(tri);
+}
+
+static void test_determinism_and_errors(void) {
+    vct_scene *s = check_cornell_box();
+    vct_voxel_options o = auto_voxels(256, 0);
+    check_against_reference("Cornell box", s, &o);
+    vct_error err = {0};
+    vct_voxels *a = vct_voxelize(ctx, s, &o, &err);
+    vct_voxels *b = a ? vct_voxelize(ctx, s, &o, &err) : NULL;
+    REQUIRE_OK(b ? VCT_OK : err.status, err);
+    vct_voxel_info info;
+    vct_voxels_info_get(a, &info);
+    const size_t n = info.voxels;
+    float *fa = malloc(48 * n), *fb = malloc(48 * n);
+    uint32_t *ka = malloc(4 * n), *kb = malloc(4 * n);
+    REQUIRE_OK(vct_voxels_read(ctx, a, ka, fa, fa + 4 * n, fa + 8 * n, &err), err);
+    REQUIRE_OK(vct_voxels_read(ctx, b, kb, fb, fb + 4 * n, fb + 8 * n, &err), err);
+    CHECK(memcmp(ka, kb, 4 * n) == 0 && memcmp(fa, fb, 48 * n) == 0,
+          "two voxelizations of the Cornell box are bit-identical");
+    free(fa);
+    free(fb);
+    free(ka);
+    free(kb);
+    vct_voxels_free(a);
+    vct_voxels_free(b);
+
+    o.resolution = 100;
+    CHECK(vct_voxelize(ctx, s, &o, &err) == NULL && err.status == VCT_ERR_INPUT &&
+              strstr(err.message, "power of two"),
+          "resolution 100 refused: %s", err.message);
+    o.resolution = 2048;
+    CHECK(vct_voxelize(ctx, s, &o, &err) == NULL && err.status == VCT_ERR_INPUT,
+          "resolution 2048 refused: %s", err.message);
+    vct_scene_free(s);
+
+    /* A triangle that crosses the bounds and reaches far beyond them. */
+    const float far[] = {1, 1, 1, 1e4f, 1, 1, 1, 9, 1};
+    const uint32_t tri[] = {0, 1, 2};
+    s = scene_of(far, 3, tri, 1);
+    o = unit_voxels(16, 0);
+    CHECK(vct_voxelize(ctx, s, &o, &err) == NULL && err.status == VCT_ERR_INPUT &&
+              strstr(err.message, "--voxel-bounds"),
+          "far-reaching triangle refused: %s", err.message);
+    vct_scene_free(s);
+}
+
+int main(void) {
+    ctx = check_context();
+    test_hard_cases();
+    test_many_fragments();
+    test_random_and_sphere();
+    test_determinism_and_errors();
+    vct_context_destroy(ctx);
+    return check_exit("test_voxelize");
+}
