@@ -1,5 +1,5 @@
 #!/bin/sh
-# Bad input to `vct render`: each case must exit non-zero, print a message
+# Bad input to the vct commands: each case must exit non-zero, print a message
 # naming the problem, and leave no output file behind.
 # Usage: cli_errors.sh PATH/TO/vct
 set -u
@@ -91,6 +91,19 @@ if [ "$e2e_ok" -eq 1 ]; then
     echo "ok   path tracing, compare, error image, size mismatch refused"
 else
     echo "FAIL path tracing or compare:"; cat stderr.txt compare.txt 2>/dev/null; failures=$((failures + 1))
+fi
+# Voxelization: bad resolutions, and structures beyond a (lowered) allocation limit.
+expect_failure "voxel resolution not a power of two" "power of two" voxelize ok.obj --voxel-res 100 -o out.png
+expect_failure "voxel bounds of size zero" "size must be positive" voxelize ok.obj --voxel-bounds 0 0 0 0 -o out.png
+VCT_MAX_ALLOC_MIB=1 expect_failure "fragments beyond the allocation limit" "voxel-res 256 would fit" \
+    voxelize ok.obj --voxel-res 1024 -o out.png
+VCT_MAX_ALLOC_MIB=30 expect_failure "octree beyond the allocation limit" "neighbour links.*voxel-res 512 would fit" \
+    voxelize ok.obj --voxel-res 1024 -o out.png
+if "$VCT" voxelize ok.obj --voxel-res 32 --size 24 24 -o vox.png >stdout.txt 2>stderr.txt &&
+    grep -q "^fragments [0-9]*, voxels [0-9]*" stdout.txt && grep -q "level  5" stdout.txt && [ -s vox.png ]; then
+    echo "ok   voxelize reports voxels and octree levels and renders them"
+else
+    echo "FAIL voxelize:"; cat stdout.txt stderr.txt; failures=$((failures + 1))
 fi
 expect_failure "pt without samples" "not an integer" render ok.obj --method pt --spp 0 -o out.png
 expect_failure "unknown method" "unknown --method" render ok.obj --method magic -o out.png

@@ -28,7 +28,9 @@ static vct_scene *scene_of(const float *pos, uint32_t nv, const uint32_t *tri, u
     return s;
 }
 
-static vct_scene *scene_of_mesh(const test_mesh *m) { return scene_of(m->pos, m->nv, m->tri, m->nt); }
+static vct_scene *scene_of_mesh(const test_mesh *m) {
+    return scene_of(m->pos, m->nv, m->tri, m->nt);
+}
 
 /* Bounds [0, res]^3 by hand, so that world units are voxels. */
 static vct_voxel_options unit_voxels(uint32_t res, int thin) {
@@ -108,8 +110,8 @@ static uint32_t check_against_reference(const char *name, const vct_scene *s,
             CHECK(0, "%s: voxel %u (key %u, %u fragments) attributes off by %g", name, i, keys[i],
                   count, worst);
     }
-    CHECK(key_bad == 0 && attr_bad == 0, "%s: %d keys and %d attribute sets differ", name,
-          key_bad, attr_bad);
+    CHECK(key_bad == 0 && attr_bad == 0, "%s: %d keys and %d attribute sets differ", name, key_bad,
+          attr_bad);
     free(keys);
     free(albedo);
     free(normal);
@@ -205,7 +207,7 @@ static void test_hard_cases(void) {
     check_unit_case("triangle smaller than a voxel", tiny, 1, 16, 1, 0);
     check_unit_case("triangle smaller than a voxel", tiny, 1, 16, 1, 1);
     /* On the volume's faces x = 0 and x = 16: one layer each. */
-    const float walls[] = {0, 0, 0, 0, 16, 0, 0, 16, 16, 0, 0, 0, 0, 16, 16, 0, 0, 16,
+    const float walls[] = {0,  0, 0, 0,  16, 0, 0,  16, 16, 0,  0, 0, 0,  16, 16, 0,  0, 16,
                            16, 0, 0, 16, 16, 0, 16, 16, 16, 16, 0, 0, 16, 16, 16, 16, 0, 16};
     check_unit_case("quads on the volume's faces", walls, 4, 16, 2 * 16 * 16, 0);
     /* Partly and wholly outside: cut at the faces, or nothing. */

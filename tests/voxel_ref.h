@@ -21,7 +21,7 @@ typedef struct ref_fragment {
 typedef struct ref_voxels {
     ref_fragment *frags;
     size_t count, cap;
-    uint32_t *keys; /* unique, ascending */
+    uint32_t *keys;  /* unique, ascending */
     uint32_t *first; /* first fragment of each voxel; first[voxels] = count */
     uint32_t voxels;
 } ref_voxels;
@@ -38,11 +38,17 @@ static inline int64_t ref_floor_div(int64_t a, int64_t q) {
     return a >= 0 ? a / q : -((-a + q - 1) / q);
 }
 
-static inline ref_int ref_abs(ref_int v) { return v < 0 ? -v : v; }
+static inline ref_int ref_abs(ref_int v) {
+    return v < 0 ? -v : v;
+}
 
-static inline ref_int ref_max(ref_int a, ref_int b) { return a > b ? a : b; }
+static inline ref_int ref_max(ref_int a, ref_int b) {
+    return a > b ? a : b;
+}
 
-static inline ref_int ref_min(ref_int a, ref_int b) { return a < b ? a : b; }
+static inline ref_int ref_min(ref_int a, ref_int b) {
+    return a < b ? a : b;
+}
 
 /* Separating axis (x, y, z) for the triangle t (relative to the box centre,
  * doubled) and the box of half-size h: 1 when it separates. */
@@ -76,8 +82,8 @@ static inline int ref_conservative(const int64_t v[3][3], const int64_t cell[3],
     if (ref_separates(t, n[0], n[1], n[2], q))
         return 0;
     for (int i = 0; i < 3; ++i) {
-        if (ref_separates(t, 0, -e[i][2], e[i][1], q) || ref_separates(t, e[i][2], 0, -e[i][0], q) ||
-            ref_separates(t, -e[i][1], e[i][0], 0, q))
+        if (ref_separates(t, 0, -e[i][2], e[i][1], q) ||
+            ref_separates(t, e[i][2], 0, -e[i][0], q) || ref_separates(t, -e[i][1], e[i][0], 0, q))
             return 0;
     }
     return 1;

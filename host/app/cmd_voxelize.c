@@ -6,7 +6,9 @@
 
 #include "commands.h"
 
-static double mib(uint64_t bytes) { return bytes / 1048576.0; }
+static double mib(uint64_t bytes) {
+    return bytes / 1048576.0;
+}
 
 static void print_voxels(const vct_voxel_info *v) {
     printf("volume: %u^3 voxels of %g, cube from (%g %g %g), side %g (%s)\n", v->resolution,

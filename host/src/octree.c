@@ -17,8 +17,8 @@ static int count_levels(vct_context *ctx, vct_voxels *v, cl_program p, vct_error
     vct_voxel_info *info = &v->info;
     const uint32_t levels = info->levels, nv = info->voxels;
     uint32_t hist[VCT_VOXEL_MAX_LEVELS + 1] = {0};
-    cl_mem h = vct_buffer_create(ctx, STAGE, "level histogram", sizeof hist, CL_MEM_READ_WRITE,
-                                 hist, err);
+    cl_mem h =
+        vct_buffer_create(ctx, STAGE, "level histogram", sizeof hist, CL_MEM_READ_WRITE, hist, err);
     if (!h)
         return err->status;
     int rc = vct_run_kernel(ctx, p, "oct_level_histogram", STAGE, (nv + SPAN - 1) / SPAN, err, 4,
@@ -41,15 +41,9 @@ static int count_levels(vct_context *ctx, vct_voxels *v, cl_program p, vct_error
     info->nodes = (uint32_t)total;
     info->node_bytes = 4 * total + 4 * ((total - 1) / 8);
     info->neighbour_bytes = 24 * total;
-    const double limit = (double)ctx->info.max_alloc;
-    if (rc == VCT_OK && (double)info->neighbour_bytes > limit)
-        rc = vct_fail(err, VCT_ERR_MEMORY,
-                      "octree: %llu nodes at %u^3 need %.0f MiB of neighbour links, beyond what "
-                      "%s allows per buffer (%.0f MiB): --voxel-res %u would fit",
-                      (unsigned long long)total, info->resolution,
-                      info->neighbour_bytes / 1048576.0, ctx->info.name, limit / 1048576.0,
-                      vct_voxel_res_that_fits(info->resolution, (double)info->neighbour_bytes,
-                                              limit));
+    if (rc == VCT_OK)
+        rc = vct_voxel_buffer_fits(ctx, info, "octree", "neighbour links",
+                                   (double)info->neighbour_bytes, err);
     return rc;
 }
 
@@ -59,8 +53,8 @@ static int build_levels(vct_context *ctx, vct_voxels *v, cl_program p, vct_error
     uint32_t widest = 1;
     for (uint32_t l = 0; l < levels; ++l)
         widest = info->level_nodes[l] > widest ? info->level_nodes[l] : widest;
-    cl_mem current = vct_buffer_create(ctx, STAGE, "voxel ancestors", 4ull * nv,
-                                       CL_MEM_READ_WRITE, NULL, err);
+    cl_mem current =
+        vct_buffer_create(ctx, STAGE, "voxel ancestors", 4ull * nv, CL_MEM_READ_WRITE, NULL, err);
     cl_mem flags = current ? vct_buffer_create(ctx, STAGE, "node flags", 4ull * widest,
                                                CL_MEM_READ_WRITE, NULL, err)
                            : NULL;
@@ -73,10 +67,10 @@ static int build_levels(vct_context *ctx, vct_voxels *v, cl_program p, vct_error
         const uint32_t next = info->level_start[l + 1], next_count = info->level_nodes[l + 1];
         rc = vct_buffer_fill_u32(ctx, STAGE, flags, 0, count, err);
         if (rc == VCT_OK)
-            rc = vct_run_kernel(ctx, p, "oct_flag", STAGE, nv, err, 8, VCT_ARG_OF(v->keys),
-                                VCT_ARG_OF(nv), VCT_ARG_OF(levels), VCT_ARG_OF(l),
-                                VCT_ARG_OF(start), VCT_ARG_OF(v->child), VCT_ARG_OF(current),
-                                VCT_ARG_OF(flags));
+            rc =
+                vct_run_kernel(ctx, p, "oct_flag", STAGE, nv, err, 8, VCT_ARG_OF(v->keys),
+                               VCT_ARG_OF(nv), VCT_ARG_OF(levels), VCT_ARG_OF(l), VCT_ARG_OF(start),
+                               VCT_ARG_OF(v->child), VCT_ARG_OF(current), VCT_ARG_OF(flags));
         uint64_t flagged = 0;
         if (rc == VCT_OK)
             rc = vct_scan_u32(ctx, flags, flags, count, 1, &flagged, err);
@@ -115,12 +109,12 @@ int vct_octree_build(vct_context *ctx, vct_voxels *v, vct_error *err) {
         rc = count_levels(ctx, v, p, err);
     const uint64_t nodes = v->info.nodes;
     if (rc == VCT_OK) {
-        v->child = vct_buffer_create(ctx, STAGE, "node children", 4 * nodes, CL_MEM_READ_WRITE,
-                                     NULL, err);
-        v->tile_parent = v->child ? vct_buffer_create(ctx, STAGE, "tile parents",
-                                                      4 * ((nodes - 1) / 8), CL_MEM_READ_WRITE,
-                                                      NULL, err)
-                                  : NULL;
+        v->child =
+            vct_buffer_create(ctx, STAGE, "node children", 4 * nodes, CL_MEM_READ_WRITE, NULL, err);
+        v->tile_parent = v->child
+                             ? vct_buffer_create(ctx, STAGE, "tile parents", 4 * ((nodes - 1) / 8),
+                                                 CL_MEM_READ_WRITE, NULL, err)
+                             : NULL;
         v->neighbours = v->tile_parent ? vct_buffer_create(ctx, STAGE, "neighbour links",
                                                            24 * nodes, CL_MEM_READ_WRITE, NULL, err)
                                        : NULL;
@@ -165,8 +159,8 @@ int vct_octree_lookup(vct_context *ctx, const vct_voxels *v, const uint32_t *que
         rc = vct_program_get(ctx, "octree_build.cl", "", &p, err);
     if (rc || n == 0)
         return rc;
-    cl_mem q = vct_buffer_create(ctx, stage, "queries", 16ull * n, CL_MEM_READ_ONLY,
-                                 (void *)queries, err);
+    cl_mem q =
+        vct_buffer_create(ctx, stage, "queries", 16ull * n, CL_MEM_READ_ONLY, (void *)queries, err);
     cl_mem out =
         q ? vct_buffer_create(ctx, stage, "nodes", 4ull * n, CL_MEM_WRITE_ONLY, NULL, err) : NULL;
     rc = out ? vct_run_kernel(ctx, p, "oct_lookup", stage, n, err, 4, VCT_ARG_OF(v->child),

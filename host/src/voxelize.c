@@ -42,7 +42,9 @@ void vct_voxels_free(vct_voxels *v) {
     free(v);
 }
 
-void vct_voxels_info_get(const vct_voxels *v, vct_voxel_info *info) { *info = v->info; }
+void vct_voxels_info_get(const vct_voxels *v, vct_voxel_info *info) {
+    *info = v->info;
+}
 
 static int check_options(const vct_voxel_options *o, vct_error *err) {
     const uint32_t r = o->resolution;
@@ -50,9 +52,9 @@ static int check_options(const vct_voxel_options *o, vct_error *err) {
         return vct_fail(err, VCT_ERR_INPUT,
                         "voxelize: resolution %u is not a power of two from 2 to %u (--voxel-res)",
                         r, VCT_VOXEL_MAX_RES);
-    if (o->has_bounds && !(o->bounds_size > 0.0 && isfinite(o->bounds_size) &&
-                           isfinite(o->bounds_min[0]) && isfinite(o->bounds_min[1]) &&
-                           isfinite(o->bounds_min[2])))
+    if (o->has_bounds &&
+        !(o->bounds_size > 0.0 && isfinite(o->bounds_size) && isfinite(o->bounds_min[0]) &&
+          isfinite(o->bounds_min[1]) && isfinite(o->bounds_min[2])))
         return vct_fail(err, VCT_ERR_INPUT,
                         "voxelize: bounds need a finite corner and a positive size "
                         "(--voxel-bounds x,y,z,size)");
@@ -76,8 +78,7 @@ static void frame_scene(const vct_scene *s, uint32_t res, double origin[3], doub
 /* Vertices in integer units (x, y, z) with the material in the first
  * vertex's w. Triangles wholly outside the cube become zero-area; one that
  * crosses the cube but reaches beyond the exact range is refused. */
-static int quantise(const vct_scene *s, const vct_voxel_info *info, cl_int *out,
-                    vct_error *err) {
+static int quantise(const vct_scene *s, const vct_voxel_info *info, cl_int *out, vct_error *err) {
     const double scale = UNITS / info->side, lo = -(double)UNITS, hi = 2.0 * UNITS;
     for (uint32_t t = 0; t < s->triangle_count; ++t) {
         double q[3][3];
@@ -111,17 +112,16 @@ static int quantise(const vct_scene *s, const vct_voxel_info *info, cl_int *out,
     return VCT_OK;
 }
 
-static int fragments_fit(vct_context *ctx, vct_voxel_info *info, uint64_t fragments,
-                         vct_error *err) {
-    const double bytes = 8.0 * (double)fragments, limit = (double)ctx->info.max_alloc;
-    if (fragments <= UINT32_MAX && 4.0 * (double)fragments <= limit)
+int vct_voxel_buffer_fits(vct_context *ctx, const vct_voxel_info *info, const char *stage,
+                          const char *what, double bytes, vct_error *err) {
+    const double limit = (double)ctx->info.max_alloc;
+    if (bytes <= limit)
         return VCT_OK;
     return vct_fail(err, VCT_ERR_MEMORY,
-                    "voxelize: %llu fragments at %u^3 need %.0f MiB, beyond what %s allows per "
-                    "buffer (%.0f MiB): --voxel-res %u would fit",
-                    (unsigned long long)fragments, info->resolution, bytes / 1048576.0,
-                    ctx->info.name, limit / 1048576.0,
-                    vct_voxel_res_that_fits(info->resolution, 4.0 * (double)fragments, limit));
+                    "%s: %s at %u^3 need %.1f MiB, beyond what %s allows per buffer (%.1f MiB): "
+                    "--voxel-res %u would fit",
+                    stage, what, info->resolution, bytes / 1048576.0, ctx->info.name,
+                    limit / 1048576.0, vct_voxel_res_that_fits(info->resolution, bytes, limit));
 }
 
 typedef struct voxelize_state {
@@ -149,7 +149,8 @@ static int make_fragments(voxelize_state *st, vct_error *err) {
     if (rc == VCT_OK)
         rc = vct_scan_u32(ctx, st->chunk_start, st->chunk_start, n, 0, &total, err);
     if (rc == VCT_ERR_OVERFLOW)
-        rc = vct_fail(err, VCT_ERR_MEMORY, "voxelize: more than 2^32 work chunks: lower --voxel-res");
+        rc = vct_fail(err, VCT_ERR_MEMORY,
+                      "voxelize: more than 2^32 work chunks: lower --voxel-res");
     if (rc)
         return rc;
     st->chunks = (uint32_t)total;
@@ -157,29 +158,33 @@ static int make_fragments(voxelize_state *st, vct_error *err) {
                                    CL_MEM_READ_WRITE, NULL, err);
     if (!st->counts)
         return err->status;
-    rc = vct_run_kernel(ctx, st->program, "vox_count", STAGE, st->chunks, err, 6, VCT_ARG_OF(st->tris), VCT_ARG_OF(st->desc),
-                VCT_ARG_OF(st->thin), VCT_ARG_OF(st->chunk_start), VCT_ARG_OF(st->chunks),
-                VCT_ARG_OF(st->counts));
+    rc =
+        vct_run_kernel(ctx, st->program, "vox_count", STAGE, st->chunks, err, 6,
+                       VCT_ARG_OF(st->tris), VCT_ARG_OF(st->desc), VCT_ARG_OF(st->thin),
+                       VCT_ARG_OF(st->chunk_start), VCT_ARG_OF(st->chunks), VCT_ARG_OF(st->counts));
     if (rc == VCT_OK)
         rc = vct_scan_u32(ctx, st->counts, st->counts, st->chunks, 0, &total, err);
     if (rc == VCT_ERR_OVERFLOW)
-        total = UINT64_MAX;
-    if (rc == VCT_OK || rc == VCT_ERR_OVERFLOW)
-        rc = fragments_fit(ctx, info, total, err);
+        rc = vct_fail(err, VCT_ERR_MEMORY,
+                      "voxelize: more than 2^32 fragments at %u^3: --voxel-res %u would fit",
+                      info->resolution, info->resolution / 2);
+    if (rc == VCT_OK)
+        rc = vct_voxel_buffer_fits(ctx, info, STAGE, "fragment keys", 4.0 * (double)total, err);
     if (rc)
         return rc;
     info->fragments = (uint32_t)total;
     info->fragment_bytes = 8ull * total;
-    st->frag_keys = vct_buffer_create(ctx, STAGE, "fragment keys", 4ull * total,
-                                      CL_MEM_READ_WRITE, NULL, err);
-    st->frag_ids = st->frag_keys ? vct_buffer_create(ctx, STAGE, "fragment triangles",
-                                                     4ull * total, CL_MEM_READ_WRITE, NULL, err)
+    st->frag_keys =
+        vct_buffer_create(ctx, STAGE, "fragment keys", 4ull * total, CL_MEM_READ_WRITE, NULL, err);
+    st->frag_ids = st->frag_keys ? vct_buffer_create(ctx, STAGE, "fragment triangles", 4ull * total,
+                                                     CL_MEM_READ_WRITE, NULL, err)
                                  : NULL;
     if (!st->frag_ids)
         return err->status;
-    rc = vct_run_kernel(ctx, st->program, "vox_write", STAGE, st->chunks, err, 8, VCT_ARG_OF(st->tris), VCT_ARG_OF(st->desc),
-                VCT_ARG_OF(st->thin), VCT_ARG_OF(st->chunk_start), VCT_ARG_OF(st->chunks),
-                VCT_ARG_OF(st->counts), VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(st->frag_ids));
+    rc = vct_run_kernel(ctx, st->program, "vox_write", STAGE, st->chunks, err, 8,
+                        VCT_ARG_OF(st->tris), VCT_ARG_OF(st->desc), VCT_ARG_OF(st->thin),
+                        VCT_ARG_OF(st->chunk_start), VCT_ARG_OF(st->chunks), VCT_ARG_OF(st->counts),
+                        VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(st->frag_ids));
     vct_buffer_release(ctx, st->counts);
     st->counts = NULL;
     if (rc == VCT_OK)
@@ -197,40 +202,44 @@ static int reduce_fragments(voxelize_state *st, vct_error *err) {
         vct_buffer_create(ctx, STAGE, "voxel index", 4ull * f, CL_MEM_READ_WRITE, NULL, err);
     if (!index)
         return err->status;
-    int rc = vct_run_kernel(ctx, st->program, "vox_heads", STAGE, f, err, 3, VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(f),
-                    VCT_ARG_OF(index));
+    int rc = vct_run_kernel(ctx, st->program, "vox_heads", STAGE, f, err, 3,
+                            VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(f), VCT_ARG_OF(index));
     uint64_t voxels = 0;
     if (rc == VCT_OK)
         rc = vct_scan_u32(ctx, index, index, f, 0, &voxels, err);
     const uint32_t nv = (uint32_t)voxels;
     v->info.voxels = nv;
     v->info.voxel_bytes = nv * (4ull + 3 * 16ull);
+    if (rc == VCT_OK)
+        rc = vct_voxel_buffer_fits(ctx, &v->info, STAGE, "voxel attributes", 16.0 * nv, err);
     cl_mem start = NULL;
     if (rc == VCT_OK) {
-        v->keys = vct_buffer_create(ctx, STAGE, "voxel keys", 4ull * nv, CL_MEM_READ_WRITE, NULL,
-                                    err);
+        v->keys =
+            vct_buffer_create(ctx, STAGE, "voxel keys", 4ull * nv, CL_MEM_READ_WRITE, NULL, err);
         start = v->keys ? vct_buffer_create(ctx, STAGE, "voxel fragment ranges", 4ull * nv,
                                             CL_MEM_READ_WRITE, NULL, err)
                         : NULL;
         rc = start ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, st->program, "vox_starts", STAGE, f, err, 5, VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(f),
-                    VCT_ARG_OF(index), VCT_ARG_OF(v->keys), VCT_ARG_OF(start));
+        rc = vct_run_kernel(ctx, st->program, "vox_starts", STAGE, f, err, 5,
+                            VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(f), VCT_ARG_OF(index),
+                            VCT_ARG_OF(v->keys), VCT_ARG_OF(start));
     vct_buffer_release(ctx, index);
     vct_buffer_release(ctx, st->frag_keys);
     st->frag_keys = NULL;
     cl_mem *outs[] = {&v->albedo, &v->normal, &v->emission};
     const char *names[] = {"voxel albedo", "voxel normals", "voxel emission"};
     for (int i = 0; i < 3 && rc == VCT_OK; ++i) {
-        *outs[i] = vct_buffer_create(ctx, STAGE, names[i], 16ull * nv, CL_MEM_READ_WRITE, NULL,
-                                     err);
+        *outs[i] =
+            vct_buffer_create(ctx, STAGE, names[i], 16ull * nv, CL_MEM_READ_WRITE, NULL, err);
         rc = *outs[i] ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, st->program, "vox_reduce", STAGE, nv, err, 9, VCT_ARG_OF(st->frag_ids), VCT_ARG_OF(start),
-                    VCT_ARG_OF(nv), VCT_ARG_OF(f), VCT_ARG_OF(st->tris), VCT_ARG_OF(st->materials),
-                    VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission));
+        rc = vct_run_kernel(ctx, st->program, "vox_reduce", STAGE, nv, err, 9,
+                            VCT_ARG_OF(st->frag_ids), VCT_ARG_OF(start), VCT_ARG_OF(nv),
+                            VCT_ARG_OF(f), VCT_ARG_OF(st->tris), VCT_ARG_OF(st->materials),
+                            VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission));
     vct_buffer_release(ctx, start);
     return rc;
 }
@@ -243,8 +252,8 @@ static int upload_triangles(voxelize_state *st, const vct_scene *s, vct_error *e
         return vct_fail(err, VCT_ERR_MEMORY, "voxelize: out of host memory");
     int rc = quantise(s, &st->v->info, q, err);
     if (rc == VCT_OK) {
-        st->tris = vct_buffer_create(ctx, STAGE, "quantised triangles", 48ull * n,
-                                     CL_MEM_READ_ONLY, n ? q : NULL, err);
+        st->tris = vct_buffer_create(ctx, STAGE, "quantised triangles", 48ull * n, CL_MEM_READ_ONLY,
+                                     n ? q : NULL, err);
         rc = st->tris ? VCT_OK : (int)err->status;
     }
     free(q);

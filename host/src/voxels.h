@@ -19,5 +19,9 @@ void vct_voxels_volume_desc(const vct_voxels *voxels, void *out_desc);
 /* The largest power-of-two resolution below `res` at which `bytes`, growing
  * with the square of the resolution like a surface does, stays within `limit`. */
 uint32_t vct_voxel_res_that_fits(uint32_t res, double bytes, double limit);
+/* Fails with a message naming the resolution that would fit when one
+ * buffer of `bytes` exceeds the device's allocation limit. */
+int vct_voxel_buffer_fits(vct_context *ctx, const vct_voxel_info *info, const char *stage,
+                          const char *what, double bytes, vct_error *err);
 
 #endif

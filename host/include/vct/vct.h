@@ -280,8 +280,8 @@ int vct_octree_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *child,
 int vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels, const uint32_t *queries,
                       uint32_t n, uint32_t *nodes, vct_error *err);
 /* The voxels as the scene camera sees them, ray marched through the octree. */
-int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels,
-                      int width, int height, vct_image *image, vct_error *err);
+int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels, int width,
+                      int height, vct_image *image, vct_error *err);
 void vct_voxels_free(vct_voxels *voxels);
 
 /* ---- images --------------------------------------------------------------------- */
