@@ -41,8 +41,7 @@ __kernel void oct_flag(__global const uint *keys, uint voxels, uint levels, uint
     const uint i = get_global_id(0);
     if (i >= voxels)
         return;
-    const uint node =
-        level == 0 ? 0u : child[current[i]] + octant_of_key(keys[i], levels, level);
+    const uint node = level == 0 ? 0u : child[current[i]] + octant_of_key(keys[i], levels, level);
     current[i] = node;
     flags[node - level_start] = 1u;
 }

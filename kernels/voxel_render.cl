@@ -6,8 +6,7 @@
 #include "vct_types.h"
 
 __kernel void voxel_render(vct_camera_desc cam, vct_volume_desc vol, __global const uint *child,
-                           __global const float4 *voxel_albedo,
-                           __global const float4 *voxel_normal,
+                           __global const float4 *voxel_albedo, __global const float4 *voxel_normal,
                            __global const float4 *voxel_emission, __global float4 *image) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)

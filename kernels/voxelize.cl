@@ -4,8 +4,8 @@
  * Each triangle is projected along its dominant normal axis; its work is the
  * set of voxel columns over its bounding rectangle there, cut into chunks of
  * VOX_COLUMNS_PER_CHUNK columns so that a huge triangle spreads over many
- * work-items. In each column the plane bounds the candidate voxels to at most
- * three; the exact integer test (voxel_overlap.h) decides. Counting and
+ * work-items. In each column the plane's exact range of z leaves at most
+ * three voxels; the exact integer tests (voxel_overlap.h) decide. Counting and
  * writing share one walk, so they cannot disagree, and fragments come out in
  * (triangle, column, voxel) order whatever the schedule. */
 #include "octree.h"
@@ -13,9 +13,6 @@
 #include "voxel_overlap.h"
 
 #define VOX_COLUMNS_PER_CHUNK 32u
-
-/* Floor division by a positive q. */
-inline long vox_floor_div(long a, long q) { return a >= 0 ? a / q : -((-a + q - 1) / q); }
 
 /* A triangle rotated so that its dominant normal axis is z. */
 typedef struct vox_setup {
@@ -32,7 +29,9 @@ inline int3 vox_unrotate(int3 v, uint axis) {
     return axis == 0u ? v.zxy : (axis == 1u ? v.yzx : v);
 }
 
-inline long3 vox_vertex(__global const int4 *tris, uint i) { return convert_long3(tris[i].xyz); }
+inline long3 vox_vertex(__global const int4 *tris, uint i) {
+    return convert_long3(tris[i].xyz);
+}
 
 /* 0 for a zero-area triangle or one that misses the volume. */
 inline int vox_setup_make(__global const int4 *tris, uint t, vct_volume_desc vol, vox_setup *s) {
@@ -50,9 +49,10 @@ inline int vox_setup_make(__global const int4 *tris, uint t, vct_volume_desc vol
     const long q = vol.res.z, last = (long)vol.res.x - 1;
     const long3 mn = min(a, min(b, c)), mx = max(a, max(b, c));
     /* Voxel i's closed box [iq, (i+1)q] meets [mn, mx] iff (mn-1) div q <= i <= mx div q. */
-    const long3 lo = (long3)(vox_floor_div(mn.x - 1, q), vox_floor_div(mn.y - 1, q),
-                             vox_floor_div(mn.z - 1, q));
-    const long3 hi = (long3)(vox_floor_div(mx.x, q), vox_floor_div(mx.y, q), vox_floor_div(mx.z, q));
+    const long3 lo =
+        (long3)(vox_floor_div(mn.x - 1, q), vox_floor_div(mn.y - 1, q), vox_floor_div(mn.z - 1, q));
+    const long3 hi =
+        (long3)(vox_floor_div(mx.x, q), vox_floor_div(mx.y, q), vox_floor_div(mx.z, q));
     if (any(hi < 0) || any(lo > last))
         return 0;
     s->lo = convert_int3(clamp(lo, 0L, last));
@@ -65,9 +65,12 @@ inline uint vox_columns(const vox_setup *s) {
 }
 
 /* Walks the voxels of chunk `first / VOX_COLUMNS_PER_CHUNK` of triangle t;
- * with `write` stores (Morton key, t) from keys[out]. Returns the count. */
-inline uint vox_visit(__global const int4 *tris, uint t, uint first, vct_volume_desc vol,
-                      int thin, int write, __global uint *keys, __global uint *ids, uint out) {
+ * with `write` stores (Morton key, t) from keys[out]. Returns the count.
+ * Per column: the projection test along z (the same for every voxel of the
+ * column), then the plane's exact range of z; columns wholly inside the
+ * projection need no more tests, the others test each voxel's remaining axes. */
+inline uint vox_visit(__global const int4 *tris, uint t, uint first, vct_volume_desc vol, int thin,
+                      int write, __global uint *keys, __global uint *ids, uint out) {
     vox_setup s;
     if (!vox_setup_make(tris, t, vol, &s))
         return 0;
@@ -77,27 +80,30 @@ inline uint vox_visit(__global const int4 *tris, uint t, uint first, vct_volume_
     const long q = vol.res.z;
     const uint width = (uint)(s.hi.x - s.lo.x + 1);
     const uint end = min(first + VOX_COLUMNS_PER_CHUNK, vox_columns(&s));
-    /* The plane as z(x, y) around vertex a; |slopes| <= 1 on the dominant axis. */
-    const float su = (float)s.tri.n.x / (float)s.tri.n.z;
-    const float sv = (float)s.tri.n.y / (float)s.tri.n.z;
-    const float reach = 0.5f * (float)q * (fabs(su) + fabs(sv)) + (float)q * 0.0625f;
     uint n = 0;
     for (uint col = first; col < end; ++col) {
         const int u = s.lo.x + (int)(col % width), v = s.lo.y + (int)(col / width);
-        const float du = (float)((long)u * q + q / 2 - s.tri.a.x);
-        const float dv = (float)((long)v * q + q / 2 - s.tri.a.y);
-        const float zc = ((float)s.tri.a.z - su * du - sv * dv) / (float)q;
-        const float zr = reach / (float)q;
-        const int z_lo = max(s.lo.z, (int)clamp(ceil(zc - zr) - 1.0f, -2.0f, 4096.0f));
-        const int z_hi = min(s.hi.z, (int)clamp(floor(zc + zr), -2.0f, 4096.0f));
-        for (int z = z_lo; z <= z_hi; ++z) {
-            const long3 corner = (long3)(u, v, z) * q;
-            const int hit = thin ? vox_overlaps_thin(&s.tri, corner, q)
-                                 : vox_overlaps_conservative(&s.tri, &sat, corner, q);
-            if (!hit)
+        const long uq = (long)u * q, vq = (long)v * q;
+        int column;
+        long2 z;
+        if (thin) {
+            column = vox_thin_column(&s.tri, uq, vq, q) ? VOX_COLUMN_CROSSES : VOX_COLUMN_MISSES;
+            z = vox_thin_z_range(&s.tri, uq, vq, q);
+        } else {
+            column = vox_column_test(&sat, uq, vq, q);
+            z = vox_plane_z_range(&s.tri, uq, vq, q);
+        }
+        const int z_lo = (int)max(z.x, (long)s.lo.z), z_hi = (int)min(z.y, (long)s.hi.z);
+        if (column == VOX_COLUMN_MISSES || z_lo > z_hi)
+            continue;
+        for (int zi = z_lo; zi <= z_hi; ++zi) {
+            const long3 corner = (long3)(uq, vq, (long)zi * q);
+            if (column != VOX_COLUMN_INSIDE &&
+                !(thin ? vox_thin_sides(&s.tri, corner, q) : vox_edges_overlap(&sat, corner, q)))
                 continue;
             if (write) {
-                keys[out + n] = morton_encode(convert_uint3(vox_unrotate((int3)(u, v, z), s.axis)));
+                keys[out + n] =
+                    morton_encode(convert_uint3(vox_unrotate((int3)(u, v, zi), s.axis)));
                 ids[out + n] = t;
             }
             ++n;
@@ -106,9 +112,10 @@ inline uint vox_visit(__global const int4 *tris, uint t, uint first, vct_volume_
     return n;
 }
 
-/* Chunks per triangle. */
-__kernel void vox_chunks(__global const int4 *tris, vct_volume_desc vol,
-                         __global uint *chunks) {
+/* Chunks per triangle, and its unit normal with the material index in w
+ * (as a float: exact below 2^24, and not a denormal that could be flushed). */
+__kernel void vox_chunks(__global const int4 *tris, vct_volume_desc vol, __global uint *chunks,
+                         __global float4 *tri_normals) {
     const uint t = get_global_id(0);
     if (t >= vol.res.w)
         return;
@@ -116,6 +123,12 @@ __kernel void vox_chunks(__global const int4 *tris, vct_volume_desc vol,
     chunks[t] = vox_setup_make(tris, t, vol, &s)
                     ? (vox_columns(&s) + VOX_COLUMNS_PER_CHUNK - 1) / VOX_COLUMNS_PER_CHUNK
                     : 0u;
+    const long3 a = vox_vertex(tris, 3 * t), b = vox_vertex(tris, 3 * t + 1),
+                c = vox_vertex(tris, 3 * t + 2);
+    const float3 n = convert_float3(vox_cross(b - a, c - b));
+    const float scale = fmax(fabs(n.x), fmax(fabs(n.y), fabs(n.z)));
+    tri_normals[t] =
+        (float4)(scale > 0.0f ? normalize(n / scale) : (float3)(0.0f), (float)tris[3 * t].w);
 }
 
 /* The triangle owning chunk c: the last t with chunk_start[t] <= c. */
@@ -142,8 +155,8 @@ __kernel void vox_count(__global const int4 *tris, vct_volume_desc vol, int thin
 }
 
 __kernel void vox_write(__global const int4 *tris, vct_volume_desc vol, int thin,
-                        __global const uint *chunk_start, uint chunks,
-                        __global const uint *offsets, __global uint *keys, __global uint *ids) {
+                        __global const uint *chunk_start, uint chunks, __global const uint *offsets,
+                        __global uint *keys, __global uint *ids) {
     const uint c = get_global_id(0);
     if (c >= chunks)
         return;
@@ -174,10 +187,9 @@ __kernel void vox_starts(__global const uint *keys, uint n, __global const uint 
  * length (1 = all fragments agree) is kept in normal.w before normalising.
  * emission.w holds the fragment count. */
 __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_start, uint voxels,
-                         uint fragments, __global const int4 *tris,
-                         __global const vct_material_desc *materials,
-                         __global float4 *albedo_out, __global float4 *normal_out,
-                         __global float4 *emission_out) {
+                         uint fragments, __global const float4 *tri_normals,
+                         __global const vct_material_desc *materials, __global float4 *albedo_out,
+                         __global float4 *normal_out, __global float4 *emission_out) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
@@ -185,15 +197,11 @@ __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_st
     float4 albedo = 0.0f;
     float3 emission = 0.0f, normal = 0.0f;
     for (uint f = begin; f < end; ++f) {
-        const uint t = ids[f];
-        const vct_material_desc m = materials[tris[3 * t].w];
+        const float4 tn = tri_normals[ids[f]];
+        const vct_material_desc m = materials[(uint)tn.w];
         albedo += (float4)(m.albedo.xyz, 1.0f - m.specular.w);
         emission += m.emission.xyz;
-        const long3 a = vox_vertex(tris, 3 * t), b = vox_vertex(tris, 3 * t + 1),
-                    c = vox_vertex(tris, 3 * t + 2);
-        const float3 n = convert_float3(vox_cross(b - a, c - b));
-        const float scale = fmax(fabs(n.x), fmax(fabs(n.y), fabs(n.z)));
-        normal += normalize(n / scale);
+        normal += tn.xyz;
     }
     const float inv = 1.0f / (float)(end - begin);
     const float coherence = length(normal) * inv;

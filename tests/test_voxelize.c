@@ -270,6 +270,19 @@ static void test_determinism_and_errors(void) {
     REQUIRE_OK(vct_voxels_read(ctx, b, kb, fb, fb + 4 * n, fb + 8 * n, &err), err);
     CHECK(memcmp(ka, kb, 4 * n) == 0 && memcmp(fa, fb, 48 * n) == 0,
           "two voxelizations of the Cornell box are bit-identical");
+    /* The same with the GPU-shaped scan and sort kernels. */
+    vct_voxels_free(b);
+    setenv("VCT_TUNING", "gpu", 1);
+    vct_context *gpu_shaped = check_context();
+    unsetenv("VCT_TUNING");
+    b = vct_voxelize(gpu_shaped, s, &o, &err);
+    REQUIRE_OK(b ? VCT_OK : err.status, err);
+    REQUIRE_OK(vct_voxels_read(gpu_shaped, b, kb, fb, fb + 4 * n, fb + 8 * n, &err), err);
+    CHECK(memcmp(ka, kb, 4 * n) == 0 && memcmp(fa, fb, 48 * n) == 0,
+          "CPU- and GPU-shaped kernels voxelize the Cornell box bit-identically");
+    vct_voxels_free(b);
+    b = NULL;
+    vct_context_destroy(gpu_shaped);
     free(fa);
     free(fb);
     free(ka);

@@ -106,6 +106,11 @@ void cli_print_stats(const vct_context *ctx) {
     for (int i = 0; i < n; ++i)
         printf("%-20s %10.2f %10.2f %10.2f %9d\n", st[i].name, st[i].device_ms, st[i].host_ms,
                st[i].mib, st[i].launches);
+    const vct_kernel_stat *k;
+    n = vct_kernel_stats(ctx, &k);
+    printf("%-31s %10s %9s\n", "kernel or transfer", "device ms", "launches");
+    for (int i = 0; i < n; ++i)
+        printf("%-31s %10.2f %9d\n", k[i].name, k[i].device_ms, k[i].launches);
 }
 
 /* Creates the output's parent directory, so `-o out/x.png` works from a clean tree. */

@@ -33,10 +33,7 @@ typedef struct vct_program {
     cl_program program;
 } vct_program;
 
-typedef struct vct_kernel_count {
-    char name[64];
-    int launches;
-} vct_kernel_count;
+typedef vct_kernel_stat vct_kernel_count;
 
 struct vct_context {
     cl_platform_id platform;
@@ -51,6 +48,7 @@ struct vct_context {
     int current_stage;
     double stage_host_start;
     cl_event pending[VCT_MAX_PENDING_EVENTS];
+    int pending_kernel[VCT_MAX_PENDING_EVENTS]; /* index into kernel_counts */
     int pending_count;
     vct_kernel_count kernel_counts[VCT_MAX_KERNEL_NAMES];
     int kernel_count_n;

@@ -47,18 +47,21 @@ void vct_stage_end(vct_context *ctx) {
     ctx->current_stage = -1;
 }
 
-static void count_kernel(vct_context *ctx, const char *name) {
+/* The counter of kernel `name`, made on first use (the last one when full). */
+static int count_kernel(vct_context *ctx, const char *name) {
     for (int i = 0; i < ctx->kernel_count_n; ++i) {
         if (strcmp(ctx->kernel_counts[i].name, name) == 0) {
             ctx->kernel_counts[i].launches++;
-            return;
+            return i;
         }
     }
-    if (ctx->kernel_count_n < VCT_MAX_KERNEL_NAMES) {
-        vct_kernel_count *k = &ctx->kernel_counts[ctx->kernel_count_n++];
-        snprintf(k->name, sizeof k->name, "%s", name);
-        k->launches = 1;
-    }
+    if (ctx->kernel_count_n == VCT_MAX_KERNEL_NAMES)
+        return VCT_MAX_KERNEL_NAMES - 1;
+    vct_kernel_count *k = &ctx->kernel_counts[ctx->kernel_count_n];
+    snprintf(k->name, sizeof k->name, "%s", name);
+    k->launches = 1;
+    k->device_ms = 0.0;
+    return ctx->kernel_count_n++;
 }
 
 /* Events are kept until the stage ends, so launches stay asynchronous; their
@@ -77,8 +80,10 @@ static int drain_events(vct_context *ctx, vct_error *err) {
                                     &start, NULL) == CL_SUCCESS &&
             clGetEventProfilingInfo(ctx->pending[i], CL_PROFILING_COMMAND_END, sizeof end, &end,
                                     NULL) == CL_SUCCESS &&
-            end >= start)
+            end >= start) {
             ctx->stages[ctx->current_stage].device_ms += (double)(end - start) * 1e-6;
+            ctx->kernel_counts[ctx->pending_kernel[i]].device_ms += (double)(end - start) * 1e-6;
+        }
         clReleaseEvent(ctx->pending[i]);
     }
     ctx->pending_count = 0;
@@ -88,7 +93,7 @@ static int drain_events(vct_context *ctx, vct_error *err) {
 int vct_record_event(vct_context *ctx, cl_event event, const char *kernel_name, vct_error *err) {
     if (!event)
         return VCT_OK;
-    count_kernel(ctx, kernel_name);
+    const int counter = count_kernel(ctx, kernel_name);
     if (ctx->current_stage < 0) {
         clReleaseEvent(event);
         return VCT_OK;
@@ -101,6 +106,7 @@ int vct_record_event(vct_context *ctx, cl_event event, const char *kernel_name, 
             return rc;
         }
     }
+    ctx->pending_kernel[ctx->pending_count] = counter;
     ctx->pending[ctx->pending_count++] = event;
     return VCT_OK;
 }
@@ -155,6 +161,11 @@ void vct_stats_reset(vct_context *ctx) {
     ctx->stage_count = 0;
     ctx->current_stage = -1;
     ctx->kernel_count_n = 0;
+}
+
+int vct_kernel_stats(const vct_context *ctx, const vct_kernel_stat **kernels) {
+    *kernels = ctx->kernel_counts;
+    return ctx->kernel_count_n;
 }
 
 int vct_kernel_launches(const vct_context *ctx, const char *kernel_name) {

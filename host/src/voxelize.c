@@ -130,7 +130,7 @@ typedef struct voxelize_state {
     vct_volume_desc desc;
     cl_int thin;
     cl_program program;
-    cl_mem tris, materials, chunk_start, counts, frag_keys, frag_ids;
+    cl_mem tris, tri_normals, materials, chunk_start, counts, frag_keys, frag_ids;
     uint32_t chunks;
 } voxelize_state;
 
@@ -141,10 +141,14 @@ static int make_fragments(voxelize_state *st, vct_error *err) {
     const uint32_t n = info->triangles;
     st->chunk_start =
         vct_buffer_create(ctx, STAGE, "chunk offsets", 4ull * n, CL_MEM_READ_WRITE, NULL, err);
-    if (!st->chunk_start)
+    st->tri_normals = st->chunk_start ? vct_buffer_create(ctx, STAGE, "triangle normals", 16ull * n,
+                                                          CL_MEM_READ_WRITE, NULL, err)
+                                      : NULL;
+    if (!st->tri_normals)
         return err->status;
-    int rc = vct_run_kernel(ctx, st->program, "vox_chunks", STAGE, n, err, 3, VCT_ARG_OF(st->tris),
-                            VCT_ARG_OF(st->desc), VCT_ARG_OF(st->chunk_start));
+    int rc = vct_run_kernel(ctx, st->program, "vox_chunks", STAGE, n, err, 4, VCT_ARG_OF(st->tris),
+                            VCT_ARG_OF(st->desc), VCT_ARG_OF(st->chunk_start),
+                            VCT_ARG_OF(st->tri_normals));
     uint64_t total = 0;
     if (rc == VCT_OK)
         rc = vct_scan_u32(ctx, st->chunk_start, st->chunk_start, n, 0, &total, err);
@@ -238,7 +242,7 @@ static int reduce_fragments(voxelize_state *st, vct_error *err) {
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, st->program, "vox_reduce", STAGE, nv, err, 9,
                             VCT_ARG_OF(st->frag_ids), VCT_ARG_OF(start), VCT_ARG_OF(nv),
-                            VCT_ARG_OF(f), VCT_ARG_OF(st->tris), VCT_ARG_OF(st->materials),
+                            VCT_ARG_OF(f), VCT_ARG_OF(st->tri_normals), VCT_ARG_OF(st->materials),
                             VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission));
     vct_buffer_release(ctx, start);
     return rc;
@@ -305,7 +309,8 @@ vct_voxels *vct_voxelize(vct_context *ctx, const vct_scene *s, const vct_voxel_o
         rc = reduce_fragments(&st, err);
     if (rc == VCT_OK)
         rc = vct_finish(ctx, STAGE, err);
-    cl_mem temps[] = {st.tris, st.materials, st.chunk_start, st.counts, st.frag_keys, st.frag_ids};
+    cl_mem temps[] = {st.tris,   st.tri_normals, st.materials, st.chunk_start,
+                      st.counts, st.frag_keys,   st.frag_ids};
     for (size_t i = 0; i < sizeof temps / sizeof temps[0]; ++i)
         vct_buffer_release(ctx, temps[i]);
     vct_stage_end(ctx);

@@ -74,6 +74,15 @@ void vct_stats_reset(vct_context *ctx);
 /* Kernels launched so far by name (for plan tests): count of launches. */
 int vct_kernel_launches(const vct_context *ctx, const char *kernel_name);
 
+typedef struct vct_kernel_stat {
+    char name[64];
+    int launches;
+    double device_ms; /* summed over the launches made inside a stage */
+} vct_kernel_stat;
+
+/* Per-kernel launches and device time since the last reset. */
+int vct_kernel_stats(const vct_context *ctx, const vct_kernel_stat **kernels);
+
 /* ---- scene ------------------------------------------------------------------ */
 
 typedef struct vct_material {
