@@ -3,7 +3,8 @@
 # Run as root; does nothing for packages already installed.
 set -eu
 PACKAGES="build-essential cmake pkg-config ocl-icd-opencl-dev opencl-c-headers pocl-opencl-icd
-clinfo libcglm-dev libassimp-dev libstb-dev libembree-dev python3 gnuplot-nox"
+clinfo libcglm-dev libassimp-dev libstb-dev libembree-dev python3 gnuplot-nox
+python3-openvdb python3-numpy"
 missing=""
 for p in $PACKAGES; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
