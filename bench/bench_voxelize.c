@@ -1,5 +1,6 @@
-/* Voxelization and octree build on a 100k+ triangle scene at 256^3 and
- * 512^3: best-of-N device time per stage, peak and final device memory,
+/* Voxelization, octree build and direct light injection (first, and again
+ * after the light moves) on a 100k+ triangle scene at 256^3 and 512^3:
+ * best-of-N device time per stage, peak and final device memory,
  * and OpenVDB's mesh-to-volume on the same mesh and voxel size, timed in
  * the same run (bench/openvdb_voxelize.py, Debian's python3-openvdb). */
 #include <math.h>
@@ -60,13 +61,17 @@ int main(void) {
     const int have_mesh = write_mesh(s, mesh);
     printf("%u triangles, %s, best of %d\n\n", s->triangle_count, vct_context_device(ctx)->name,
            runs);
-    printf(
-        "| resolution | voxels | nodes | voxelize | octree | peak MiB | final MiB | peak / final "
-        "| OpenVDB mesh-to-volume | OpenVDB / vct voxelize |\n");
-    printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    vct_grid *grid = vct_grid_build(ctx, s, NULL, &err);
+    if (!grid)
+        bench_die(&err);
+    printf("| resolution | voxels | nodes | voxelize | octree | light injection | light update | "
+           "peak MiB | final MiB | peak / final | OpenVDB mesh-to-volume | OpenVDB / vct voxelize "
+           "|\n");
+    printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     const uint32_t resolutions[] = {256, 512};
     for (int r = 0; r < 2; ++r) {
-        double best_vox = INFINITY, best_oct = INFINITY, peak = 0.0;
+        double best_vox = INFINITY, best_oct = INFINITY, best_inject = INFINITY,
+               best_update = INFINITY, peak = 0.0;
         vct_voxel_info info = {0};
         for (int i = 0; i < runs; ++i) {
             vct_stats_reset(ctx);
@@ -80,6 +85,16 @@ int main(void) {
             best_oct = fmin(best_oct, stage_device_ms(ctx, "octree build"));
             peak = fmax(peak,
                         fmax(stage_peak_mib(ctx, "voxelize"), stage_peak_mib(ctx, "octree build")));
+            /* Inject, then move the light and inject again: the update. */
+            if (vct_voxels_inject_light(ctx, s, grid, v, &err) != VCT_OK)
+                bench_die(&err);
+            best_inject = fmin(best_inject, stage_device_ms(ctx, "light injection"));
+            s->lights[0].position[0] += 40.0f;
+            vct_stats_reset(ctx);
+            if (vct_voxels_inject_light(ctx, s, grid, v, &err) != VCT_OK)
+                bench_die(&err);
+            s->lights[0].position[0] -= 40.0f;
+            best_update = fmin(best_update, stage_device_ms(ctx, "light injection"));
             vct_voxels_free(v);
         }
         const double final_mib =
@@ -93,9 +108,10 @@ int main(void) {
             snprintf(vdb_cell, sizeof vdb_cell, "%.0f ms (%llu voxels)", vdb * 1e3, active);
             snprintf(ratio, sizeof ratio, "%.1f×", vdb * 1e3 / best_vox);
         }
-        printf("| %u^3 | %u | %u | %.0f ms | %.0f ms | %.0f | %.0f | %.2f | %s | %s |\n",
-               info.resolution, info.voxels, info.nodes, best_vox, best_oct, peak, final_mib,
-               peak / final_mib, vdb_cell, ratio);
+        printf("| %u^3 | %u | %u | %.0f ms | %.0f ms | %.0f ms | %.0f ms | %.0f | %.0f | %.2f | %s "
+               "| %s |\n",
+               info.resolution, info.voxels, info.nodes, best_vox, best_oct, best_inject,
+               best_update, peak, final_mib, peak / final_mib, vdb_cell, ratio);
         fflush(stdout);
     }
     /* Where the time of the last 512^3 run went. */
@@ -105,6 +121,7 @@ int main(void) {
     for (int i = 0; i < nk; ++i)
         printf("  %-24s %8.2f ms %4d launches\n", k[i].name, k[i].device_ms, k[i].launches);
     remove(mesh);
+    vct_grid_free(grid);
     vct_context_destroy(ctx);
     vct_scene_free(s);
     return 0;

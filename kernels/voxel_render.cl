@@ -1,13 +1,16 @@
 /* A look at the voxels: primary rays marched through the octree, skipping
- * each empty node's whole cell, shaded by albedo and a headlight on the
- * averaged normal, plus emission. */
+ * each empty node's whole cell. A voxel shows its injected radiance when
+ * `radiance` holds it (has_radiance), else its albedo under a headlight on
+ * the averaged normal, plus emission. */
 #include "camera.h"
 #include "octree.h"
 #include "vct_types.h"
 
 __kernel void voxel_render(vct_camera_desc cam, vct_volume_desc vol, __global const uint *child,
                            __global const float4 *voxel_albedo, __global const float4 *voxel_normal,
-                           __global const float4 *voxel_emission, __global float4 *image) {
+                           __global const float4 *voxel_emission,
+                           __global const float4 *voxel_radiance, uint has_radiance,
+                           __global float4 *image) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
@@ -32,7 +35,8 @@ __kernel void voxel_render(vct_camera_desc cam, vct_volume_desc vol, __global co
             const uint v = child[node];
             const float facing = fabs(dot(voxel_normal[v].xyz, dir));
             const float shade = voxel_normal[v].w > 0.0f ? 0.2f + 0.8f * facing : 0.6f;
-            colour.xyz = voxel_albedo[v].xyz * shade + voxel_emission[v].xyz;
+            colour.xyz = has_radiance ? voxel_radiance[v].xyz
+                                      : voxel_albedo[v].xyz * shade + voxel_emission[v].xyz;
             break;
         }
         /* Empty at `level` (or an empty leaf): leave that node's cell. */

@@ -57,6 +57,12 @@ int cmd_voxelize(const cli_options *opt) {
     vo.bounds_size = opt->voxel_bounds[3];
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
     int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
+    /* With lights, inject direct light (shadows through the triangle grid). */
+    vct_grid *grid = NULL;
+    if (rc == VCT_OK && s->light_count) {
+        grid = vct_grid_build(ctx, s, opt->grid_res, &err);
+        rc = grid ? vct_voxels_inject_light(ctx, s, grid, v, &err) : (int)err.status;
+    }
     vct_image image = {0};
     if (rc == VCT_OK && out)
         rc = vct_render_voxels(ctx, s, v, opt->width, opt->height, &image, &err);
@@ -70,10 +76,12 @@ int cmd_voxelize(const cli_options *opt) {
         print_voxels(&info);
         cli_print_stats(ctx);
         if (out)
-            printf("wrote %s (%dx%d, the voxels seen from the scene camera)\n", out, image.width,
-                   image.height);
+            printf("wrote %s (%dx%d, the voxels seen from the scene camera, %s)\n", out,
+                   image.width, image.height,
+                   s->light_count ? "their injected radiance" : "albedo under a headlight");
     }
     vct_image_free(&image);
+    vct_grid_free(grid);
     vct_voxels_free(v);
     vct_context_destroy(ctx);
     vct_scene_free(s);

@@ -27,9 +27,12 @@ int vct_render_voxels(vct_context *ctx, const vct_scene *s, const vct_voxels *v,
                                                   CL_MEM_WRITE_ONLY, NULL, err)
                               : NULL;
     cl_kernel k = img ? vct_kernel_create(ctx, p, "voxel_render", err) : NULL;
-    rc = k ? vct_set_args(err, stage, k, 0, 7, VCT_ARG_OF(cam), VCT_ARG_OF(vol),
+    const cl_uint has_radiance = v->radiance != NULL;
+    cl_mem radiance = has_radiance ? v->radiance : v->emission;
+    rc = k ? vct_set_args(err, stage, k, 0, 9, VCT_ARG_OF(cam), VCT_ARG_OF(vol),
                           VCT_ARG_OF(v->child), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
-                          VCT_ARG_OF(v->emission), VCT_ARG_OF(img))
+                          VCT_ARG_OF(v->emission), VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance),
+                          VCT_ARG_OF(img))
            : (int)err->status;
     const size_t global[2] = {(size_t)width, (size_t)height}, local[2] = {8, 8};
     if (rc == VCT_OK)

@@ -10,6 +10,7 @@ struct vct_voxels {
     vct_voxel_info info;
     /* Per voxel, sorted by Morton key. */
     cl_mem keys, albedo, normal, emission;
+    cl_mem radiance; /* outgoing radiance, after vct_voxels_inject_light */
     /* Octree: built by vct_octree_build (child is NULL before). */
     cl_mem child, neighbours, tile_parent;
 };

@@ -288,7 +288,17 @@ int vct_octree_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *child,
  * coordinates at that level, the node covering it or VCT_NODE_NULL. */
 int vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels, const uint32_t *queries,
                       uint32_t n, uint32_t *nodes, vct_error *err);
-/* The voxels as the scene camera sees them, ray marched through the octree. */
+/* Injects direct light into the voxels: per voxel, the outgoing radiance
+ * albedo / pi * irradiance (every light of the scene, shadows through the
+ * grid) + emission, at the voxel centre with its mean normal. Call again
+ * after moving lights: nothing is re-voxelized. */
+int vct_voxels_inject_light(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                            vct_voxels *voxels, vct_error *err);
+/* Per voxel: injected radiance rgb (w unused), in voxel order. */
+int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *voxels, float *radiance,
+                             vct_error *err);
+/* The voxels as the scene camera sees them, ray marched through the octree:
+ * their injected radiance once light is injected, else albedo under a headlight. */
 int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels, int width,
                       int height, vct_image *image, vct_error *err);
 void vct_voxels_free(vct_voxels *voxels);

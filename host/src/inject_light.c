@@ -1,0 +1,53 @@
+/* Direct light into the voxels (kernels/inject_light.cl). */
+#include "internal.h"
+#include "scene_device.h"
+#include "vct_types.h"
+#include "voxels.h"
+
+#define STAGE "light injection"
+
+int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid *g, vct_voxels *v,
+                            vct_error *err) {
+    const uint32_t n = v->info.voxels;
+    vct_stage_begin(ctx, STAGE);
+    cl_program p;
+    int rc = vct_program_get(ctx, "inject_light.cl", "", &p, err);
+    if (rc == VCT_OK && !v->radiance) {
+        v->radiance = vct_buffer_create(ctx, STAGE, "voxel radiance", 16ull * n, CL_MEM_READ_WRITE,
+                                        NULL, err);
+        rc = v->radiance ? VCT_OK : (int)err->status;
+    }
+    vct_scene_buffers sb = {0};
+    if (rc == VCT_OK)
+        rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
+    vct_volume_desc vol;
+    vct_voxels_volume_desc(v, &vol);
+    cl_kernel k = rc == VCT_OK && n ? vct_kernel_create(ctx, p, "inject_direct", err) : NULL;
+    if (rc == VCT_OK && n && !k)
+        rc = err->status;
+    if (k)
+        rc = vct_grid_set_args(k, g, STAGE, err);
+    if (k && rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 5, 9, VCT_ARG_OF(vol), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
+                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission),
+                          VCT_ARG_OF(sb.lights), VCT_ARG_OF(sb.light_count),
+                          VCT_ARG_OF(v->radiance));
+    if (k && rc == VCT_OK)
+        rc = vct_launch(ctx, k, n, 64, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, STAGE, err);
+    if (k)
+        clReleaseKernel(k);
+    vct_scene_buffers_release(ctx, &sb);
+    vct_stage_end(ctx);
+    return rc;
+}
+
+int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *v, float *radiance,
+                             vct_error *err) {
+    if (!v->radiance)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "voxel radiance: inject light first (vct_voxels_inject_light)");
+    return vct_buffer_read(ctx, "voxel read", v->radiance, 0, 16ull * v->info.voxels, radiance,
+                           err);
+}

@@ -1,0 +1,42 @@
+/* Direct light injected into the leaf voxels: the radiance each voxel sends
+ * out, Lambert (albedo / pi times irradiance from every punctual light, with
+ * hard shadows from any-hit rays through the triangle grid) plus emission.
+ * The same conventions as the ray caster and the path tracer.
+ *
+ * A voxel is lit at its centre, with its mean normal; a voxel whose
+ * fragments face every way (zero mean normal) takes light from all sides.
+ * The centre can lie up to half a voxel diagonal behind the voxel's own
+ * surface, so shadow rays start that far along the mean normal, in front of
+ * it (along the light direction for a voxel without one). Shadow edges move
+ * by less than a voxel; no voxel shadows itself at grazing light. */
+#include "direct_light.h"
+#include "octree.h"
+#include "vct_types.h"
+
+__kernel void inject_direct(GRID_ARGS, vct_volume_desc vol, __global const uint *keys, uint voxels,
+                            __global const float4 *albedo, __global const float4 *normal,
+                            __global const float4 *emission, __global const vct_light_desc *lights,
+                            uint light_count, __global float4 *radiance) {
+    const uint v = get_global_id(0);
+    if (v >= voxels)
+        return;
+    const grid_view g = GRID_VIEW();
+    const float size = vol.origin.w / (float)vol.res.x;
+    const float3 p = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * size;
+    const float3 n = normal[v].xyz;
+    const int oriented = any(n != 0.0f);
+    const float lift = 0.8660254f * size + surface_epsilon(&g, p);
+    float3 irradiance = (float3)(0.0f);
+    for (uint i = 0; i < light_count; ++i) {
+        float3 wi, radiant;
+        float dist;
+        if (!light_incident(lights, i, p, &wi, &dist, &radiant))
+            continue;
+        const float cos_theta = oriented ? dot(n, wi) : 1.0f;
+        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
+            continue;
+        if (light_visible(&g, p, oriented ? n : wi, lift, wi, dist))
+            irradiance += radiant * cos_theta;
+    }
+    radiance[v] = (float4)(albedo[v].xyz * VCT_INV_PI * irradiance + emission[v].xyz, 0.0f);
+}
