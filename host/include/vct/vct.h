@@ -254,7 +254,8 @@ typedef struct vct_voxels vct_voxels;
 
 typedef struct vct_voxel_info {
     uint32_t resolution, levels; /* resolution = 2^levels */
-    /* Vertex quantisation: q = round((p - origin) * units / side), in double;
+    /* Vertex quantisation: q = round((p - origin) * units / side) in double, to
+     * nearest with ties to even;
      * a voxel spans units / resolution integers per axis. */
     uint32_t units;
     double origin[3], side;
