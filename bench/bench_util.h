@@ -1,4 +1,4 @@
-/* Benchmark helpers: best-of-N device time of a stage, from profiling events. */
+/* Benchmark helpers: device time and peak memory of a stage, from the statistics. */
 #ifndef VCT_BENCH_UTIL_H
 #define VCT_BENCH_UTIL_H
 
@@ -8,13 +8,24 @@
 
 #include "internal.h"
 
-static inline double stage_device_ms(const vct_context *ctx, const char *name) {
+/* The statistics of stage `name`, or NULL if it has not run. */
+static inline const vct_stage_stat *stage_stat(const vct_context *ctx, const char *name) {
     const vct_stage_stat *st;
     int n = vct_stats(ctx, &st);
     for (int i = 0; i < n; ++i)
         if (strcmp(st[i].name, name) == 0)
-            return st[i].device_ms;
-    return 0.0;
+            return &st[i];
+    return NULL;
+}
+
+static inline double stage_device_ms(const vct_context *ctx, const char *name) {
+    const vct_stage_stat *st = stage_stat(ctx, name);
+    return st ? st->device_ms : 0.0;
+}
+
+static inline double stage_peak_mib(const vct_context *ctx, const char *name) {
+    const vct_stage_stat *st = stage_stat(ctx, name);
+    return st ? st->mib : 0.0;
 }
 
 static inline int bench_repeats(void) {

@@ -9,15 +9,6 @@
 #include "bench_util.h"
 #include "heavy_scene.h"
 
-static double stage_peak_mib(const vct_context *ctx, const char *name) {
-    const vct_stage_stat *st;
-    int n = vct_stats(ctx, &st);
-    for (int i = 0; i < n; ++i)
-        if (strcmp(st[i].name, name) == 0)
-            return st[i].mib;
-    return 0.0;
-}
-
 static int write_mesh(const vct_scene *s, const char *path) {
     FILE *f = fopen(path, "wb");
     if (!f)

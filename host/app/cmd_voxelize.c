@@ -41,13 +41,11 @@ int cmd_voxelize(const cli_options *opt) {
     if (!s)
         return cli_fail(&err);
     cli_print_scene(s, stderr);
-    vct_context *ctx = vct_context_create(opt->device, &err);
+    vct_context *ctx = cli_open_context(opt, &err);
     if (!ctx) {
         vct_scene_free(s);
         return cli_fail(&err);
     }
-    fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
-            vct_context_device(ctx)->platform);
     vct_voxel_options vo = {0};
     vo.resolution = (uint32_t)opt->voxel_res;
     vo.thin = opt->thin_voxels;

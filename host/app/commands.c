@@ -113,6 +113,14 @@ void cli_print_stats(const vct_context *ctx) {
         printf("%-31s %10.2f %9d\n", k[i].name, k[i].device_ms, k[i].launches);
 }
 
+vct_context *cli_open_context(const cli_options *opt, vct_error *err) {
+    vct_context *ctx = vct_context_create(opt->device, err);
+    if (ctx)
+        fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
+                vct_context_device(ctx)->platform);
+    return ctx;
+}
+
 /* Creates the output's parent directory, so `-o out/x.png` works from a clean tree. */
 int cli_make_parent_dir(const char *path, vct_error *err) {
     char dir[4096];
@@ -153,13 +161,11 @@ int cmd_render(const cli_options *opt) {
     if (s->light_count == 0)
         fprintf(stderr, "vct: the scene has no lights: only emissive surfaces will show (add "
                         "--point-light or --dir-light)\n");
-    vct_context *ctx = vct_context_create(opt->device, &err);
+    vct_context *ctx = cli_open_context(opt, &err);
     if (!ctx) {
         vct_scene_free(s);
         return cli_fail(&err);
     }
-    fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
-            vct_context_device(ctx)->platform);
     vct_image image = {0};
     vct_grid *grid = vct_grid_build(ctx, s, opt->grid_res, &err);
     vct_render_options ro = {opt->width, opt->height, {0, 0, 0}};

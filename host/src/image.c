@@ -22,6 +22,17 @@ static int finish_file(FILE *f, const char *tmp, const char *path, vct_error *er
     return VCT_OK;
 }
 
+int vct_image_read_device(vct_context *ctx, const char *stage, cl_mem mem, int width, int height,
+                          vct_image *image, vct_error *err) {
+    const size_t bytes = 16 * (size_t)width * (size_t)height;
+    image->width = width;
+    image->height = height;
+    image->rgba = malloc(bytes);
+    if (!image->rgba)
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
+    return vct_buffer_read(ctx, stage, mem, 0, bytes, image->rgba, err);
+}
+
 int vct_image_write_pfm(const vct_image *im, const char *path, vct_error *err) {
     char tmp[4096];
     snprintf(tmp, sizeof tmp, "%s.tmp%d", path, (int)getpid());

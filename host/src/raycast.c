@@ -79,13 +79,8 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     const size_t local[2] = {8, 8};
     if (rc == VCT_OK)
         rc = vct_launch_2d(ctx, k, global, local, err);
-    if (rc == VCT_OK) {
-        image->width = opt->width;
-        image->height = opt->height;
-        image->rgba = malloc(16 * pixels);
-        rc = image->rgba ? vct_buffer_read(ctx, stage, img, 0, 16 * pixels, image->rgba, err)
-                         : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
-    }
+    if (rc == VCT_OK)
+        rc = vct_image_read_device(ctx, stage, img, opt->width, opt->height, image, err);
     if (k)
         clReleaseKernel(k);
     vct_buffer_release(ctx, img);

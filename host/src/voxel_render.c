@@ -37,13 +37,8 @@ int vct_render_voxels(vct_context *ctx, const vct_scene *s, const vct_voxels *v,
     const size_t global[2] = {(size_t)width, (size_t)height}, local[2] = {8, 8};
     if (rc == VCT_OK)
         rc = vct_launch_2d(ctx, k, global, local, err);
-    if (rc == VCT_OK) {
-        image->width = width;
-        image->height = height;
-        image->rgba = malloc(16 * pixels);
-        rc = image->rgba ? vct_buffer_read(ctx, stage, img, 0, 16 * pixels, image->rgba, err)
-                         : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
-    }
+    if (rc == VCT_OK)
+        rc = vct_image_read_device(ctx, stage, img, width, height, image, err);
     if (k)
         clReleaseKernel(k);
     vct_buffer_release(ctx, img);
