@@ -42,6 +42,35 @@ cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, 
     return mem;
 }
 
+cl_mem vct_image3d_create(vct_context *ctx, const char *stage, const char *what,
+                          const cl_image_format *format, const cl_image_desc *desc,
+                          vct_error *err) {
+    const size_t bytes = desc->image_width * desc->image_height * desc->image_depth * 8;
+    const double mib = 1.0 / (1024.0 * 1024.0);
+    if (ctx->bytes_live + (double)bytes > (double)ctx->info.global_mem) {
+        vct_fail(err, VCT_ERR_MEMORY,
+                 "%s: %s needs %.1f MiB with %.1f MiB already in use, beyond the %.1f MiB of %s: "
+                 "lower the voxel resolution (--voxel-res)",
+                 stage, what, bytes * mib, ctx->bytes_live * mib, ctx->info.global_mem * mib,
+                 ctx->info.name);
+        return NULL;
+    }
+    cl_int rc = CL_SUCCESS;
+    cl_mem mem = clCreateImage(ctx->context, CL_MEM_READ_ONLY, format, desc, NULL, &rc);
+    if (rc != CL_SUCCESS) {
+        vct_cl_check(err, rc, stage, "clCreateImage");
+        size_t len = strlen(err->message);
+        snprintf(err->message + len, sizeof err->message - len,
+                 " (%s, %zux%zux%zu texels): use a buffer pool (--bricks buffer)", what,
+                 desc->image_width, desc->image_height, desc->image_depth);
+        return NULL;
+    }
+    ctx->bytes_live += (double)bytes;
+    if (ctx->bytes_live > ctx->bytes_stage_peak)
+        ctx->bytes_stage_peak = ctx->bytes_live;
+    return mem;
+}
+
 void vct_buffer_release(vct_context *ctx, cl_mem mem) {
     if (!mem)
         return;

@@ -75,6 +75,10 @@ const char *vct_cache_dir(void);
 /* ---- buffers ---- */
 cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, size_t bytes,
                          cl_mem_flags flags, const void *host, vct_error *err);
+/* A read-only image of 8-byte texels (half RGBA), counted like a buffer;
+ * vct_buffer_release releases it. */
+cl_mem vct_image3d_create(vct_context *ctx, const char *stage, const char *what,
+                          const cl_image_format *format, const cl_image_desc *desc, vct_error *err);
 void vct_buffer_release(vct_context *ctx, cl_mem mem);
 int vct_buffer_read(vct_context *ctx, const char *stage, cl_mem mem, size_t offset, size_t bytes,
                     void *dst, vct_error *err);

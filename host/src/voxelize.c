@@ -39,6 +39,7 @@ void vct_voxels_free(vct_voxels *v) {
                       &v->child, &v->neighbours, &v->tile_parent, &v->radiance};
     for (size_t i = 0; i < sizeof mems / sizeof mems[0]; ++i)
         vct_buffer_release(v->ctx, *mems[i]);
+    vct_bricks_release(v);
     free(v);
 }
 

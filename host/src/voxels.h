@@ -13,6 +13,12 @@ struct vct_voxels {
     cl_mem radiance; /* outgoing radiance, after vct_voxels_inject_light */
     /* Octree: built by vct_octree_build (child is NULL before). */
     cl_mem child, neighbours, tile_parent;
+    /* Bricks: built by vct_bricks_build (has_bricks 0 before). Buffers are
+     * the build storage; an image pool also has images, and keeps only the
+     * radiance buffers for re-filtering. */
+    int has_bricks;
+    vct_brick_info brick_info;
+    cl_mem brick_buffer[VCT_BRICK_CHANNELS], brick_image[VCT_BRICK_CHANNELS];
 };
 
 /* Volume description for kernels (vct_volume_desc in kernels/vct_types.h). */
@@ -24,5 +30,10 @@ uint32_t vct_voxel_res_that_fits(uint32_t res, double bytes, double limit);
  * buffer of `bytes` exceeds the device's allocation limit. */
 int vct_voxel_buffer_fits(vct_context *ctx, const vct_voxel_info *info, const char *stage,
                           const char *what, double bytes, vct_error *err);
+
+/* Re-creates the radiance bricks from the voxels' radiance and filters
+ * them up (after light injection); nothing when no bricks are built. */
+int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *voxels, vct_error *err);
+void vct_bricks_release(vct_voxels *voxels);
 
 #endif

@@ -304,6 +304,62 @@ int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels
                       int height, vct_image *image, vct_error *err);
 void vct_voxels_free(vct_voxels *voxels);
 
+/* ---- bricks ---------------------------------------------------------------------- */
+
+/* Every octree node with geometry below it (levels 0 .. L-1) owns a brick of
+ * 3x3x3 corner-centred samples: texel (i, j, k) at node_min + (i, j, k) *
+ * node_size / 2. Each channel holds (value * opacity, opacity) as half
+ * floats, so that plain averages of it are opacity-weighted colours. Level
+ * L-1 samples are the mean of the up to 8 voxels around the corner that hold
+ * geometry; each coarser level is the 3x3x3 Gaussian (1/4, 1/2, 1/4 per axis)
+ * of the finer lattice. Samples shared by neighbouring bricks are equal. */
+typedef enum vct_brick_storage {
+    VCT_BRICKS_AUTO,   /* an image3d on GPUs that can hold the pool, else a buffer */
+    VCT_BRICKS_BUFFER, /* a buffer, filtered in code */
+    VCT_BRICKS_IMAGE   /* an image3d (hardware trilinear); fails where the device has none */
+} vct_brick_storage;
+
+typedef struct vct_brick_options {
+    vct_brick_storage storage;
+    /* Also 6 directional radiance values per sample (+x, +y, +z, -x, -y, -z,
+     * the way a cone travels) at levels 0 .. L-2: the child lattice
+     * composited front to back along the axis, then averaged. */
+    int anisotropic;
+} vct_brick_options;
+
+typedef enum vct_brick_channel {
+    VCT_BRICK_ALBEDO,       /* albedo * opacity, opacity */
+    VCT_BRICK_NORMAL,       /* mean normal * opacity (its length is coherence), opacity */
+    VCT_BRICK_RADIANCE,     /* injected outgoing radiance * opacity, opacity */
+    VCT_BRICK_RADIANCE_DIR0 /* + direction 0..5, anisotropic only, levels 0 .. L-2 */
+} vct_brick_channel;
+#define VCT_BRICK_CHANNELS 9
+
+typedef struct vct_brick_info {
+    uint32_t bricks;                            /* one per node with children */
+    uint32_t level_bricks[11], level_first[11]; /* level l's bricks: a contiguous range */
+    uint32_t directional_bricks; /* bricks with directional values (levels 0 .. L-2) */
+    uint32_t pool[3];            /* pool size in bricks; texels are 3x that */
+    int image;                   /* 1: image3d pool, 0: buffer pool */
+    int anisotropic;
+    char storage_reason[160];   /* why this pool kind was chosen */
+    uint64_t channel_bytes;     /* one channel of all bricks */
+    uint64_t pool_bytes;        /* every channel, as allocated */
+    uint64_t staging_bytes;     /* image pools: buffers kept for re-filtering */
+    uint64_t dense_rgba8_bytes; /* a dense RGBA8 3D texture at the voxel resolution */
+} vct_brick_info;
+
+/* Builds the bricks of every channel (radiance from the injected light, or 0
+ * before injection). Later vct_voxels_inject_light calls re-filter radiance. */
+int vct_bricks_build(vct_context *ctx, vct_voxels *voxels, const vct_brick_options *options,
+                     vct_error *err);
+/* 0 and no change when no bricks are built. */
+int vct_bricks_info_get(const vct_voxels *voxels, vct_brick_info *info);
+/* Bricks first .. first + count - 1 of one channel as float4 texels, 27 per
+ * brick (index k * 9 + j * 3 + i), read through the kernels' own brick access. */
+int vct_bricks_read(vct_context *ctx, const vct_voxels *voxels, int channel, uint32_t first,
+                    uint32_t count, float *out, vct_error *err);
+
 /* ---- images --------------------------------------------------------------------- */
 
 /* PFM: raw linear radiance. PNG: radiance * 2^exposure, clamped, sRGB encoded.

@@ -1,0 +1,358 @@
+/* Bricks and their filtering (kernels/bricks.cl), and the pool they live
+ * in: a buffer, or an image3d filled from a buffer of the same layout. */
+#include <stdio.h>
+#include <string.h>
+
+#include "internal.h"
+#include "voxels.h"
+
+#define CREATE_STAGE "brick creation"
+#define FILTER_STAGE "brick filtering"
+#define REFRESH_STAGE "radiance filtering"
+#define IMAGE_SLAB 64u /* bricks per row and column of an image pool */
+#define TEXEL_BYTES 8u /* half4 */
+
+static uint32_t div_up(uint64_t a, uint64_t b) {
+    return (uint32_t)((a + b - 1) / b);
+}
+
+static void count_bricks(const vct_voxel_info *v, vct_brick_info *b) {
+    const uint32_t levels = v->levels;
+    b->bricks = v->voxels ? (v->nodes - 1) / 8 : 0;
+    for (uint32_t l = 0; l < levels && v->voxels; ++l) {
+        b->level_bricks[l] = v->level_nodes[l + 1] / 8;
+        b->level_first[l] = (v->level_start[l + 1] - 1) / 8;
+    }
+    b->directional_bricks = b->anisotropic && levels >= 2 ? b->level_first[levels - 1] : 0;
+    const double r = v->resolution;
+    b->dense_rgba8_bytes = (uint64_t)(4.0 * r * r * r);
+}
+
+/* Pool size in bricks for `bricks` bricks with rows of `row` bricks. */
+static void pool_shape(uint32_t bricks, uint32_t row, uint32_t shape[3]) {
+    const uint32_t n = bricks ? bricks : 1;
+    shape[0] = n < row ? n : row;
+    const uint32_t rows = div_up(n, shape[0]);
+    shape[1] = rows < row ? rows : row;
+    shape[2] = div_up(n, (uint64_t)shape[0] * shape[1]);
+}
+
+static uint64_t shape_bytes(const uint32_t s[3]) {
+    return 27ull * TEXEL_BYTES * s[0] * s[1] * s[2];
+}
+
+static uint64_t pool_bytes(uint32_t bricks, uint32_t row) {
+    uint32_t s[3];
+    pool_shape(bricks, row, s);
+    return shape_bytes(s);
+}
+
+static int has_half_rgba_3d(vct_context *ctx) {
+    cl_image_format formats[256];
+    cl_uint n = 0;
+    if (clGetSupportedImageFormats(ctx->context, CL_MEM_READ_ONLY, CL_MEM_OBJECT_IMAGE3D, 256,
+                                   formats, &n) != CL_SUCCESS)
+        return 0;
+    for (cl_uint i = 0; i < n && i < 256; ++i)
+        if (formats[i].image_channel_order == CL_RGBA &&
+            formats[i].image_channel_data_type == CL_HALF_FLOAT)
+            return 1;
+    return 0;
+}
+
+/* Why an image pool of `shape` cannot be used here, or NULL if it can. */
+static const char *image_refusal(vct_context *ctx, const uint32_t shape[3], uint64_t bytes) {
+    if (!ctx->info.image_support)
+        return "the device has no image support";
+    if (!has_half_rgba_3d(ctx))
+        return "the device has no half-float RGBA 3D images";
+    size_t limit[3] = {0, 0, 0};
+    const cl_device_info what[3] = {CL_DEVICE_IMAGE3D_MAX_WIDTH, CL_DEVICE_IMAGE3D_MAX_HEIGHT,
+                                    CL_DEVICE_IMAGE3D_MAX_DEPTH};
+    for (int a = 0; a < 3; ++a) {
+        clGetDeviceInfo(ctx->device, what[a], sizeof limit[a], &limit[a], NULL);
+        if (3ull * shape[a] > limit[a])
+            return "the pool exceeds the device's 3D image size";
+    }
+    return bytes > ctx->info.max_alloc ? "the pool exceeds the device's allocation limit" : NULL;
+}
+
+static int choose_storage(vct_context *ctx, vct_brick_storage storage, vct_brick_info *b,
+                          vct_error *err) {
+    uint32_t image_shape[3];
+    pool_shape(b->bricks, IMAGE_SLAB, image_shape);
+    const char *refusal = b->bricks == 0
+                              ? "there are no bricks"
+                              : image_refusal(ctx, image_shape, pool_bytes(b->bricks, IMAGE_SLAB));
+    if (storage == VCT_BRICKS_IMAGE && refusal)
+        return vct_fail(err, VCT_ERR_INPUT, "bricks: an image3d pool was asked for but %s",
+                        refusal);
+    if (storage == VCT_BRICKS_IMAGE) {
+        b->image = 1;
+        snprintf(b->storage_reason, sizeof b->storage_reason, "image3d, as asked");
+    } else if (storage == VCT_BRICKS_BUFFER) {
+        snprintf(b->storage_reason, sizeof b->storage_reason, "buffer, as asked");
+    } else if (refusal) {
+        snprintf(b->storage_reason, sizeof b->storage_reason, "buffer: %s", refusal);
+    } else if (!ctx->info.is_gpu) {
+        snprintf(b->storage_reason, sizeof b->storage_reason,
+                 "buffer: a CPU device samples images in software, slower than a buffer");
+    } else {
+        b->image = 1;
+        snprintf(b->storage_reason, sizeof b->storage_reason,
+                 "image3d: the GPU filters trilinearly in hardware");
+    }
+    const uint32_t row = b->image ? IMAGE_SLAB : 1;
+    pool_shape(b->bricks, row, b->pool);
+    b->channel_bytes = pool_bytes(b->bricks, row);
+    return VCT_OK;
+}
+
+static int channel_count(const vct_brick_info *b) {
+    return b->anisotropic ? VCT_BRICK_CHANNELS : VCT_BRICK_RADIANCE + 1;
+}
+
+static uint32_t channel_bricks(const vct_brick_info *b, int c) {
+    return c >= VCT_BRICK_RADIANCE_DIR0 ? b->directional_bricks : b->bricks;
+}
+
+/* Channel c's pool: the same rows and columns as the main pool (the kernels
+ * address every channel alike), only as many slabs as it needs. */
+static void channel_shape(const vct_brick_info *b, int c, uint32_t shape[3]) {
+    const uint32_t n = channel_bricks(b, c);
+    shape[0] = b->pool[0];
+    shape[1] = b->pool[1];
+    shape[2] = div_up(n ? n : 1, (uint64_t)shape[0] * shape[1]);
+}
+
+static int allocate_buffers(vct_context *ctx, vct_voxels *v, vct_error *err) {
+    vct_brick_info *b = &v->brick_info;
+    static const char *names[VCT_BRICK_CHANNELS] = {
+        "albedo bricks",      "normal bricks",      "radiance bricks",
+        "+x radiance bricks", "+y radiance bricks", "+z radiance bricks",
+        "-x radiance bricks", "-y radiance bricks", "-z radiance bricks"};
+    b->pool_bytes = 0;
+    for (int c = 0; c < channel_count(b); ++c) {
+        uint32_t shape[3];
+        channel_shape(b, c, shape);
+        const uint64_t bytes = shape_bytes(shape);
+        v->brick_buffer[c] =
+            vct_buffer_create(ctx, CREATE_STAGE, names[c], bytes, CL_MEM_READ_WRITE, NULL, err);
+        if (!v->brick_buffer[c])
+            return err->status;
+        b->pool_bytes += bytes;
+    }
+    return VCT_OK;
+}
+
+typedef struct level_run {
+    vct_context *ctx;
+    vct_voxels *v;
+    cl_program program;
+    const char *stage;
+    cl_uint pool[2];
+} level_run;
+
+/* Level L-1 bricks from the voxels: all channels, or radiance only. */
+static int run_leaf(const level_run *r, int geometry, vct_error *err) {
+    vct_voxels *v = r->v;
+    const uint32_t level = v->info.levels - 1, first = v->brick_info.level_first[level];
+    const uint32_t count = v->brick_info.level_bricks[level];
+    const cl_uint has_radiance = v->radiance != NULL, write_geometry = (cl_uint)geometry;
+    cl_mem radiance = has_radiance ? v->radiance : v->albedo;
+    cl_mem *pool = v->brick_buffer;
+    cl_mem albedo_pool = geometry ? pool[VCT_BRICK_ALBEDO] : pool[VCT_BRICK_RADIANCE];
+    cl_mem normal_pool = geometry ? pool[VCT_BRICK_NORMAL] : pool[VCT_BRICK_RADIANCE];
+    return vct_run_kernel(
+        r->ctx, r->program, "brick_leaf", r->stage, count, err, 15, VCT_ARG_OF(v->child),
+        VCT_ARG_OF(v->neighbours), VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(level), VCT_ARG_OF(first),
+        VCT_ARG_OF(count), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance),
+        VCT_ARG_OF(has_radiance), VCT_ARG_OF(write_geometry), VCT_ARG_OF(r->pool),
+        VCT_ARG_OF(albedo_pool), VCT_ARG_OF(normal_pool), VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
+}
+
+/* Channels [from, to) of levels L-2 .. 0, each from the level below. */
+static int run_filters(const level_run *r, int from, int to, vct_error *err) {
+    vct_voxels *v = r->v;
+    const vct_brick_info *b = &v->brick_info;
+    int rc = VCT_OK;
+    for (int level = (int)v->info.levels - 2; level >= 0 && rc == VCT_OK; --level) {
+        const cl_uint l = (cl_uint)level, first = b->level_first[l], count = b->level_bricks[l];
+        for (int c = from; c < to && rc == VCT_OK; ++c) {
+            if (c < VCT_BRICK_RADIANCE_DIR0) {
+                rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, count, err, 8,
+                                    VCT_ARG_OF(v->child), VCT_ARG_OF(v->neighbours),
+                                    VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(l), VCT_ARG_OF(first),
+                                    VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
+                                    VCT_ARG_OF(v->brick_buffer[c]));
+                continue;
+            }
+            /* children at level L-1 have one isotropic value for every direction */
+            const cl_uint dir = (cl_uint)(c - VCT_BRICK_RADIANCE_DIR0);
+            const int from_leaf = level + 2 == (int)v->info.levels;
+            cl_mem src = v->brick_buffer[from_leaf ? VCT_BRICK_RADIANCE : c];
+            rc = vct_run_kernel(r->ctx, r->program, "brick_filter_dir", r->stage, count, err, 10,
+                                VCT_ARG_OF(v->child), VCT_ARG_OF(v->neighbours),
+                                VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(l), VCT_ARG_OF(first),
+                                VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(dir),
+                                VCT_ARG_OF(src), VCT_ARG_OF(v->brick_buffer[c]));
+        }
+    }
+    return rc;
+}
+
+/* Image pools: copies channels [from, to) from their build buffers. */
+static int copy_to_images(const level_run *r, int from, int to, vct_error *err) {
+    vct_voxels *v = r->v;
+    vct_brick_info *b = &v->brick_info;
+    for (int c = from; c < to && b->image; ++c) {
+        uint32_t shape[3];
+        channel_shape(b, c, shape);
+        if (!v->brick_image[c]) {
+            const cl_image_format format = {CL_RGBA, CL_HALF_FLOAT};
+            cl_image_desc desc = {0};
+            desc.image_type = CL_MEM_OBJECT_IMAGE3D;
+            desc.image_width = 3u * shape[0];
+            desc.image_height = 3u * shape[1];
+            desc.image_depth = 3u * shape[2];
+            v->brick_image[c] =
+                vct_image3d_create(r->ctx, r->stage, "brick pool image", &format, &desc, err);
+            if (!v->brick_image[c])
+                return err->status;
+        }
+        const size_t origin[3] = {0, 0, 0};
+        const size_t region[3] = {3u * shape[0], 3u * shape[1], 3u * shape[2]};
+        cl_event ev = NULL;
+        VCT_CL(err, r->stage,
+               clEnqueueCopyBufferToImage(r->ctx->queue, v->brick_buffer[c], v->brick_image[c], 0,
+                                          origin, region, 0, NULL, &ev));
+        int rc = vct_record_event(r->ctx, ev, "copy to image", err);
+        if (rc != VCT_OK)
+            return rc;
+    }
+    return VCT_OK;
+}
+
+static int level_run_init(vct_context *ctx, vct_voxels *v, const char *stage, level_run *r,
+                          vct_error *err) {
+    r->ctx = ctx;
+    r->v = v;
+    r->stage = stage;
+    r->pool[0] = v->brick_info.pool[0];
+    r->pool[1] = v->brick_info.pool[1];
+    return vct_program_get(ctx, "bricks.cl", "", &r->program, err);
+}
+
+int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *options,
+                     vct_error *err) {
+    if (!v->child)
+        return vct_fail(err, VCT_ERR_INPUT, "bricks: build the octree first (vct_octree_build)");
+    const vct_brick_options defaults = {VCT_BRICKS_AUTO, 0};
+    if (!options)
+        options = &defaults;
+    vct_bricks_release(v);
+    vct_brick_info *b = &v->brick_info;
+    memset(b, 0, sizeof *b);
+    b->anisotropic = options->anisotropic != 0;
+    count_bricks(&v->info, b);
+    vct_stage_begin(ctx, CREATE_STAGE);
+    int rc = choose_storage(ctx, options->storage, b, err);
+    if (rc == VCT_OK)
+        rc = allocate_buffers(ctx, v, err);
+    level_run r;
+    if (rc == VCT_OK)
+        rc = level_run_init(ctx, v, CREATE_STAGE, &r, err);
+    if (rc == VCT_OK && b->bricks)
+        rc = run_leaf(&r, 1, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, CREATE_STAGE, err);
+    vct_stage_begin(ctx, FILTER_STAGE);
+    r.stage = FILTER_STAGE;
+    if (rc == VCT_OK && b->bricks)
+        rc = run_filters(&r, 0, channel_count(b), err);
+    if (rc == VCT_OK)
+        rc = copy_to_images(&r, 0, channel_count(b), err);
+    if (rc == VCT_OK && b->image) {
+        /* geometry never changes: only the radiance buffers stay, for re-filtering */
+        b->staging_bytes = b->pool_bytes;
+        for (int c = VCT_BRICK_ALBEDO; c <= VCT_BRICK_NORMAL; ++c) {
+            b->staging_bytes -= b->channel_bytes;
+            vct_buffer_release(ctx, v->brick_buffer[c]);
+            v->brick_buffer[c] = NULL;
+        }
+    }
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, FILTER_STAGE, err);
+    vct_stage_end(ctx);
+    if (rc != VCT_OK)
+        vct_bricks_release(v);
+    else
+        v->has_bricks = 1;
+    return rc;
+}
+
+int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err) {
+    if (!v->has_bricks || v->brick_info.bricks == 0)
+        return VCT_OK;
+    vct_stage_begin(ctx, REFRESH_STAGE);
+    level_run r;
+    int rc = level_run_init(ctx, v, REFRESH_STAGE, &r, err);
+    const int channels = channel_count(&v->brick_info);
+    if (rc == VCT_OK)
+        rc = run_leaf(&r, 0, err);
+    if (rc == VCT_OK)
+        rc = run_filters(&r, VCT_BRICK_RADIANCE, channels, err);
+    if (rc == VCT_OK)
+        rc = copy_to_images(&r, VCT_BRICK_RADIANCE, channels, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, REFRESH_STAGE, err);
+    vct_stage_end(ctx);
+    return rc;
+}
+
+void vct_bricks_release(vct_voxels *v) {
+    for (int c = 0; c < VCT_BRICK_CHANNELS; ++c) {
+        vct_buffer_release(v->ctx, v->brick_buffer[c]);
+        vct_buffer_release(v->ctx, v->brick_image[c]);
+        v->brick_buffer[c] = v->brick_image[c] = NULL;
+    }
+    v->has_bricks = 0;
+}
+
+int vct_bricks_info_get(const vct_voxels *v, vct_brick_info *info) {
+    if (!v->has_bricks)
+        return 0;
+    *info = v->brick_info;
+    return 1;
+}
+
+int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t first,
+                    uint32_t count, float *out, vct_error *err) {
+    const char *stage = "brick read";
+    const vct_brick_info *b = &v->brick_info;
+    if (!v->has_bricks)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: build the bricks first (vct_bricks_build)", stage);
+    if (channel < 0 || channel >= channel_count(b) ||
+        (uint64_t)first + count > channel_bricks(b, channel))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: channel %d, bricks %u..%u: not built (%u bricks, %u directional)",
+                        stage, channel, first, first + count, b->bricks, b->directional_bricks);
+    if (count == 0)
+        return VCT_OK;
+    cl_program p;
+    int rc = vct_program_get(ctx, "brick_gather.cl", b->image ? "-DVCT_BRICK_IMAGE" : "", &p, err);
+    cl_mem dst = rc == VCT_OK ? vct_buffer_create(ctx, stage, "texels", 27ull * 16 * count,
+                                                  CL_MEM_WRITE_ONLY, NULL, err)
+                              : NULL;
+    cl_mem src = b->image ? v->brick_image[channel] : v->brick_buffer[channel];
+    const cl_uint pool[2] = {b->pool[0], b->pool[1]};
+    if (rc == VCT_OK)
+        rc = dst ? vct_run_kernel(ctx, p, "brick_gather", stage, 27ull * count, err, 5,
+                                  VCT_ARG_OF(src), VCT_ARG_OF(pool), VCT_ARG_OF(first),
+                                  VCT_ARG_OF(count), VCT_ARG_OF(dst))
+                 : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, stage, dst, 0, 27ull * 16 * count, out, err);
+    vct_buffer_release(ctx, dst);
+    return rc;
+}

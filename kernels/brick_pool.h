@@ -1,0 +1,86 @@
+/* The brick pool: where every octree node with geometry below it keeps its
+ * 3x3x3 corner-centred samples, as half-float RGBA texels.
+ *
+ * A node at level l < L whose children exist owns brick (child[n] - 1) / 8,
+ * the index of its child tile, so no brick pointers are stored and a level's
+ * bricks are one contiguous range. Its samples sit at the node's corners,
+ * edge and face midpoints and centre: texel (i, j, k) lies at
+ * node_min + (i, j, k) * node_size / 2.
+ *
+ * Bricks are laid out like a 3D texture of pool.x * pool.y * ceil(n / (pool.x *
+ * pool.y)) bricks; brick b sits at (b % pool.x, b / pool.x % pool.y,
+ * b / (pool.x * pool.y)). A buffer pool uses pool = (1, 1), which makes each
+ * brick's 27 texels contiguous; an image pool uses a wider layout that fits
+ * the device's image limits and is filled from a buffer of the same layout.
+ * Build with -DVCT_BRICK_IMAGE for an image3d pool (hardware trilinear
+ * filtering), without it for a buffer (filtering in code). */
+#ifndef VCT_BRICK_POOL_H
+#define VCT_BRICK_POOL_H
+
+#define BRICK_NULL 0xffffffffu
+#define BRICK_TEXELS 27u
+
+#ifdef VCT_BRICK_IMAGE
+#define BRICK_POOL __read_only image3d_t
+#else
+#define BRICK_POOL __global const half *
+#endif
+
+/* The brick of node `node` (at a level below the leaves), or BRICK_NULL. */
+inline uint brick_of(__global const uint *child, uint node) {
+    const uint first = child[node];
+    return first == 0xffffffffu ? BRICK_NULL : (first - 1u) >> 3;
+}
+
+/* Texel coordinates of texel t = (i, j, k) of brick b in the pool. */
+inline int4 brick_texel_coord(uint2 pool, uint b, uint3 t) {
+    const uint slab = pool.x * pool.y;
+    const uint3 base = (uint3)(b % pool.x, (b / pool.x) % pool.y, b / slab) * 3u;
+    return (int4)(convert_int3(base + t), 0);
+}
+
+/* Linear texel index in a buffer pool of the same layout. */
+inline uint brick_texel_index(uint2 pool, uint b, uint3 t) {
+    const int4 c = brick_texel_coord(pool, b, t);
+    return ((uint)c.z * (3u * pool.y) + (uint)c.y) * (3u * pool.x) + (uint)c.x;
+}
+
+inline void brick_store(__global half *pool_buffer, uint2 pool, uint b, uint3 t, float4 v) {
+    vstore_half4_rte(v, brick_texel_index(pool, b, t), pool_buffer);
+}
+
+/* One texel, exactly as stored. */
+inline float4 brick_load(BRICK_POOL p, uint2 pool, uint b, uint3 t) {
+#ifdef VCT_BRICK_IMAGE
+    const sampler_t nearest =
+        CLK_NORMALIZED_COORDS_FALSE | CLK_ADDRESS_CLAMP_TO_EDGE | CLK_FILTER_NEAREST;
+    return read_imagef(p, nearest, brick_texel_coord(pool, b, t));
+#else
+    return vload_half4(brick_texel_index(pool, b, t), p);
+#endif
+}
+
+/* Trilinear sample at `at` in [0, 2]^3 texel units inside brick b. */
+inline float4 brick_sample(BRICK_POOL p, uint2 pool, uint b, float3 at) {
+    at = clamp(at, 0.0f, 2.0f);
+#ifdef VCT_BRICK_IMAGE
+    const sampler_t linear =
+        CLK_NORMALIZED_COORDS_FALSE | CLK_ADDRESS_CLAMP_TO_EDGE | CLK_FILTER_LINEAR;
+    const float4 base = convert_float4(brick_texel_coord(pool, b, (uint3)(0u)));
+    return read_imagef(p, linear, base + (float4)(at + 0.5f, 0.0f));
+#else
+    const uint3 lo = min(convert_uint3(at), (uint3)(1u));
+    const float3 f = at - convert_float3(lo);
+    float4 acc = (float4)(0.0f);
+    for (uint k = 0; k < 2u; ++k)
+        for (uint j = 0; j < 2u; ++j)
+            for (uint i = 0; i < 2u; ++i) {
+                const float w =
+                    (i ? f.x : 1.0f - f.x) * (j ? f.y : 1.0f - f.y) * (k ? f.z : 1.0f - f.z);
+                acc += w * brick_load(p, pool, b, lo + (uint3)(i, j, k));
+            }
+    return acc;
+#endif
+}
+
+#endif

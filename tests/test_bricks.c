@@ -1,0 +1,466 @@
+/* Bricks and their filtering against the dense plain-C reference of
+ * brick_ref.h: every texel of every brick, every channel, both pool kinds,
+ * isotropic and directional. Also: samples shared by neighbouring bricks are
+ * bit-identical, two builds are bit-identical, a moved light re-filters, and
+ * hard cases with known answers (a single voxel, a full block, a one-voxel
+ * wall that must not leak, geometry on the volume's faces). */
+#include <math.h>
+#include <string.h>
+
+#include "brick_ref.h"
+#include "check.h"
+#include "mesh_gen.h"
+
+static vct_context *ctx;
+
+typedef struct brick_case {
+    const char *name;
+    vct_scene *scene;
+    vct_grid *grid;
+    vct_voxels *voxels;
+    vct_voxel_info info;
+    vct_brick_info bricks;
+    uint32_t *child, *cell; /* per node: child pointer, cell (x | y << 10 | z << 20) */
+    int32_t *voxel_of;      /* dense res^3 -> voxel */
+    float *albedo, *normal, *radiance;
+} brick_case;
+
+static void case_free(brick_case *c) {
+    vct_voxels_free(c->voxels);
+    vct_grid_free(c->grid);
+    vct_scene_free(c->scene);
+    free(c->child);
+    free(c->cell);
+    free(c->voxel_of);
+    free(c->albedo);
+    free(c->normal);
+    free(c->radiance);
+}
+
+static void decode(uint32_t key, uint32_t cell[3]) {
+    cell[0] = cell[1] = cell[2] = 0;
+    for (int b = 0; b < 10; ++b)
+        for (int k = 0; k < 3; ++k)
+            cell[k] |= ((key >> (3 * b + k)) & 1u) << b;
+}
+
+/* Builds everything for `scene` in [0, side]^3 and reads back what the
+ * reference needs. */
+static brick_case make_case(const char *name, vct_scene *scene, uint32_t res, float side,
+                            const vct_brick_options *opt) {
+    vct_error err = {0};
+    brick_case c = {0};
+    c.name = name;
+    c.scene = scene;
+    vct_voxel_options o = {0};
+    o.resolution = res;
+    o.has_bounds = 1;
+    o.bounds_size = side;
+    c.voxels = vct_voxelize(ctx, scene, &o, &err);
+    REQUIRE_OK(c.voxels ? VCT_OK : err.status, err);
+    REQUIRE_OK(vct_octree_build(ctx, c.voxels, &err), err);
+    REQUIRE_OK(vct_bricks_build(ctx, c.voxels, opt, &err), err);
+    if (scene->light_count) {
+        c.grid = vct_grid_build(ctx, scene, NULL, &err);
+        REQUIRE_OK(c.grid ? VCT_OK : err.status, err);
+        REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+    }
+    vct_voxels_info_get(c.voxels, &c.info);
+    CHECK(vct_bricks_info_get(c.voxels, &c.bricks), "%s: brick info", name);
+    const uint32_t nv = c.info.voxels, nodes = c.info.nodes;
+    uint32_t *keys = malloc(4ull * nv + 4);
+    c.albedo = malloc(16ull * nv + 16);
+    c.normal = malloc(16ull * nv + 16);
+    c.radiance = calloc(4ull * nv + 4, sizeof(float));
+    REQUIRE_OK(vct_voxels_read(ctx, c.voxels, keys, c.albedo, c.normal, NULL, &err), err);
+    if (scene->light_count)
+        REQUIRE_OK(vct_voxels_read_radiance(ctx, c.voxels, c.radiance, &err), err);
+    c.voxel_of = malloc(4ull * res * res * res);
+    memset(c.voxel_of, 0xff, 4ull * res * res * res);
+    for (uint32_t v = 0; v < nv; ++v) {
+        uint32_t p[3];
+        decode(keys[v], p);
+        c.voxel_of[((size_t)p[2] * res + p[1]) * res + p[0]] = (int32_t)v;
+    }
+    free(keys);
+    c.child = malloc(4ull * nodes);
+    c.cell = calloc(nodes, 4);
+    REQUIRE_OK(vct_octree_read(ctx, c.voxels, c.child, NULL, &err), err);
+    for (uint32_t n = 0; n < nodes && nv; ++n) { /* parents come before children */
+        if (n >= c.info.level_start[c.info.levels] || c.child[n] == VCT_NODE_NULL)
+            continue;
+        for (uint32_t o = 0; o < 8; ++o) {
+            const uint32_t p = c.cell[n];
+            const uint32_t x = 2 * (p & 1023) + (o & 1), y = 2 * ((p >> 10) & 1023) + (o >> 1 & 1);
+            const uint32_t z = 2 * (p >> 20) + (o >> 2);
+            c.cell[c.child[n] + o] = x | y << 10 | z << 20;
+        }
+    }
+    return c;
+}
+
+static float *opacities(const brick_case *c) {
+    float *a = malloc(4ull * c->info.voxels + 4);
+    for (uint32_t v = 0; v < c->info.voxels; ++v)
+        a[v] = c->albedo[4 * v + 3];
+    return a;
+}
+
+typedef struct compare_result {
+    uint64_t texels, wrong, shared, unshared;
+    double worst;
+} compare_result;
+
+/* Every brick of `level` in `channel` against lattice `ref`; shared lattice
+ * points must hold bit-identical texels in every brick that has them. */
+static void compare_level(const brick_case *c, int channel, uint32_t level, const ref_lattice *ref,
+                          compare_result *r) {
+    const uint32_t count = c->bricks.level_bricks[level], first = c->bricks.level_first[level];
+    float *got = malloc(27ull * 16 * count + 16);
+    vct_error err = {0};
+    REQUIRE_OK(vct_bricks_read(ctx, c->voxels, channel, first, count, got, &err), err);
+    const uint64_t points = (uint64_t)ref->n * ref->n * ref->n;
+    float *seen = malloc(16 * points);
+    uint8_t *has = calloc(points, 1);
+    const uint32_t start = c->info.level_start[level], nodes = c->info.level_nodes[level];
+    for (uint32_t n = start; n < start + nodes; ++n) {
+        if (c->child[n] == VCT_NODE_NULL)
+            continue;
+        const uint32_t b = (c->child[n] - 1) / 8 - first, p = c->cell[n];
+        const int64_t base[3] = {2 * (p & 1023), 2 * ((p >> 10) & 1023), 2 * (p >> 20)};
+        for (int t = 0; t < 27; ++t) {
+            const int64_t x = base[0] + t % 3, y = base[1] + t / 3 % 3, z = base[2] + t / 9;
+            const float *g = got + 4 * (27ull * b + t), *e = ref_at(ref, x, y, z);
+            int bad = 0;
+            for (int k = 0; k < 4; ++k) {
+                const double d = fabs((double)g[k] - e[k]);
+                r->worst = fmax(r->worst, d / fmax(fabs(e[k]), 1e-3));
+                bad |= !(d <= fabs(e[k]) * (1.0 / 512) + 1e-6);
+            }
+            if (bad && r->wrong++ < 3)
+                fprintf(stderr,
+                        "%s: channel %d level %u brick %u texel (%d %d %d) at (%lld %lld %lld): "
+                        "got %g %g %g %g, expected %g %g %g %g\n",
+                        c->name, channel, level, b + first, t % 3, t / 3 % 3, t / 9, (long long)x,
+                        (long long)y, (long long)z, g[0], g[1], g[2], g[3], e[0], e[1], e[2], e[3]);
+            const uint64_t at = ((uint64_t)z * ref->n + y) * ref->n + x;
+            if (has[at]) {
+                r->shared++;
+                r->unshared += memcmp(seen + 4 * at, g, 16) != 0;
+            } else {
+                memcpy(seen + 4 * at, g, 16);
+                has[at] = 1;
+            }
+            r->texels++;
+        }
+    }
+    free(has);
+    free(seen);
+    free(got);
+}
+
+/* The whole hierarchy of one channel; `value` per voxel (NULL: zero). The
+ * directional channels are checked when the bricks have them. Returns the
+ * finest lattice of `channel` for further checks by the caller. */
+static ref_lattice check_channel(const brick_case *c, int channel, const float *value) {
+    float *alpha = opacities(c);
+    const uint32_t levels = c->info.levels;
+    ref_lattice lat = ref_leaf_lattice(c->info.resolution, c->voxel_of, value, alpha);
+    const ref_lattice finest = {lat.n, malloc(16ull * lat.n * lat.n * lat.n)};
+    memcpy(finest.v, lat.v, 16ull * lat.n * lat.n * lat.n);
+    compare_result r = {0};
+    ref_lattice dir[6] = {{0}};
+    for (int level = (int)levels - 1; level >= 0; --level) {
+        compare_level(c, channel, (uint32_t)level, &lat, &r);
+        const int directional = channel == VCT_BRICK_RADIANCE && c->bricks.anisotropic;
+        for (int d = 0; d < 6 && directional && level < (int)levels - 1; ++d) {
+            compare_result rd = {0};
+            compare_level(c, VCT_BRICK_RADIANCE_DIR0 + d, (uint32_t)level, &dir[d], &rd);
+            CHECK(rd.wrong == 0 && rd.unshared == 0,
+                  "%s: direction %d level %d: %llu of %llu texels wrong, %llu shared differ",
+                  c->name, d, level, (unsigned long long)rd.wrong, (unsigned long long)rd.texels,
+                  (unsigned long long)rd.unshared);
+        }
+        if (level == 0)
+            break;
+        for (int d = 0; d < 6 && channel == VCT_BRICK_RADIANCE && c->bricks.anisotropic; ++d) {
+            ref_lattice next = ref_filter_dir(dir[d].v ? &dir[d] : &lat, d);
+            free(dir[d].v);
+            dir[d] = next;
+        }
+        ref_lattice next = ref_filter(&lat);
+        free(lat.v);
+        lat = next;
+    }
+    for (int d = 0; d < 6; ++d)
+        free(dir[d].v);
+    free(lat.v);
+    free(alpha);
+    CHECK(r.wrong == 0, "%s: channel %d: %llu of %llu texels differ from the reference", c->name,
+          channel, (unsigned long long)r.wrong, (unsigned long long)r.texels);
+    CHECK(r.unshared == 0, "%s: channel %d: %llu of %llu shared samples differ between bricks",
+          c->name, channel, (unsigned long long)r.unshared, (unsigned long long)r.shared);
+    printf("%-28s channel %d: %8llu texels, %8llu shared, worst relative %.2g\n", c->name, channel,
+           (unsigned long long)r.texels, (unsigned long long)r.shared, r.worst);
+    return finest;
+}
+
+static void check_all_channels(const brick_case *c) {
+    const int channels[3] = {VCT_BRICK_ALBEDO, VCT_BRICK_NORMAL, VCT_BRICK_RADIANCE};
+    const float *values[3] = {c->albedo, c->normal, c->scene->light_count ? c->radiance : NULL};
+    for (int i = 0; i < 3; ++i)
+        free(check_channel(c, channels[i], values[i]).v);
+}
+
+static vct_scene *scene_of(const test_mesh *m, const vct_material *mats, uint32_t nmat) {
+    uint32_t *mat = malloc(4ull * m->nt);
+    for (uint32_t t = 0; t < m->nt; ++t)
+        mat[t] = t % nmat;
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(m->pos, m->nv, m->tri, m->nt, mat, mats, nmat, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    free(mat);
+    return s;
+}
+
+static vct_scene *quads_scene(const float *quads, uint32_t count) {
+    test_mesh m = {malloc(48ull * count), malloc(24ull * count), 4 * count, 2 * count};
+    memcpy(m.pos, quads, 48ull * count);
+    for (uint32_t q = 0; q < count; ++q) {
+        const uint32_t t[6] = {0, 1, 2, 0, 2, 3};
+        for (int k = 0; k < 6; ++k)
+            m.tri[6 * q + k] = 4 * q + t[k];
+    }
+    vct_material white = vct_material_default();
+    vct_scene *s = scene_of(&m, &white, 1);
+    mesh_free(&m);
+    return s;
+}
+
+static void add_point_light(vct_scene *s, float x, float y, float z, float power) {
+    vct_light l = {VCT_LIGHT_POINT, {x, y, z}, {0}, {power, power, power}, 0, 0};
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &l, &err), err);
+}
+
+static vct_material soup_material(int i) {
+    vct_material m = vct_material_default();
+    m.albedo[0] = 0.2f + 0.15f * (float)(i % 5);
+    m.albedo[1] = 0.9f - 0.2f * (float)(i % 4);
+    m.albedo[2] = 0.1f * (float)(i + 1);
+    m.transmission = i == 2 ? 0.6f : 0.0f; /* one half-transparent material */
+    return m;
+}
+
+/* Random sparse soups at several sizes, lit, both pool kinds, directional. */
+static void random_volumes(void) {
+    const uint32_t sizes[] = {2, 8, 32, 64};
+    vct_material mats[4];
+    for (int i = 0; i < 4; ++i)
+        mats[i] = soup_material(i);
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
+        test_mesh m = mesh_soup(sizes[s] <= 8 ? 20 : 400, 0.0f, 17 + s);
+        vct_scene *scene = scene_of(&m, mats, 4);
+        mesh_free(&m);
+        add_point_light(scene, 0.3f, 0.8f, 0.6f, 0.5f);
+        char name[64];
+        snprintf(name, sizeof name, "soup %u^3, directional", sizes[s]);
+        const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1};
+        brick_case c = make_case(name, scene, sizes[s], 1.0f, &opt);
+        CHECK(c.bricks.bricks == (c.info.nodes - 1) / 8, "%s: one brick per node with children",
+              name);
+        check_all_channels(&c);
+
+        /* The image pool holds the same texels, read through the image path. */
+        const vct_brick_options image = {VCT_BRICKS_IMAGE, 1};
+        vct_error err = {0};
+        const uint32_t n = c.bricks.bricks;
+        float *a = malloc(27ull * 16 * n), *b = malloc(27ull * 16 * n);
+        REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, 0, n, a, &err), err);
+        REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &image, &err), err);
+        REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+        vct_brick_info info;
+        vct_bricks_info_get(c.voxels, &info);
+        CHECK(info.image == 1, "%s: image pool", name);
+        REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, 0, n, b, &err), err);
+        CHECK(memcmp(a, b, 27ull * 16 * n) == 0, "%s: image and buffer pools differ", name);
+        free(a);
+        free(b);
+        if (sizes[s] == 32) {
+            c.name = "soup 32^3, image pool";
+            check_all_channels(&c);
+        }
+        case_free(&c);
+    }
+}
+
+/* A moved light re-injects and re-filters; two builds are bit-identical. */
+static void moved_light_and_determinism(void) {
+    vct_material mats[4];
+    for (int i = 0; i < 4; ++i)
+        mats[i] = soup_material(i);
+    test_mesh m = mesh_icosphere(3, 0.35f, (const float[3]){0.5f, 0.5f, 0.5f});
+    vct_scene *scene = scene_of(&m, mats, 4);
+    mesh_free(&m);
+    add_point_light(scene, 0.9f, 0.9f, 0.2f, 1.0f);
+    const vct_brick_options opt = {VCT_BRICKS_AUTO, 1};
+    brick_case c = make_case("icosphere 64^3, light moved", scene, 64, 1.0f, &opt);
+    scene->lights[0].position[0] = 0.05f;
+    scene->lights[0].position[2] = 0.95f;
+    vct_error err = {0};
+    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+    REQUIRE_OK(vct_voxels_read_radiance(ctx, c.voxels, c.radiance, &err), err);
+    free(check_channel(&c, VCT_BRICK_RADIANCE, c.radiance).v);
+
+    const uint32_t n = c.bricks.bricks;
+    float *a = malloc(27ull * 16 * n), *b = malloc(27ull * 16 * n);
+    REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, 0, n, a, &err), err);
+    REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &opt, &err), err);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+    REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, 0, n, b, &err), err);
+    CHECK(memcmp(a, b, 27ull * 16 * n) == 0, "two builds of the same scene differ");
+    free(a);
+    free(b);
+    case_free(&c);
+}
+
+/* One tiny triangle inside voxel (3, 4, 5) of 8^3: exactly the voxel's 8
+ * corners are non-zero at the finest level, with opacity 1 and its albedo. */
+static void single_voxel(void) {
+    const float q[12] = {3.2f, 4.2f, 5.5f, 3.8f, 4.2f, 5.5f, 3.8f, 4.8f, 5.5f, 3.2f, 4.8f, 5.5f};
+    brick_case c = make_case("single voxel", quads_scene(q, 1), 8, 8.0f, NULL);
+    CHECK(c.info.voxels == 1, "single voxel: %u voxels", c.info.voxels);
+    ref_lattice fine = check_channel(&c, VCT_BRICK_ALBEDO, c.albedo);
+    check_all_channels(&c);
+    /* independent of the reference: count the finest lattice's non-zero points */
+    int lit = 0, exact = 0;
+    const float albedo = ref_half(vct_material_default().albedo[0]);
+    for (int64_t z = 0; z < fine.n; ++z)
+        for (int64_t y = 0; y < fine.n; ++y)
+            for (int64_t x = 0; x < fine.n; ++x) {
+                const float *p = ref_at(&fine, x, y, z);
+                if (p[3] == 0.0f)
+                    continue;
+                ++lit;
+                exact += x >= 3 && x <= 4 && y >= 4 && y <= 5 && z >= 5 && z <= 6 && p[3] == 1.0f &&
+                         p[0] == albedo;
+            }
+    CHECK(lit == 8 && exact == 8, "single voxel: %d corners non-zero, %d as expected", lit, exact);
+    free(fine.v);
+    case_free(&c);
+}
+
+/* A full 8^3 block (a quad through every voxel layer): every finest sample
+ * has opacity 1, and the filtered interior stays exactly 1. */
+static void full_block(void) {
+    float q[8 * 12];
+    for (int k = 0; k < 8; ++k) {
+        const float z = (float)k + 0.5f;
+        const float quad[12] = {0, 0, z, 8, 0, z, 8, 8, z, 0, 8, z};
+        memcpy(q + 12 * k, quad, sizeof quad);
+    }
+    brick_case c = make_case("full block", quads_scene(q, 8), 8, 8.0f, NULL);
+    CHECK(c.info.voxels == 512, "full block: %u voxels", c.info.voxels);
+    check_all_channels(&c);
+    /* level L-1 = 2 bricks read directly: every opacity 1 */
+    const uint32_t count = c.bricks.level_bricks[2], first = c.bricks.level_first[2];
+    float *t = malloc(27ull * 16 * count);
+    vct_error err = {0};
+    REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_ALBEDO, first, count, t, &err), err);
+    int not_one = 0;
+    for (uint32_t i = 0; i < 27 * count; ++i)
+        not_one += t[4 * i + 3] != 1.0f;
+    CHECK(count == 64 && not_one == 0, "full block: %u finest bricks, %d samples not opaque", count,
+          not_one);
+    /* level 1: the brick centres (interior lattice points) are exactly 1 */
+    REQUIRE_OK(
+        vct_bricks_read(ctx, c.voxels, VCT_BRICK_ALBEDO, c.bricks.level_first[1], 8, t, &err), err);
+    for (int b = 0; b < 8; ++b)
+        CHECK(t[4 * (27 * b + 13) + 3] == 1.0f, "full block: level-1 brick %d centre %g", b,
+              t[4 * (27 * b + 13) + 3]);
+    free(t);
+    case_free(&c);
+}
+
+/* A one-voxel-thick lit wall (x in [10, 11] of 32^3, facing +x, light at x = 20): at the
+ * finest level both of its faces are fully opaque, so nothing can be seen
+ * through it, and nothing lies beyond it. Seen along x one level up, its
+ * directional opacity is 1 where the isotropic average is 3/4. */
+static void thin_wall(void) {
+    const float q[12] = {10.5f, 0, 0, 10.5f, 32, 0, 10.5f, 32, 32, 10.5f, 0, 32};
+    vct_scene *s = quads_scene(q, 1);
+    add_point_light(s, 20.0f, 16.0f, 16.0f, 50.0f);
+    const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1};
+    brick_case c = make_case("one-voxel wall", s, 32, 32.0f, &opt);
+    CHECK(c.info.voxels == 32 * 32, "wall: %u voxels", c.info.voxels);
+    check_all_channels(&c);
+    float *alpha = opacities(&c);
+    ref_lattice fine = ref_leaf_lattice(32, c.voxel_of, c.radiance, alpha);
+    int open = 0, beyond = 0;
+    for (int64_t z = 0; z <= 32; ++z)
+        for (int64_t y = 0; y <= 32; ++y)
+            for (int64_t x = 0; x <= 32; ++x) {
+                const float *p = ref_at(&fine, x, y, z);
+                if (x == 10 || x == 11)
+                    open += p[3] != 1.0f;
+                else
+                    beyond += p[3] != 0.0f || p[0] != 0.0f;
+            }
+    CHECK(open == 0 && beyond == 0, "wall: %d open samples in it, %d non-empty off it", open,
+          beyond);
+    /* Level L-2 = 3 (lattice spacing 2 voxels): x = 5 is the wall's plane. */
+    const uint32_t level = 3, first = c.bricks.level_first[level];
+    const uint32_t count = c.bricks.level_bricks[level];
+    float *iso = malloc(27ull * 16 * count), *dir = malloc(27ull * 16 * count);
+    vct_error err = {0};
+    REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, first, count, iso, &err), err);
+    REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE_DIR0, first, count, dir, &err),
+               err);
+    int checked = 0, wrong = 0;
+    for (uint32_t n = c.info.level_start[level]; n < c.info.level_start[level + 1]; ++n) {
+        if (c.child[n] == VCT_NODE_NULL)
+            continue;
+        const uint32_t b = (c.child[n] - 1) / 8 - first, p = c.cell[n];
+        const uint32_t cx = p & 1023, cy = p >> 10 & 1023, cz = p >> 20;
+        for (int t = 0; t < 27; ++t) {
+            const uint32_t x = 2 * cx + t % 3, y = 2 * cy + t / 3 % 3, z = 2 * cz + t / 9;
+            if (x != 5 || y == 0 || z == 0 || y == 16 || z == 16)
+                continue; /* the volume's faces average in empty space */
+            ++checked;
+            wrong += dir[4 * (27 * b + t) + 3] != 1.0f || iso[4 * (27 * b + t) + 3] != 0.75f;
+        }
+    }
+    CHECK(checked > 100 && wrong == 0,
+          "wall: +x opacity 1 and isotropic 3/4 on the wall's plane: %d of %d wrong", wrong,
+          checked);
+    free(iso);
+    free(dir);
+    free(fine.v);
+    free(alpha);
+    case_free(&c);
+}
+
+/* Geometry on the volume's own faces: lattice points on the boundary. */
+static void boundary(void) {
+    const float q[24] = {0, 0,  0, 0,  16, 0, 0,  16, 16, 0, 0,  16,
+                         0, 16, 0, 16, 16, 0, 16, 16, 16, 0, 16, 16};
+    vct_scene *s = quads_scene(q, 2);
+    add_point_light(s, 8.0f, 8.0f, 8.0f, 20.0f);
+    const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1};
+    brick_case c = make_case("faces of the volume", s, 16, 16.0f, &opt);
+    CHECK(c.info.voxels == 2 * 256 - 16, "boundary: %u voxels", c.info.voxels);
+    check_all_channels(&c);
+    case_free(&c);
+}
+
+int main(void) {
+    ctx = check_context();
+    single_voxel();
+    full_block();
+    thin_wall();
+    boundary();
+    random_volumes();
+    moved_light_and_determinism();
+    vct_context_destroy(ctx);
+    return check_exit("test_bricks");
+}
