@@ -39,14 +39,24 @@ inline int4 brick_texel_coord(uint2 pool, uint b, uint3 t) {
     return (int4)(convert_int3(base + t), 0);
 }
 
-/* Linear texel index in a buffer pool of the same layout. */
-inline uint brick_texel_index(uint2 pool, uint b, uint3 t) {
-    const int4 c = brick_texel_coord(pool, b, t);
+/* Linear index of brick b's texel (0, 0, 0) in a buffer pool of the same
+ * layout; compute it once per brick (it divides). */
+inline uint brick_base(uint2 pool, uint b) {
+    const int4 c = brick_texel_coord(pool, b, (uint3)(0u));
     return ((uint)c.z * (3u * pool.y) + (uint)c.y) * (3u * pool.x) + (uint)c.x;
 }
 
-inline void brick_store(__global half *pool_buffer, uint2 pool, uint b, uint3 t, float4 v) {
-    vstore_half4_rte(v, brick_texel_index(pool, b, t), pool_buffer);
+/* Offset of texel t from its brick's base. */
+inline uint brick_offset(uint2 pool, uint3 t) {
+    return (t.z * (3u * pool.y) + t.y) * (3u * pool.x) + t.x;
+}
+
+inline uint brick_texel_index(uint2 pool, uint b, uint3 t) {
+    return brick_base(pool, b) + brick_offset(pool, t);
+}
+
+inline void brick_store_at(__global half *pool_buffer, uint2 pool, uint base, uint3 t, float4 v) {
+    vstore_half4(v, base + brick_offset(pool, t), pool_buffer);
 }
 
 /* One texel, exactly as stored. */
@@ -71,13 +81,14 @@ inline float4 brick_sample(BRICK_POOL p, uint2 pool, uint b, float3 at) {
 #else
     const uint3 lo = min(convert_uint3(at), (uint3)(1u));
     const float3 f = at - convert_float3(lo);
+    const uint base = brick_base(pool, b);
     float4 acc = (float4)(0.0f);
     for (uint k = 0; k < 2u; ++k)
         for (uint j = 0; j < 2u; ++j)
             for (uint i = 0; i < 2u; ++i) {
                 const float w =
                     (i ? f.x : 1.0f - f.x) * (j ? f.y : 1.0f - f.y) * (k ? f.z : 1.0f - f.z);
-                acc += w * brick_load(p, pool, b, lo + (uint3)(i, j, k));
+                acc += w * vload_half4(base + brick_offset(pool, lo + (uint3)(i, j, k)), p);
             }
     return acc;
 #endif

@@ -6,6 +6,8 @@
  * values filter linearly, so a plain weighted average of them is the
  * opacity-weighted average of the colours and empty space never darkens one.
  *
+ *   brick_around     per brick, top-down: the 27 same-level nodes around
+ *                    its node, from the parent's 27 (no links, no descent).
  *   brick_leaf       level L-1: a sample is the mean of the up to 8 voxels
  *                    around its corner (those with geometry; none gives 0).
  *   brick_filter     level l from level l+1: each sample is the 3x3x3
@@ -23,58 +25,48 @@
 #include "brick_pool.h"
 #include "octree.h"
 
-inline float4 pool_load(__global const half *pool_buffer, uint2 pool, uint b, uint3 t) {
-    return vload_half4(brick_texel_index(pool, b, t), pool_buffer);
-}
+#define AROUND 27u /* nodes per neighbourhood, index (z+1)*9 + (y+1)*3 + x+1 */
 
-/* Cell of `node` at its level, from the octants on the way up. */
-inline uint3 node_cell(__global const uint *tile_parent, uint node) {
-    uint3 cell = (uint3)(0u);
-    for (uint shift = 0; node != 0u; ++shift) {
-        const uint octant = (node - 1u) & 7u;
-        cell |= ((uint3)(octant, octant >> 1, octant >> 2) & 1u) << shift;
-        node = tile_parent[(node - 1u) >> 3];
+/* Level-`level` bricks: their node's 27 neighbours (OCT_NULL where no node
+ * exists). A neighbour is a child of one of the parent's 27 neighbours, and
+ * the parent's brick is the tile the node belongs to. */
+__kernel void brick_around(__global const uint *child, __global const uint *tile_parent, uint level,
+                           uint first_brick, uint count, __global uint *around) {
+    const uint i = get_global_id(0);
+    if (i >= count)
+        return;
+    const uint b = first_brick + i, node = tile_parent[b];
+    if (level == 0u) {
+        for (uint k = 0; k < AROUND; ++k)
+            around[AROUND * b + k] = k == 13u ? node : OCT_NULL;
+        return;
     }
-    return cell;
-}
-
-/* The level-`level` node at `cell` + `offset`, or OCT_NULL where none
- * exists: neighbour links (x, then y, then z) where they lead there, else a
- * descent from the root (a diagonal can exist where its path does not). */
-inline uint node_neighbour(__global const uint *child, __global const uint *links, uint node,
-                           uint3 cell, uint level, int3 offset) {
-    const int3 target = convert_int3(cell) + offset;
-    const int side = 1 << level;
-    if (any(target < 0) || any(target >= side))
-        return OCT_NULL;
-    uint at = node;
-    const int o[3] = {offset.x, offset.y, offset.z};
-    for (uint axis = 0; axis < 3u && at != OCT_NULL; ++axis)
-        if (o[axis] != 0)
-            at = links[6u * at + (o[axis] > 0 ? axis : axis + 3u)];
-    return at != OCT_NULL ? at : octree_node_at(child, convert_uint3(target), level);
-}
-
-/* The 27 same-level nodes around `node` (index (z+1)*9 + (y+1)*3 + x+1). */
-inline void gather_neighbours(__global const uint *child, __global const uint *links, uint node,
-                              uint3 cell, uint level, uint *around) {
+    const uint octant = (node - 1u) & 7u, parent_brick = (node - 1u) >> 3;
+    const int3 bit = (int3)(octant & 1u, (octant >> 1) & 1u, (octant >> 2) & 1u);
     for (int z = -1; z <= 1; ++z)
         for (int y = -1; y <= 1; ++y)
-            for (int x = -1; x <= 1; ++x)
-                around[(z + 1) * 9 + (y + 1) * 3 + x + 1] =
-                    x == 0 && y == 0 && z == 0
-                        ? node
-                        : node_neighbour(child, links, node, cell, level, (int3)(x, y, z));
+            for (int x = -1; x <= 1; ++x) {
+                const int3 s = bit + (int3)(x, y, z) + 2; /* 1..4: child cell + 2 */
+                const int3 up = s / 2 - 1;                /* the parent's neighbour */
+                const uint3 oct = convert_uint3(s & 1);
+                const uint p = around[AROUND * parent_brick +
+                                      (uint)((up.z + 1) * 9 + (up.y + 1) * 3 + up.x + 1)];
+                const uint first = p == OCT_NULL ? OCT_NULL : child[p];
+                around[AROUND * b + (uint)((z + 1) * 9 + (y + 1) * 3 + x + 1)] =
+                    first == OCT_NULL ? OCT_NULL : first + (oct.x | (oct.y << 1) | (oct.z << 2));
+            }
 }
 
-/* The 4^3 child cells from -1 to 2 around a node, through its 27
+/* The 4^3 child cells from -1 to 2 around brick b's node, through its 27
  * neighbours: cell index c per axis lies in neighbour (c + 1) / 2 - 1 at
  * octant bit (c + 1) & 1. Each entry is the child node or OCT_NULL. */
-inline void gather_children(__global const uint *child, const uint *around, uint *cells) {
+inline void gather_children(__global const uint *child, __global const uint *around, uint b,
+                            uint *cells) {
     for (uint z = 0; z < 4u; ++z)
         for (uint y = 0; y < 4u; ++y)
             for (uint x = 0; x < 4u; ++x) {
-                const uint n = around[((z + 1u) / 2u) * 9u + ((y + 1u) / 2u) * 3u + (x + 1u) / 2u];
+                const uint n = around[AROUND * b + ((z + 1u) / 2u) * 9u + ((y + 1u) / 2u) * 3u +
+                                      (x + 1u) / 2u];
                 const uint first = n == OCT_NULL ? OCT_NULL : child[n];
                 const uint octant =
                     ((x + 1u) & 1u) | (((y + 1u) & 1u) << 1) | (((z + 1u) & 1u) << 2);
@@ -82,159 +74,199 @@ inline void gather_children(__global const uint *child, const uint *around, uint
             }
 }
 
-__kernel void brick_leaf(__global const uint *child, __global const uint *links,
-                         __global const uint *tile_parent, uint level, uint first_brick, uint count,
-                         __global const float4 *albedo, __global const float4 *normal,
+__kernel void brick_leaf(__global const uint *child, __global const uint *around, uint first_brick,
+                         uint count, __global const float4 *albedo, __global const float4 *normal,
                          __global const float4 *radiance, uint has_radiance, uint write_geometry,
                          uint2 pool, __global half *albedo_pool, __global half *normal_pool,
                          __global half *radiance_pool) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
-    const uint b = first_brick + i, node = tile_parent[b];
-    uint around[27], voxel[64];
-    gather_neighbours(child, links, node, node_cell(tile_parent, node), level, around);
-    gather_children(child, around, voxel);
+    const uint b = first_brick + i;
+    uint voxel[64];
+    gather_children(child, around, b, voxel);
     for (uint c = 0; c < 64u; ++c)
         voxel[c] = voxel[c] == OCT_NULL ? OCT_NULL : child[voxel[c]];
 
+    /* each sample: the mean over the voxels present among its 8 */
+    float inv_found[27];
     for (uint z = 0; z < 3u; ++z)
         for (uint y = 0; y < 3u; ++y)
             for (uint x = 0; x < 3u; ++x) {
-                float4 a = (float4)(0.0f), n = (float4)(0.0f), r = (float4)(0.0f);
-                float found = 0.0f;
-                for (uint dz = 0; dz < 2u; ++dz)
-                    for (uint dy = 0; dy < 2u; ++dy)
-                        for (uint dx = 0; dx < 2u; ++dx) {
-                            const uint v = voxel[(z + dz) * 16u + (y + dy) * 4u + x + dx];
-                            if (v == OCT_NULL)
-                                continue;
-                            const float alpha = albedo[v].w;
-                            found += 1.0f;
-                            a += (float4)(alpha * albedo[v].xyz, alpha);
-                            n += (float4)(alpha * normal[v].xyz, alpha);
-                            if (has_radiance)
-                                r += (float4)(alpha * radiance[v].xyz, alpha);
-                            else
-                                r.w += alpha;
-                        }
-                const float inv = found > 0.0f ? 1.0f / found : 0.0f;
-                const uint3 texel = (uint3)(x, y, z);
-                if (write_geometry) {
-                    brick_store(albedo_pool, pool, b, texel, a * inv);
-                    brick_store(normal_pool, pool, b, texel, n * inv);
-                }
-                brick_store(radiance_pool, pool, b, texel, r * inv);
+                const uint *v = voxel + z * 16u + y * 4u + x;
+                const uint found = (v[0] != OCT_NULL) + (v[1] != OCT_NULL) + (v[4] != OCT_NULL) +
+                                   (v[5] != OCT_NULL) + (v[16] != OCT_NULL) + (v[17] != OCT_NULL) +
+                                   (v[20] != OCT_NULL) + (v[21] != OCT_NULL);
+                inv_found[(z * 3u + y) * 3u + x] = found ? 1.0f / (float)found : 0.0f;
             }
+    for (uint channel = write_geometry ? 0u : 2u; channel < 3u; ++channel) {
+        __global const float4 *value = channel == 0u ? albedo : channel == 1u ? normal : radiance;
+        const int has_value = channel < 2u || has_radiance;
+        float4 premultiplied[64];
+        for (uint c = 0; c < 64u; ++c) {
+            const uint v = voxel[c];
+            const float alpha = v == OCT_NULL ? 0.0f : albedo[v].w;
+            const float3 x = v == OCT_NULL || !has_value ? (float3)(0.0f) : value[v].xyz;
+            premultiplied[c] = (float4)(alpha * x, alpha);
+        }
+        __global half *dst = channel == 0u   ? albedo_pool
+                             : channel == 1u ? normal_pool
+                                             : radiance_pool;
+        const uint base = brick_base(pool, b);
+        for (uint z = 0; z < 3u; ++z)
+            for (uint y = 0; y < 3u; ++y)
+                for (uint x = 0; x < 3u; ++x) {
+                    /* a fixed world order: shared samples agree */
+                    const float4 *p = premultiplied + z * 16u + y * 4u + x;
+                    const float4 sum =
+                        ((p[0] + p[1]) + (p[4] + p[5])) + ((p[16] + p[17]) + (p[20] + p[21]));
+                    brick_store_at(dst, pool, base, (uint3)(x, y, z),
+                                   sum * inv_found[(z * 3u + y) * 3u + x]);
+                }
+    }
 }
 
-/* Child lattice point e (0..6 per axis; point 2i + 1 is the parent's texel
- * i) from the child bricks around: an even e is the middle of child cell
- * e / 2, an odd e the shared face of cells (e - 1) / 2 and (e + 1) / 2, held
- * equally by either. Empty where no child brick holds it. */
-inline float4 lattice_load(__global const half *src, uint2 pool, __global const uint *child,
-                           const uint *cells, uint3 e) {
+/* Where child lattice point e (0..6 per axis; point 2i + 1 is the parent's
+ * texel i) is stored: an even e is the middle of child cell e / 2, an odd e
+ * the shared face of cells (e - 1) / 2 and (e + 1) / 2, held bit-identically
+ * by either. The pool texel index, or BRICK_NULL where no child brick holds
+ * it (empty space). */
+inline uint lattice_texel(const uint *cell_base, uint2 pool, uint3 e) {
     const uint3 odd = e & 1u;
     const uint3 lo = (e - odd) / 2u; /* first candidate cell per axis */
     for (uint cz = 0; cz <= odd.z; ++cz)
         for (uint cy = 0; cy <= odd.y; ++cy)
             for (uint cx = 0; cx <= odd.x; ++cx) {
                 const uint3 c = lo + (uint3)(cx, cy, cz);
-                const uint n = cells[c.z * 16u + c.y * 4u + c.x];
-                const uint b = n == OCT_NULL ? BRICK_NULL : brick_of(child, n);
-                if (b == BRICK_NULL)
+                const uint base = cell_base[c.z * 16u + c.y * 4u + c.x];
+                if (base == BRICK_NULL)
                     continue;
-                /* local texel: 1 in the middle; 2 or 0 on the low or high cell's face */
-                const uint3 l = 1u + odd - 2u * odd * (uint3)(cx, cy, cz);
-                return pool_load(src, pool, b, l);
+                /* texel 1 in the middle; 2 or 0 on the low or high cell's face */
+                return base + brick_offset(pool, 1u + odd - 2u * odd * (uint3)(cx, cy, cz));
             }
-    return (float4)(0.0f);
+    return BRICK_NULL;
 }
 
-inline void filter_brick_cells(__global const uint *child, __global const uint *links,
-                               __global const uint *tile_parent, uint level, uint b, uint *cells) {
-    const uint node = tile_parent[b];
-    uint around[27];
-    gather_neighbours(child, links, node, node_cell(tile_parent, node), level, around);
-    gather_children(child, around, cells);
+/* The pool texel of each of the 7^3 child lattice points around brick b. */
+inline void lattice_texels(__global const uint *child, __global const uint *around, uint b,
+                           uint2 pool, uint *texel) {
+    uint cell_base[64]; /* pool index of each child cell's brick */
+    gather_children(child, around, b, cell_base);
+    for (uint c = 0; c < 64u; ++c) {
+        const uint cb = cell_base[c] == OCT_NULL ? BRICK_NULL : brick_of(child, cell_base[c]);
+        cell_base[c] = cb == BRICK_NULL ? BRICK_NULL : brick_base(pool, cb);
+    }
+    for (uint z = 0; z < 7u; ++z)
+        for (uint y = 0; y < 7u; ++y)
+            for (uint x = 0; x < 7u; ++x)
+                texel[(z * 7u + y) * 7u + x] = lattice_texel(cell_base, pool, (uint3)(x, y, z));
 }
 
-__kernel void brick_filter(__global const uint *child, __global const uint *links,
-                           __global const uint *tile_parent, uint level, uint first_brick,
-                           uint count, uint2 pool, __global half *channel) {
-    const uint i = get_global_id(0);
-    if (i >= count)
-        return;
-    const uint b = first_brick + i;
-    uint cells[64];
-    filter_brick_cells(child, links, tile_parent, level, b, cells);
+inline float4 texel_load(__global const half *src, uint texel) {
+    return texel == BRICK_NULL ? (float4)(0.0f) : vload_half4(texel, src);
+}
+
+/* One channel of brick b from the child lattice: separable, z into a 7x7
+ * plane, then y, then x. */
+inline void filter_channel(const uint *texel, uint2 pool, uint b, __global half *channel) {
     const float w[3] = {0.25f, 0.5f, 0.25f};
-    /* separable: z into a 7x7 plane, then y, then x */
+    const uint base = brick_base(pool, b);
     for (uint k = 0; k < 3u; ++k) {
         float4 plane[49];
-        for (uint y = 0; y < 7u; ++y)
-            for (uint x = 0; x < 7u; ++x) {
-                float4 s = (float4)(0.0f);
-                for (uint d = 0; d < 3u; ++d)
-                    s +=
-                        w[d] * lattice_load(channel, pool, child, cells, (uint3)(x, y, 2u * k + d));
-                plane[y * 7u + x] = s;
-            }
+        for (uint yx = 0; yx < 49u; ++yx) {
+            float4 s = (float4)(0.0f);
+            for (uint d = 0; d < 3u; ++d)
+                s += w[d] * texel_load(channel, texel[(2u * k + d) * 49u + yx]);
+            plane[yx] = s;
+        }
         for (uint j = 0; j < 3u; ++j) {
             float4 row[7];
             for (uint x = 0; x < 7u; ++x)
                 row[x] = w[0] * plane[(2u * j) * 7u + x] + w[1] * plane[(2u * j + 1u) * 7u + x] +
                          w[2] * plane[(2u * j + 2u) * 7u + x];
             for (uint t = 0; t < 3u; ++t)
-                brick_store(channel, pool, b, (uint3)(t, j, k),
-                            w[0] * row[2u * t] + w[1] * row[2u * t + 1u] + w[2] * row[2u * t + 2u]);
+                brick_store_at(channel, pool, base, (uint3)(t, j, k),
+                               w[0] * row[2u * t] + w[1] * row[2u * t + 1u] +
+                                   w[2] * row[2u * t + 2u]);
         }
     }
 }
 
-/* Opacity of a sample over `thickness` child samples, colour kept. */
-inline float4 over_thickness(float4 v, uint half_thick) {
-    if (!half_thick)
-        return v;
-    /* 1 - (1 - a)^(1/2) = a / (1 + sqrt(1 - a)), stable near a = 0 */
-    return v / (1.0f + sqrt(fmax(1.0f - v.w, 0.0f)));
-}
-
-/* Direction dir (0..5: +x, +y, +z, -x, -y, -z; the way a cone travels)
- * from `src` (the child level's values for that direction) into `dst`. */
-__kernel void brick_filter_dir(__global const uint *child, __global const uint *links,
-                               __global const uint *tile_parent, uint level, uint first_brick,
-                               uint count, uint2 pool, uint dir, __global const half *src,
-                               __global half *dst) {
+/* Channels c0, c1, c2 (`channels` of them, 1..3) of the level's bricks. */
+__kernel void brick_filter(__global const uint *child, __global const uint *around,
+                           uint first_brick, uint count, uint2 pool, uint channels,
+                           __global half *c0, __global half *c1, __global half *c2) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
     const uint b = first_brick + i;
-    uint cells[64];
-    filter_brick_cells(child, links, tile_parent, level, b, cells);
+    uint texel[343];
+    lattice_texels(child, around, b, pool, texel);
+    filter_channel(texel, pool, b, c0);
+    if (channels > 1u)
+        filter_channel(texel, pool, b, c1);
+    if (channels > 2u)
+        filter_channel(texel, pool, b, c2);
+}
+
+/* Opacity of a sample over half its thickness, colour kept. */
+inline float4 half_thickness(float4 v) {
+    /* 1 - (1 - a)^(1/2) = a / (1 + sqrt(1 - a)), stable near a = 0 */
+    return v / (1.0f + sqrt(fmax(1.0f - v.w, 0.0f)));
+}
+
+/* Direction dir (0..5: +x, +y, +z, -x, -y, -z; the way a cone travels) of
+ * brick b from `src`, the child level's values for that direction. */
+inline void filter_direction(const uint *texel, uint2 pool, uint b, uint dir,
+                             __global const half *src, __global half *dst) {
     const float w[3] = {0.25f, 0.5f, 0.25f};
     const uint axis = dir % 3u, backwards = dir >= 3u;
+    const uint stride[3] = {1u, 7u, 49u};
+    const uint step = stride[axis], u_step = stride[(axis + 1u) % 3u];
+    const uint v_step = stride[(axis + 2u) % 3u];
+    const uint base = brick_base(pool, b);
     for (uint k = 0; k < 3u; ++k)
         for (uint j = 0; j < 3u; ++j)
             for (uint t = 0; t < 3u; ++t) {
-                const uint centre[3] = {2u * t + 1u, 2u * j + 1u, 2u * k + 1u};
+                const uint centre = ((2u * k + 1u) * 7u + 2u * j + 1u) * 7u + 2u * t + 1u;
                 float4 sum = (float4)(0.0f);
                 for (uint v = 0; v < 3u; ++v)
                     for (uint u = 0; u < 3u; ++u) {
+                        const uint column = centre + u * u_step + v * v_step - u_step - v_step;
                         float4 acc = (float4)(0.0f);
                         for (uint s = 0; s < 3u; ++s) {
                             const uint along = backwards ? 2u - s : s;
-                            uint p[3];
-                            p[axis] = centre[axis] + along - 1u;
-                            p[(axis + 1u) % 3u] = centre[(axis + 1u) % 3u] + u - 1u;
-                            p[(axis + 2u) % 3u] = centre[(axis + 2u) % 3u] + v - 1u;
-                            const float4 x = over_thickness(
-                                lattice_load(src, pool, child, cells, (uint3)(p[0], p[1], p[2])),
-                                along != 1u);
+                            float4 x = texel_load(src, texel[column + along * step - step]);
+                            if (along != 1u)
+                                x = half_thickness(x);
                             acc += (1.0f - acc.w) * x;
                         }
                         sum += (w[u] * w[v]) * acc;
                     }
-                brick_store(dst, pool, b, (uint3)(t, j, k), sum);
+                brick_store_at(dst, pool, base, (uint3)(t, j, k), sum);
             }
+}
+
+/* All six directions of the level's bricks: the three samples along the
+ * axis composited front to back (the end ones half as thick), the nine
+ * columns averaged with the Gaussian weights. */
+__kernel void brick_filter_dir(__global const uint *child, __global const uint *around,
+                               uint first_brick, uint count, uint2 pool, __global const half *s0,
+                               __global const half *s1, __global const half *s2,
+                               __global const half *s3, __global const half *s4,
+                               __global const half *s5, __global half *d0, __global half *d1,
+                               __global half *d2, __global half *d3, __global half *d4,
+                               __global half *d5) {
+    const uint i = get_global_id(0);
+    if (i >= count)
+        return;
+    const uint b = first_brick + i;
+    uint texel[343];
+    lattice_texels(child, around, b, pool, texel);
+    filter_direction(texel, pool, b, 0u, s0, d0);
+    filter_direction(texel, pool, b, 1u, s1, d1);
+    filter_direction(texel, pool, b, 2u, s2, d2);
+    filter_direction(texel, pool, b, 3u, s3, d3);
+    filter_direction(texel, pool, b, 4u, s4, d4);
+    filter_direction(texel, pool, b, 5u, s5, d5);
 }

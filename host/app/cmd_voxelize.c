@@ -1,6 +1,7 @@
-/* vct voxelize: the voxel list and sparse voxel octree of a scene, with
- * counts, memory per structure and time per stage; optionally an image of
- * the voxels ray marched through the octree. */
+/* vct voxelize: the voxel list, sparse voxel octree and filtered bricks of
+ * a scene, lit when it has lights, with counts, memory per structure and
+ * time per stage; optionally an image of the voxels ray marched through the
+ * octree. */
 #include <stdio.h>
 #include <string.h>
 
@@ -25,6 +26,20 @@ static void print_voxels(const vct_voxel_info *v) {
            mib(v->voxel_bytes), mib(v->node_bytes), mib(v->neighbour_bytes),
            mib(v->fragment_bytes));
     printf("        a dense RGBA8 %u^3 texture would take %.2f MiB\n", v->resolution, mib(dense));
+}
+
+static void print_bricks(const vct_brick_info *b, uint32_t levels) {
+    printf("bricks: %u of 3x3x3 half-float RGBA texels (%s), %u with directional radiance\n",
+           b->bricks, b->anisotropic ? "anisotropic" : "isotropic", b->directional_bricks);
+    for (uint32_t l = 0; l < levels; ++l)
+        printf("  level %2u: %u bricks\n", l, b->level_bricks[l]);
+    printf("brick pool: %s; %ux%ux%u bricks per channel\n", b->storage_reason, b->pool[0],
+           b->pool[1], b->pool[2]);
+    printf("memory: bricks %.2f MiB (%.2f MiB per channel)", mib(b->pool_bytes),
+           mib(b->channel_bytes));
+    if (b->staging_bytes)
+        printf(", plus %.2f MiB of radiance buffers kept for re-filtering", mib(b->staging_bytes));
+    printf("\n");
 }
 
 int cmd_voxelize(const cli_options *opt) {
@@ -55,6 +70,9 @@ int cmd_voxelize(const cli_options *opt) {
     vo.bounds_size = opt->voxel_bounds[3];
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
     int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
+    const vct_brick_options bo = {opt->bricks, opt->anisotropic};
+    if (rc == VCT_OK)
+        rc = vct_bricks_build(ctx, v, &bo, &err);
     /* With lights, inject direct light (shadows through the triangle grid). */
     vct_grid *grid = NULL;
     if (rc == VCT_OK && s->light_count) {
@@ -72,6 +90,9 @@ int cmd_voxelize(const cli_options *opt) {
         vct_voxel_info info;
         vct_voxels_info_get(v, &info);
         print_voxels(&info);
+        vct_brick_info bricks;
+        if (vct_bricks_info_get(v, &bricks))
+            print_bricks(&bricks, info.levels);
         cli_print_stats(ctx);
         if (out)
             printf("wrote %s (%dx%d, the voxels seen from the scene camera, %s)\n", out,

@@ -13,8 +13,10 @@ void cli_usage(void) {
           "  vct info SCENE                   load and validate a scene, print what it holds\n"
           "  vct render SCENE [-o OUT.png|OUT.pfm] [options]\n"
           "  vct voxelize SCENE [-o VOXELS.png] [--voxel-res N] [--thin] [--voxel-bounds X Y Z S]\n"
-          "                                   voxelize, build the sparse voxel octree, report\n"
-          "                                   counts, memory and time; -o renders the voxels\n"
+          "               [--bricks auto|buffer|image] [--anisotropic]\n"
+          "                                   voxelize, build the sparse voxel octree and its\n"
+          "                                   filtered bricks, inject light, report counts,\n"
+          "                                   memory and time; -o renders the voxels\n"
           "  vct compare TEST.pfm REFERENCE.pfm [--error-image ERR.png] [--error-scale E]\n"
           "                                   RMSE, relative MSE, PSNR and mean absolute error\n"
           "\n"
@@ -31,6 +33,8 @@ void cli_usage(void) {
           "256)\n"
           "  --thin                           6-separating voxels (default: conservative)\n"
           "  --voxel-bounds X Y Z SIZE        voxel cube by hand (default: around the scene)\n"
+          "  --bricks auto|buffer|image       brick pool kind (default auto: image3d on GPUs)\n"
+          "  --anisotropic                    6 directional radiance values per brick sample\n"
           "  --exposure STOPS                 PNG only: scale by 2^STOPS before sRGB (default 0)\n"
           "  --stats                          per-stage device time and memory\n"
           "  --device N|NAME                  OpenCL device (default $VCT_DEVICE, else first GPU,\n"
@@ -213,6 +217,20 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 return 1;
             }
             opt->has_voxel_bounds = 1;
+        } else if (strcmp(a, "--bricks") == 0) {
+            const char *kind = i + 1 < argc ? argv[++i] : "";
+            if (strcmp(kind, "auto") == 0)
+                opt->bricks = VCT_BRICKS_AUTO;
+            else if (strcmp(kind, "buffer") == 0)
+                opt->bricks = VCT_BRICKS_BUFFER;
+            else if (strcmp(kind, "image") == 0)
+                opt->bricks = VCT_BRICKS_IMAGE;
+            else {
+                fprintf(stderr, "vct: --bricks takes auto, buffer or image, not '%s'\n", kind);
+                return 1;
+            }
+        } else if (strcmp(a, "--anisotropic") == 0) {
+            opt->anisotropic = 1;
         } else if (strcmp(a, "--exposure") == 0) {
             if (parse_floats(argc, argv, &i, 1, &opt->exposure))
                 return 1;

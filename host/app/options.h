@@ -27,6 +27,8 @@ typedef struct cli_options {
     int light_count;
     int voxel_res, thin_voxels, has_voxel_bounds;
     float voxel_bounds[4]; /* x, y, z, size */
+    vct_brick_storage bricks;
+    int anisotropic;
 } cli_options;
 
 /* Parses argv into opt; on error prints the reason and returns non-zero. */

@@ -151,7 +151,23 @@ typedef struct level_run {
     cl_program program;
     const char *stage;
     cl_uint pool[2];
+    cl_mem around; /* 27 nodes around each brick's node (transient) */
 } level_run;
+
+/* Every brick's neighbourhood, top-down: level l's from level l-1's. */
+static int run_around(level_run *r, vct_error *err) {
+    vct_voxels *v = r->v;
+    const vct_brick_info *b = &v->brick_info;
+    r->around = vct_buffer_create(r->ctx, r->stage, "brick neighbourhoods", 27ull * 4 * b->bricks,
+                                  CL_MEM_READ_WRITE, NULL, err);
+    int rc = r->around ? VCT_OK : (int)err->status;
+    for (cl_uint l = 0; l < v->info.levels && rc == VCT_OK; ++l)
+        rc = vct_run_kernel(r->ctx, r->program, "brick_around", r->stage, b->level_bricks[l], err,
+                            6, VCT_ARG_OF(v->child), VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(l),
+                            VCT_ARG_OF(b->level_first[l]), VCT_ARG_OF(b->level_bricks[l]),
+                            VCT_ARG_OF(r->around));
+    return rc;
+}
 
 /* Level L-1 bricks from the voxels: all channels, or radiance only. */
 static int run_leaf(const level_run *r, int geometry, vct_error *err) {
@@ -163,40 +179,45 @@ static int run_leaf(const level_run *r, int geometry, vct_error *err) {
     cl_mem *pool = v->brick_buffer;
     cl_mem albedo_pool = geometry ? pool[VCT_BRICK_ALBEDO] : pool[VCT_BRICK_RADIANCE];
     cl_mem normal_pool = geometry ? pool[VCT_BRICK_NORMAL] : pool[VCT_BRICK_RADIANCE];
-    return vct_run_kernel(
-        r->ctx, r->program, "brick_leaf", r->stage, count, err, 15, VCT_ARG_OF(v->child),
-        VCT_ARG_OF(v->neighbours), VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(level), VCT_ARG_OF(first),
-        VCT_ARG_OF(count), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance),
-        VCT_ARG_OF(has_radiance), VCT_ARG_OF(write_geometry), VCT_ARG_OF(r->pool),
-        VCT_ARG_OF(albedo_pool), VCT_ARG_OF(normal_pool), VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
+    return vct_run_kernel(r->ctx, r->program, "brick_leaf", r->stage, count, err, 13,
+                          VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
+                          VCT_ARG_OF(count), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
+                          VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance),
+                          VCT_ARG_OF(write_geometry), VCT_ARG_OF(r->pool), VCT_ARG_OF(albedo_pool),
+                          VCT_ARG_OF(normal_pool), VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
 }
 
-/* Channels [from, to) of levels L-2 .. 0, each from the level below. */
-static int run_filters(const level_run *r, int from, int to, vct_error *err) {
+/* Levels L-2 .. 0, each from the level below: albedo and normal when
+ * `geometry`, radiance always, and the directions when anisotropic. */
+static int run_filters(const level_run *r, int geometry, vct_error *err) {
     vct_voxels *v = r->v;
     const vct_brick_info *b = &v->brick_info;
+    cl_mem *pool = v->brick_buffer;
     int rc = VCT_OK;
     for (int level = (int)v->info.levels - 2; level >= 0 && rc == VCT_OK; --level) {
-        const cl_uint l = (cl_uint)level, first = b->level_first[l], count = b->level_bricks[l];
-        for (int c = from; c < to && rc == VCT_OK; ++c) {
-            if (c < VCT_BRICK_RADIANCE_DIR0) {
-                rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, count, err, 8,
-                                    VCT_ARG_OF(v->child), VCT_ARG_OF(v->neighbours),
-                                    VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(l), VCT_ARG_OF(first),
-                                    VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
-                                    VCT_ARG_OF(v->brick_buffer[c]));
-                continue;
-            }
-            /* children at level L-1 have one isotropic value for every direction */
-            const cl_uint dir = (cl_uint)(c - VCT_BRICK_RADIANCE_DIR0);
-            const int from_leaf = level + 2 == (int)v->info.levels;
-            cl_mem src = v->brick_buffer[from_leaf ? VCT_BRICK_RADIANCE : c];
-            rc = vct_run_kernel(r->ctx, r->program, "brick_filter_dir", r->stage, count, err, 10,
-                                VCT_ARG_OF(v->child), VCT_ARG_OF(v->neighbours),
-                                VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(l), VCT_ARG_OF(first),
-                                VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(dir),
-                                VCT_ARG_OF(src), VCT_ARG_OF(v->brick_buffer[c]));
-        }
+        const cl_uint first = b->level_first[level], count = b->level_bricks[level];
+        const cl_uint channels = geometry ? 3 : 1;
+        cl_mem c0 = pool[VCT_BRICK_RADIANCE];
+        cl_mem c1 = geometry ? pool[VCT_BRICK_ALBEDO] : c0;
+        cl_mem c2 = geometry ? pool[VCT_BRICK_NORMAL] : c0;
+        rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, count, err, 9,
+                            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
+                            VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(channels),
+                            VCT_ARG_OF(c0), VCT_ARG_OF(c1), VCT_ARG_OF(c2));
+        if (rc != VCT_OK || !b->anisotropic)
+            continue;
+        /* children at level L-1 have one isotropic value for every direction */
+        const int from_leaf = level + 2 == (int)v->info.levels;
+        cl_mem *dir = pool + VCT_BRICK_RADIANCE_DIR0;
+        cl_mem src[6];
+        for (int d = 0; d < 6; ++d)
+            src[d] = from_leaf ? pool[VCT_BRICK_RADIANCE] : dir[d];
+        rc = vct_run_kernel(
+            r->ctx, r->program, "brick_filter_dir", r->stage, count, err, 17, VCT_ARG_OF(v->child),
+            VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
+            VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
+            VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]), VCT_ARG_OF(dir[1]),
+            VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]));
     }
     return rc;
 }
@@ -240,6 +261,7 @@ static int level_run_init(vct_context *ctx, vct_voxels *v, const char *stage, le
     r->stage = stage;
     r->pool[0] = v->brick_info.pool[0];
     r->pool[1] = v->brick_info.pool[1];
+    r->around = NULL;
     return vct_program_get(ctx, "bricks.cl", "", &r->program, err);
 }
 
@@ -259,9 +281,11 @@ int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *o
     int rc = choose_storage(ctx, options->storage, b, err);
     if (rc == VCT_OK)
         rc = allocate_buffers(ctx, v, err);
-    level_run r;
+    level_run r = {0};
     if (rc == VCT_OK)
         rc = level_run_init(ctx, v, CREATE_STAGE, &r, err);
+    if (rc == VCT_OK && b->bricks)
+        rc = run_around(&r, err);
     if (rc == VCT_OK && b->bricks)
         rc = run_leaf(&r, 1, err);
     if (rc == VCT_OK)
@@ -269,7 +293,7 @@ int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *o
     vct_stage_begin(ctx, FILTER_STAGE);
     r.stage = FILTER_STAGE;
     if (rc == VCT_OK && b->bricks)
-        rc = run_filters(&r, 0, channel_count(b), err);
+        rc = run_filters(&r, 1, err);
     if (rc == VCT_OK)
         rc = copy_to_images(&r, 0, channel_count(b), err);
     if (rc == VCT_OK && b->image) {
@@ -283,6 +307,7 @@ int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *o
     }
     if (rc == VCT_OK)
         rc = vct_finish(ctx, FILTER_STAGE, err);
+    vct_buffer_release(ctx, r.around);
     vct_stage_end(ctx);
     if (rc != VCT_OK)
         vct_bricks_release(v);
@@ -295,17 +320,20 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
     if (!v->has_bricks || v->brick_info.bricks == 0)
         return VCT_OK;
     vct_stage_begin(ctx, REFRESH_STAGE);
-    level_run r;
+    level_run r = {0};
     int rc = level_run_init(ctx, v, REFRESH_STAGE, &r, err);
     const int channels = channel_count(&v->brick_info);
     if (rc == VCT_OK)
+        rc = run_around(&r, err);
+    if (rc == VCT_OK)
         rc = run_leaf(&r, 0, err);
     if (rc == VCT_OK)
-        rc = run_filters(&r, VCT_BRICK_RADIANCE, channels, err);
+        rc = run_filters(&r, 0, err);
     if (rc == VCT_OK)
         rc = copy_to_images(&r, VCT_BRICK_RADIANCE, channels, err);
     if (rc == VCT_OK)
         rc = vct_finish(ctx, REFRESH_STAGE, err);
+    vct_buffer_release(ctx, r.around);
     vct_stage_end(ctx);
     return rc;
 }
