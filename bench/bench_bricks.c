@@ -149,20 +149,22 @@ int main(void) {
                            "+ distribution + photon MIP mapping]",
                            "bricks + filtering + injection (goal at 256^3: < 500)",
                            "light update: re-inject + re-filter (goal at 256^3: < 200)"};
-    const double thesis[7][3] = {{30, 30, 110},
-                                 {478 + 454 + 2, 207 + 169 + 10, 1944 + 111 + 76},
-                                 {114, 2012, 7092},
-                                 {18, 132, 1038},
-                                 {8 + 10718 + 1 + 16, 253 + 9833 + 6 + 123, 233 + 10855 + 31 + 982},
-                                 {114 + 18 + 8 + 10718 + 1 + 16, 2012 + 132 + 253 + 9833 + 6 + 123,
-                                  7092 + 1038 + 233 + 10855 + 31 + 982},
-                                 {8 + 10718 + 1 + 16, 253 + 9833 + 6 + 123, 233 + 10855 + 31 + 982}};
+    const double thesis[7][3] = {
+        {30, 30, 110},
+        {478 + 454 + 2, 207 + 169 + 10, 1944 + 111 + 76},
+        {114, 2012, 7092},
+        {18, 132, 1038},
+        {8 + 10718 + 1 + 16, 253 + 9833 + 6 + 123, 233 + 10855 + 31 + 982},
+        {114 + 18 + 8 + 10718 + 1 + 16, 2012 + 132 + 253 + 9833 + 6 + 123,
+         7092 + 1038 + 233 + 10855 + 31 + 982},
+        {8 + 10718 + 1 + 16, 253 + 9833 + 6 + 123, 233 + 10855 + 31 + 982}};
     for (int row = 0; row < 7; ++row) {
         printf("| %s |", rows[row]);
         for (int r = 0; r < RESOLUTIONS; ++r) {
             const spine_run *b = &best[r];
-            const double ours[7] = {b->voxelize, b->octree, b->create, b->filter, b->inject,
-                                    b->create + b->filter + b->inject, b->update};
+            const double ours[7] = {b->voxelize, b->octree, b->create,
+                                    b->filter,   b->inject, b->create + b->filter + b->inject,
+                                    b->update};
             printf(" %.0f [%.0f] |", ours[row], thesis[row][r]);
         }
         printf("\n");

@@ -57,125 +57,156 @@ __kernel void brick_around(__global const uint *child, __global const uint *tile
             }
 }
 
-/* Child cell c (0..3 per axis: cells -1 .. 2 around brick b's node) as a
- * node, or OCT_NULL: cell c lies in neighbour (c + 1) / 2 - 1 at octant bit
- * (c + 1) & 1. */
-inline uint child_cell(__global const uint *child, __global const uint *around, uint b, uint3 c) {
-    const uint3 up = (c + 1u) / 2u, bit = (c + 1u) & 1u;
-    const uint n = around[AROUND * b + up.z * 9u + up.y * 3u + up.x];
-    const uint first = n == OCT_NULL ? OCT_NULL : child[n];
-    return first == OCT_NULL ? OCT_NULL : first + (bit.x | (bit.y << 1) | (bit.z << 2));
+/* The 4^3 child cells from -1 to 2 around brick b's node, through its 27
+ * neighbours: cell index c per axis lies in neighbour (c + 1) / 2 - 1 at
+ * octant bit (c + 1) & 1. Each entry is the child node or OCT_NULL. */
+inline void gather_children(__global const uint *child, __global const uint *around, uint b,
+                            uint *cells) {
+    for (uint z = 0; z < 4u; ++z)
+        for (uint y = 0; y < 4u; ++y)
+            for (uint x = 0; x < 4u; ++x) {
+                const uint n = around[AROUND * b + ((z + 1u) / 2u) * 9u + ((y + 1u) / 2u) * 3u +
+                                      (x + 1u) / 2u];
+                const uint first = n == OCT_NULL ? OCT_NULL : child[n];
+                const uint octant =
+                    ((x + 1u) & 1u) | (((y + 1u) & 1u) << 1) | (((z + 1u) & 1u) << 2);
+                cells[z * 16u + y * 4u + x] = first == OCT_NULL ? OCT_NULL : first + octant;
+            }
 }
 
-/* One work-item per texel: global id = 27 * brick + (z * 9 + y * 3 + x). */
-inline uint3 texel_of(uint i) {
-    const uint t = i % BRICK_TEXELS;
-    return (uint3)(t % 3u, (t / 3u) % 3u, t / 9u);
-}
-
-/* Level L-1: texel (x, y, z) sits at the corner shared by child cells x..x+1,
- * y..y+1, z..z+1: the mean of the voxels among them, premultiplied. */
 __kernel void brick_leaf(__global const uint *child, __global const uint *around, uint first_brick,
                          uint count, __global const float4 *albedo, __global const float4 *normal,
                          __global const float4 *radiance, uint has_radiance, uint write_geometry,
                          uint2 pool, __global half *albedo_pool, __global half *normal_pool,
                          __global half *radiance_pool) {
     const uint i = get_global_id(0);
-    if (i >= count * BRICK_TEXELS)
+    if (i >= count)
         return;
-    const uint b = first_brick + i / BRICK_TEXELS;
-    const uint3 t = texel_of(i);
-    float4 a = (float4)(0.0f), n = (float4)(0.0f), r = (float4)(0.0f);
-    uint found = 0;
-    for (uint d = 0; d < 8u; ++d) { /* a fixed world order: shared samples agree */
-        const uint leaf = child_cell(child, around, b, t + (uint3)(d & 1u, (d >> 1) & 1u, d >> 2));
-        const uint v = leaf == OCT_NULL ? OCT_NULL : child[leaf];
-        if (v == OCT_NULL)
-            continue;
-        const float alpha = albedo[v].w;
-        ++found;
-        a += (float4)(alpha * albedo[v].xyz, alpha);
-        n += (float4)(alpha * normal[v].xyz, alpha);
-        r += (float4)(has_radiance ? alpha * radiance[v].xyz : (float3)(0.0f), alpha);
+    const uint b = first_brick + i;
+    uint voxel[64];
+    gather_children(child, around, b, voxel);
+    for (uint c = 0; c < 64u; ++c)
+        voxel[c] = voxel[c] == OCT_NULL ? OCT_NULL : child[voxel[c]];
+
+    /* each sample: the mean over the voxels present among its 8 */
+    float inv_found[27];
+    for (uint z = 0; z < 3u; ++z)
+        for (uint y = 0; y < 3u; ++y)
+            for (uint x = 0; x < 3u; ++x) {
+                const uint *v = voxel + z * 16u + y * 4u + x;
+                const uint found = (v[0] != OCT_NULL) + (v[1] != OCT_NULL) + (v[4] != OCT_NULL) +
+                                   (v[5] != OCT_NULL) + (v[16] != OCT_NULL) + (v[17] != OCT_NULL) +
+                                   (v[20] != OCT_NULL) + (v[21] != OCT_NULL);
+                inv_found[(z * 3u + y) * 3u + x] = found ? 1.0f / (float)found : 0.0f;
+            }
+    for (uint channel = write_geometry ? 0u : 2u; channel < 3u; ++channel) {
+        __global const float4 *value = channel == 0u ? albedo : channel == 1u ? normal : radiance;
+        const int has_value = channel < 2u || has_radiance;
+        float4 premultiplied[64];
+        for (uint c = 0; c < 64u; ++c) {
+            const uint v = voxel[c];
+            const float alpha = v == OCT_NULL ? 0.0f : albedo[v].w;
+            const float3 x = v == OCT_NULL || !has_value ? (float3)(0.0f) : value[v].xyz;
+            premultiplied[c] = (float4)(alpha * x, alpha);
+        }
+        __global half *dst = channel == 0u   ? albedo_pool
+                             : channel == 1u ? normal_pool
+                                             : radiance_pool;
+        const uint base = brick_base(pool, b);
+        for (uint z = 0; z < 3u; ++z)
+            for (uint y = 0; y < 3u; ++y)
+                for (uint x = 0; x < 3u; ++x) {
+                    /* a fixed world order: shared samples agree */
+                    const float4 *p = premultiplied + z * 16u + y * 4u + x;
+                    const float4 sum =
+                        ((p[0] + p[1]) + (p[4] + p[5])) + ((p[16] + p[17]) + (p[20] + p[21]));
+                    brick_store_at(dst, pool, base, (uint3)(x, y, z),
+                                   sum * inv_found[(z * 3u + y) * 3u + x]);
+                }
     }
-    const float inv = found ? 1.0f / (float)found : 0.0f;
-    const uint base = brick_base(pool, b);
-    if (write_geometry) {
-        brick_store_at(albedo_pool, pool, base, t, a * inv);
-        brick_store_at(normal_pool, pool, base, t, n * inv);
-    }
-    brick_store_at(radiance_pool, pool, base, t, r * inv);
 }
 
-/* The pool index of each of the 8 child cells i..i+1 per axis around
- * parent texel i (BRICK_NULL: no brick). Its 3^3 child lattice points e =
- * 2i .. 2i+2 (in 0..6 around the node) lie in them. */
-inline void texel_cells(__global const uint *child, __global const uint *around, uint b, uint3 t,
-                        uint2 pool, uint *cell_base) {
-    for (uint d = 0; d < 8u; ++d) {
-        const uint n = child_cell(child, around, b, t + (uint3)(d & 1u, (d >> 1) & 1u, d >> 2));
-        const uint cb = n == OCT_NULL ? BRICK_NULL : brick_of(child, n);
-        cell_base[d] = cb == BRICK_NULL ? BRICK_NULL : brick_base(pool, cb);
-    }
-}
-
-/* Where child lattice point 2t + s (s in 0..2 per axis) is stored: s = 0 is
- * the middle of cell t, s = 2 the middle of cell t + 1, s = 1 their shared
- * face, held bit-identically by either. The pool index, or BRICK_NULL where
- * no child brick holds it (empty space). */
-inline uint lattice_texel(const uint *cell_base, uint2 pool, uint3 s) {
-    const uint3 face = (s == 1u) ? (uint3)(1u) : (uint3)(0u);
-    const uint3 lo = s / 2u; /* the first candidate cell: 0 or 1 */
-    for (uint cz = 0; cz <= face.z; ++cz)
-        for (uint cy = 0; cy <= face.y; ++cy)
-            for (uint cx = 0; cx <= face.x; ++cx) {
+/* Where child lattice point e (0..6 per axis; point 2i + 1 is the parent's
+ * texel i) is stored: an even e is the middle of child cell e / 2, an odd e
+ * the shared face of cells (e - 1) / 2 and (e + 1) / 2, held bit-identically
+ * by either. The pool texel index, or BRICK_NULL where no child brick holds
+ * it (empty space). */
+inline uint lattice_texel(const uint *cell_base, uint2 pool, uint3 e) {
+    const uint3 odd = e & 1u;
+    const uint3 lo = (e - odd) / 2u; /* first candidate cell per axis */
+    for (uint cz = 0; cz <= odd.z; ++cz)
+        for (uint cy = 0; cy <= odd.y; ++cy)
+            for (uint cx = 0; cx <= odd.x; ++cx) {
                 const uint3 c = lo + (uint3)(cx, cy, cz);
-                const uint base = cell_base[c.z * 4u + c.y * 2u + c.x];
+                const uint base = cell_base[c.z * 16u + c.y * 4u + c.x];
                 if (base == BRICK_NULL)
                     continue;
-                /* texel 1 in the middle; 2 on the low cell's face, 0 on the high one's */
-                return base + brick_offset(pool, 1u + face - 2u * face * (uint3)(cx, cy, cz));
+                /* texel 1 in the middle; 2 or 0 on the low or high cell's face */
+                return base + brick_offset(pool, 1u + odd - 2u * odd * (uint3)(cx, cy, cz));
             }
     return BRICK_NULL;
+}
+
+/* The pool texel of each of the 7^3 child lattice points around brick b. */
+inline void lattice_texels(__global const uint *child, __global const uint *around, uint b,
+                           uint2 pool, uint *texel) {
+    uint cell_base[64]; /* pool index of each child cell's brick */
+    gather_children(child, around, b, cell_base);
+    for (uint c = 0; c < 64u; ++c) {
+        const uint cb = cell_base[c] == OCT_NULL ? BRICK_NULL : brick_of(child, cell_base[c]);
+        cell_base[c] = cb == BRICK_NULL ? BRICK_NULL : brick_base(pool, cb);
+    }
+    for (uint z = 0; z < 7u; ++z)
+        for (uint y = 0; y < 7u; ++y)
+            for (uint x = 0; x < 7u; ++x)
+                texel[(z * 7u + y) * 7u + x] = lattice_texel(cell_base, pool, (uint3)(x, y, z));
 }
 
 inline float4 texel_load(__global const half *src, uint texel) {
     return texel == BRICK_NULL ? (float4)(0.0f) : vload_half4(texel, src);
 }
 
-inline float gauss(uint s) {
-    return s == 1u ? 0.5f : 0.25f;
+/* One channel of brick b from the child lattice: separable, z into a 7x7
+ * plane, then y, then x. */
+inline void filter_channel(const uint *texel, uint2 pool, uint b, __global half *channel) {
+    const float w[3] = {0.25f, 0.5f, 0.25f};
+    const uint base = brick_base(pool, b);
+    for (uint k = 0; k < 3u; ++k) {
+        float4 plane[49];
+        for (uint yx = 0; yx < 49u; ++yx) {
+            float4 s = (float4)(0.0f);
+            for (uint d = 0; d < 3u; ++d)
+                s += w[d] * texel_load(channel, texel[(2u * k + d) * 49u + yx]);
+            plane[yx] = s;
+        }
+        for (uint j = 0; j < 3u; ++j) {
+            float4 row[7];
+            for (uint x = 0; x < 7u; ++x)
+                row[x] = w[0] * plane[(2u * j) * 7u + x] + w[1] * plane[(2u * j + 1u) * 7u + x] +
+                         w[2] * plane[(2u * j + 2u) * 7u + x];
+            for (uint t = 0; t < 3u; ++t)
+                brick_store_at(channel, pool, base, (uint3)(t, j, k),
+                               w[0] * row[2u * t] + w[1] * row[2u * t + 1u] +
+                                   w[2] * row[2u * t + 2u]);
+        }
+    }
 }
 
-/* Channels c0, c1, c2 (`channels` of them, 1..3) of the level's bricks: the
- * 27-point Gaussian of the child lattice around each texel. */
+/* Channels c0, c1, c2 (`channels` of them, 1..3) of the level's bricks. */
 __kernel void brick_filter(__global const uint *child, __global const uint *around,
                            uint first_brick, uint count, uint2 pool, uint channels,
                            __global half *c0, __global half *c1, __global half *c2) {
     const uint i = get_global_id(0);
-    if (i >= count * BRICK_TEXELS)
+    if (i >= count)
         return;
-    const uint b = first_brick + i / BRICK_TEXELS;
-    const uint3 t = texel_of(i);
-    uint cell_base[8];
-    texel_cells(child, around, b, t, pool, cell_base);
-    float4 s0 = (float4)(0.0f), s1 = (float4)(0.0f), s2 = (float4)(0.0f);
-    for (uint k = 0; k < 27u; ++k) {
-        const uint3 s = (uint3)(k % 3u, (k / 3u) % 3u, k / 9u);
-        const uint at = lattice_texel(cell_base, pool, s);
-        const float w = gauss(s.x) * gauss(s.y) * gauss(s.z);
-        s0 += w * texel_load(c0, at);
-        if (channels > 1u)
-            s1 += w * texel_load(c1, at);
-        if (channels > 2u)
-            s2 += w * texel_load(c2, at);
-    }
-    const uint base = brick_base(pool, b);
-    brick_store_at(c0, pool, base, t, s0);
+    const uint b = first_brick + i;
+    uint texel[343];
+    lattice_texels(child, around, b, pool, texel);
+    filter_channel(texel, pool, b, c0);
     if (channels > 1u)
-        brick_store_at(c1, pool, base, t, s1);
+        filter_channel(texel, pool, b, c1);
     if (channels > 2u)
-        brick_store_at(c2, pool, base, t, s2);
+        filter_channel(texel, pool, b, c2);
 }
 
 /* Opacity of a sample over half its thickness, colour kept. */
@@ -185,34 +216,40 @@ inline float4 half_thickness(float4 v) {
 }
 
 /* Direction dir (0..5: +x, +y, +z, -x, -y, -z; the way a cone travels) of
- * one texel from `src`, the child level's values for that direction: the
- * three samples along the axis composited front to back (the end ones half
- * as thick), the nine columns averaged with the Gaussian weights. */
-inline float4 filter_direction(const uint *cell_base, uint2 pool, uint dir,
-                               __global const half *src) {
+ * brick b from `src`, the child level's values for that direction. */
+inline void filter_direction(const uint *texel, uint2 pool, uint b, uint dir,
+                             __global const half *src, __global half *dst) {
+    const float w[3] = {0.25f, 0.5f, 0.25f};
     const uint axis = dir % 3u, backwards = dir >= 3u;
-    float4 sum = (float4)(0.0f);
-    for (uint v = 0; v < 3u; ++v)
-        for (uint u = 0; u < 3u; ++u) {
-            float4 acc = (float4)(0.0f);
-            for (uint step = 0; step < 3u; ++step) {
-                const uint along = backwards ? 2u - step : step;
-                uint s[3];
-                s[axis] = along;
-                s[(axis + 1u) % 3u] = u;
-                s[(axis + 2u) % 3u] = v;
-                float4 x =
-                    texel_load(src, lattice_texel(cell_base, pool, (uint3)(s[0], s[1], s[2])));
-                if (along != 1u)
-                    x = half_thickness(x);
-                acc += (1.0f - acc.w) * x;
+    const uint stride[3] = {1u, 7u, 49u};
+    const uint step = stride[axis], u_step = stride[(axis + 1u) % 3u];
+    const uint v_step = stride[(axis + 2u) % 3u];
+    const uint base = brick_base(pool, b);
+    for (uint k = 0; k < 3u; ++k)
+        for (uint j = 0; j < 3u; ++j)
+            for (uint t = 0; t < 3u; ++t) {
+                const uint centre = ((2u * k + 1u) * 7u + 2u * j + 1u) * 7u + 2u * t + 1u;
+                float4 sum = (float4)(0.0f);
+                for (uint v = 0; v < 3u; ++v)
+                    for (uint u = 0; u < 3u; ++u) {
+                        const uint column = centre + u * u_step + v * v_step - u_step - v_step;
+                        float4 acc = (float4)(0.0f);
+                        for (uint s = 0; s < 3u; ++s) {
+                            const uint along = backwards ? 2u - s : s;
+                            float4 x = texel_load(src, texel[column + along * step - step]);
+                            if (along != 1u)
+                                x = half_thickness(x);
+                            acc += (1.0f - acc.w) * x;
+                        }
+                        sum += (w[u] * w[v]) * acc;
+                    }
+                brick_store_at(dst, pool, base, (uint3)(t, j, k), sum);
             }
-            sum += (gauss(u) * gauss(v)) * acc;
-        }
-    return sum;
 }
 
-/* All six directions of the level's bricks. */
+/* All six directions of the level's bricks: the three samples along the
+ * axis composited front to back (the end ones half as thick), the nine
+ * columns averaged with the Gaussian weights. */
 __kernel void brick_filter_dir(__global const uint *child, __global const uint *around,
                                uint first_brick, uint count, uint2 pool, __global const half *s0,
                                __global const half *s1, __global const half *s2,
@@ -221,17 +258,15 @@ __kernel void brick_filter_dir(__global const uint *child, __global const uint *
                                __global half *d2, __global half *d3, __global half *d4,
                                __global half *d5) {
     const uint i = get_global_id(0);
-    if (i >= count * BRICK_TEXELS)
+    if (i >= count)
         return;
-    const uint b = first_brick + i / BRICK_TEXELS;
-    const uint3 t = texel_of(i);
-    uint cell_base[8];
-    texel_cells(child, around, b, t, pool, cell_base);
-    const uint base = brick_base(pool, b);
-    brick_store_at(d0, pool, base, t, filter_direction(cell_base, pool, 0u, s0));
-    brick_store_at(d1, pool, base, t, filter_direction(cell_base, pool, 1u, s1));
-    brick_store_at(d2, pool, base, t, filter_direction(cell_base, pool, 2u, s2));
-    brick_store_at(d3, pool, base, t, filter_direction(cell_base, pool, 3u, s3));
-    brick_store_at(d4, pool, base, t, filter_direction(cell_base, pool, 4u, s4));
-    brick_store_at(d5, pool, base, t, filter_direction(cell_base, pool, 5u, s5));
+    const uint b = first_brick + i;
+    uint texel[343];
+    lattice_texels(child, around, b, pool, texel);
+    filter_direction(texel, pool, b, 0u, s0, d0);
+    filter_direction(texel, pool, b, 1u, s1, d1);
+    filter_direction(texel, pool, b, 2u, s2, d2);
+    filter_direction(texel, pool, b, 3u, s3, d3);
+    filter_direction(texel, pool, b, 4u, s4, d4);
+    filter_direction(texel, pool, b, 5u, s5, d5);
 }

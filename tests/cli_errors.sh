@@ -99,9 +99,12 @@ VCT_MAX_ALLOC_MIB=1 expect_failure "fragments beyond the allocation limit" "voxe
     voxelize ok.obj --voxel-res 1024 -o out.png
 VCT_MAX_ALLOC_MIB=30 expect_failure "octree beyond the allocation limit" "neighbour links.*voxel-res 512 would fit" \
     voxelize ok.obj --voxel-res 1024 -o out.png
-if "$VCT" voxelize ok.obj --voxel-res 32 --size 24 24 -o vox.png >stdout.txt 2>stderr.txt &&
-    grep -q "^fragments [0-9]*, voxels [0-9]*" stdout.txt && grep -q "level  5" stdout.txt && [ -s vox.png ]; then
-    echo "ok   voxelize reports voxels and octree levels and renders them"
+expect_failure "unknown brick pool kind" "auto, buffer or image" voxelize ok.obj --bricks texture -o out.png
+if "$VCT" voxelize ok.obj --voxel-res 32 --size 24 24 --anisotropic -o vox.png >stdout.txt 2>stderr.txt &&
+    grep -q "^fragments [0-9]*, voxels [0-9]*" stdout.txt && grep -q "level  5" stdout.txt &&
+    grep -q "^bricks: [0-9]* .*anisotropic" stdout.txt && grep -q "^brick pool: buffer" stdout.txt &&
+    [ -s vox.png ]; then
+    echo "ok   voxelize reports voxels, octree levels and bricks and renders them"
 else
     echo "FAIL voxelize:"; cat stdout.txt stderr.txt; failures=$((failures + 1))
 fi

@@ -179,7 +179,7 @@ static int run_leaf(const level_run *r, int geometry, vct_error *err) {
     cl_mem *pool = v->brick_buffer;
     cl_mem albedo_pool = geometry ? pool[VCT_BRICK_ALBEDO] : pool[VCT_BRICK_RADIANCE];
     cl_mem normal_pool = geometry ? pool[VCT_BRICK_NORMAL] : pool[VCT_BRICK_RADIANCE];
-    return vct_run_kernel(r->ctx, r->program, "brick_leaf", r->stage, 27ull * count, err, 13,
+    return vct_run_kernel(r->ctx, r->program, "brick_leaf", r->stage, count, err, 13,
                           VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
                           VCT_ARG_OF(count), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
                           VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance),
@@ -200,7 +200,7 @@ static int run_filters(const level_run *r, int geometry, vct_error *err) {
         cl_mem c0 = pool[VCT_BRICK_RADIANCE];
         cl_mem c1 = geometry ? pool[VCT_BRICK_ALBEDO] : c0;
         cl_mem c2 = geometry ? pool[VCT_BRICK_NORMAL] : c0;
-        rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, 27ull * count, err, 9,
+        rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, count, err, 9,
                             VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
                             VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(channels),
                             VCT_ARG_OF(c0), VCT_ARG_OF(c1), VCT_ARG_OF(c2));
@@ -212,13 +212,12 @@ static int run_filters(const level_run *r, int geometry, vct_error *err) {
         cl_mem src[6];
         for (int d = 0; d < 6; ++d)
             src[d] = from_leaf ? pool[VCT_BRICK_RADIANCE] : dir[d];
-        rc = vct_run_kernel(r->ctx, r->program, "brick_filter_dir", r->stage, 27ull * count, err,
-                            17, VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
-                            VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(src[0]),
-                            VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
-                            VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]),
-                            VCT_ARG_OF(dir[1]), VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]),
-                            VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]));
+        rc = vct_run_kernel(
+            r->ctx, r->program, "brick_filter_dir", r->stage, count, err, 17, VCT_ARG_OF(v->child),
+            VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
+            VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
+            VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]), VCT_ARG_OF(dir[1]),
+            VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]));
     }
     return rc;
 }
