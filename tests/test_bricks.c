@@ -212,6 +212,97 @@ static void check_all_channels(const brick_case *c) {
         free(check_channel(c, channels[i], values[i]).v);
 }
 
+/* The level-`level` node at `cell`, or VCT_NODE_NULL (host descent). */
+static uint32_t node_at(const brick_case *c, const uint32_t cell[3], uint32_t level) {
+    uint32_t node = 0;
+    for (uint32_t l = 1; l <= level; ++l) {
+        if (c->child[node] == VCT_NODE_NULL)
+            return VCT_NODE_NULL;
+        const uint32_t s = level - l;
+        node = c->child[node] +
+               (((cell[0] >> s) & 1) | ((cell[1] >> s) & 1) << 1 | ((cell[2] >> s) & 1) << 2);
+    }
+    return node;
+}
+
+/* Trilinear interpolation of lattice `lat` at lattice coordinates p. */
+static void ref_trilinear(const ref_lattice *lat, const double p[3], double out[4]) {
+    int64_t lo[3];
+    double f[3];
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = (int64_t)fmin(floor(p[k]), lat->n - 2.0);
+        f[k] = p[k] - (double)lo[k];
+    }
+    for (int k = 0; k < 4; ++k)
+        out[k] = 0.0;
+    for (int d = 0; d < 8; ++d) {
+        const int dx = d & 1, dy = d >> 1 & 1, dz = d >> 2;
+        const double w = (dx ? f[0] : 1 - f[0]) * (dy ? f[1] : 1 - f[1]) * (dz ? f[2] : 1 - f[2]);
+        const float *v = ref_at(lat, lo[0] + dx, lo[1] + dy, lo[2] + dz);
+        for (int k = 0; k < 4; ++k)
+            out[k] += w * v[k];
+    }
+}
+
+/* brick_sample, as a cone reads it, at random points of every level of
+ * `channel` against trilinear interpolation of the reference lattice, in
+ * nodes that have a brick (others must read 0). `tol`: absolute plus
+ * relative, looser for image pools (GPUs interpolate with 8-bit weights). */
+static void check_sampling(const brick_case *c, int channel, const float *value, double tol) {
+    float *alpha = opacities(c);
+    const uint32_t res = c->info.resolution, levels = c->info.levels, n = 4000;
+    ref_lattice lat = ref_leaf_lattice(res, c->voxel_of, value, alpha);
+    float *points = malloc(16ull * n), *got = malloc(16ull * n);
+    uint64_t seed = 99, checked = 0, wrong = 0, inside = 0;
+    const double side = c->info.side;
+    for (int level = (int)levels - 1; level >= 0; --level) {
+        for (uint32_t i = 0; i < n; ++i)
+            for (int k = 0; k < 4; ++k)
+                points[4 * i + k] = (float)(c->info.origin[k % 3] + side * check_randf(&seed));
+        vct_error err = {0};
+        REQUIRE_OK(
+            vct_bricks_sample(ctx, c->voxels, channel, (uint32_t)level, points, n, got, &err), err);
+        const double cells = (double)(1u << level);
+        for (uint32_t i = 0; i < n; ++i) {
+            double at[3], lp[3];
+            uint32_t cell[3];
+            for (int k = 0; k < 3; ++k) {
+                at[k] = (points[4 * i + k] - c->info.origin[k]) / side * cells;
+                cell[k] = (uint32_t)fmin(floor(at[k]), cells - 1);
+                lp[k] = 2.0 * at[k];
+            }
+            const uint32_t node = node_at(c, cell, (uint32_t)level);
+            double e[4] = {0, 0, 0, 0};
+            if (node != VCT_NODE_NULL && c->child[node] != VCT_NODE_NULL) {
+                ref_trilinear(&lat, lp, e);
+                ++inside;
+            }
+            int bad = 0;
+            for (int k = 0; k < 4; ++k)
+                bad |= !(fabs(got[4 * i + k] - e[k]) <= tol * (1.0 + fabs(e[k])));
+            if (bad && wrong++ < 3)
+                fprintf(stderr, "%s: level %d point %u: got %g %g %g %g, expected %g %g %g %g\n",
+                        c->name, level, i, got[4 * i], got[4 * i + 1], got[4 * i + 2],
+                        got[4 * i + 3], e[0], e[1], e[2], e[3]);
+            ++checked;
+        }
+        if (level > 0) {
+            ref_lattice next = ref_filter(&lat);
+            free(lat.v);
+            lat = next;
+        }
+    }
+    CHECK(wrong == 0 && inside > n / 4, "%s: sampling: %llu of %llu points wrong (%llu in bricks)",
+          c->name, (unsigned long long)wrong, (unsigned long long)checked,
+          (unsigned long long)inside);
+    printf("%-28s sampled %llu points, %llu in bricks\n", c->name, (unsigned long long)checked,
+           (unsigned long long)inside);
+    free(lat.v);
+    free(points);
+    free(got);
+    free(alpha);
+}
+
 static vct_scene *scene_of(const test_mesh *m, const vct_material *mats, uint32_t nmat) {
     uint32_t *mat = malloc(4ull * m->nt);
     for (uint32_t t = 0; t < m->nt; ++t)
@@ -289,6 +380,12 @@ static void random_volumes(void) {
         if (sizes[s] == 32) {
             c.name = "soup 32^3, image pool";
             check_all_channels(&c);
+            check_sampling(&c, VCT_BRICK_RADIANCE, c.radiance, 2e-3);
+            REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &opt, &err), err);
+            REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+            c.name = "soup 32^3, buffer pool";
+            check_sampling(&c, VCT_BRICK_RADIANCE, c.radiance, 1e-5);
+            check_sampling(&c, VCT_BRICK_ALBEDO, c.albedo, 1e-5);
         }
         case_free(&c);
     }
@@ -408,6 +505,22 @@ static void thin_wall(void) {
             }
     CHECK(open == 0 && beyond == 0, "wall: %d open samples in it, %d non-empty off it", open,
           beyond);
+    /* what a cone reads crossing the wall at the finest level: opaque throughout */
+    float line[4 * 64], seen[4 * 64];
+    for (int i = 0; i < 64; ++i) {
+        line[4 * i] = 10.0f + (float)i / 63.0f;
+        line[4 * i + 1] = 3.0f + 0.4f * (float)i;
+        line[4 * i + 2] = 29.0f - 0.37f * (float)i;
+        line[4 * i + 3] = 0.0f;
+    }
+    vct_error serr = {0};
+    REQUIRE_OK(vct_bricks_sample(ctx, c.voxels, VCT_BRICK_RADIANCE, 4, line, 64, seen, &serr),
+               serr);
+    int leaks = 0;
+    for (int i = 0; i < 64; ++i)
+        leaks += !(seen[4 * i + 3] >= 0.9999f);
+    CHECK(leaks == 0, "wall: %d of 64 samples inside it read as not opaque", leaks);
+    check_sampling(&c, VCT_BRICK_RADIANCE, c.radiance, 1e-5);
     /* Level L-2 = 3 (lattice spacing 2 voxels): x = 5 is the wall's plane. */
     const uint32_t level = 3, first = c.bricks.level_first[level];
     const uint32_t count = c.bricks.level_bricks[level];

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "internal.h"
+#include "vct_types.h"
 #include "voxels.h"
 
 #define CREATE_STAGE "brick creation"
@@ -382,5 +383,43 @@ int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t
     if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, stage, dst, 0, 27ull * 16 * count, out, err);
     vct_buffer_release(ctx, dst);
+    return rc;
+}
+
+int vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32_t level,
+                      const float *points, uint32_t n, float *out, vct_error *err) {
+    const char *stage = "brick sample";
+    const vct_brick_info *b = &v->brick_info;
+    if (!v->has_bricks)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: build the bricks first (vct_bricks_build)", stage);
+    const uint32_t top = channel >= VCT_BRICK_RADIANCE_DIR0 ? v->info.levels - 1 : v->info.levels;
+    if (channel < 0 || channel >= channel_count(b) || level >= top)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: channel %d has no bricks at level %u", stage,
+                        channel, level);
+    if (n == 0 || b->bricks == 0) {
+        memset(out, 0, 16ull * n);
+        return VCT_OK;
+    }
+    cl_program p;
+    int rc = vct_program_get(ctx, "brick_gather.cl", b->image ? "-DVCT_BRICK_IMAGE" : "", &p, err);
+    cl_mem q = rc == VCT_OK ? vct_buffer_create(ctx, stage, "points", 16ull * n, CL_MEM_READ_ONLY,
+                                                (void *)points, err)
+                            : NULL;
+    cl_mem dst =
+        q ? vct_buffer_create(ctx, stage, "samples", 16ull * n, CL_MEM_WRITE_ONLY, NULL, err)
+          : NULL;
+    cl_mem src = b->image ? v->brick_image[channel] : v->brick_buffer[channel];
+    const cl_uint pool[2] = {b->pool[0], b->pool[1]};
+    vct_volume_desc vol;
+    vct_voxels_volume_desc(v, &vol);
+    if (rc == VCT_OK)
+        rc = dst ? vct_run_kernel(ctx, p, "brick_probe", stage, n, err, 8, VCT_ARG_OF(src),
+                                  VCT_ARG_OF(pool), VCT_ARG_OF(v->child), VCT_ARG_OF(vol),
+                                  VCT_ARG_OF(level), VCT_ARG_OF(q), VCT_ARG_OF(n), VCT_ARG_OF(dst))
+                 : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, stage, dst, 0, 16ull * n, out, err);
+    vct_buffer_release(ctx, dst);
+    vct_buffer_release(ctx, q);
     return rc;
 }

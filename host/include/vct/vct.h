@@ -359,6 +359,11 @@ int vct_bricks_info_get(const vct_voxels *voxels, vct_brick_info *info);
  * brick (index k * 9 + j * 3 + i), read through the kernels' own brick access. */
 int vct_bricks_read(vct_context *ctx, const vct_voxels *voxels, int channel, uint32_t first,
                     uint32_t count, float *out, vct_error *err);
+/* Trilinear samples of one channel at `level` (0 .. L-1; directions 0 .. L-2)
+ * at n world points (xyz, 4 floats each, w unused), as float4: what a cone
+ * reads. A point in a node without a brick reads 0. */
+int vct_bricks_sample(vct_context *ctx, const vct_voxels *voxels, int channel, uint32_t level,
+                      const float *points, uint32_t n, float *out, vct_error *err);
 
 /* ---- images --------------------------------------------------------------------- */
 
