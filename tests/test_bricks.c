@@ -566,12 +566,37 @@ static void boundary(void) {
     case_free(&c);
 }
 
+/* A volume with no geometry in it: no bricks, any pool kind, samples 0. */
+static void empty_volume(void) {
+    const float q[12] = {100, 100, 100, 101, 100, 100, 101, 101, 100, 100, 101, 100};
+    vct_scene *s = quads_scene(q, 1);
+    vct_error err = {0};
+    vct_voxel_options o = {0};
+    o.resolution = 16;
+    o.has_bounds = 1;
+    o.bounds_size = 16;
+    vct_voxels *v = vct_voxelize(ctx, s, &o, &err);
+    REQUIRE_OK(v ? VCT_OK : err.status, err);
+    REQUIRE_OK(vct_octree_build(ctx, v, &err), err);
+    const vct_brick_options image = {VCT_BRICKS_IMAGE, 1};
+    REQUIRE_OK(vct_bricks_build(ctx, v, &image, &err), err);
+    vct_brick_info info;
+    CHECK(vct_bricks_info_get(v, &info) && info.bricks == 0, "empty volume: %u bricks",
+          info.bricks);
+    float point[4] = {8, 8, 8, 0}, got[4] = {1, 1, 1, 1};
+    REQUIRE_OK(vct_bricks_sample(ctx, v, VCT_BRICK_RADIANCE, 2, point, 1, got, &err), err);
+    CHECK(got[0] == 0 && got[3] == 0, "empty volume samples %g %g", got[0], got[3]);
+    vct_voxels_free(v);
+    vct_scene_free(s);
+}
+
 int main(void) {
     ctx = check_context();
     single_voxel();
     full_block();
     thin_wall();
     boundary();
+    empty_volume();
     random_volumes();
     moved_light_and_determinism();
     vct_context_destroy(ctx);

@@ -85,6 +85,8 @@ static int choose_storage(vct_context *ctx, vct_brick_storage storage, vct_brick
     const char *refusal = b->bricks == 0
                               ? "there are no bricks"
                               : image_refusal(ctx, image_shape, pool_bytes(b->bricks, IMAGE_SLAB));
+    if (storage == VCT_BRICKS_IMAGE && b->bricks == 0)
+        storage = VCT_BRICKS_BUFFER; /* nothing to sample: any kind will do */
     if (storage == VCT_BRICKS_IMAGE && refusal)
         return vct_fail(err, VCT_ERR_INPUT, "bricks: an image3d pool was asked for but %s",
                         refusal);
@@ -137,6 +139,9 @@ static int allocate_buffers(vct_context *ctx, vct_voxels *v, vct_error *err) {
         uint32_t shape[3];
         channel_shape(b, c, shape);
         const uint64_t bytes = shape_bytes(shape);
+        int rc = vct_voxel_buffer_fits(ctx, &v->info, "bricks", names[c], (double)bytes, err);
+        if (rc != VCT_OK)
+            return rc;
         v->brick_buffer[c] =
             vct_buffer_create(ctx, CREATE_STAGE, names[c], bytes, CL_MEM_READ_WRITE, NULL, err);
         if (!v->brick_buffer[c])
