@@ -18,10 +18,12 @@ typedef struct spine_run {
 } spine_run;
 
 static void keep_best(spine_run *best, const spine_run *r) {
-    double *b = &best->voxelize;
-    const double *x = &r->voxelize;
-    for (int i = 0; i < 6; ++i)
-        b[i] = fmin(b[i], x[i]);
+    best->voxelize = fmin(best->voxelize, r->voxelize);
+    best->octree = fmin(best->octree, r->octree);
+    best->create = fmin(best->create, r->create);
+    best->filter = fmin(best->filter, r->filter);
+    best->inject = fmin(best->inject, r->inject);
+    best->update = fmin(best->update, r->update);
     best->peak = fmax(best->peak, r->peak);
     best->voxels = r->voxels;
     best->bricks = r->bricks;

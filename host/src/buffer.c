@@ -5,11 +5,31 @@
 
 #include "internal.h"
 
+#define MIB (1.0 / (1024.0 * 1024.0))
+
+/* Whether `bytes` more still fit in the device's memory; else fails with `lower`. */
+static int fits_in_memory(vct_context *ctx, const char *stage, const char *what, size_t bytes,
+                          const char *lower, vct_error *err) {
+    if (ctx->bytes_live + (double)bytes <= (double)ctx->info.global_mem)
+        return 1;
+    vct_fail(err, VCT_ERR_MEMORY,
+             "%s: %s needs %.1f MiB with %.1f MiB already in use, beyond the %.1f MiB of %s: %s",
+             stage, what, bytes * MIB, ctx->bytes_live * MIB, ctx->info.global_mem * MIB,
+             ctx->info.name, lower);
+    return 0;
+}
+
+static void count_allocation(vct_context *ctx, size_t bytes) {
+    ctx->bytes_live += (double)bytes;
+    if (ctx->bytes_live > ctx->bytes_stage_peak)
+        ctx->bytes_stage_peak = ctx->bytes_live;
+}
+
 cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, size_t bytes,
                          cl_mem_flags flags, const void *host, vct_error *err) {
     if (bytes == 0)
         bytes = 16; /* OpenCL forbids empty buffers; empty inputs still get a handle */
-    const double mib = 1.0 / (1024.0 * 1024.0);
+    const double mib = MIB;
     if ((uint64_t)bytes > ctx->info.max_alloc) {
         vct_fail(err, VCT_ERR_MEMORY,
                  "%s: %s needs %.1f MiB but %s allows at most %.1f MiB per buffer: lower the "
@@ -17,14 +37,9 @@ cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, 
                  stage, what, bytes * mib, ctx->info.name, ctx->info.max_alloc * mib);
         return NULL;
     }
-    if (ctx->bytes_live + (double)bytes > (double)ctx->info.global_mem) {
-        vct_fail(err, VCT_ERR_MEMORY,
-                 "%s: %s needs %.1f MiB with %.1f MiB already in use, beyond the %.1f MiB of "
-                 "%s: lower the resolution (--grid-res, --size) or the scene size",
-                 stage, what, bytes * mib, ctx->bytes_live * mib, ctx->info.global_mem * mib,
-                 ctx->info.name);
+    if (!fits_in_memory(ctx, stage, what, bytes,
+                        "lower the resolution (--grid-res, --size) or the scene size", err))
         return NULL;
-    }
     cl_int rc = CL_SUCCESS;
     if (host)
         flags |= CL_MEM_COPY_HOST_PTR;
@@ -36,9 +51,7 @@ cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, 
                  bytes * mib);
         return NULL;
     }
-    ctx->bytes_live += (double)bytes;
-    if (ctx->bytes_live > ctx->bytes_stage_peak)
-        ctx->bytes_stage_peak = ctx->bytes_live;
+    count_allocation(ctx, bytes);
     return mem;
 }
 
@@ -46,15 +59,8 @@ cl_mem vct_image3d_create(vct_context *ctx, const char *stage, const char *what,
                           const cl_image_format *format, const cl_image_desc *desc,
                           vct_error *err) {
     const size_t bytes = desc->image_width * desc->image_height * desc->image_depth * 8;
-    const double mib = 1.0 / (1024.0 * 1024.0);
-    if (ctx->bytes_live + (double)bytes > (double)ctx->info.global_mem) {
-        vct_fail(err, VCT_ERR_MEMORY,
-                 "%s: %s needs %.1f MiB with %.1f MiB already in use, beyond the %.1f MiB of %s: "
-                 "lower the voxel resolution (--voxel-res)",
-                 stage, what, bytes * mib, ctx->bytes_live * mib, ctx->info.global_mem * mib,
-                 ctx->info.name);
+    if (!fits_in_memory(ctx, stage, what, bytes, "lower the voxel resolution (--voxel-res)", err))
         return NULL;
-    }
     cl_int rc = CL_SUCCESS;
     cl_mem mem = clCreateImage(ctx->context, CL_MEM_READ_ONLY, format, desc, NULL, &rc);
     if (rc != CL_SUCCESS) {
@@ -65,9 +71,7 @@ cl_mem vct_image3d_create(vct_context *ctx, const char *stage, const char *what,
                  desc->image_width, desc->image_height, desc->image_depth);
         return NULL;
     }
-    ctx->bytes_live += (double)bytes;
-    if (ctx->bytes_live > ctx->bytes_stage_peak)
-        ctx->bytes_stage_peak = ctx->bytes_live;
+    count_allocation(ctx, bytes);
     return mem;
 }
 
