@@ -51,11 +51,18 @@ inline int light_visible(const grid_view *g, float3 p, float3 n, float eps, floa
     return !grid_trace(g, p + n * eps, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h);
 }
 
-/* Radiance reflected towards the viewer by a Lambertian point p with normal n
- * (facing the viewer) from every light. */
-inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *lights,
-                             uint light_count, float3 p, float3 n, float3 albedo) {
-    float3 sum = (float3)(0.0f);
+/* What every light sends to p (normal n): the irradiance sum of radiant *
+ * cos(theta), with hard shadows when `shadows`, and, for a Phong exponent
+ * e >= 0 about the mirror direction r, the lobe-weighted sum
+ * radiant * cos(theta) * cos(alpha)^e * (e + 2) / (2 pi). */
+typedef struct direct_terms {
+    float3 irradiance, lobe;
+} direct_terms;
+
+inline direct_terms direct_gather(const grid_view *g, __global const vct_light_desc *lights,
+                                  uint light_count, float3 p, float3 n, int shadows, float3 r,
+                                  float e) {
+    direct_terms sum = {(float3)(0.0f), (float3)(0.0f)};
     const float eps = surface_epsilon(g, p);
     for (uint i = 0; i < light_count; ++i) {
         float3 wi, radiant;
@@ -65,10 +72,22 @@ inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *
         const float cos_theta = dot(n, wi);
         if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
             continue;
-        if (light_visible(g, p, n, eps, wi, dist))
-            sum += radiant * cos_theta;
+        if (shadows && !light_visible(g, p, n, eps, wi, dist))
+            continue;
+        sum.irradiance += radiant * cos_theta;
+        if (e >= 0.0f)
+            sum.lobe += radiant * cos_theta * pow(fmax(dot(r, wi), 0.0f), e) * (e + 2.0f) *
+                        (0.5f * VCT_INV_PI);
     }
-    return albedo * VCT_INV_PI * sum;
+    return sum;
+}
+
+/* Radiance reflected towards the viewer by a Lambertian point p with normal n
+ * (facing the viewer) from every light. */
+inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *lights,
+                             uint light_count, float3 p, float3 n, float3 albedo) {
+    return albedo * VCT_INV_PI *
+           direct_gather(g, lights, light_count, p, n, 1, (float3)(0.0f), -1.0f).irradiance;
 }
 
 #endif

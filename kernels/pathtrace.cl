@@ -103,7 +103,8 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
                         uint light_count, __global const uint *emitter_tris,
                         __global const float *emitter_cdf, uint emitter_count,
                         float emitter_inv_area, uint sample_begin, uint samples, uint max_depth,
-                        uint seed, __global float4 *accum, __global uint *discarded) {
+                        uint seed, __global float4 *accum, __global uint *discarded,
+                        float4 ambient) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
@@ -122,8 +123,10 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
         float3 prev_p = org;
         for (uint depth = 0; depth < max_depth; ++depth) {
             hit_record h;
-            if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h))
+            if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
+                radiance += throughput * ambient.xyz; /* the environment */
                 break;
+            }
             float3 p, ng, n;
             int front;
             if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))

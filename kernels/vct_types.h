@@ -66,4 +66,21 @@ typedef struct vct_volume_desc {
     vct_u4 res;    /* x = R, y = L, z = Q, w = triangle count */
 } vct_volume_desc;
 
+/* Cone marching through the brick pool (kernels/cone_trace.h). */
+typedef struct vct_cone_desc {
+    vct_f4 volume;  /* xyz: the voxel cube's minimum corner; w: its side */
+    vct_u4 res;     /* x = voxels per axis R, y = levels L, zw = brick pool layout */
+    vct_f4 march;   /* x = step as a fraction of the diameter, y = start offset
+                       along the normal in voxels, z = AO distance (world),
+                       w = opacity at which a cone stops */
+    vct_f4 ambient; /* rgb: radiance beyond the volume; w = 1 / side */
+} vct_cone_desc;
+
+/* One cone of a diffuse preset: direction in the surface frame (z = normal)
+ * and its weight; tan of its half-angle. */
+typedef struct vct_cone_dir {
+    vct_f4 dir; /* xyz; w = weight (the preset's weights sum to 1) */
+    vct_f4 aperture; /* x = tan(half-angle) */
+} vct_cone_dir;
+
 #endif

@@ -61,16 +61,11 @@ int cmd_voxelize(const cli_options *opt) {
         vct_scene_free(s);
         return cli_fail(&err);
     }
-    vct_voxel_options vo = {0};
-    vo.resolution = (uint32_t)opt->voxel_res;
-    vo.thin = opt->thin_voxels;
-    vo.has_bounds = opt->has_voxel_bounds;
-    for (int k = 0; k < 3; ++k)
-        vo.bounds_min[k] = opt->voxel_bounds[k];
-    vo.bounds_size = opt->voxel_bounds[3];
+    vct_voxel_options vo;
+    cli_voxel_options(opt, &vo);
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
     int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
-    const vct_brick_options bo = {opt->bricks, opt->anisotropic};
+    const vct_brick_options bo = {opt->bricks, opt->anisotropic == 1};
     if (rc == VCT_OK)
         rc = vct_bricks_build(ctx, v, &bo, &err);
     /* With lights, inject direct light (shadows through the triangle grid). */

@@ -149,9 +149,9 @@ int cmd_render(const cli_options *opt) {
         fprintf(stderr, "vct: output %s must end in .png or .pfm\n", out);
         return 1;
     }
-    const int pt = strcmp(opt->method, "pt") == 0;
-    if (!pt && strcmp(opt->method, "raycast") != 0) {
-        fprintf(stderr, "vct: unknown --method %s (available: raycast, pt)\n", opt->method);
+    const int pt = strcmp(opt->method, "pt") == 0, cones = strcmp(opt->method, "vct") == 0;
+    if (!pt && !cones && strcmp(opt->method, "raycast") != 0) {
+        fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt)\n", opt->method);
         return 1;
     }
     vct_scene *s = cli_load_scene(opt, &err);
@@ -178,9 +178,10 @@ int cmd_render(const cli_options *opt) {
                                 1,
                                 1};
     vct_pathtrace_result pr = {0};
-    int rc = !grid ? (int)err.status
-             : pt  ? vct_render_pathtrace(ctx, s, grid, &po, &image, &pr, &err)
-                   : vct_render_raycast(ctx, s, grid, &ro, &image, &err);
+    int rc = !grid  ? (int)err.status
+             : pt    ? vct_render_pathtrace(ctx, s, grid, &po, &image, &pr, &err)
+             : cones ? cli_render_vct(ctx, s, grid, opt, &image, &err)
+                     : vct_render_raycast(ctx, s, grid, &ro, &image, &err);
     if (rc == VCT_OK && pt)
         fprintf(stderr,
                 "path tracing: %u spp in %.2f s (%.1f spp/s), %u samples discarded as "

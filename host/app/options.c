@@ -21,13 +21,27 @@ void cli_usage(void) {
           "                                   RMSE, relative MSE, PSNR and mean absolute error\n"
           "\n"
           "render options:\n"
-          "  --method raycast                 direct light with hard shadows (default)\n"
+          "  --method vct                     voxel cone tracing (default): --plan prints the\n"
+          "                                   effect plan; --effect NAME=on|off forces one\n"
+          "                                   (direct, shadows, indirect, specular, refraction,\n"
+          "                                   emission, ao); --cones 1|5|6|9|16 diffuse cones\n"
+          "                                   (default 6); --cone-step F (fraction of the\n"
+          "                                   diameter, 0.5); --cone-offset V (voxels, 4);\n"
+          "                                   --ao-distance F (of the volume, 0.125);\n"
+          "                                   --bounces 1..4 light bounces in the voxels (2);\n"
+          "                                   --isotropic: one radiance per brick sample\n"
+          "                                   (default: six directional values);\n"
+          "                                   --aov PREFIX writes PREFIX_direct.pfm, _indirect,\n"
+          "                                   _specular, _ao, _level; --voxel-res, --bricks,\n"
+          "                                   --anisotropic as for voxelize\n"
+          "  --method raycast                 direct light with hard shadows\n"
           "  --method pt                      path tracing (the reference): --spp N or --time S,\n"
           "                                   --max-depth D (default 16), --seed N\n"
           "  --size W H                       image size in pixels (default 512 512)\n"
           "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
           "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
           "  --dir-light DX DY DZ R G B       irradiance, travelling along D (repeatable)\n"
+          "  --ambient R G B                  radiance arriving where nothing is hit\n"
           "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
           "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default "
           "256)\n"
@@ -101,12 +115,41 @@ static int add_light(cli_options *opt, vct_light_type type, const float v[6]) {
     return 0;
 }
 
+/* --effect NAME=on|off */
+static int parse_effect(int argc, char **argv, int *i, cli_options *opt) {
+    const char *arg = *i + 1 < argc ? argv[++*i] : "";
+    char name[32];
+    const char *eq = strchr(arg, '=');
+    const size_t len = eq ? (size_t)(eq - arg) : 0;
+    int e = -1;
+    if (eq && len < sizeof name) {
+        memcpy(name, arg, len);
+        name[len] = '\0';
+        e = vct_effect_from_name(name);
+    }
+    const char *value = eq ? eq + 1 : "";
+    const int on = strcmp(value, "on") == 0, off = strcmp(value, "off") == 0;
+    if (e < 0 || !(on || off)) {
+        fprintf(stderr, "vct: --effect takes NAME=on or NAME=off, NAME one of:");
+        for (int k = 0; k < VCT_EFFECTS; ++k)
+            fprintf(stderr, " %s", vct_effect_name((vct_effect)k));
+        fprintf(stderr, " (got '%s')\n", arg);
+        return 1;
+    }
+    opt->force[e] = on ? VCT_FORCE_ON : VCT_FORCE_OFF;
+    return 0;
+}
+
 int cli_parse(int argc, char **argv, cli_options *opt) {
     memset(opt, 0, sizeof *opt);
     opt->width = opt->height = 512;
-    opt->method = "raycast";
+    opt->method = "vct";
     opt->max_depth = 16;
     opt->voxel_res = 256;
+    opt->diffuse_cones = 6;
+    opt->bounces = 2;
+    opt->anisotropic = -1; /* render: on, voxelize: off, unless given */
+    opt->cones = vct_cone_settings_default();
     if (argc < 2) {
         cli_usage();
         return 1;
@@ -231,6 +274,38 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
             }
         } else if (strcmp(a, "--anisotropic") == 0) {
             opt->anisotropic = 1;
+        } else if (strcmp(a, "--isotropic") == 0) {
+            opt->anisotropic = 0;
+        } else if (strcmp(a, "--ambient") == 0) {
+            if (parse_floats(argc, argv, &i, 3, opt->ambient))
+                return 1;
+            opt->has_ambient = 1;
+        } else if (strcmp(a, "--plan") == 0) {
+            opt->print_plan = 1;
+        } else if (strcmp(a, "--effect") == 0) {
+            if (parse_effect(argc, argv, &i, opt))
+                return 1;
+        } else if (strcmp(a, "--cones") == 0) {
+            if (parse_int(argc, argv, &i, 1, 16, &opt->diffuse_cones))
+                return 1;
+        } else if (strcmp(a, "--bounces") == 0) {
+            if (parse_int(argc, argv, &i, 1, 4, &opt->bounces))
+                return 1;
+        } else if (strcmp(a, "--cone-step") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->cones.step))
+                return 1;
+        } else if (strcmp(a, "--cone-offset") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->cones.offset))
+                return 1;
+        } else if (strcmp(a, "--ao-distance") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->cones.ao_distance))
+                return 1;
+        } else if (strcmp(a, "--aov") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "vct: --aov needs a file name prefix\n");
+                return 1;
+            }
+            opt->aov_prefix = argv[++i];
         } else if (strcmp(a, "--exposure") == 0) {
             if (parse_floats(argc, argv, &i, 1, &opt->exposure))
                 return 1;
@@ -263,6 +338,12 @@ int cli_apply_scene_overrides(const cli_options *opt, vct_scene *s, vct_error *e
     }
     if (opt->has_fov)
         s->camera.fov_y_deg = opt->fov;
+    if (opt->has_ambient) {
+        memcpy(s->ambient, opt->ambient, sizeof s->ambient);
+        int rc = vct_scene_validate(s, err);
+        if (rc)
+            return rc;
+    }
     for (int i = 0; i < opt->light_count; ++i) {
         int rc = vct_scene_add_light(s, &opt->lights[i], err);
         if (rc)

@@ -29,6 +29,14 @@ typedef struct cli_options {
     float voxel_bounds[4]; /* x, y, z, size */
     vct_brick_storage bricks;
     int anisotropic;
+    int has_ambient;
+    float ambient[3];
+    /* vct method */
+    int print_plan;
+    vct_effect_force force[VCT_EFFECTS];
+    int diffuse_cones, bounces;
+    vct_cone_settings cones;
+    const char *aov_prefix;
 } cli_options;
 
 /* Parses argv into opt; on error prints the reason and returns non-zero. */

@@ -125,14 +125,15 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
     if (rc == VCT_OK)
         rc = vct_grid_set_args(k, g, STAGE, err);
     cl_uint max_depth = opt->max_depth, seed = opt->seed;
+    const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)
         rc = vct_set_args(err, STAGE, k, 5, 9, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
                           VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
                           VCT_ARG_OF(sb.light_count), VCT_ARG_OF(eb.tris), VCT_ARG_OF(eb.cdf),
                           VCT_ARG_OF(eb.count), VCT_ARG_OF(eb.inv_area));
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 16, 4, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
-                          VCT_ARG_OF(accum), VCT_ARG_OF(discarded));
+        rc = vct_set_args(err, STAGE, k, 16, 5, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
+                          VCT_ARG_OF(accum), VCT_ARG_OF(discarded), VCT_ARG_OF(ambient));
     const size_t global[2] = {(size_t)opt->width, (size_t)opt->height}, local[2] = {8, 8};
     const int show = opt->progress && isatty(2);
     const cl_uint per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;

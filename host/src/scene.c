@@ -86,6 +86,10 @@ int vct_scene_validate(vct_scene *s, vct_error *err) {
             return vct_fail(err, VCT_ERR_INPUT, "scene %s: light %u has a non-finite value", src,
                             l);
     }
+    if (!finite3(s->ambient) || s->ambient[0] < 0 || s->ambient[1] < 0 || s->ambient[2] < 0)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "scene %s: ambient radiance (%g %g %g) must be finite and not negative",
+                        src, s->ambient[0], s->ambient[1], s->ambient[2]);
     for (int k = 0; k < 3; ++k) {
         s->bounds_min[k] = lo[k];
         s->bounds_max[k] = hi[k];

@@ -131,6 +131,9 @@ typedef struct vct_scene {
     vct_light *lights;
     vct_camera camera;
     int has_camera;
+    /* Radiance arriving from every direction where nothing is hit (a
+     * constant environment, 0 by default): lights what is open to the sky. */
+    float ambient[3];
     uint32_t degenerate_triangles; /* zero-area triangles, kept but never hit */
     float bounds_min[3], bounds_max[3];
 } vct_scene;
@@ -364,6 +367,108 @@ int vct_bricks_read(vct_context *ctx, const vct_voxels *voxels, int channel, uin
  * reads. A point in a node without a brick reads 0. */
 int vct_bricks_sample(vct_context *ctx, const vct_voxels *voxels, int channel, uint32_t level,
                       const float *points, uint32_t n, float *out, vct_error *err);
+
+/* ---- voxel cone tracing ------------------------------------------------------------ */
+
+/* How cones march (kernels/cone_trace.h). */
+typedef struct vct_cone_settings {
+    float step;        /* step as a fraction of the cone's diameter there */
+    float offset;      /* start offset along the surface normal, in voxels */
+    float ao_distance; /* ambient-occlusion range, as a fraction of the volume's side */
+    float stop_alpha;  /* a cone stops once its opacity reaches this */
+} vct_cone_settings;
+
+/* step 0.5, offset 4 voxels, AO over 1/8 of the volume, stop at 0.99. */
+vct_cone_settings vct_cone_settings_default(void);
+
+/* Diffuse cone preset of `count` cones (1, 5, 6, 9 or 16): directions in a
+ * frame whose z axis is the normal (4 floats each: xyz and the weight) and
+ * tan(half-angle) each. Each weight is the cosine-weighted share of the
+ * hemisphere closest to its cone, so the weights sum to 1 and a constant
+ * environment L is integrated exactly: sum w_i L = L. A cone's half-angle
+ * matches its share's solid angle, at most 20 degrees. */
+int vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err);
+
+/* Marches n cones through the radiance bricks: 8 floats in each (origin xyz,
+ * tan(half-angle); unit direction xyz, reach), 8 floats out each (radiance
+ * rgb and opacity; opacity within the AO distance, sum of levels sampled,
+ * samples, 1 if it left the volume). `ambient`: radiance beyond the volume
+ * (NULL: none). The bricks must be built. */
+int vct_cone_trace(vct_context *ctx, const vct_voxels *voxels, const vct_cone_settings *settings,
+                   const float *ambient, const float *cones, uint32_t n, float *out,
+                   vct_error *err);
+
+/* The effect plan: which effects a scene calls for, and why. The renderer
+ * enqueues no work for an effect that is off. */
+typedef enum vct_effect {
+    VCT_EFFECT_DIRECT,     /* light from the scene's lights */
+    VCT_EFFECT_SHADOWS,    /* hard shadows by shadow rays */
+    VCT_EFFECT_INDIRECT,   /* indirect diffuse light by cones */
+    VCT_EFFECT_SPECULAR,   /* glossy highlights and a specular cone */
+    VCT_EFFECT_REFRACTION, /* rays followed through transmissive materials */
+    VCT_EFFECT_EMISSION,   /* emissive surfaces */
+    VCT_EFFECT_AO,         /* ambient occlusion of the ambient light */
+    VCT_EFFECTS
+} vct_effect;
+
+typedef enum vct_effect_force { VCT_FORCE_AUTO, VCT_FORCE_ON, VCT_FORCE_OFF } vct_effect_force;
+
+typedef struct vct_plan {
+    int on[VCT_EFFECTS];
+    int forced[VCT_EFFECTS]; /* 1 where a flag decided, not the scene */
+    char why[VCT_EFFECTS][160];
+} vct_plan;
+
+const char *vct_effect_name(vct_effect effect);
+/* -1 for an unknown name. */
+int vct_effect_from_name(const char *name);
+/* force: VCT_EFFECTS entries, or NULL to follow the scene. */
+void vct_plan_make(const vct_scene *scene, const vct_effect_force *force, vct_plan *plan);
+/* Whether the plan reads the voxel hierarchy, and whether it needs its light. */
+int vct_plan_needs_voxels(const vct_plan *plan);
+int vct_plan_needs_voxel_light(const vct_plan *plan);
+
+typedef struct vct_vct_options {
+    int width, height;
+    uint32_t diffuse_cones; /* preset: 1, 5, 6, 9 or 16 */
+    vct_cone_settings cones;
+    int aovs; /* also fill the AOV images */
+} vct_vct_options;
+
+/* 512 x 512, 6 diffuse cones, default cone settings, no AOVs. */
+vct_vct_options vct_vct_options_default(void);
+
+typedef struct vct_aovs {
+    vct_image direct;   /* direct light and emission */
+    vct_image indirect; /* indirect diffuse (or ambient light times AO) */
+    vct_image specular; /* the specular cone */
+    vct_image ao;       /* fraction of the hemisphere open within the AO distance */
+    vct_image level;    /* mean octree level the diffuse cones sampled */
+} vct_aovs;
+void vct_aovs_free(vct_aovs *aovs);
+
+/* Builds what the plan's cones read: voxels, octree and bricks, then light
+ * (when indirect diffuse or specular is on) with `bounces` - 1 extra
+ * diffuse bounces gathered by cones at the voxels. *voxels is NULL when the
+ * plan needs none. */
+int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                    const vct_plan *plan, const vct_voxel_options *voxel_options,
+                    const vct_brick_options *brick_options, uint32_t bounces,
+                    const vct_cone_settings *cones, vct_voxels **voxels, vct_error *err);
+
+/* Adds one diffuse bounce to the voxels' injected light: cones from every
+ * voxel gather the filtered radiance, albedo times it is added, and the
+ * radiance bricks are filtered again. */
+int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene, vct_voxels *voxels,
+                             const vct_cone_settings *cones, uint32_t diffuse_cones,
+                             vct_error *err);
+
+/* Renders by voxel cone tracing: stages "vct primary", "vct diffuse cones"
+ * and "vct specular cone", each only when the plan calls for it. voxels may
+ * be NULL when the plan needs none. aovs may be NULL. */
+int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                   const vct_voxels *voxels, const vct_plan *plan, const vct_vct_options *options,
+                   vct_image *image, vct_aovs *aovs, vct_error *err);
 
 /* ---- images --------------------------------------------------------------------- */
 

@@ -1,0 +1,81 @@
+/* vct render --method vct: the effect plan, the voxel hierarchy it needs,
+ * the cone-traced image and its AOVs. */
+#include <stdio.h>
+#include <string.h>
+
+#include "commands.h"
+
+void cli_voxel_options(const cli_options *opt, vct_voxel_options *vo) {
+    memset(vo, 0, sizeof *vo);
+    vo->resolution = (uint32_t)opt->voxel_res;
+    vo->thin = opt->thin_voxels;
+    vo->has_bounds = opt->has_voxel_bounds;
+    for (int k = 0; k < 3; ++k)
+        vo->bounds_min[k] = opt->voxel_bounds[k];
+    vo->bounds_size = opt->voxel_bounds[3];
+}
+
+void cli_print_plan(const vct_plan *plan, FILE *out) {
+    fprintf(out, "effect plan:\n");
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        fprintf(out, "  %-10s %-3s  %s\n", vct_effect_name((vct_effect)e), plan->on[e] ? "on" : "off",
+                plan->why[e]);
+}
+
+static int write_aovs(const vct_aovs *a, const char *prefix, float exposure, vct_error *err) {
+    const struct {
+        const char *name;
+        const vct_image *image;
+    } outs[] = {{"direct", &a->direct},
+                {"indirect", &a->indirect},
+                {"specular", &a->specular},
+                {"ao", &a->ao},
+                {"level", &a->level}};
+    for (size_t i = 0; i < sizeof outs / sizeof outs[0]; ++i) {
+        char path[4096];
+        snprintf(path, sizeof path, "%s_%s.pfm", prefix, outs[i].name);
+        int rc = cli_make_parent_dir(path, err);
+        if (rc == VCT_OK)
+            rc = vct_image_write(outs[i].image, path, exposure, err);
+        if (rc)
+            return rc;
+        printf("wrote %s\n", path);
+    }
+    return VCT_OK;
+}
+
+int cli_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *grid,
+                   const cli_options *opt, vct_image *image, vct_error *err) {
+    vct_plan plan;
+    vct_plan_make(s, opt->force, &plan);
+    if (opt->print_plan)
+        cli_print_plan(&plan, stdout);
+    vct_vct_options vo = vct_vct_options_default();
+    vo.width = opt->width;
+    vo.height = opt->height;
+    vo.diffuse_cones = (uint32_t)opt->diffuse_cones;
+    vo.cones = opt->cones;
+    vo.aovs = opt->aov_prefix != NULL;
+    vct_voxel_options voxel;
+    cli_voxel_options(opt, &voxel);
+    const vct_brick_options bricks = {opt->bricks, opt->anisotropic != 0};
+    vct_voxels *v = NULL;
+    int rc = vct_vct_prepare(ctx, s, grid, &plan, &voxel, &bricks, (uint32_t)opt->bounces,
+                             &opt->cones, &v, err);
+    if (rc == VCT_OK && v) {
+        vct_brick_info b;
+        vct_bricks_info_get(v, &b);
+        fprintf(stderr, "voxels: %u^3, %u bricks, %s\n", voxel.resolution, b.bricks,
+                b.storage_reason);
+    }
+    vct_aovs aovs;
+    if (rc == VCT_OK)
+        rc = vct_render_vct(ctx, s, grid, v, &plan, &vo, image, opt->aov_prefix ? &aovs : NULL,
+                            err);
+    if (rc == VCT_OK && opt->aov_prefix) {
+        rc = write_aovs(&aovs, opt->aov_prefix, opt->exposure, err);
+        vct_aovs_free(&aovs);
+    }
+    vct_voxels_free(v);
+    return rc;
+}

@@ -1,0 +1,290 @@
+/* Voxel cone tracing: the voxel hierarchy the plan needs, and the image
+ * (kernels/vct_render.cl), one stage per effect. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cones.h"
+#include "scene_device.h"
+#include "vct_types.h"
+#include "voxels.h"
+
+#define PRIMARY_STAGE "vct primary"
+#define DIFFUSE_STAGE "vct diffuse cones"
+#define SPECULAR_STAGE "vct specular cone"
+#define BOUNCE_STAGE "light bounce"
+
+vct_vct_options vct_vct_options_default(void) {
+    vct_vct_options o;
+    memset(&o, 0, sizeof o);
+    o.width = 512;
+    o.height = 512;
+    o.diffuse_cones = 6;
+    o.cones = vct_cone_settings_default();
+    return o;
+}
+
+void vct_aovs_free(vct_aovs *a) {
+    vct_image_free(&a->direct);
+    vct_image_free(&a->indirect);
+    vct_image_free(&a->specular);
+    vct_image_free(&a->ao);
+    vct_image_free(&a->level);
+}
+
+/* The preset on the device: vct_cone_dir per cone. */
+static cl_mem cone_buffer(vct_context *ctx, uint32_t count, const char *stage, vct_error *err) {
+    float dirs[64], tan_half[16];
+    if (vct_cone_preset(count, dirs, tan_half, err))
+        return NULL;
+    vct_cone_dir cones[16];
+    memset(cones, 0, sizeof cones);
+    for (uint32_t i = 0; i < count; ++i) {
+        memcpy(cones[i].dir.s, &dirs[4 * i], 16);
+        cones[i].aperture.s[0] = tan_half[i];
+    }
+    return vct_buffer_create(ctx, stage, "cone preset", sizeof cones[0] * count, CL_MEM_READ_ONLY,
+                             cones, err);
+}
+
+int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v,
+                             const vct_cone_settings *cs, uint32_t diffuse_cones, vct_error *err) {
+    (void)s;
+    if (!v->radiance || !v->has_bricks)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: inject light into built bricks first (vct_bricks_build, "
+                        "vct_voxels_inject_light)",
+                        BOUNCE_STAGE);
+    int rc = vct_cone_settings_check(cs, err);
+    const uint32_t n = v->info.voxels;
+    if (rc || n == 0)
+        return rc;
+    vct_stage_begin(ctx, BOUNCE_STAGE);
+    cl_program p;
+    rc = vct_program_get(ctx, "inject_bounce.cl", vct_cone_pool_options(v), &p, err);
+    cl_mem cones = rc == VCT_OK ? cone_buffer(ctx, diffuse_cones, BOUNCE_STAGE, err) : NULL;
+    cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
+    vct_cone_desc desc;
+    vct_cone_desc_make(v, cs, s->ambient, &desc);
+    int next = 0;
+    rc = k ? vct_cone_set_args(k, v, &desc, BOUNCE_STAGE, &next, err) : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, BOUNCE_STAGE, k, next, 7, VCT_ARG_OF(cones),
+                          VCT_ARG_OF(diffuse_cones), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
+                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->radiance));
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k, n, 64, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, BOUNCE_STAGE, err);
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, cones);
+    vct_stage_end(ctx);
+    return rc == VCT_OK ? vct_bricks_refresh_radiance(ctx, v, err) : rc;
+}
+
+int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_grid *g, const vct_plan *plan,
+                    const vct_voxel_options *vo, const vct_brick_options *bo, uint32_t bounces,
+                    const vct_cone_settings *cs, vct_voxels **out, vct_error *err) {
+    *out = NULL;
+    if (!vct_plan_needs_voxels(plan))
+        return VCT_OK;
+    if (bounces < 1 || bounces > 4)
+        return vct_fail(err, VCT_ERR_INPUT, "%u bounces: give 1 (direct light in the voxels) to 4",
+                        bounces);
+    vct_voxels *v = vct_voxelize(ctx, s, vo, err);
+    int rc = v ? vct_octree_build(ctx, v, err) : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_bricks_build(ctx, v, bo, err);
+    if (rc == VCT_OK && vct_plan_needs_voxel_light(plan)) {
+        rc = vct_voxels_inject_light(ctx, s, g, v, err);
+        for (uint32_t b = 1; rc == VCT_OK && b < bounces; ++b)
+            rc = vct_voxels_inject_bounce(ctx, s, v, cs, 6, err);
+    }
+    if (rc != VCT_OK) {
+        vct_voxels_free(v);
+        return rc;
+    }
+    *out = v;
+    return VCT_OK;
+}
+
+/* -D options: the planned effects, then the brick pool's kind. */
+static void program_options(const vct_plan *plan, const vct_voxels *v, char *out, size_t size) {
+    static const char *defines[VCT_EFFECTS] = {
+        "-DVCT_DIRECT",     "-DVCT_SHADOWS",  "-DVCT_INDIRECT", "-DVCT_SPECULAR",
+        "-DVCT_REFRACTION", "-DVCT_EMISSION", "-DVCT_AO"};
+    size_t len = 0;
+    out[0] = '\0';
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        if (plan->on[e])
+            len += (size_t)snprintf(out + len, size - len, "%s%s", len ? " " : "", defines[e]);
+    if (v && len < size)
+        snprintf(out + len, size - len, "%s%s", len ? " " : "", vct_cone_pool_options(v));
+}
+
+typedef struct frame {
+    vct_context *ctx;
+    const vct_voxels *v;
+    cl_program program;
+    cl_mem gbuf, image, aov;
+    vct_cone_desc desc;
+    cl_uint size[2];
+} frame;
+
+static int launch_frame_kernel(frame *f, cl_kernel k, vct_error *err) {
+    const size_t global[2] = {f->size[0], f->size[1]}, local[2] = {8, 8};
+    return vct_launch_2d(f->ctx, k, global, local, err);
+}
+
+static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_camera_desc *cam,
+                   vct_error *err) {
+    vct_scene_buffers sb = {0};
+    int rc = vct_scene_buffers_make(f->ctx, s, PRIMARY_STAGE, &sb, err);
+    cl_kernel k = rc == VCT_OK ? vct_kernel_create(f->ctx, f->program, "vct_primary", err) : NULL;
+    rc = k ? vct_grid_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
+    const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 9, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
+                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
+                          VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov));
+    if (rc == VCT_OK)
+        rc = launch_frame_kernel(f, k, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(f->ctx, PRIMARY_STAGE, err);
+    if (k)
+        clReleaseKernel(k);
+    vct_scene_buffers_release(f->ctx, &sb);
+    return rc;
+}
+
+/* One cone kernel over the G-buffer: CONE_POOLS, child, desc, then `extra`
+ * (count, VCT_ARG_OF pairs), then gbuf, materials, size, image, aov. */
+static int cone_pass(frame *f, const vct_scene *s, const char *stage, const char *name,
+                     cl_mem cones, cl_uint cone_count, vct_error *err) {
+    vct_scene_buffers sb = {0};
+    int rc = vct_scene_buffers_make(f->ctx, s, stage, &sb, err);
+    cl_kernel k = rc == VCT_OK ? vct_kernel_create(f->ctx, f->program, name, err) : NULL;
+    int next = 0;
+    rc = k ? vct_cone_set_args(k, f->v, &f->desc, stage, &next, err) : (int)err->status;
+    if (rc == VCT_OK && cones) {
+        rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_OF(cones), VCT_ARG_OF(cone_count));
+        next += 2;
+    }
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, next, 5, VCT_ARG_OF(f->gbuf), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(f->size), VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov));
+    if (rc == VCT_OK)
+        rc = launch_frame_kernel(f, k, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(f->ctx, stage, err);
+    if (k)
+        clReleaseKernel(k);
+    vct_scene_buffers_release(f->ctx, &sb);
+    return rc;
+}
+
+/* The AOV buffer (4 float4 per pixel) split into images. */
+static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
+    const size_t pixels = (size_t)f->size[0] * f->size[1];
+    float *raw = malloc(64 * pixels);
+    vct_image *slots[5] = {&a->direct, &a->indirect, &a->specular, &a->ao, &a->level};
+    int rc = raw ? vct_buffer_read(f->ctx, "vct AOVs", f->aov, 0, 64 * pixels, raw, err)
+                 : vct_fail(err, VCT_ERR_MEMORY, "vct AOVs: out of host memory");
+    for (int i = 0; i < 5 && rc == VCT_OK; ++i) {
+        slots[i]->width = (int)f->size[0];
+        slots[i]->height = (int)f->size[1];
+        slots[i]->rgba = malloc(16 * pixels);
+        if (!slots[i]->rgba) {
+            rc = vct_fail(err, VCT_ERR_MEMORY, "vct AOVs: out of host memory");
+            break;
+        }
+        for (size_t p = 0; p < pixels; ++p) {
+            const float *src = &raw[16 * p + 4 * (i < 3 ? i : 3)];
+            float *dst = &slots[i]->rgba[4 * p];
+            if (i < 3)
+                memcpy(dst, src, 16);
+            else
+                dst[0] = dst[1] = dst[2] = src[i - 3], dst[3] = 1.0f;
+        }
+    }
+    free(raw);
+    return rc;
+}
+
+int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, const vct_voxels *v,
+                   const vct_plan *plan, const vct_vct_options *opt, vct_image *image,
+                   vct_aovs *aovs, vct_error *err) {
+    memset(image, 0, sizeof *image);
+    if (aovs)
+        memset(aovs, 0, sizeof *aovs);
+    const int cones_on = vct_plan_needs_voxels(plan);
+    if (cones_on && (!v || !v->has_bricks))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "vct: the plan traces cones: build the voxels first (vct_vct_prepare)");
+    int rc = vct_cone_settings_check(&opt->cones, err);
+    vct_camera_desc cam;
+    if (rc == VCT_OK)
+        rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &cam, err);
+    if (rc)
+        return rc;
+    frame f;
+    memset(&f, 0, sizeof f);
+    f.ctx = ctx;
+    f.v = cones_on ? v : NULL;
+    f.size[0] = (cl_uint)opt->width;
+    f.size[1] = (cl_uint)opt->height;
+    if (f.v)
+        vct_cone_desc_make(f.v, &opt->cones, s->ambient, &f.desc);
+    char options[256];
+    program_options(plan, f.v, options, sizeof options);
+    const size_t pixels = (size_t)opt->width * opt->height;
+
+    vct_stage_begin(ctx, PRIMARY_STAGE);
+    rc = vct_program_get(ctx, "vct_render.cl", options, &f.program, err);
+    f.gbuf = rc == VCT_OK ? vct_buffer_create(ctx, PRIMARY_STAGE, "G-buffer", 64 * pixels,
+                                              CL_MEM_READ_WRITE, NULL, err)
+                          : NULL;
+    f.image = f.gbuf ? vct_buffer_create(ctx, PRIMARY_STAGE, "image", 16 * pixels,
+                                         CL_MEM_READ_WRITE, NULL, err)
+                     : NULL;
+    rc = f.image ? VCT_OK : (int)err->status;
+    if (rc == VCT_OK && aovs) {
+        f.aov = vct_buffer_create(ctx, PRIMARY_STAGE, "AOVs", 64 * pixels, CL_MEM_READ_WRITE, NULL,
+                                  err);
+        rc = f.aov ? vct_buffer_fill_u32(ctx, PRIMARY_STAGE, f.aov, 0, 16 * pixels, err)
+                   : (int)err->status;
+    }
+    if (rc == VCT_OK)
+        rc = primary(&f, s, g, &cam, err);
+    vct_stage_end(ctx);
+
+    if (rc == VCT_OK && (plan->on[VCT_EFFECT_INDIRECT] || plan->on[VCT_EFFECT_AO])) {
+        vct_stage_begin(ctx, DIFFUSE_STAGE);
+        cl_mem cones = cone_buffer(ctx, opt->diffuse_cones, DIFFUSE_STAGE, err);
+        const cl_uint count = opt->diffuse_cones;
+        rc = cones ? cone_pass(&f, s, DIFFUSE_STAGE, "vct_diffuse_cones", cones, count, err)
+                   : (int)err->status;
+        vct_buffer_release(ctx, cones);
+        vct_stage_end(ctx);
+    }
+    if (rc == VCT_OK && plan->on[VCT_EFFECT_SPECULAR]) {
+        vct_stage_begin(ctx, SPECULAR_STAGE);
+        rc = cone_pass(&f, s, SPECULAR_STAGE, "vct_specular_cone", NULL, 0, err);
+        vct_stage_end(ctx);
+    }
+    if (rc == VCT_OK)
+        rc = vct_image_read_device(ctx, "vct image", f.image, opt->width, opt->height, image, err);
+    if (rc == VCT_OK && aovs)
+        rc = read_aovs(&f, aovs, err);
+    vct_buffer_release(ctx, f.aov);
+    vct_buffer_release(ctx, f.image);
+    vct_buffer_release(ctx, f.gbuf);
+    if (rc != VCT_OK) {
+        vct_image_free(image);
+        if (aovs)
+            vct_aovs_free(aovs);
+    }
+    return rc;
+}

@@ -1,0 +1,134 @@
+/* Cone marching through the filtered brick hierarchy.
+ *
+ * A cone of half-angle theta from origin o along unit d is sampled at
+ * distances t, starting one voxel out. Its diameter there is
+ * D = max(2 t tan(theta), 2 voxels); it reads the level whose samples are D / 2
+ * apart (level L-1 samples are one voxel apart, each level up doubles that),
+ * interpolating between the two nearest levels, and steps on by
+ * step * D. A sample's opacity stands for a thickness of its spacing; for a
+ * different step it is corrected to 1 - (1 - a)^(step / spacing), its colour
+ * scaled alike. Samples composite front to back:
+ *     C += (1 - A) c,  A += (1 - A) a
+ * (c is premultiplied, as the pool stores it). The march stops when A
+ * reaches the stop opacity, or when the cone leaves the volume: then what it
+ * still sees, (1 - A), is the environment's radiance.
+ *
+ * Build with -DVCT_ANISOTROPIC to read the six directional radiance pools
+ * (weighted by the squared direction components) at levels 0 .. L-2. */
+#ifndef VCT_CONE_TRACE_H
+#define VCT_CONE_TRACE_H
+
+#include "brick_pool.h"
+#include "octree.h"
+#include "vct_types.h"
+
+#define CONE_MAX_STEPS 4096u
+
+#ifdef VCT_ANISOTROPIC
+#define CONE_POOLS                                                                                 \
+    BRICK_POOL radiance, BRICK_POOL dir0, BRICK_POOL dir1, BRICK_POOL dir2, BRICK_POOL dir3,       \
+        BRICK_POOL dir4, BRICK_POOL dir5
+#define CONE_POOLS_PASS radiance, dir0, dir1, dir2, dir3, dir4, dir5
+#else
+#define CONE_POOLS BRICK_POOL radiance
+#define CONE_POOLS_PASS radiance
+#endif
+
+typedef struct cone_result {
+    float3 radiance; /* what the cone sees, the environment included */
+    float alpha;     /* opacity accumulated along it */
+    float ao_alpha;  /* opacity accumulated within the AO distance */
+    float level_sum; /* sum of the (fractional) levels sampled */
+    uint samples;
+    int left; /* 1: it left the volume */
+} cone_result;
+
+/* Brick b's trilinear sample at `at` ([0, 2]^3 texel units) of a level-`level`
+ * node, seen by a cone travelling along d. */
+inline float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint level, uint levels,
+                                float3 d) {
+#ifdef VCT_ANISOTROPIC
+    if (level + 1u < levels) {
+        const float3 w = d * d;
+        const float4 sx = d.x >= 0.0f ? brick_sample(dir0, pool, b, at) : brick_sample(dir3, pool, b, at);
+        const float4 sy = d.y >= 0.0f ? brick_sample(dir1, pool, b, at) : brick_sample(dir4, pool, b, at);
+        const float4 sz = d.z >= 0.0f ? brick_sample(dir2, pool, b, at) : brick_sample(dir5, pool, b, at);
+        return (w.x * sx + w.y * sy + w.z * sz) / (w.x + w.y + w.z);
+    }
+#endif
+    (void)level;
+    (void)levels;
+    (void)d;
+    return brick_sample(radiance, pool, b, at);
+}
+
+/* The pool at `at` (volume units, [0, 1)^3) and fractional level `level`:
+ * one descent from the root reads both neighbouring levels. Empty nodes
+ * read 0. */
+inline float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels, float3 at,
+                          float level, float3 d) {
+    const uint coarse = (uint)level, fine = min(coarse + 1u, levels - 1u);
+    const float f = level - (float)coarse;
+    float4 value[2] = {(float4)(0.0f), (float4)(0.0f)};
+    uint node = 0;
+    for (uint l = 0; l <= fine; ++l) {
+        const float cells = (float)(1u << l);
+        const float3 in_cells = at * cells;
+        const uint3 cell = min(convert_uint3(in_cells), (uint3)((1u << l) - 1u));
+        if (l > 0u) {
+            const uint first = child[node];
+            if (first == OCT_NULL)
+                break; /* empty here and below */
+            node = first + octant_of_cell(cell, 0u);
+        }
+        if (l >= coarse) {
+            const uint b = brick_of(child, node);
+            if (b == BRICK_NULL)
+                break;
+            value[l - coarse] = cone_brick_sample(CONE_POOLS_PASS, pool, b,
+                                                  2.0f * (in_cells - convert_float3(cell)), l,
+                                                  levels, d);
+        }
+    }
+    return fine == coarse ? value[0] : value[0] + f * (value[1] - value[0]);
+}
+
+/* Marches one cone up to distance max_t; origin is already lifted off its
+ * surface. */
+inline cone_result cone_trace(CONE_POOLS, __global const uint *child, const vct_cone_desc *c,
+                              float3 origin, float3 d, float tan_half, float max_t) {
+    cone_result r = {(float3)(0.0f), 0.0f, 0.0f, 0.0f, 0u, 0};
+    const uint levels = c->res.y;
+    const float voxel = c->volume.w / (float)c->res.x, min_diameter = 2.0f * voxel;
+    const float finest = (float)(levels - 1u);
+    float t = voxel;
+    for (uint i = 0; i < CONE_MAX_STEPS && t <= max_t; ++i) {
+        const float3 at = (origin + t * d - c->volume.xyz) * c->ambient.w;
+        if (any(at < 0.0f) || any(at >= 1.0f)) {
+            r.left = 1;
+            break;
+        }
+        const float diameter = fmax(2.0f * t * tan_half, min_diameter);
+        const float level = clamp(finest - log2(diameter / min_diameter), 0.0f, finest);
+        const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d);
+        const float step = c->march.x * diameter;
+        const float spacing = voxel * exp2(finest - level);
+        const float a_in = clamp(s.w, 0.0f, 1.0f);
+        const float a = a_in > 0.0f ? 1.0f - pow(1.0f - a_in, step / spacing) : 0.0f;
+        const float3 colour = a_in > 0.0f ? s.xyz * (a / a_in) : (float3)(0.0f);
+        r.radiance += (1.0f - r.alpha) * colour;
+        r.alpha += (1.0f - r.alpha) * a;
+        if (t <= c->march.z)
+            r.ao_alpha = r.alpha;
+        r.level_sum += level;
+        ++r.samples;
+        if (r.alpha >= c->march.w)
+            break;
+        t += step;
+    }
+    if (r.left)
+        r.radiance += (1.0f - r.alpha) * c->ambient.xyz;
+    return r;
+}
+
+#endif

@@ -1,0 +1,214 @@
+/* Voxel cone tracing into the image buffer, one kernel per effect so that
+ * an effect the plan leaves out enqueues nothing:
+ *   vct_primary        camera rays through the triangle grid, direct light
+ *                      exactly as the ray caster computes it, emission, and
+ *                      refraction through dielectrics; writes the G-buffer
+ *   vct_diffuse_cones  indirect diffuse light and ambient occlusion
+ *   vct_specular_cone  one cone along the mirror direction
+ * Effects are chosen with -D: VCT_DIRECT, VCT_SHADOWS, VCT_EMISSION,
+ * VCT_REFRACTION, VCT_SPECULAR, VCT_INDIRECT, VCT_AO (and the pool's
+ * VCT_BRICK_IMAGE, VCT_ANISOTROPIC).
+ *
+ * G-buffer, 4 float4 per pixel: position and material id (as bits); normal
+ * facing the viewer and 1 where a surface was found; direction towards the
+ * viewer; the throughput of the refractions on the way. AOVs, 4 float4 per
+ * pixel when given: direct, indirect diffuse, specular, (open fraction,
+ * mean level sampled, 0, 1). */
+#include "bsdf.h"
+#include "camera.h"
+#include "cone_trace.h"
+#include "direct_light.h"
+#include "grid_traverse.h"
+#include "vct_types.h"
+
+#define VCT_MAX_INTERFACES 8u
+
+#ifdef VCT_SHADOWS
+#define SHADOWS 1
+#else
+#define SHADOWS 0
+#endif
+
+__kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
+                          __global const vct_material_desc *materials,
+                          __global const uint *tri_material, __global const vct_light_desc *lights,
+                          uint light_count, float4 ambient, __global float4 *gbuf,
+                          __global float4 *image, __global float4 *aov) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= cam.size.x || y >= cam.size.y)
+        return;
+    const grid_view g = GRID_VIEW();
+    const uint pixel = y * cam.size.x + x;
+    float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
+    float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
+    float4 gpos = (float4)(0.0f), gnormal = (float4)(0.0f), gview = (float4)(0.0f);
+    for (uint depth = 0; depth < VCT_MAX_INTERFACES; ++depth) {
+        hit_record h;
+        if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
+            radiance += throughput * ambient.xyz;
+            break;
+        }
+        float3 p, ng, n;
+        int front;
+        if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
+            break;
+        const uint mat = tri_material[h.tri];
+        const vct_material_desc m = materials[mat];
+        const float3 wo = -dir;
+#ifdef VCT_REFRACTION
+        if (is_dielectric(&m)) {
+            /* Follow the transmitted ray exactly (total internal reflection
+             * where there is none); the reflected part is left out. */
+            const float ior = fmax(m.extra.x, 1.0001f);
+            const float eta = front ? 1.0f / ior : ior;
+            const float cos_i = fmin(dot(n, wo), 1.0f);
+            const float F = fresnel_dielectric(cos_i, eta);
+            const float eps = surface_epsilon(&g, p);
+            if (F >= 1.0f) {
+                dir = reflect_dir(wo, n);
+                org = p + n * eps;
+            } else {
+                const float sin2_t = eta * eta * fmax(0.0f, 1.0f - cos_i * cos_i);
+                const float cos_t = sqrt(fmax(0.0f, 1.0f - sin2_t));
+                dir = normalize(-eta * wo + (eta * cos_i - cos_t) * n);
+                throughput *= (1.0f - F) * m.albedo.xyz;
+                org = p - n * eps;
+            }
+            continue;
+        }
+#endif
+#ifdef VCT_EMISSION
+        radiance += throughput * m.emission.xyz;
+#endif
+#ifdef VCT_DIRECT
+        float e = -1.0f;
+        float3 r = (float3)(0.0f);
+#ifdef VCT_SPECULAR
+        if (glossy_probability(&m) > 0.0f && !is_mirror(&m) && !is_dielectric(&m)) {
+            e = phong_exponent(m.emission.w);
+            r = reflect_dir(wo, n);
+        }
+#endif
+        const direct_terms d = direct_gather(&g, lights, light_count, p, n, SHADOWS, r, e);
+        float3 direct = diffuse_color(&m) * VCT_INV_PI * d.irradiance;
+        if (e >= 0.0f)
+            direct += glossy_color(&m) * d.lobe;
+        radiance += throughput * direct;
+#endif
+        gpos = (float4)(p, as_float(mat));
+        gnormal = (float4)(n, 1.0f);
+        gview = (float4)(wo, 0.0f);
+        break;
+    }
+    gbuf[4u * pixel] = gpos;
+    gbuf[4u * pixel + 1u] = gnormal;
+    gbuf[4u * pixel + 2u] = gview;
+    gbuf[4u * pixel + 3u] = (float4)(throughput, 0.0f);
+    image[pixel] = (float4)(radiance, 1.0f);
+    if (aov)
+        aov[4u * pixel] = (float4)(radiance, 1.0f);
+}
+
+__kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                                __global const vct_cone_dir *cones, uint cone_count,
+                                __global const float4 *gbuf,
+                                __global const vct_material_desc *materials, uint2 size,
+                                __global float4 *image, __global float4 *aov) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= size.x || y >= size.y)
+        return;
+    const uint pixel = y * size.x + x;
+    const float4 gnormal = gbuf[4u * pixel + 1u];
+    if (gnormal.w == 0.0f)
+        return;
+    const float4 gpos = gbuf[4u * pixel];
+    const float3 throughput = gbuf[4u * pixel + 3u].xyz;
+    const vct_material_desc m = materials[as_uint(gpos.w)];
+    const float3 n = gnormal.xyz;
+    float3 t, b;
+    basis_of(n, &t, &b);
+    const float voxel = cd.volume.w / (float)cd.res.x;
+    const float3 origin = gpos.xyz + n * (cd.march.y * voxel);
+#ifdef VCT_INDIRECT
+    const float reach = INFINITY;
+#else
+    const float reach = cd.march.z; /* occlusion only: no further than the AO distance */
+#endif
+    float3 gathered = (float3)(0.0f);
+    float open = 0.0f, level_sum = 0.0f;
+    uint samples = 0;
+    for (uint i = 0; i < cone_count; ++i) {
+        const vct_cone_dir c = cones[i];
+        const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
+        const cone_result r = cone_trace(CONE_POOLS_PASS, child, &cd, origin, d, c.aperture.x, reach);
+        gathered += c.dir.w * r.radiance;
+        open += c.dir.w * (1.0f - r.ao_alpha);
+        level_sum += r.level_sum;
+        samples += r.samples;
+    }
+    float3 add = (float3)(0.0f);
+#if defined(VCT_INDIRECT)
+    add = diffuse_color(&m) * throughput * gathered;
+#elif defined(VCT_AO)
+    add = diffuse_color(&m) * throughput * cd.ambient.xyz * open;
+#endif
+    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
+    if (aov) {
+        aov[4u * pixel + 1u] = (float4)(add, 1.0f);
+        aov[4u * pixel + 3u] =
+            (float4)(open, samples ? level_sum / (float)samples : 0.0f, 0.0f, 1.0f);
+    }
+}
+
+/* Half-angle of a Phong lobe cos^e: the cone that holds half its energy. */
+inline float specular_tan_half(float e) {
+    const float c = pow(0.5f, 1.0f / (e + 1.0f));
+    return sqrt(fmax(1.0f - c * c, 0.0f)) / c;
+}
+
+__kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                                __global const float4 *gbuf,
+                                __global const vct_material_desc *materials, uint2 size,
+                                __global float4 *image, __global float4 *aov) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= size.x || y >= size.y)
+        return;
+    const uint pixel = y * size.x + x;
+    const float4 gnormal = gbuf[4u * pixel + 1u];
+    if (gnormal.w == 0.0f)
+        return;
+    const float4 gpos = gbuf[4u * pixel];
+    const vct_material_desc m = materials[as_uint(gpos.w)];
+    if (!(glossy_probability(&m) > 0.0f) || is_dielectric(&m))
+        return; /* nothing glossy here: the pixel is left as it is */
+    const float3 n = gnormal.xyz, wo = gbuf[4u * pixel + 2u].xyz;
+    const float3 throughput = gbuf[4u * pixel + 3u].xyz;
+    const float3 r = reflect_dir(wo, n);
+    const int mirror = is_mirror(&m);
+    const float e = phong_exponent(m.emission.w);
+    const float voxel = cd.volume.w / (float)cd.res.x;
+    const float3 origin = gpos.xyz + n * (cd.march.y * voxel);
+    const cone_result c = cone_trace(CONE_POOLS_PASS, child, &cd, origin, r,
+                                     mirror ? 0.0f : specular_tan_half(e), INFINITY);
+    float3 weight = glossy_color(&m) * throughput;
+    if (!mirror)
+        weight *= (e + 2.0f) / (e + 1.0f) * fmax(dot(n, r), 0.0f);
+    const float3 add = weight * c.radiance;
+    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
+    if (aov)
+        aov[4u * pixel + 2u] = (float4)(add, 1.0f);
+}
+
+/* Cones given one by one (for tests and tools): 2 float4 in, origin and
+ * tan(half-angle), direction and reach; 2 float4 out, radiance and opacity,
+ * then AO opacity, level sum, samples and 1 if it left the volume. */
+__kernel void cone_probe(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                         __global const float4 *cones, uint n, __global float4 *out) {
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const float4 a = cones[2u * i], b = cones[2u * i + 1u];
+    const cone_result r = cone_trace(CONE_POOLS_PASS, child, &cd, a.xyz, b.xyz, a.w, b.w);
+    out[2u * i] = (float4)(r.radiance, r.alpha);
+    out[2u * i + 1u] = (float4)(r.ao_alpha, r.level_sum, (float)r.samples, (float)r.left);
+}
