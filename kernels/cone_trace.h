@@ -50,9 +50,12 @@ inline float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint 
 #ifdef VCT_ANISOTROPIC
     if (level + 1u < levels) {
         const float3 w = d * d;
-        const float4 sx = d.x >= 0.0f ? brick_sample(dir0, pool, b, at) : brick_sample(dir3, pool, b, at);
-        const float4 sy = d.y >= 0.0f ? brick_sample(dir1, pool, b, at) : brick_sample(dir4, pool, b, at);
-        const float4 sz = d.z >= 0.0f ? brick_sample(dir2, pool, b, at) : brick_sample(dir5, pool, b, at);
+        const float4 sx =
+            d.x >= 0.0f ? brick_sample(dir0, pool, b, at) : brick_sample(dir3, pool, b, at);
+        const float4 sy =
+            d.y >= 0.0f ? brick_sample(dir1, pool, b, at) : brick_sample(dir4, pool, b, at);
+        const float4 sz =
+            d.z >= 0.0f ? brick_sample(dir2, pool, b, at) : brick_sample(dir5, pool, b, at);
         return (w.x * sx + w.y * sy + w.z * sz) / (w.x + w.y + w.z);
     }
 #endif
@@ -65,8 +68,8 @@ inline float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint 
 /* The pool at `at` (volume units, [0, 1)^3) and fractional level `level`:
  * one descent from the root reads both neighbouring levels. Empty nodes
  * read 0. */
-inline float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels, float3 at,
-                          float level, float3 d) {
+inline float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels,
+                          float3 at, float level, float3 d) {
     const uint coarse = (uint)level, fine = min(coarse + 1u, levels - 1u);
     const float f = level - (float)coarse;
     float4 value[2] = {(float4)(0.0f), (float4)(0.0f)};
@@ -85,9 +88,8 @@ inline float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, ui
             const uint b = brick_of(child, node);
             if (b == BRICK_NULL)
                 break;
-            value[l - coarse] = cone_brick_sample(CONE_POOLS_PASS, pool, b,
-                                                  2.0f * (in_cells - convert_float3(cell)), l,
-                                                  levels, d);
+            value[l - coarse] = cone_brick_sample(
+                CONE_POOLS_PASS, pool, b, 2.0f * (in_cells - convert_float3(cell)), l, levels, d);
         }
     }
     return fine == coarse ? value[0] : value[0] + f * (value[1] - value[0]);

@@ -17,8 +17,7 @@ __kernel void inject_bounce(CONE_POOLS, __global const uint *child, vct_cone_des
     if (v >= voxels)
         return;
     const float voxel = cd.volume.w / (float)cd.res.x;
-    const float3 centre =
-        cd.volume.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * voxel;
+    const float3 centre = cd.volume.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * voxel;
     const float3 mean = normal[v].xyz;
     const float len = length(mean);
     const float3 n = len > 1e-3f ? mean / len : (float3)(0.0f, 0.0f, 1.0f);
@@ -29,9 +28,9 @@ __kernel void inject_bounce(CONE_POOLS, __global const uint *child, vct_cone_des
     for (uint i = 0; i < cone_count; ++i) {
         const vct_cone_dir c = cones[i];
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
-        gathered += c.dir.w * cone_trace(CONE_POOLS_PASS, child, &cd, origin, d, c.aperture.x,
-                                         INFINITY)
-                                  .radiance;
+        gathered +=
+            c.dir.w *
+            cone_trace(CONE_POOLS_PASS, child, &cd, origin, d, c.aperture.x, INFINITY).radiance;
     }
     voxel_radiance[v].xyz += albedo[v].xyz * gathered;
 }

@@ -140,7 +140,8 @@ __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone
     for (uint i = 0; i < cone_count; ++i) {
         const vct_cone_dir c = cones[i];
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
-        const cone_result r = cone_trace(CONE_POOLS_PASS, child, &cd, origin, d, c.aperture.x, reach);
+        const cone_result r =
+            cone_trace(CONE_POOLS_PASS, child, &cd, origin, d, c.aperture.x, reach);
         gathered += c.dir.w * r.radiance;
         open += c.dir.w * (1.0f - r.ao_alpha);
         level_sum += r.level_sum;

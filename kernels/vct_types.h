@@ -79,7 +79,7 @@ typedef struct vct_cone_desc {
 /* One cone of a diffuse preset: direction in the surface frame (z = normal)
  * and its weight; tan of its half-angle. */
 typedef struct vct_cone_dir {
-    vct_f4 dir; /* xyz; w = weight (the preset's weights sum to 1) */
+    vct_f4 dir;      /* xyz; w = weight (the preset's weights sum to 1) */
     vct_f4 aperture; /* x = tan(half-angle) */
 } vct_cone_dir;
 

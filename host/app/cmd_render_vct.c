@@ -18,8 +18,8 @@ void cli_voxel_options(const cli_options *opt, vct_voxel_options *vo) {
 void cli_print_plan(const vct_plan *plan, FILE *out) {
     fprintf(out, "effect plan:\n");
     for (int e = 0; e < VCT_EFFECTS; ++e)
-        fprintf(out, "  %-10s %-3s  %s\n", vct_effect_name((vct_effect)e), plan->on[e] ? "on" : "off",
-                plan->why[e]);
+        fprintf(out, "  %-10s %-3s  %s\n", vct_effect_name((vct_effect)e),
+                plan->on[e] ? "on" : "off", plan->why[e]);
 }
 
 static int write_aovs(const vct_aovs *a, const char *prefix, float exposure, vct_error *err) {
@@ -70,8 +70,8 @@ int cli_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *grid,
     }
     vct_aovs aovs;
     if (rc == VCT_OK)
-        rc = vct_render_vct(ctx, s, grid, v, &plan, &vo, image, opt->aov_prefix ? &aovs : NULL,
-                            err);
+        rc =
+            vct_render_vct(ctx, s, grid, v, &plan, &vo, image, opt->aov_prefix ? &aovs : NULL, err);
     if (rc == VCT_OK && opt->aov_prefix) {
         rc = write_aovs(&aovs, opt->aov_prefix, opt->exposure, err);
         vct_aovs_free(&aovs);

@@ -178,7 +178,7 @@ int cmd_render(const cli_options *opt) {
                                 1,
                                 1};
     vct_pathtrace_result pr = {0};
-    int rc = !grid  ? (int)err.status
+    int rc = !grid   ? (int)err.status
              : pt    ? vct_render_pathtrace(ctx, s, grid, &po, &image, &pr, &err)
              : cones ? cli_render_vct(ctx, s, grid, opt, &image, &err)
                      : vct_render_raycast(ctx, s, grid, &ro, &image, &err);

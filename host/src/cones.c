@@ -15,8 +15,8 @@ vct_cone_settings vct_cone_settings_default(void) {
 
 int vct_cone_settings_check(const vct_cone_settings *s, vct_error *err) {
     if (!(s->step > 0.0f && s->step <= 4.0f))
-        return vct_fail(err, VCT_ERR_INPUT, "cone step %g: give a fraction of the diameter in (0, 4]",
-                        s->step);
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "cone step %g: give a fraction of the diameter in (0, 4]", s->step);
     if (!(s->offset >= 0.0f && s->offset <= 64.0f))
         return vct_fail(err, VCT_ERR_INPUT, "cone offset %g: give 0 to 64 voxels", s->offset);
     if (!(s->ao_distance > 0.0f && s->ao_distance <= 2.0f))
@@ -143,8 +143,8 @@ int vct_cone_set_args(cl_kernel k, const vct_voxels *v, const void *desc, const 
         if (rc)
             return rc;
     }
-    int rc = vct_set_args(err, stage, k, pools, 2, VCT_ARG_OF(v->child), sizeof(vct_cone_desc),
-                          desc);
+    int rc =
+        vct_set_args(err, stage, k, pools, 2, VCT_ARG_OF(v->child), sizeof(vct_cone_desc), desc);
     *next = pools + 2;
     return rc;
 }

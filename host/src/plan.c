@@ -94,7 +94,9 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
     if (diffuse >= 0 && lit)
         say(p, VCT_EFFECT_INDIRECT, 1, "diffuse material \"%s\", lit by %s",
             s->materials[diffuse].name,
-            lights ? "lights" : emissive >= 0 ? "emissive surfaces" : "ambient light");
+            lights          ? "lights"
+            : emissive >= 0 ? "emissive surfaces"
+                            : "ambient light");
     else
         say(p, VCT_EFFECT_INDIRECT, 0, "%s",
             diffuse < 0 ? "no diffuse material" : "nothing emits light");
@@ -104,8 +106,8 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
     else
         say(p, VCT_EFFECT_SPECULAR, 0, "no glossy or metallic material");
     if (clear >= 0)
-        say(p, VCT_EFFECT_REFRACTION, 1, "material \"%s\" transmits %g",
-            s->materials[clear].name, s->materials[clear].transmission);
+        say(p, VCT_EFFECT_REFRACTION, 1, "material \"%s\" transmits %g", s->materials[clear].name,
+            s->materials[clear].transmission);
     else
         say(p, VCT_EFFECT_REFRACTION, 0, "no transmissive material");
     if (emissive >= 0)
@@ -113,8 +115,8 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
     else
         say(p, VCT_EFFECT_EMISSION, 0, "no emissive material");
     if (ambient)
-        say(p, VCT_EFFECT_AO, 1, "ambient light (%g %g %g) is occluded by geometry",
-            s->ambient[0], s->ambient[1], s->ambient[2]);
+        say(p, VCT_EFFECT_AO, 1, "ambient light (%g %g %g) is occluded by geometry", s->ambient[0],
+            s->ambient[1], s->ambient[2]);
     else
         say(p, VCT_EFFECT_AO, 0, "no ambient light");
 

@@ -1,0 +1,376 @@
+/* Cone marching (kernels/cone_trace.h) against a plain-C marcher over the
+ * dense reference lattices of brick_ref.h, isotropic and directional, on
+ * buffer and image pools; the diffuse presets' weights against an
+ * independent Monte Carlo estimate; and hard cases: an empty volume, cones
+ * that start inside geometry, outside the volume, grazing a wall, and
+ * crossing a one-voxel wall. Results are never NaN and opacity never
+ * exceeds 1. */
+#include "brick_case.h"
+
+/* ---- the reference marcher ---------------------------------------------- */
+
+typedef struct ref_pyramid {
+    uint32_t levels;
+    ref_lattice iso[11];
+    ref_lattice dir[6][11]; /* levels 0 .. L-2 */
+} ref_pyramid;
+
+static ref_pyramid pyramid_of(const brick_case *c, int directional) {
+    ref_pyramid p = {c->info.levels, {{0}}, {{{0}}}};
+    float *alpha = opacities(c);
+    const int top = (int)c->info.levels - 1;
+    p.iso[top] = ref_leaf_lattice(c->info.resolution, c->voxel_of, c->radiance, alpha);
+    for (int l = top - 1; l >= 0; --l) {
+        p.iso[l] = ref_filter(&p.iso[l + 1]);
+        for (int d = 0; d < 6 && directional; ++d)
+            p.dir[d][l] = ref_filter_dir(l == top - 1 ? &p.iso[l + 1] : &p.dir[d][l + 1], d);
+    }
+    free(alpha);
+    return p;
+}
+
+static void pyramid_free(ref_pyramid *p) {
+    for (int l = 0; l < 11; ++l) {
+        free(p->iso[l].v);
+        for (int d = 0; d < 6; ++d)
+            free(p->dir[d][l].v);
+    }
+}
+
+/* A level's value at volume point at ([0,1)^3), 0 in nodes without a brick. */
+static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int directional,
+                             uint32_t level, const double at[3], const double d[3], double out[4]) {
+    const double cells = (double)(1u << level);
+    uint32_t cell[3];
+    double lp[3];
+    for (int k = 0; k < 3; ++k) {
+        cell[k] = (uint32_t)fmin(floor(at[k] * cells), cells - 1);
+        lp[k] = 2.0 * at[k] * cells;
+    }
+    for (int k = 0; k < 4; ++k)
+        out[k] = 0.0;
+    const uint32_t node = node_at(c, cell, level);
+    if (node == VCT_NODE_NULL || c->child[node] == VCT_NODE_NULL)
+        return;
+    if (!directional || level + 1 >= p->levels) {
+        ref_trilinear(&p->iso[level], lp, out);
+        return;
+    }
+    const double w[3] = {d[0] * d[0], d[1] * d[1], d[2] * d[2]};
+    for (int axis = 0; axis < 3; ++axis) {
+        double s[4];
+        ref_trilinear(&p->dir[d[axis] >= 0 ? axis : axis + 3][level], lp, s);
+        for (int k = 0; k < 4; ++k)
+            out[k] += w[axis] * s[k] / (w[0] + w[1] + w[2]);
+    }
+}
+
+typedef struct ref_cone {
+    double radiance[3], alpha, ao_alpha;
+    int left;
+} ref_cone;
+
+/* The march of kernels/cone_trace.h, written out in double precision. */
+static ref_cone ref_march(const brick_case *c, const ref_pyramid *p, int directional,
+                          const vct_cone_settings *s, const double ambient[3], const double o[3],
+                          const double d[3], double tan_half, double reach) {
+    ref_cone r = {{0, 0, 0}, 0, 0, 0};
+    const double side = c->info.side, voxel = side / c->info.resolution;
+    const double finest = c->info.levels - 1.0, min_d = 2.0 * voxel;
+    double t = voxel;
+    for (int i = 0; i < 4096 && t <= reach; ++i) {
+        double at[3];
+        int outside = 0;
+        for (int k = 0; k < 3; ++k) {
+            at[k] = (o[k] + t * d[k] - c->info.origin[k]) / side;
+            outside |= at[k] < 0.0 || at[k] >= 1.0;
+        }
+        if (outside) {
+            r.left = 1;
+            break;
+        }
+        const double diameter = fmax(2.0 * t * tan_half, min_d);
+        const double level = fmin(fmax(finest - log2(diameter / min_d), 0.0), finest);
+        const uint32_t coarse = (uint32_t)level,
+                       fine = coarse + 1 < p->levels ? coarse + 1 : coarse;
+        double a[4], b[4], v[4];
+        ref_level_sample(c, p, directional, coarse, at, d, a);
+        ref_level_sample(c, p, directional, fine, at, d, b);
+        for (int k = 0; k < 4; ++k)
+            v[k] = a[k] + (level - coarse) * (b[k] - a[k]);
+        const double step = s->step * diameter, spacing = voxel * exp2(finest - level);
+        const double a_in = fmin(fmax(v[3], 0.0), 1.0);
+        const double alpha = a_in > 0 ? 1.0 - pow(1.0 - a_in, step / spacing) : 0.0;
+        for (int k = 0; k < 3; ++k)
+            r.radiance[k] += (1.0 - r.alpha) * (a_in > 0 ? v[k] * alpha / a_in : 0.0);
+        r.alpha += (1.0 - r.alpha) * alpha;
+        if (t <= s->ao_distance * side)
+            r.ao_alpha = r.alpha;
+        if (r.alpha >= s->stop_alpha)
+            break;
+        t += step;
+    }
+    for (int k = 0; r.left && k < 3; ++k)
+        r.radiance[k] += (1.0 - r.alpha) * ambient[k];
+    return r;
+}
+
+/* ---- checks ----------------------------------------------------------------- */
+
+static int result_sane(const float *o) {
+    for (int k = 0; k < 8; ++k)
+        if (!isfinite(o[k]))
+            return 0;
+    return o[3] >= 0.0f && o[3] <= 1.0f && o[4] >= 0.0f && o[4] <= o[3] + 1e-6f && o[0] >= 0.0f &&
+           o[1] >= 0.0f && o[2] >= 0.0f;
+}
+
+/* n random cones (8 floats each): origins anywhere in the volume (some in
+ * geometry), a fifth along an axis, a fifth grazing (nearly in an axis
+ * plane), apertures from 0 to 60 degrees, some with a short reach. */
+static void random_cones(const brick_case *c, uint32_t n, uint64_t seed, float *cones) {
+    for (uint32_t i = 0; i < n; ++i) {
+        float *q = cones + 8 * i;
+        for (int k = 0; k < 3; ++k)
+            q[k] = (float)(c->info.origin[k] + c->info.side * check_randf(&seed));
+        q[3] = (float)tan(check_randf(&seed) * CHECK_PI / 3.0);
+        double d[3], len = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            d[k] = 2.0 * check_randf(&seed) - 1.0;
+            len += d[k] * d[k];
+        }
+        if (i % 5 == 1)
+            d[0] = d[1] = 0.0, d[2] = 1.0 - 2.0 * (i % 2), len = 1.0;
+        if (i % 5 == 2)
+            d[2] *= 1e-3, len = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        for (int k = 0; k < 3; ++k)
+            q[4 + k] = (float)(d[k] / sqrt(len));
+        q[7] = i % 7 == 3 ? (float)(0.3 * c->info.side) : INFINITY;
+    }
+}
+
+/* Kernel cones against the reference. A sample next to an empty node jumps
+ * to 0, so a position rounded differently in float can land on the other
+ * side: nearly every cone must agree closely, and the mean error must be
+ * small. */
+static void compare_cones(const brick_case *c, int directional, const char *pool) {
+    const uint32_t n = 3000;
+    float *cones = malloc(32ull * n), *out = malloc(32ull * n);
+    random_cones(c, n, 1234 + c->info.resolution, cones);
+    vct_cone_settings s = vct_cone_settings_default();
+    const float ambient[3] = {0.25f, 0.5f, 1.0f};
+    const double amb[3] = {0.25, 0.5, 1.0};
+    vct_error err = {0};
+    REQUIRE_OK(vct_cone_trace(ctx, c->voxels, &s, ambient, cones, n, out, &err), err);
+    ref_pyramid p = pyramid_of(c, directional);
+    uint32_t insane = 0, off = 0, left = 0, stopped = 0;
+    double sum_err = 0.0;
+    for (uint32_t i = 0; i < n; ++i) {
+        const float *q = cones + 8 * i, *o = out + 8 * i;
+        insane += !result_sane(o);
+        const double org[3] = {q[0], q[1], q[2]}, d[3] = {q[4], q[5], q[6]};
+        const ref_cone r = ref_march(c, &p, directional, &s, amb, org, d, q[3], q[7]);
+        double e = fabs(o[3] - r.alpha);
+        for (int k = 0; k < 3; ++k)
+            e = fmax(e, fabs(o[k] - r.radiance[k]) / (1.0 + fabs(r.radiance[k])));
+        sum_err += e;
+        if (!(e <= 2e-3) && off++ < 3)
+            fprintf(stderr, "%s: cone %u: got %g %g %g a %g, expected %g %g %g a %g\n", c->name, i,
+                    o[0], o[1], o[2], o[3], r.radiance[0], r.radiance[1], r.radiance[2], r.alpha);
+        left += o[7] == 1.0f;
+        stopped += o[3] >= s.stop_alpha;
+    }
+    CHECK(insane == 0, "%s (%s): %u cones with NaN, negative radiance or opacity above 1", c->name,
+          pool, insane);
+    CHECK(off <= n / 100, "%s (%s): %u of %u cones differ from the reference marcher", c->name,
+          pool, off, n);
+    CHECK(sum_err / n < 1e-3, "%s (%s): mean error %g", c->name, pool, sum_err / n);
+    CHECK(left > n / 10 && stopped > n / 20, "%s (%s): %u cones left the volume, %u stopped",
+          c->name, pool, left, stopped);
+    printf("%-28s %-6s %u cones, %u off, mean error %.2g, %u left, %u stopped\n", c->name, pool, n,
+           off, sum_err / n, left, stopped);
+    pyramid_free(&p);
+    free(cones);
+    free(out);
+}
+
+static void random_volumes(void) {
+    vct_material mats[4];
+    for (int i = 0; i < 4; ++i)
+        mats[i] = soup_material(i);
+    const uint32_t sizes[] = {8, 32};
+    for (size_t s = 0; s < 2; ++s) {
+        for (int directional = 0; directional < 2; ++directional) {
+            test_mesh m = mesh_soup(sizes[s] == 8 ? 30 : 500, 0.0f, 41 + s);
+            vct_scene *scene = scene_of(&m, mats, 4);
+            mesh_free(&m);
+            add_point_light(scene, 0.3f, 0.8f, 0.6f, 0.5f);
+            char name[64];
+            snprintf(name, sizeof name, "soup %u^3 %s", sizes[s],
+                     directional ? "directional" : "isotropic");
+            const vct_brick_options buffer = {VCT_BRICKS_BUFFER, directional};
+            brick_case c = make_case(name, scene, sizes[s], 1.0f, &buffer);
+            compare_cones(&c, directional, "buffer");
+            const vct_brick_options image = {VCT_BRICKS_IMAGE, directional};
+            vct_error err = {0};
+            REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &image, &err), err);
+            REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+            compare_cones(&c, directional, "image");
+            case_free(&c);
+        }
+    }
+}
+
+/* Each preset weight against the cosine-weighted share of the hemisphere
+ * nearest its direction, estimated by Monte Carlo with uniform directions. */
+static void presets(void) {
+    const uint32_t counts[] = {1, 5, 6, 9, 16};
+    for (size_t p = 0; p < 5; ++p) {
+        float dirs[64], tan_half[16];
+        vct_error err = {0};
+        REQUIRE_OK(vct_cone_preset(counts[p], dirs, tan_half, &err), err);
+        double share[16] = {0}, total = 0.0, sum = 0.0;
+        uint64_t seed = 5;
+        const int samples = 400000;
+        for (int i = 0; i < samples; ++i) {
+            const double z = check_randf(&seed), phi = 2.0 * CHECK_PI * check_randf(&seed);
+            const double r = sqrt(fmax(0.0, 1.0 - z * z));
+            const double w[3] = {r * cos(phi), r * sin(phi), z};
+            uint32_t best = 0;
+            double best_dot = -2.0;
+            for (uint32_t k = 0; k < counts[p]; ++k) {
+                const double dot =
+                    w[0] * dirs[4 * k] + w[1] * dirs[4 * k + 1] + w[2] * dirs[4 * k + 2];
+                if (dot > best_dot)
+                    best_dot = dot, best = k;
+            }
+            share[best] += z;
+            total += z;
+        }
+        double worst = 0.0;
+        int bad_dir = 0;
+        for (uint32_t k = 0; k < counts[p]; ++k) {
+            worst = fmax(worst, fabs(share[k] / total - dirs[4 * k + 3]));
+            sum += dirs[4 * k + 3];
+            const double len = sqrt(dirs[4 * k] * dirs[4 * k] + dirs[4 * k + 1] * dirs[4 * k + 1] +
+                                    dirs[4 * k + 2] * dirs[4 * k + 2]);
+            bad_dir |= fabs(len - 1.0) > 1e-5 || dirs[4 * k + 2] <= 0.0f ||
+                       !(tan_half[k] > 0.0f && tan_half[k] <= 0.364f);
+        }
+        CHECK(fabs(sum - 1.0) < 1e-6, "preset %u: weights sum to %.9f", counts[p], sum);
+        CHECK(worst < 0.005, "preset %u: a weight is %.4f off its cosine-weighted share", counts[p],
+              worst);
+        CHECK(!bad_dir,
+              "preset %u: a direction is not a unit vector above the surface, or an "
+              "aperture is out of (0, 20] degrees",
+              counts[p]);
+        printf("preset %2u cones: weights sum to 1 within %.1g, worst share error %.4f\n",
+               counts[p], fabs(sum - 1.0), worst);
+    }
+    float dirs[64], tan_half[16];
+    vct_error err = {0};
+    CHECK(vct_cone_preset(7, dirs, tan_half, &err) == VCT_ERR_INPUT && strstr(err.message, "16"),
+          "an unknown preset is refused with the list: %s", err.message);
+}
+
+/* Cones given by hand: origin, direction, tan(half-angle), reach. */
+static void trace(const brick_case *c, const float ambient[3], const float *cones, uint32_t n,
+                  float *out) {
+    vct_cone_settings s = vct_cone_settings_default();
+    vct_error err = {0};
+    REQUIRE_OK(vct_cone_trace(ctx, c->voxels, &s, ambient, cones, n, out, &err), err);
+}
+
+static void hard_cases(void) {
+    const float ambient[3] = {0.5f, 1.0f, 2.0f};
+    vct_error err = {0};
+    /* Nothing inside the volume: every cone leaves, seeing exactly the environment. */
+    {
+        const float quad[12] = {5, 5, 5, 6, 5, 5, 6, 6, 5, 5, 6, 5};
+        vct_scene *s = quads_scene(quad, 1);
+        const vct_brick_options opt = {VCT_BRICKS_AUTO, 1};
+        brick_case c = make_case("empty volume", s, 16, 1.0f, &opt);
+        float cones[16] = {0.5f, 0.5f, 0.5f, 0.3f, 0,    1,    0,    INFINITY,
+                           0.1f, 0.9f, 0.2f, 0.0f, 0.6f, 0.0f, 0.8f, INFINITY};
+        float out[16];
+        trace(&c, ambient, cones, 2, out);
+        for (int i = 0; i < 2; ++i)
+            CHECK(out[8 * i + 7] == 1.0f && out[8 * i + 3] == 0.0f && out[8 * i] == ambient[0] &&
+                      out[8 * i + 1] == ambient[1] && out[8 * i + 2] == ambient[2],
+                  "empty volume: cone %d saw %g %g %g a %g (left %g)", i, out[8 * i],
+                  out[8 * i + 1], out[8 * i + 2], out[8 * i + 3], out[8 * i + 7]);
+        case_free(&c);
+    }
+    /* A lit one-voxel wall at x = 0.5 of a 32^3 volume. */
+    const float wall[12] = {0.5f, 0.01f, 0.01f, 0.5f, 0.99f, 0.01f,
+                            0.5f, 0.99f, 0.99f, 0.5f, 0.01f, 0.99f};
+    for (int directional = 0; directional < 2; ++directional) {
+        vct_scene *s = quads_scene(wall, 1);
+        add_point_light(s, 0.2f, 0.5f, 0.5f, 0.1f);
+        const vct_brick_options opt = {VCT_BRICKS_BUFFER, directional};
+        brick_case c =
+            make_case(directional ? "wall, directional" : "wall, isotropic", s, 32, 1.0f, &opt);
+        /* Thin cones crossing it at 0 to 75 degrees stop at it: no leak. */
+        enum { CROSS = 16 };
+        float cones[8 * (CROSS + 4)], out[8 * (CROSS + 4)];
+        for (int i = 0; i < CROSS; ++i) {
+            const double a = (i / (double)CROSS) * 75.0 * CHECK_PI / 180.0;
+            const float q[8] = {0.3f,
+                                0.5f,
+                                0.5f,
+                                0.0f,
+                                (float)cos(a),
+                                (float)sin(a) * 0.6f,
+                                (float)sin(a) * 0.8f,
+                                INFINITY};
+            memcpy(cones + 8 * i, q, sizeof q);
+        }
+        /* Starting inside the wall: opaque at once, finite. */
+        const float inside[8] = {0.5f, 0.5f, 0.5f, 0.2f, 0.0f, 0.0f, 1.0f, INFINITY};
+        /* Grazing along it, just off its face, and outside the volume. */
+        const float graze[8] = {0.52f, 0.05f, 0.5f, 0.1f, 0.0f, 1.0f, 0.0f, INFINITY};
+        const float graze2[8] = {0.5f, 0.05f,       0.05f,       0.05f,
+                                 0.0f, 0.70710678f, 0.70710678f, INFINITY};
+        const float away[8] = {2.0f, 2.0f, 2.0f, 0.3f, 1.0f, 0.0f, 0.0f, INFINITY};
+        memcpy(cones + 8 * CROSS, inside, 32);
+        memcpy(cones + 8 * (CROSS + 1), graze, 32);
+        memcpy(cones + 8 * (CROSS + 2), graze2, 32);
+        memcpy(cones + 8 * (CROSS + 3), away, 32);
+        trace(&c, ambient, cones, CROSS + 4, out);
+        int leaks = 0, insane = 0;
+        for (int i = 0; i < CROSS + 4; ++i)
+            insane += !result_sane(out + 8 * i);
+        for (int i = 0; i < CROSS; ++i)
+            leaks += out[8 * i + 3] < 0.99f || out[8 * i + 7] != 0.0f;
+        CHECK(leaks == 0, "%s: %d of %d thin cones crossed the wall", c.name, leaks, CROSS);
+        CHECK(insane == 0, "%s: %d cones with NaN or opacity above 1", c.name, insane);
+        const float *in = out + 8 * CROSS;
+        CHECK(in[3] >= 0.99f && in[6] <= 2.0f,
+              "%s: a cone inside the wall: opacity %g after %g samples", c.name, in[3], in[6]);
+        const float *aw = out + 8 * (CROSS + 3);
+        CHECK(aw[7] == 1.0f && aw[6] == 0.0f && aw[0] == ambient[0] && aw[2] == ambient[2],
+              "%s: a cone outside the volume sees the environment (%g %g %g, %g samples)", c.name,
+              aw[0], aw[1], aw[2], aw[6]);
+        /* A wide cone (30 degrees) through the wall's middle: directional
+         * bricks keep it opaque seen along its normal. */
+        const float wide[8] = {0.2f, 0.5f, 0.5f, 0.577f, 1.0f, 0.0f, 0.0f, INFINITY};
+        float wide_out[8];
+        trace(&c, ambient, wide, 1, wide_out);
+        printf("%-28s thin cones stopped, wide cone across it: opacity %.3f\n", c.name,
+               wide_out[3]);
+        if (directional)
+            CHECK(wide_out[3] >= 0.9f, "%s: a wide cone sees through the wall (opacity %g)", c.name,
+                  wide_out[3]);
+        case_free(&c);
+    }
+    (void)err;
+}
+
+int main(void) {
+    ctx = check_context();
+    presets();
+    random_volumes();
+    hard_cases();
+    vct_context_destroy(ctx);
+    return check_exit("test_cone");
+}
