@@ -1,0 +1,297 @@
+/* The voxel cone tracing renderer and its effect plan: what each scene
+ * plans and why; a diffuse scene enqueues no specular kernel, and forcing
+ * it on leaves the image bit-identical; a constant environment is
+ * integrated exactly by the diffuse cones; the Cornell box against the path
+ * tracer with a stated tolerance; determinism; no NaN on an empty volume. */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "mesh_gen.h"
+
+static vct_context *ctx;
+
+typedef struct rendered {
+    vct_image image;
+    vct_aovs aovs;
+} rendered;
+
+/* Builds what `plan` needs at voxel resolution res and renders w x h. */
+static rendered render(const vct_scene *s, const vct_plan *plan, uint32_t res, int w, int h,
+                       uint32_t bounces) {
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_voxel_options vo = {0};
+    vo.resolution = res;
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, 1};
+    vct_vct_options o = vct_vct_options_default();
+    o.width = w;
+    o.height = h;
+    o.aovs = 1;
+    vct_voxels *v = NULL;
+    REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, bounces, &o.cones, &v, &err), err);
+    rendered r;
+    vct_stats_reset(ctx);
+    REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &r.image, &r.aovs, &err), err);
+    vct_voxels_free(v);
+    vct_grid_free(g);
+    return r;
+}
+
+static void rendered_free(rendered *r) {
+    vct_image_free(&r->image);
+    vct_aovs_free(&r->aovs);
+}
+
+static size_t nonfinite(const vct_image *im) {
+    size_t bad = 0;
+    for (size_t i = 0; i < 4ull * im->width * im->height; ++i)
+        bad += !isfinite(im->rgba[i]);
+    return bad;
+}
+
+static vct_scene *one_material_scene(const float *quads, uint32_t count, vct_material m) {
+    test_mesh t = {malloc(48ull * count), malloc(24ull * count), 4 * count, 2 * count};
+    memcpy(t.pos, quads, 48ull * count);
+    for (uint32_t q = 0; q < count; ++q) {
+        const uint32_t k[6] = {0, 1, 2, 0, 2, 3};
+        for (int i = 0; i < 6; ++i)
+            t.tri[6 * q + i] = 4 * q + k[i];
+    }
+    uint32_t *mat = calloc(t.nt, 4);
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(t.pos, t.nv, t.tri, t.nt, mat, &m, 1, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    free(mat);
+    mesh_free(&t);
+    return s;
+}
+
+static void plans(void) {
+    vct_scene *box = check_cornell_box();
+    vct_plan p;
+    vct_plan_make(box, NULL, &p);
+    const int expect[VCT_EFFECTS] = {1, 1, 1, 0, 0, 0, 0};
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        CHECK(p.on[e] == expect[e] && p.why[e][0], "Cornell box: %s is %s (%s)",
+              vct_effect_name((vct_effect)e), p.on[e] ? "on" : "off", p.why[e]);
+    CHECK(vct_plan_needs_voxels(&p) && vct_plan_needs_voxel_light(&p), "Cornell box needs voxels");
+
+    /* Each material property turns its effect on, and says so. */
+    box->materials[0].specular[0] = 0.5f;
+    box->materials[1].emission[2] = 2.0f;
+    box->materials[2].transmission = 1.0f;
+    box->ambient[1] = 0.1f;
+    vct_plan_make(box, NULL, &p);
+    CHECK(p.on[VCT_EFFECT_SPECULAR] && strstr(p.why[VCT_EFFECT_SPECULAR], box->materials[0].name),
+          "glossy: %s", p.why[VCT_EFFECT_SPECULAR]);
+    CHECK(p.on[VCT_EFFECT_EMISSION] && p.on[VCT_EFFECT_REFRACTION] && p.on[VCT_EFFECT_AO],
+          "emission %d, refraction %d, ao %d", p.on[VCT_EFFECT_EMISSION],
+          p.on[VCT_EFFECT_REFRACTION], p.on[VCT_EFFECT_AO]);
+
+    /* Flags win, and the reason keeps what the scene said. */
+    vct_effect_force force[VCT_EFFECTS] = {0};
+    force[VCT_EFFECT_SPECULAR] = VCT_FORCE_OFF;
+    force[VCT_EFFECT_SHADOWS] = VCT_FORCE_OFF;
+    vct_plan_make(box, force, &p);
+    CHECK(!p.on[VCT_EFFECT_SPECULAR] && p.forced[VCT_EFFECT_SPECULAR] &&
+              strstr(p.why[VCT_EFFECT_SPECULAR], "forced off") &&
+              strstr(p.why[VCT_EFFECT_SPECULAR], "glossy"),
+          "forced: %s", p.why[VCT_EFFECT_SPECULAR]);
+    CHECK(vct_effect_from_name("indirect") == VCT_EFFECT_INDIRECT &&
+              vct_effect_from_name("sparkle") == -1,
+          "effect names");
+    vct_scene_free(box);
+
+    /* Nothing lights a scene with no lights, emission or ambient light:
+     * no direct, no indirect, nothing that needs voxels. */
+    const float quad[12] = {0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1};
+    vct_scene *dark = one_material_scene(quad, 1, vct_material_default());
+    vct_plan_make(dark, NULL, &p);
+    CHECK(!p.on[VCT_EFFECT_DIRECT] && !p.on[VCT_EFFECT_INDIRECT] && !vct_plan_needs_voxels(&p),
+          "an unlit scene plans nothing: indirect %d (%s)", p.on[VCT_EFFECT_INDIRECT],
+          p.why[VCT_EFFECT_INDIRECT]);
+    vct_scene_free(dark);
+}
+
+/* A diffuse scene enqueues no specular kernel; forcing specular on runs it
+ * and changes no pixel. Also: two renders are bit-identical. */
+static void specular_only_when_planned(void) {
+    vct_scene *box = check_cornell_box();
+    vct_plan p;
+    vct_plan_make(box, NULL, &p);
+    rendered a = render(box, &p, 32, 48, 40, 1);
+    CHECK(vct_kernel_launches(ctx, "vct_specular_cone") == 0 &&
+              vct_kernel_launches(ctx, "vct_diffuse_cones") == 1 &&
+              vct_kernel_launches(ctx, "vct_primary") == 1,
+          "planned: %d specular, %d diffuse, %d primary launches",
+          vct_kernel_launches(ctx, "vct_specular_cone"),
+          vct_kernel_launches(ctx, "vct_diffuse_cones"), vct_kernel_launches(ctx, "vct_primary"));
+    vct_effect_force force[VCT_EFFECTS] = {0};
+    force[VCT_EFFECT_SPECULAR] = VCT_FORCE_ON;
+    vct_plan forced;
+    vct_plan_make(box, force, &forced);
+    rendered b = render(box, &forced, 32, 48, 40, 1);
+    CHECK(vct_kernel_launches(ctx, "vct_specular_cone") == 1, "forced: %d specular launches",
+          vct_kernel_launches(ctx, "vct_specular_cone"));
+    CHECK(memcmp(a.image.rgba, b.image.rgba, 16ull * 48 * 40) == 0,
+          "forcing specular on in a diffuse scene changed the image");
+    rendered c = render(box, &p, 32, 48, 40, 1);
+    CHECK(memcmp(a.image.rgba, c.image.rgba, 16ull * 48 * 40) == 0, "two renders differ");
+    CHECK(nonfinite(&a.image) == 0, "NaN in the Cornell box");
+
+    /* Without indirect light, no diffuse cones run and no voxels are built. */
+    force[VCT_EFFECT_SPECULAR] = VCT_FORCE_AUTO;
+    force[VCT_EFFECT_INDIRECT] = VCT_FORCE_OFF;
+    vct_plan direct_only;
+    vct_plan_make(box, force, &direct_only);
+    CHECK(!vct_plan_needs_voxels(&direct_only), "direct only needs no voxels");
+    rendered d = render(box, &direct_only, 32, 48, 40, 1);
+    CHECK(vct_kernel_launches(ctx, "vct_diffuse_cones") == 0, "direct only launched cones");
+    /* ... and its image is the ray caster's, pixel for pixel. */
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, box, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_render_options ro = {48, 40, {0, 0, 0}};
+    vct_image rc;
+    REQUIRE_OK(vct_render_raycast(ctx, box, g, &ro, &rc, &err), err);
+    CHECK(memcmp(d.image.rgba, rc.rgba, 16ull * 48 * 40) == 0,
+          "direct light differs from the ray caster's");
+    vct_image_free(&rc);
+    vct_grid_free(g);
+    rendered_free(&a);
+    rendered_free(&b);
+    rendered_free(&c);
+    rendered_free(&d);
+    vct_scene_free(box);
+}
+
+/* A floor in the top voxel layer under a constant sky L: every cone leaves
+ * the volume at once, so a pixel is albedo * L * sum of weights = albedo * L
+ * (indirect, with no light but the sky), and pixels that miss see L. The
+ * ambient light also plans AO, which must not add the sky a second time. */
+static void constant_environment(void) {
+    const float floor_quad[12] = {-1, 0.999f, -1, 1, 0.999f, -1, 1, 0.999f, 1, -1, 0.999f, 1};
+    vct_material m = vct_material_default();
+    m.albedo[0] = 0.8f, m.albedo[1] = 0.5f, m.albedo[2] = 0.25f;
+    vct_scene *s = one_material_scene(floor_quad, 1, m);
+    s->ambient[0] = 1.0f, s->ambient[1] = 2.0f, s->ambient[2] = 0.5f;
+    s->camera = (vct_camera){{0.0f, 3.0f, 0.01f}, {0, 0, 0}, {0, 0, -1}, 60.0f};
+    vct_plan p;
+    vct_plan_make(s, NULL, &p);
+    CHECK(p.on[VCT_EFFECT_INDIRECT] && p.on[VCT_EFFECT_AO] && !p.on[VCT_EFFECT_DIRECT],
+          "sky-lit floor: indirect %d, ao %d", p.on[VCT_EFFECT_INDIRECT], p.on[VCT_EFFECT_AO]);
+    const uint32_t presets[] = {1, 5, 6, 9, 16};
+    for (int i = 0; i < 5; ++i) {
+        vct_error err = {0};
+        vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+        REQUIRE_OK(g ? VCT_OK : err.status, err);
+        vct_voxel_options vo = {0};
+        vo.resolution = 16;
+        vo.has_bounds = 1;
+        vo.bounds_min[0] = -1.0, vo.bounds_min[1] = -1.0, vo.bounds_min[2] = -1.0;
+        vo.bounds_size = 2.0;
+        vct_vct_options o = vct_vct_options_default();
+        o.width = o.height = 32;
+        o.diffuse_cones = presets[i];
+        vct_voxels *v = NULL;
+        REQUIRE_OK(vct_vct_prepare(ctx, s, g, &p, &vo, NULL, 1, &o.cones, &v, &err), err);
+        vct_image im;
+        REQUIRE_OK(vct_render_vct(ctx, s, g, v, &p, &o, &im, NULL, &err), err);
+        double worst = 0.0;
+        int floor_pixels = 0, sky_pixels = 0;
+        for (int px = 0; px < 32 * 32; ++px) {
+            const float *c = &im.rgba[4 * px];
+            const int sky = c[0] == s->ambient[0] && c[1] == s->ambient[1] && c[2] == s->ambient[2];
+            sky_pixels += sky;
+            if (sky)
+                continue;
+            ++floor_pixels;
+            for (int k = 0; k < 3; ++k)
+                worst = fmax(worst, fabs(c[k] / (m.albedo[k] * s->ambient[k]) - 1.0));
+        }
+        CHECK(worst < 1e-5 && floor_pixels > 300 && sky_pixels > 50,
+              "%u cones: floor = albedo * sky within %.2g (%d floor, %d sky pixels)", presets[i],
+              worst, floor_pixels, sky_pixels);
+        printf("constant sky, %2u cones: floor within %.1g of albedo * L (%d pixels)\n", presets[i],
+               worst, floor_pixels);
+        vct_image_free(&im);
+        vct_voxels_free(v);
+        vct_grid_free(g);
+    }
+    vct_scene_free(s);
+}
+
+/* The Cornell box at default settings against the path tracer. */
+static void cornell_against_path_tracer(void) {
+    vct_scene *box = check_cornell_box();
+    const int w = 64, h = 64;
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, box, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_pathtrace_options po = {w, h, 512, 0.0, 16, 3, 64, 0};
+    vct_pathtrace_result pr;
+    vct_image ref, rc;
+    REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, &pr, &err), err);
+    const vct_render_options ro = {w, h, {0, 0, 0}};
+    REQUIRE_OK(vct_render_raycast(ctx, box, g, &ro, &rc, &err), err);
+    vct_grid_free(g);
+    vct_plan p;
+    vct_plan_make(box, NULL, &p);
+    rendered r = render(box, &p, 64, w, h, 2);
+    vct_image_metrics mv, mr;
+    REQUIRE_OK(vct_image_compare(&r.image, &ref, &mv, &err), err);
+    REQUIRE_OK(vct_image_compare(&rc, &ref, &mr, &err), err);
+    /* Measured: 0.095 (64^3 voxels, 2 bounces, 64 x 64); direct light alone
+     * is 0.345 off. */
+    CHECK(mv.relative_rmse < 0.13, "Cornell box: relative RMSE %.4f against the path tracer",
+          mv.relative_rmse);
+    CHECK(mv.nonfinite == 0 && nonfinite(&r.aovs.ao) == 0 && nonfinite(&r.aovs.level) == 0,
+          "NaN in the image or its AOVs");
+    /* The AOVs add up: direct + indirect (+ specular, here 0) is the image. */
+    double worst = 0.0;
+    for (int i = 0; i < 4 * w * h; ++i)
+        if (i % 4 != 3)
+            worst = fmax(worst, fabs(r.aovs.direct.rgba[i] + r.aovs.indirect.rgba[i] +
+                                     r.aovs.specular.rgba[i] - r.image.rgba[i]));
+    CHECK(worst < 1e-5, "direct + indirect + specular AOVs differ from the image by %g", worst);
+    printf("Cornell box %dx%d: relative RMSE %.4f against %u spp (direct light alone %.4f)\n", w, h,
+           mv.relative_rmse, pr.spp, mr.relative_rmse);
+    rendered_free(&r);
+    vct_image_free(&ref);
+    vct_image_free(&rc);
+    vct_scene_free(box);
+}
+
+/* Only degenerate triangles and sky: no voxels, no bricks; cones see the
+ * sky, and nothing is NaN. */
+static void empty_volume(void) {
+    const float sliver[12] = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3};
+    vct_scene *s = one_material_scene(sliver, 1, vct_material_default());
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.5f;
+    s->camera = (vct_camera){{1, 1, 6}, {1, 1, 0}, {0, 1, 0}, 40.0f};
+    vct_effect_force force[VCT_EFFECTS] = {0};
+    force[VCT_EFFECT_INDIRECT] = VCT_FORCE_ON;
+    force[VCT_EFFECT_SPECULAR] = VCT_FORCE_ON;
+    vct_plan p;
+    vct_plan_make(s, force, &p);
+    rendered r = render(s, &p, 16, 16, 16, 2);
+    int not_sky = 0;
+    for (int i = 0; i < 16 * 16 * 4; ++i)
+        not_sky += i % 4 != 3 && r.image.rgba[i] != 0.5f;
+    CHECK(nonfinite(&r.image) == 0 && not_sky == 0, "empty volume: %d values not the sky", not_sky);
+    rendered_free(&r);
+    vct_scene_free(s);
+}
+
+int main(void) {
+    ctx = check_context();
+    plans();
+    specular_only_when_planned();
+    constant_environment();
+    empty_volume();
+    cornell_against_path_tracer();
+    vct_context_destroy(ctx);
+    return check_exit("test_vct");
+}
