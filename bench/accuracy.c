@@ -3,10 +3,14 @@
  * CSV, a Markdown table and a log-log plot of error against time with the
  * Pareto front marked.
  *
- * usage: accuracy SCENE [--reference REF.pfm] [--reference-spp N] [--size W H]
- *                       [--max-spp N] [--out DIR]
+ * usage: accuracy SCENE|heavy [--reference REF.pfm] [--reference-spp N]
+ *                 [--size W H] [--max-spp N] [--out DIR] [--no-vct]
  * Without --reference, a path-traced reference of --reference-spp samples
- * (default 2048, a different seed from the runs) is rendered and saved. */
+ * (default 2048, a different seed from the runs) is rendered and saved.
+ * "heavy" is bench/heavy_scene.h's 102,430-triangle scene. Voxel cone
+ * tracing runs over voxel resolutions, cone presets, step sizes, isotropic
+ * against anisotropic bricks and 1 against 2 bounces; its time is split into
+ * building the voxel hierarchy (voxels, octree, bricks, light) and tracing. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,10 +18,11 @@
 #include <sys/stat.h>
 
 #include "bench_util.h"
+#include "heavy_scene.h"
 
 typedef struct run {
     char name[64];
-    double grid_ms, render_ms, total_ms; /* device time per stage, and their sum */
+    double grid_ms, build_ms, render_ms, total_ms; /* device time per stage, and their sum */
     double wall_ms;
     vct_image_metrics m;
     int pareto;
@@ -27,7 +32,81 @@ typedef struct settings {
     const char *scene, *reference, *out;
     int width, height;
     uint32_t reference_spp, max_spp;
+    int vct;
 } settings;
+
+typedef struct vct_setting {
+    uint32_t res, cones, bounces;
+    float step;
+    int anisotropic;
+} vct_setting;
+
+static const char *const build_stages[] = {
+    "voxelize",        "octree build",       "brick creation", "brick filtering",
+    "light injection", "radiance filtering", "light bounce"};
+static const char *const trace_stages[] = {"vct primary", "vct diffuse cones", "vct specular cone"};
+
+static double stages_ms(const vct_context *ctx, const char *const *names, size_t n) {
+    double ms = 0.0;
+    for (size_t i = 0; i < n; ++i)
+        ms += stage_device_ms(ctx, names[i]);
+    return ms;
+}
+
+static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings *cfg,
+                            const vct_setting *vs, run *r) {
+    vct_error err = {0};
+    vct_stats_reset(ctx);
+    const double t0 = vct_now_ms();
+    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    if (!g)
+        bench_die(&err);
+    vct_plan plan;
+    vct_plan_make(s, NULL, &plan);
+    vct_voxel_options vo = {0};
+    vo.resolution = vs->res;
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, vs->anisotropic};
+    vct_vct_options o = vct_vct_options_default();
+    o.width = cfg->width;
+    o.height = cfg->height;
+    o.diffuse_cones = vs->cones;
+    o.cones.step = vs->step;
+    vct_voxels *v = NULL;
+    vct_image im;
+    if (vct_vct_prepare(ctx, s, g, &plan, &vo, &bo, vs->bounces, &o.cones, &v, &err) ||
+        vct_render_vct(ctx, s, g, v, &plan, &o, &im, NULL, &err))
+        bench_die(&err);
+    r->wall_ms = vct_now_ms() - t0;
+    r->grid_ms = stage_device_ms(ctx, "grid build");
+    r->build_ms = stages_ms(ctx, build_stages, sizeof build_stages / sizeof build_stages[0]);
+    r->render_ms = stages_ms(ctx, trace_stages, sizeof trace_stages / sizeof trace_stages[0]);
+    r->total_ms = r->grid_ms + r->build_ms + r->render_ms;
+    snprintf(r->name, sizeof r->name, "vct %u^3, %u cones, step %g, %s, %u bounce%s", vs->res,
+             vs->cones, vs->step, vs->anisotropic ? "aniso" : "iso", vs->bounces,
+             vs->bounces == 1 ? "" : "s");
+    vct_voxels_free(v);
+    vct_grid_free(g);
+    return im;
+}
+
+/* The path tracer's time to reach `error`, interpolated log-log between the
+ * sample counts around it; 0 when no run was that accurate. */
+static double pt_time_for(const run *runs, int n, double error) {
+    const run *prev = NULL;
+    for (int i = 0; i < n; ++i) {
+        if (strncmp(runs[i].name, "path trace", 10) != 0)
+            continue;
+        if (runs[i].m.relative_rmse <= error) {
+            if (!prev)
+                return runs[i].total_ms;
+            const double f = log(prev->m.relative_rmse / error) /
+                             log(prev->m.relative_rmse / runs[i].m.relative_rmse);
+            return exp(log(prev->total_ms) + f * log(runs[i].total_ms / prev->total_ms));
+        }
+        prev = &runs[i];
+    }
+    return 0.0;
+}
 
 /* method "raycast" or "pt"; spp for pt. */
 static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cfg,
@@ -81,20 +160,27 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
         fprintf(stderr, "accuracy: cannot write into %s\n", cfg->out);
         exit(1);
     }
-    fprintf(csv, "setting,grid_ms,render_ms,total_ms,wall_ms,rmse,relative_rmse,relative_mse,"
-                 "mae,psnr_db,pareto\n");
+    fprintf(csv, "setting,grid_ms,build_ms,render_ms,total_ms,wall_ms,rmse,relative_rmse,"
+                 "relative_mse,mae,psnr_db,pareto\n");
     fprintf(md, "Scene `%s`, %dx%d, on %s; error against the reference `%s`.\n\n", cfg->scene,
             cfg->width, cfg->height, device, cfg->reference);
-    fprintf(md, "| setting | grid ms | render ms | total ms | relative RMSE | relative MSE | "
-                "PSNR dB | Pareto |\n|---|---:|---:|---:|---:|---:|---:|:---:|\n");
+    fprintf(md, "| setting | grid ms | voxel build ms | render ms | total ms | relative RMSE | "
+                "relative MSE | PSNR dB | Pareto | path tracer's time to this error |\n"
+                "|---|---:|---:|---:|---:|---:|---:|---:|:---:|---:|\n");
     for (int i = 0; i < n; ++i) {
         const run *r = &runs[i];
-        fprintf(csv, "%s,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.6g,%.4g,%d\n", r->name, r->grid_ms,
-                r->render_ms, r->total_ms, r->wall_ms, r->m.rmse, r->m.relative_rmse,
-                r->m.relative_mse, r->m.mae, r->m.psnr, r->pareto);
-        fprintf(md, "| %s | %.1f | %.1f | %.1f | %.4f | %.4g | %.2f | %s |\n", r->name, r->grid_ms,
-                r->render_ms, r->total_ms, r->m.relative_rmse, r->m.relative_mse, r->m.psnr,
-                r->pareto ? "yes" : "");
+        fprintf(csv, "\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.6g,%.4g,%d\n", r->name,
+                r->grid_ms, r->build_ms, r->render_ms, r->total_ms, r->wall_ms, r->m.rmse,
+                r->m.relative_rmse, r->m.relative_mse, r->m.mae, r->m.psnr, r->pareto);
+        char pt[96] = "";
+        const double pt_ms = pt_time_for(runs, n, r->m.relative_rmse);
+        if (strncmp(r->name, "vct", 3) == 0)
+            snprintf(pt, sizeof pt,
+                     pt_ms > 0 ? "%.0f ms: %.2fx total, %.1fx render" : "not reached", pt_ms,
+                     pt_ms / r->total_ms, pt_ms / r->render_ms);
+        fprintf(md, "| %s | %.1f | %.1f | %.1f | %.1f | %.4f | %.4g | %.2f | %s | %s |\n", r->name,
+                r->grid_ms, r->build_ms, r->render_ms, r->total_ms, r->m.relative_rmse,
+                r->m.relative_mse, r->m.psnr, r->pareto ? "yes" : "", pt);
     }
     fclose(csv);
     fclose(md);
@@ -107,13 +193,13 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
             "set output '%s/accuracy.png'\n"
             "set datafile separator ','\n"
             "set logscale xy\nset grid\n"
-            "set xlabel 'time (ms, device, grid build + render)'\n"
+            "set xlabel 'time (ms, device: grid, voxel hierarchy, render)'\n"
             "set ylabel 'relative RMSE against the reference'\n"
             "set key top right\n"
-            "plot '%s/accuracy.csv' skip 1 using 4:7 with points pt 7 ps 1.2 title 'settings', \\\n"
-            "     '' skip 1 using ($11 == 1 ? $4 : 1/0):7 with linespoints lw 2 pt 6 ps 2 "
+            "plot '%s/accuracy.csv' skip 1 using 5:8 with points pt 7 ps 1.2 title 'settings', \\\n"
+            "     '' skip 1 using ($12 == 1 ? $5 : 1/0):8 with linespoints lw 2 pt 6 ps 2 "
             "title 'Pareto front', \\\n"
-            "     '' skip 1 using 4:7:1 with labels offset 0,1 font ',9' notitle\n",
+            "     '' skip 1 using 5:8:1 with labels offset 0,1 font ',7' notitle\n",
             cfg->out, cfg->out);
     fclose(gp);
     char cmd[1400];
@@ -123,7 +209,7 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
 }
 
 int main(int argc, char **argv) {
-    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256};
+    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1};
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--reference") == 0 && i + 1 < argc)
             cfg.reference = argv[++i];
@@ -149,7 +235,9 @@ int main(int argc, char **argv) {
         return 2;
     }
     vct_error err = {0};
-    vct_scene *s = vct_scene_load(cfg.scene, &err);
+    const char *src = getenv("VCT_SOURCE_DIR") ? getenv("VCT_SOURCE_DIR") : ".";
+    vct_scene *s = strcmp(cfg.scene, "heavy") == 0 ? heavy_scene_load(src, &err)
+                                                   : vct_scene_load(cfg.scene, &err);
     if (!s)
         bench_die(&err);
     vct_context *ctx = vct_context_create(NULL, &err);
@@ -193,6 +281,19 @@ int main(int argc, char **argv) {
             bench_die(&err);
         vct_image_free(&im);
         fprintf(stderr, "%-24s %9.1f ms  relative RMSE %.4f\n", runs[n].name, runs[n].total_ms,
+                runs[n].m.relative_rmse);
+        ++n;
+    }
+    static const vct_setting vct_runs[] = {
+        {64, 6, 2, 0.5f, 1},  {128, 6, 2, 0.5f, 1}, {256, 6, 2, 0.5f, 1},  {128, 1, 2, 0.5f, 1},
+        {128, 5, 2, 0.5f, 1}, {128, 9, 2, 0.5f, 1}, {128, 16, 2, 0.5f, 1}, {128, 6, 2, 0.25f, 1},
+        {128, 6, 2, 1.0f, 1}, {128, 6, 2, 0.5f, 0}, {128, 6, 1, 0.5f, 1}};
+    for (size_t i = 0; cfg.vct && i < sizeof vct_runs / sizeof vct_runs[0] && n < 32; ++i) {
+        vct_image im = render_vct(ctx, s, &cfg, &vct_runs[i], &runs[n]);
+        if (vct_image_compare(&im, &ref, &runs[n].m, &err))
+            bench_die(&err);
+        vct_image_free(&im);
+        fprintf(stderr, "%-48s %9.1f ms  relative RMSE %.4f\n", runs[n].name, runs[n].total_ms,
                 runs[n].m.relative_rmse);
         ++n;
     }

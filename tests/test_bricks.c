@@ -119,7 +119,8 @@ static void check_all_channels(const brick_case *c) {
 /* brick_sample, as a cone reads it, at random points of every level of
  * `channel` against trilinear interpolation of the reference lattice, in
  * nodes that have a brick (others must read 0). `tol`: absolute plus
- * relative, looser for image pools (GPUs interpolate with 8-bit weights). */
+ * relative, looser for image pools: GPUs may interpolate with 8-bit weights,
+ * up to 1/256 of the texel spread off (seen on an H100: 6e-3). */
 static void check_sampling(const brick_case *c, int channel, const float *value, double tol) {
     float *alpha = opacities(c);
     const uint32_t res = c->info.resolution, levels = c->info.levels, n = 4000;
@@ -212,7 +213,7 @@ static void random_volumes(void) {
         if (sizes[s] == 32) {
             c.name = "soup 32^3, image pool";
             check_all_channels(&c);
-            check_sampling(&c, VCT_BRICK_RADIANCE, c.radiance, 2e-3);
+            check_sampling(&c, VCT_BRICK_RADIANCE, c.radiance, 1e-2);
             REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &opt, &err), err);
             REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
             c.name = "soup 32^3, buffer pool";

@@ -151,9 +151,10 @@ static void random_cones(const brick_case *c, uint32_t n, uint64_t seed, float *
 
 /* Kernel cones against the reference. A sample next to an empty node jumps
  * to 0, so a position rounded differently in float can land on the other
- * side: nearly every cone must agree closely, and the mean error must be
- * small. */
-static void compare_cones(const brick_case *c, int directional, const char *pool) {
+ * side: nearly every cone must agree within `tol`, and the mean error must
+ * be small. Image pools get a wider `tol`: GPUs may interpolate with 8-bit
+ * weights (measured on an H100: 1 % of cones off by up to 6e-3). */
+static void compare_cones(const brick_case *c, int directional, const char *pool, double tol) {
     const uint32_t n = 3000;
     float *cones = malloc(32ull * n), *out = malloc(32ull * n);
     random_cones(c, n, 1234 + c->info.resolution, cones);
@@ -174,7 +175,7 @@ static void compare_cones(const brick_case *c, int directional, const char *pool
         for (int k = 0; k < 3; ++k)
             e = fmax(e, fabs(o[k] - r.radiance[k]) / (1.0 + fabs(r.radiance[k])));
         sum_err += e;
-        if (!(e <= 2e-3) && off++ < 3)
+        if (!(e <= tol) && off++ < 3)
             fprintf(stderr, "%s: cone %u: got %g %g %g a %g, expected %g %g %g a %g\n", c->name, i,
                     o[0], o[1], o[2], o[3], r.radiance[0], r.radiance[1], r.radiance[2], r.alpha);
         left += o[7] == 1.0f;
@@ -210,12 +211,12 @@ static void random_volumes(void) {
                      directional ? "directional" : "isotropic");
             const vct_brick_options buffer = {VCT_BRICKS_BUFFER, directional};
             brick_case c = make_case(name, scene, sizes[s], 1.0f, &buffer);
-            compare_cones(&c, directional, "buffer");
+            compare_cones(&c, directional, "buffer", 2e-3);
             const vct_brick_options image = {VCT_BRICKS_IMAGE, directional};
             vct_error err = {0};
             REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &image, &err), err);
             REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
-            compare_cones(&c, directional, "image");
+            compare_cones(&c, directional, "image", 1.5e-2);
             case_free(&c);
         }
     }
