@@ -56,7 +56,7 @@ expect_failure "grid beyond the device's memory" "lower" render ok.obj --grid-re
 cp -r "$(dirname "$VCT")/kernels" broken-kernels
 printf 'this is not OpenCL C;\n' >> broken-kernels/raycast.cl
 VCT_KERNEL_DIR="$DIR/broken-kernels" VCT_CACHE_DIR="$DIR/cache" \
-    expect_failure "kernel build failure" "raycast.cl:[0-9]" render ok.obj -o out.png
+    expect_failure "kernel build failure" "raycast.cl:[0-9]" render ok.obj --method raycast -o out.png
 expect_failure "unwritable output" "could not write\|cannot create" render ok.obj -o /proc/out.png
 
 # A scene with degenerate triangles renders, and says how many it has.
@@ -110,6 +110,23 @@ else
 fi
 expect_failure "pt without samples" "not an integer" render ok.obj --method pt --spp 0 -o out.png
 expect_failure "unknown method" "unknown --method" render ok.obj --method magic -o out.png
+expect_failure "unknown effect" "NAME=on or NAME=off" render ok.obj --effect sparkle=on -o out.png
+expect_failure "effect without a value" "NAME=on or NAME=off" render ok.obj --effect ao -o out.png
+expect_failure "unknown cone preset" "presets are 1, 5, 6, 9 and 16" render ok.obj --ambient 1 1 1 --cones 7 -o out.png
+expect_failure "negative ambient" "ambient radiance" render ok.obj --ambient 1 -1 1 -o out.png
+expect_failure "bad cone step" "cone step" render ok.obj --ambient 1 1 1 --cone-step 0 -o out.png
+expect_failure "too many bounces" "not an integer in 1..4" render ok.obj --bounces 9 -o out.png
+# The plan: printed with reasons; a forced effect says so; the image is written.
+if "$VCT" render ok.obj --plan --ambient 0.5 0.5 0.5 --effect specular=on --voxel-res 16 --size 16 16 \
+    -o sky.png >stdout.txt 2>stderr.txt &&
+    grep -q "^  indirect   on   diffuse material" stdout.txt &&
+    grep -q "^  specular   on   forced on (the scene alone: off" stdout.txt &&
+    grep -q "^  ao         on   ambient light" stdout.txt &&
+    grep -q "^  direct     off  no lights" stdout.txt && [ -s sky.png ]; then
+    echo "ok   render --plan prints each effect, on or off, and why"
+else
+    echo "FAIL render --plan:"; cat stdout.txt stderr.txt; failures=$((failures + 1))
+fi
 
 [ "$failures" -eq 0 ] || { echo "$failures failures"; exit 1; }
 echo "all bad-input cases rejected cleanly"

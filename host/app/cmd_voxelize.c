@@ -62,7 +62,7 @@ int cmd_voxelize(const cli_options *opt) {
         return cli_fail(&err);
     }
     vct_voxel_options vo;
-    cli_voxel_options(opt, &vo);
+    cli_voxel_options(opt, 256, &vo);
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
     int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
     const vct_brick_options bo = {opt->bricks, opt->anisotropic == 1};

@@ -21,7 +21,7 @@ void cli_print_stats(const vct_context *ctx);
 /* The context for --device (or the default), its name printed on stderr. */
 vct_context *cli_open_context(const cli_options *opt, vct_error *err);
 int cli_make_parent_dir(const char *path, vct_error *err);
-void cli_voxel_options(const cli_options *opt, vct_voxel_options *options);
+void cli_voxel_options(const cli_options *opt, uint32_t default_res, vct_voxel_options *options);
 void cli_print_plan(const vct_plan *plan, FILE *out);
 /* Plans, builds what the plan needs and renders by voxel cone tracing. */
 int cli_render_vct(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,

@@ -43,8 +43,8 @@ void cli_usage(void) {
           "  --dir-light DX DY DZ R G B       irradiance, travelling along D (repeatable)\n"
           "  --ambient R G B                  radiance arriving where nothing is hit\n"
           "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
-          "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default "
-          "256)\n"
+          "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default\n"
+          "                                   64 for render, 256 for voxelize)\n"
           "  --thin                           6-separating voxels (default: conservative)\n"
           "  --voxel-bounds X Y Z SIZE        voxel cube by hand (default: around the scene)\n"
           "  --bricks auto|buffer|image       brick pool kind (default auto: image3d on GPUs)\n"
@@ -145,7 +145,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
     opt->width = opt->height = 512;
     opt->method = "vct";
     opt->max_depth = 16;
-    opt->voxel_res = 256;
+    opt->voxel_res = 0; /* each command's own default */
     opt->diffuse_cones = 6;
     opt->bounces = 2;
     opt->anisotropic = -1; /* render: on, voxelize: off, unless given */
