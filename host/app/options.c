@@ -44,7 +44,7 @@ void cli_usage(void) {
           "  --ambient R G B                  radiance arriving where nothing is hit\n"
           "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
           "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default\n"
-          "                                   64 for render, 256 for voxelize)\n"
+          "                                   128 for render, 256 for voxelize)\n"
           "  --thin                           6-separating voxels (default: conservative)\n"
           "  --voxel-bounds X Y Z SIZE        voxel cube by hand (default: around the scene)\n"
           "  --bricks auto|buffer|image       brick pool kind (default auto: image3d on GPUs)\n"
