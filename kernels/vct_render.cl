@@ -109,26 +109,45 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
         aov[4u * pixel] = (float4)(radiance, 1.0f);
 }
 
+/* The surface a pixel's camera ray found, from the G-buffer; 0 where it
+ * found none (or the pixel lies outside the image). */
+typedef struct gbuffer_surface {
+    float3 p, n, wo, throughput;
+    vct_material_desc m;
+} gbuffer_surface;
+
+inline int gbuffer_read(__global const float4 *gbuf, __global const vct_material_desc *materials,
+                        uint2 size, uint *pixel, gbuffer_surface *s) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= size.x || y >= size.y)
+        return 0;
+    *pixel = y * size.x + x;
+    const float4 gnormal = gbuf[4u * *pixel + 1u];
+    if (gnormal.w == 0.0f)
+        return 0;
+    const float4 gpos = gbuf[4u * *pixel];
+    s->p = gpos.xyz;
+    s->n = gnormal.xyz;
+    s->wo = gbuf[4u * *pixel + 2u].xyz;
+    s->throughput = gbuf[4u * *pixel + 3u].xyz;
+    s->m = materials[as_uint(gpos.w)];
+    return 1;
+}
+
 __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                                 __global const vct_cone_dir *cones, uint cone_count,
                                 __global const float4 *gbuf,
                                 __global const vct_material_desc *materials, uint2 size,
                                 __global float4 *image, __global float4 *aov) {
-    const uint x = get_global_id(0), y = get_global_id(1);
-    if (x >= size.x || y >= size.y)
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
         return;
-    const uint pixel = y * size.x + x;
-    const float4 gnormal = gbuf[4u * pixel + 1u];
-    if (gnormal.w == 0.0f)
-        return;
-    const float4 gpos = gbuf[4u * pixel];
-    const float3 throughput = gbuf[4u * pixel + 3u].xyz;
-    const vct_material_desc m = materials[as_uint(gpos.w)];
-    const float3 n = gnormal.xyz;
+    const float3 n = g.n;
     float3 t, b;
     basis_of(n, &t, &b);
     const float voxel = cd.volume.w / (float)cd.res.x;
-    const float3 origin = gpos.xyz + n * (cd.march.y * voxel);
+    const float3 origin = g.p + n * (cd.march.y * voxel);
 #ifdef VCT_INDIRECT
     const float reach = INFINITY;
 #else
@@ -149,9 +168,9 @@ __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone
     }
     float3 add = (float3)(0.0f);
 #if defined(VCT_INDIRECT)
-    add = diffuse_color(&m) * throughput * gathered;
+    add = diffuse_color(&g.m) * g.throughput * gathered;
 #elif defined(VCT_AO)
-    add = diffuse_color(&m) * throughput * cd.ambient.xyz * open;
+    add = diffuse_color(&g.m) * g.throughput * cd.ambient.xyz * open;
 #endif
     image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
     if (aov) {
@@ -171,27 +190,22 @@ __kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone
                                 __global const float4 *gbuf,
                                 __global const vct_material_desc *materials, uint2 size,
                                 __global float4 *image, __global float4 *aov) {
-    const uint x = get_global_id(0), y = get_global_id(1);
-    if (x >= size.x || y >= size.y)
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
         return;
-    const uint pixel = y * size.x + x;
-    const float4 gnormal = gbuf[4u * pixel + 1u];
-    if (gnormal.w == 0.0f)
-        return;
-    const float4 gpos = gbuf[4u * pixel];
-    const vct_material_desc m = materials[as_uint(gpos.w)];
+    const vct_material_desc m = g.m;
     if (!(glossy_probability(&m) > 0.0f) || is_dielectric(&m))
         return; /* nothing glossy here: the pixel is left as it is */
-    const float3 n = gnormal.xyz, wo = gbuf[4u * pixel + 2u].xyz;
-    const float3 throughput = gbuf[4u * pixel + 3u].xyz;
-    const float3 r = reflect_dir(wo, n);
+    const float3 n = g.n;
+    const float3 r = reflect_dir(g.wo, n);
     const int mirror = is_mirror(&m);
     const float e = phong_exponent(m.emission.w);
     const float voxel = cd.volume.w / (float)cd.res.x;
-    const float3 origin = gpos.xyz + n * (cd.march.y * voxel);
+    const float3 origin = g.p + n * (cd.march.y * voxel);
     const cone_result c = cone_trace(CONE_POOLS_PASS, child, &cd, origin, r,
                                      mirror ? 0.0f : specular_tan_half(e), INFINITY);
-    float3 weight = glossy_color(&m) * throughput;
+    float3 weight = glossy_color(&m) * g.throughput;
     if (!mirror)
         weight *= (e + 2.0f) / (e + 1.0f) * fmax(dot(n, r), 0.0f);
     const float3 add = weight * c.radiance;

@@ -150,13 +150,7 @@ static vct_scene *scene_of(const test_mesh *m, const vct_material *mats, uint32_
 }
 
 static vct_scene *quads_scene(const float *quads, uint32_t count) {
-    test_mesh m = {malloc(48ull * count), malloc(24ull * count), 4 * count, 2 * count};
-    memcpy(m.pos, quads, 48ull * count);
-    for (uint32_t q = 0; q < count; ++q) {
-        const uint32_t t[6] = {0, 1, 2, 0, 2, 3};
-        for (int k = 0; k < 6; ++k)
-            m.tri[6 * q + k] = 4 * q + t[k];
-    }
+    test_mesh m = mesh_quads(quads, count);
     vct_material white = vct_material_default();
     vct_scene *s = scene_of(&m, &white, 1);
     mesh_free(&m);

@@ -105,6 +105,18 @@ static inline test_mesh mesh_soup(uint32_t n, float offset, uint64_t seed) {
     return m;
 }
 
+/* count quads of 4 corners each (12 floats), each as two triangles. */
+static inline test_mesh mesh_quads(const float *quads, uint32_t count) {
+    test_mesh m = {malloc(48ull * count), malloc(24ull * count), 4 * count, 2 * count};
+    memcpy(m.pos, quads, 48ull * count);
+    for (uint32_t q = 0; q < count; ++q) {
+        const uint32_t t[6] = {0, 1, 2, 0, 2, 3};
+        for (int k = 0; k < 6; ++k)
+            m.tri[6 * q + k] = 4 * q + t[k];
+    }
+    return m;
+}
+
 static inline void mesh_free(test_mesh *m) {
     free(m->pos);
     free(m->tri);

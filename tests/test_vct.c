@@ -52,13 +52,7 @@ static size_t nonfinite(const vct_image *im) {
 }
 
 static vct_scene *one_material_scene(const float *quads, uint32_t count, vct_material m) {
-    test_mesh t = {malloc(48ull * count), malloc(24ull * count), 4 * count, 2 * count};
-    memcpy(t.pos, quads, 48ull * count);
-    for (uint32_t q = 0; q < count; ++q) {
-        const uint32_t k[6] = {0, 1, 2, 0, 2, 3};
-        for (int i = 0; i < 6; ++i)
-            t.tri[6 * q + i] = 4 * q + k[i];
-    }
+    test_mesh t = mesh_quads(quads, count);
     uint32_t *mat = calloc(t.nt, 4);
     vct_error err = {0};
     vct_scene *s = vct_scene_from_arrays(t.pos, t.nv, t.tri, t.nt, mat, &m, 1, &err);
