@@ -163,21 +163,22 @@ static void specular_only_when_planned(void) {
 
 /* A floor in the top voxel layer under a constant sky L: every cone leaves
  * the volume at once, so a pixel is albedo * L * sum of weights = albedo * L
- * (indirect, with no light but the sky), and pixels that miss see L. The
- * ambient light also plans AO, which must not add the sky a second time. */
-static void constant_environment(void) {
+ * (indirect, with no light but the sky), the AO output is 1 (all open), and
+ * pixels that miss see L. The ambient light also plans AO, which must not
+ * add the sky a second time. A mirror floor (metal, roughness 0) reflects
+ * exactly albedo * L through its specular cone and nothing diffusely. */
+static void sky_floor(vct_material m, const uint32_t *presets, int count, int mirror) {
     const float floor_quad[12] = {-1, 0.999f, -1, 1, 0.999f, -1, 1, 0.999f, 1, -1, 0.999f, 1};
-    vct_material m = vct_material_default();
-    m.albedo[0] = 0.8f, m.albedo[1] = 0.5f, m.albedo[2] = 0.25f;
     vct_scene *s = one_material_scene(floor_quad, 1, m);
     s->ambient[0] = 1.0f, s->ambient[1] = 2.0f, s->ambient[2] = 0.5f;
     s->camera = (vct_camera){{0.0f, 3.0f, 0.01f}, {0, 0, 0}, {0, 0, -1}, 60.0f};
     vct_plan p;
     vct_plan_make(s, NULL, &p);
-    CHECK(p.on[VCT_EFFECT_INDIRECT] && p.on[VCT_EFFECT_AO] && !p.on[VCT_EFFECT_DIRECT],
-          "sky-lit floor: indirect %d, ao %d", p.on[VCT_EFFECT_INDIRECT], p.on[VCT_EFFECT_AO]);
-    const uint32_t presets[] = {1, 5, 6, 9, 16};
-    for (int i = 0; i < 5; ++i) {
+    CHECK(p.on[VCT_EFFECT_INDIRECT] == !mirror && p.on[VCT_EFFECT_SPECULAR] == mirror &&
+              p.on[VCT_EFFECT_AO] && !p.on[VCT_EFFECT_DIRECT],
+          "sky-lit %s floor: indirect %d, specular %d, ao %d", mirror ? "mirror" : "diffuse",
+          p.on[VCT_EFFECT_INDIRECT], p.on[VCT_EFFECT_SPECULAR], p.on[VCT_EFFECT_AO]);
+    for (int i = 0; i < count; ++i) {
         vct_error err = {0};
         vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
         REQUIRE_OK(g ? VCT_OK : err.status, err);
@@ -192,8 +193,9 @@ static void constant_environment(void) {
         vct_voxels *v = NULL;
         REQUIRE_OK(vct_vct_prepare(ctx, s, g, &p, &vo, NULL, 1, &o.cones, &v, &err), err);
         vct_image im;
-        REQUIRE_OK(vct_render_vct(ctx, s, g, v, &p, &o, &im, NULL, &err), err);
-        double worst = 0.0;
+        vct_aovs aovs;
+        REQUIRE_OK(vct_render_vct(ctx, s, g, v, &p, &o, &im, &aovs, &err), err);
+        double worst = 0.0, worst_ao = 0.0;
         int floor_pixels = 0, sky_pixels = 0;
         for (int px = 0; px < 32 * 32; ++px) {
             const float *c = &im.rgba[4 * px];
@@ -204,17 +206,31 @@ static void constant_environment(void) {
             ++floor_pixels;
             for (int k = 0; k < 3; ++k)
                 worst = fmax(worst, fabs(c[k] / (m.albedo[k] * s->ambient[k]) - 1.0));
+            worst_ao = fmax(worst_ao, fabs(aovs.ao.rgba[4 * px] - 1.0));
         }
         CHECK(worst < 1e-5 && floor_pixels > 300 && sky_pixels > 50,
-              "%u cones: floor = albedo * sky within %.2g (%d floor, %d sky pixels)", presets[i],
-              worst, floor_pixels, sky_pixels);
-        printf("constant sky, %2u cones: floor within %.1g of albedo * L (%d pixels)\n", presets[i],
-               worst, floor_pixels);
+              "%s floor, %u cones: albedo * sky within %.2g (%d floor, %d sky pixels)",
+              mirror ? "mirror" : "diffuse", presets[i], worst, floor_pixels, sky_pixels);
+        CHECK(mirror || worst_ao < 1e-6, "%u cones: AO of an open floor is 1 within %.2g",
+              presets[i], worst_ao);
+        printf("constant sky, %s floor, %2u cones: within %.1g of albedo * L (%d pixels)\n",
+               mirror ? "mirror " : "diffuse", presets[i], worst, floor_pixels);
         vct_image_free(&im);
+        vct_aovs_free(&aovs);
         vct_voxels_free(v);
         vct_grid_free(g);
     }
     vct_scene_free(s);
+}
+
+static void constant_environment(void) {
+    const uint32_t presets[] = {1, 5, 6, 9, 16};
+    vct_material m = vct_material_default();
+    m.albedo[0] = 0.8f, m.albedo[1] = 0.5f, m.albedo[2] = 0.25f;
+    sky_floor(m, presets, 5, 0);
+    m.metallic = 1.0f;
+    m.roughness = 0.0f;
+    sky_floor(m, presets, 1, 1);
 }
 
 /* The Cornell box at default settings against the path tracer. */
