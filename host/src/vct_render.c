@@ -49,7 +49,6 @@ static cl_mem cone_buffer(vct_context *ctx, uint32_t count, const char *stage, v
 
 int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v,
                              const vct_cone_settings *cs, uint32_t diffuse_cones, vct_error *err) {
-    (void)s;
     if (!v->radiance || !v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT,
                         "%s: inject light into built bricks first (vct_bricks_build, "

@@ -449,8 +449,8 @@ void vct_aovs_free(vct_aovs *aovs);
 
 /* Builds what the plan's cones read: voxels, octree and bricks, then light
  * (when indirect diffuse or specular is on) with `bounces` - 1 extra
- * diffuse bounces gathered by cones at the voxels. *voxels is NULL when the
- * plan needs none. */
+ * diffuse bounces gathered at the voxels by the 6-cone preset. *voxels is
+ * NULL when the plan needs none. */
 int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
                     const vct_plan *plan, const vct_voxel_options *voxel_options,
                     const vct_brick_options *brick_options, uint32_t bounces,
