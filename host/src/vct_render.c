@@ -127,6 +127,7 @@ typedef struct frame {
     const vct_voxels *v;
     cl_program program;
     cl_mem gbuf, image, aov;
+    vct_scene_buffers scene; /* materials and lights, uploaded once per frame */
     vct_cone_desc desc;
     cl_uint size[2];
 } frame;
@@ -138,10 +139,9 @@ static int launch_frame_kernel(frame *f, cl_kernel k, vct_error *err) {
 
 static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_camera_desc *cam,
                    vct_error *err) {
-    vct_scene_buffers sb = {0};
-    int rc = vct_scene_buffers_make(f->ctx, s, PRIMARY_STAGE, &sb, err);
-    cl_kernel k = rc == VCT_OK ? vct_kernel_create(f->ctx, f->program, "vct_primary", err) : NULL;
-    rc = k ? vct_grid_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
+    const vct_scene_buffers sb = f->scene;
+    cl_kernel k = vct_kernel_create(f->ctx, f->program, "vct_primary", err);
+    int rc = k ? vct_grid_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)
         rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 9, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
@@ -154,33 +154,30 @@ static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_ca
         rc = vct_finish(f->ctx, PRIMARY_STAGE, err);
     if (k)
         clReleaseKernel(k);
-    vct_scene_buffers_release(f->ctx, &sb);
     return rc;
 }
 
 /* One cone kernel over the G-buffer: CONE_POOLS, child, desc, then `extra`
  * (count, VCT_ARG_OF pairs), then gbuf, materials, size, image, aov. */
-static int cone_pass(frame *f, const vct_scene *s, const char *stage, const char *name,
-                     cl_mem cones, cl_uint cone_count, vct_error *err) {
-    vct_scene_buffers sb = {0};
-    int rc = vct_scene_buffers_make(f->ctx, s, stage, &sb, err);
-    cl_kernel k = rc == VCT_OK ? vct_kernel_create(f->ctx, f->program, name, err) : NULL;
+static int cone_pass(frame *f, const char *stage, const char *name, cl_mem cones,
+                     cl_uint cone_count, vct_error *err) {
+    cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
     int next = 0;
-    rc = k ? vct_cone_set_args(k, f->v, &f->desc, stage, &next, err) : (int)err->status;
+    int rc = k ? vct_cone_set_args(k, f->v, &f->desc, stage, &next, err) : (int)err->status;
     if (rc == VCT_OK && cones) {
         rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_OF(cones), VCT_ARG_OF(cone_count));
         next += 2;
     }
     if (rc == VCT_OK)
-        rc = vct_set_args(err, stage, k, next, 5, VCT_ARG_OF(f->gbuf), VCT_ARG_OF(sb.materials),
-                          VCT_ARG_OF(f->size), VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov));
+        rc = vct_set_args(err, stage, k, next, 5, VCT_ARG_OF(f->gbuf),
+                          VCT_ARG_OF(f->scene.materials), VCT_ARG_OF(f->size), VCT_ARG_OF(f->image),
+                          VCT_ARG_OF(f->aov));
     if (rc == VCT_OK)
         rc = launch_frame_kernel(f, k, err);
     if (rc == VCT_OK)
         rc = vct_finish(f->ctx, stage, err);
     if (k)
         clReleaseKernel(k);
-    vct_scene_buffers_release(f->ctx, &sb);
     return rc;
 }
 
@@ -256,6 +253,8 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
                    : (int)err->status;
     }
     if (rc == VCT_OK)
+        rc = vct_scene_buffers_make(ctx, s, PRIMARY_STAGE, &f.scene, err);
+    if (rc == VCT_OK)
         rc = primary(&f, s, g, &cam, err);
     vct_stage_end(ctx);
 
@@ -263,20 +262,21 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
         vct_stage_begin(ctx, DIFFUSE_STAGE);
         cl_mem cones = cone_buffer(ctx, opt->diffuse_cones, DIFFUSE_STAGE, err);
         const cl_uint count = opt->diffuse_cones;
-        rc = cones ? cone_pass(&f, s, DIFFUSE_STAGE, "vct_diffuse_cones", cones, count, err)
+        rc = cones ? cone_pass(&f, DIFFUSE_STAGE, "vct_diffuse_cones", cones, count, err)
                    : (int)err->status;
         vct_buffer_release(ctx, cones);
         vct_stage_end(ctx);
     }
     if (rc == VCT_OK && plan->on[VCT_EFFECT_SPECULAR]) {
         vct_stage_begin(ctx, SPECULAR_STAGE);
-        rc = cone_pass(&f, s, SPECULAR_STAGE, "vct_specular_cone", NULL, 0, err);
+        rc = cone_pass(&f, SPECULAR_STAGE, "vct_specular_cone", NULL, 0, err);
         vct_stage_end(ctx);
     }
     if (rc == VCT_OK)
         rc = vct_image_read_device(ctx, "vct image", f.image, opt->width, opt->height, image, err);
     if (rc == VCT_OK && aovs)
         rc = read_aovs(&f, aovs, err);
+    vct_scene_buffers_release(ctx, &f.scene);
     vct_buffer_release(ctx, f.aov);
     vct_buffer_release(ctx, f.image);
     vct_buffer_release(ctx, f.gbuf);
