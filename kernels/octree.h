@@ -67,11 +67,13 @@ inline uint octree_find(__global const uint *child, uint3 cell, uint level) {
     return node != OCT_NULL && child[node] != OCT_NULL ? node : OCT_NULL;
 }
 
-/* Descends towards leaf cell `cell` while nodes have geometry; returns the
- * deepest such node and its level. At *level == levels, child[node] is the voxel. */
-inline uint octree_descend(__global const uint *child, uint3 cell, uint levels, uint *level) {
+/* Descends towards leaf cell `cell` while nodes have geometry, no deeper
+ * than `max_level`; returns the deepest such node and its level. At
+ * *level == levels, child[node] is the voxel. */
+inline uint octree_descend_to(__global const uint *child, uint3 cell, uint levels, uint max_level,
+                              uint *level) {
     uint node = 0, l = 0;
-    while (l < levels) {
+    while (l < max_level) {
         const uint first = child[node];
         if (first == OCT_NULL)
             break;
@@ -80,6 +82,10 @@ inline uint octree_descend(__global const uint *child, uint3 cell, uint levels, 
     }
     *level = l;
     return node;
+}
+
+inline uint octree_descend(__global const uint *child, uint3 cell, uint levels, uint *level) {
+    return octree_descend_to(child, cell, levels, levels, level);
 }
 
 #endif

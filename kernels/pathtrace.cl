@@ -180,3 +180,12 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
     if (dropped)
         atomic_add(discarded, dropped);
 }
+
+/* The frame: each pixel's mean sample (black where every sample was dropped). */
+__kernel void pathtrace_resolve(__global const float4 *accum, uint pixels, __global float4 *frame) {
+    const uint i = get_global_id(0);
+    if (i >= pixels)
+        return;
+    const float4 a = accum[i];
+    frame[i] = a.w > 0.0f ? (float4)(a.xyz / a.w, 1.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+}

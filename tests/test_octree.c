@@ -241,6 +241,24 @@ static void test_voxel_image(void) {
     const float albedo = vct_material_default().albedo[0];
     CHECK(fabsf(centre[0] - albedo) < 1e-3f, "centre pixel %g, albedo %g", centre[0], albedo);
     CHECK(corner[0] == 0.0f && corner[1] == 0.0f, "sky pixel %g", corner[0]);
+    /* Level 2 (cells of 4 voxels): the wall's cells show as cubes lit on the
+     * face the ray enters, reaching past the wall's leaf voxels. */
+    vct_image coarse = {0};
+    REQUIRE_OK(vct_render_voxels_level(ctx, s, v, 2, 33, 33, &coarse, &err), err);
+    int grown = 0;
+    for (int p = 0; p < 33 * 33; ++p) {
+        const float leaf = img.rgba[4 * p], cube = coarse.rgba[4 * p];
+        CHECK(!(leaf > 0.0f) || cube > 0.0f, "pixel %d: a voxel at the leaf level, none at 2", p);
+        CHECK(cube == 0.0f || (cube >= 0.75f * 0.25f && cube <= 0.75f), "pixel %d: cube shade %g",
+              p, cube);
+        grown += cube > 0.0f && !(leaf > 0.0f);
+    }
+    const float facing = coarse.rgba[4 * (16 * 33 + 16)];
+    CHECK(fabsf(facing - 0.75f) < 1e-2f, "cube facing the camera: %g, expected 0.75", facing);
+    CHECK(grown > 0, "level 2 covers no more than the voxels");
+    vct_image_free(&coarse);
+    CHECK(vct_render_voxels_level(ctx, s, v, 5, 33, 33, &coarse, &err) == VCT_ERR_INPUT,
+          "level 5 of a 16^3 octree should be refused");
     vct_image_free(&img);
     vct_voxels_free(v);
     vct_scene_free(s);

@@ -1,8 +1,9 @@
 /* The path tracer against answers known in advance: the furnace (a closed box
  * of albedo a and emission Le has radiance Le / (1 - a) everywhere), direct
  * light equal to the ray caster's at depth 1, no gain of energy in an open
- * scene, error falling as 1 / sqrt(spp), determinism, and no NaN on
- * adversarial geometry. Bounds come from the measured spread of the samples. */
+ * scene, error falling as 1 / sqrt(spp), determinism, resumed calls that
+ * continue one sample sequence, and no NaN on adversarial geometry. Bounds come from the measured
+ * spread of the samples. */
 #include <math.h>
 #include <string.h>
 
@@ -28,7 +29,7 @@ static vct_image trace(vct_context *ctx, const vct_scene *s, int w, int h, uint3
     vct_error err = {0};
     vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0};
+    vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, res, &err), err);
     vct_grid_free(g);
@@ -249,8 +250,44 @@ static void glass_slab(vct_context *ctx, float angle_deg) {
     vct_scene_free(s);
 }
 
+/* Four resumed calls of one sample equal one call of four, bit for bit (the
+ * viewer's progressive mode); a call without resume starts over. */
+static void resume_continues(vct_context *ctx) {
+    vct_material m = vct_material_default();
+    for (int c = 0; c < 3; ++c)
+        m.emission[c] = 0.5f;
+    vct_scene *s = cube_scene(m);
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_pathtrace_options whole = {24, 16, 4, 0.0, 8, 5, 1, 0, 0};
+    vct_pathtrace_result r;
+    vct_image once, step = {0}, fresh;
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &whole, &once, &r, &err), err);
+    vct_pathtrace_options part = whole;
+    part.spp = 1;
+    for (int i = 0; i < 4; ++i) {
+        part.resume = i > 0;
+        vct_image_free(&step);
+        REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &part, &step, &r, &err), err);
+    }
+    CHECK(r.spp == 4, "resumed calls report %u samples, expected 4", r.spp);
+    CHECK(memcmp(once.rgba, step.rgba, 16ull * 24 * 16) == 0,
+          "four resumed samples differ from one call of four");
+    part.resume = 0;
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &part, &fresh, &r, &err), err);
+    CHECK(r.spp == 1 && memcmp(once.rgba, fresh.rgba, 16ull * 24 * 16) != 0,
+          "a call without resume should start over (%u samples)", r.spp);
+    vct_image_free(&once);
+    vct_image_free(&step);
+    vct_image_free(&fresh);
+    vct_grid_free(g);
+    vct_scene_free(s);
+}
+
 int main(void) {
     vct_context *ctx = check_context();
+    resume_continues(ctx);
     vct_material m = vct_material_default();
     for (int c = 0; c < 3; ++c) {
         m.albedo[c] = 0.5f;

@@ -240,7 +240,7 @@ static void cornell_against_path_tracer(void) {
     vct_error err = {0};
     vct_grid *g = vct_grid_build(ctx, box, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_pathtrace_options po = {w, h, 512, 0.0, 16, 3, 64, 0};
+    const vct_pathtrace_options po = {w, h, 512, 0.0, 16, 3, 64, 0, 0};
     vct_pathtrace_result pr;
     vct_image ref, rc;
     REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, &pr, &err), err);

@@ -176,7 +176,8 @@ int cmd_render(const cli_options *opt) {
                                 (uint32_t)opt->max_depth,
                                 (uint32_t)opt->seed,
                                 1,
-                                1};
+                                1,
+                                0};
     vct_pathtrace_result pr = {0};
     int rc = !grid   ? (int)err.status
              : pt    ? vct_render_pathtrace(ctx, s, grid, &po, &image, &pr, &err)

@@ -133,7 +133,8 @@ static int choose(const device_ref *refs, int n, const char *selector, vct_error
     return 0;
 }
 
-vct_context *vct_context_create(const char *selector, vct_error *err) {
+vct_context *vct_context_open(const char *selector, const cl_context_properties *extra,
+                              const char *required_extension, vct_error *err) {
     device_ref refs[MAX_DEVICES];
     int n = enumerate(refs, MAX_DEVICES, err);
     if (n < 0)
@@ -158,9 +159,21 @@ vct_context *vct_context_create(const char *selector, vct_error *err) {
     ctx->device = refs[pick].device;
     describe(&refs[pick], pick, &ctx->info);
     ctx->current_stage = -1;
+    if (required_extension && !strstr(ctx->info.extensions, required_extension)) {
+        vct_fail(err, VCT_ERR_OPENCL, "context: %s (%s) has no %s", ctx->info.name,
+                 ctx->info.platform, required_extension);
+        free(ctx);
+        return NULL;
+    }
 
     cl_int rc = CL_SUCCESS;
-    cl_context_properties props[] = {CL_CONTEXT_PLATFORM, (cl_context_properties)ctx->platform, 0};
+    cl_context_properties props[16] = {CL_CONTEXT_PLATFORM, (cl_context_properties)ctx->platform};
+    int count = 2;
+    for (int i = 0; extra && extra[i] && count < 14; i += 2) {
+        props[count++] = extra[i];
+        props[count++] = extra[i + 1];
+    }
+    props[count] = 0;
     ctx->context = clCreateContext(props, 1, &ctx->device, NULL, NULL, &rc);
     if (rc != CL_SUCCESS) {
         vct_cl_check(err, rc, "context", "clCreateContext");
@@ -211,10 +224,16 @@ vct_context *vct_context_create(const char *selector, vct_error *err) {
     return ctx;
 }
 
+vct_context *vct_context_create(const char *selector, vct_error *err) {
+    return vct_context_open(selector, NULL, NULL, err);
+}
+
 void vct_context_destroy(vct_context *ctx) {
     if (!ctx)
         return;
     vct_stage_end(ctx);
+    vct_frame_release(ctx);
+    vct_pathtrace_release(ctx);
     for (int i = 0; i < ctx->program_count; ++i)
         clReleaseProgram(ctx->programs[i].program);
     clReleaseCommandQueue(ctx->queue);

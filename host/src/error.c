@@ -72,6 +72,8 @@ const char *vct_cl_error_name(cl_int code) {
 #undef NAME
     case -1001:
         return "CL_PLATFORM_NOT_FOUND_KHR";
+    case -1000:
+        return "CL_INVALID_GL_SHAREGROUP_REFERENCE_KHR";
     default:
         return "unknown OpenCL error";
     }
@@ -102,6 +104,10 @@ static const char *hint_for(cl_int code) {
         return "the kernel did not compile: see the build log above";
     case CL_INVALID_WORK_GROUP_SIZE:
         return "the device rejected the work-group size: report this with `vct devices` output";
+    case -1000: /* CL_INVALID_GL_SHAREGROUP_REFERENCE_KHR */
+    case CL_INVALID_GL_OBJECT:
+        return "the device cannot share with this OpenGL context: pick the GPU that drives the "
+               "display with --device";
     default:
         return "check the device with `vct devices`, or pick another with --device";
     }

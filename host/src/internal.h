@@ -27,6 +27,22 @@ int vct_cl_check(vct_error *err, cl_int code, const char *stage, const char *cal
             return vct_cl_check((err), vct_cl_rc_, (stage), #call);                                \
     } while (0)
 
+/* ---- contexts ---- */
+/* Opens a context on the device `selector` picks (as vct_context_create),
+ * with `extra` context properties (0-terminated pairs, may be NULL); fails
+ * when the device lacks `required_extension` (may be NULL). */
+vct_context *vct_context_open(const char *selector, const cl_context_properties *extra,
+                              const char *required_extension, vct_error *err);
+
+/* ---- the frame (frame.c) ---- */
+/* The context's frame at this size (reallocated when it changes). */
+cl_mem vct_frame_get(vct_context *ctx, const char *stage, int width, int height, vct_error *err);
+/* Hands the frame to a renderer's caller: a host copy, or only its size
+ * when host copies are off. */
+int vct_frame_deliver(vct_context *ctx, const char *stage, vct_image *image, vct_error *err);
+void vct_frame_release(vct_context *ctx);
+void vct_pathtrace_release(vct_context *ctx);
+
 /* ---- programs ---- */
 typedef struct vct_program {
     char key[64];
@@ -58,6 +74,15 @@ struct vct_context {
     size_t scan_group_size;
     size_t scan_groups;
     int radix_bits;
+    /* The frame every renderer writes (frame.c), and the path tracer's
+     * running sums, which a resumed call adds to (pathtrace.c). */
+    cl_mem frame;
+    int frame_size[2];
+    int frame_device_only; /* renders return no host copy */
+    int gl_shared;         /* created with an OpenGL context (gl_share.c) */
+    cl_mem pt_accum, pt_discarded;
+    int pt_size[2];
+    uint32_t pt_done;
     /* Program cache statistics, for reporting cold/warm starts. */
     int cache_hits, cache_misses;
     double build_ms;

@@ -82,6 +82,40 @@ static void progress_line(uint32_t done, uint32_t total, double elapsed_s, doubl
     fflush(stderr);
 }
 
+void vct_pathtrace_release(vct_context *ctx) {
+    vct_buffer_release(ctx, ctx->pt_accum);
+    vct_buffer_release(ctx, ctx->pt_discarded);
+    ctx->pt_accum = ctx->pt_discarded = NULL;
+    ctx->pt_size[0] = ctx->pt_size[1] = 0;
+    ctx->pt_done = 0;
+}
+
+/* The running sums: kept when resuming at the same size, else zeroed. */
+static int accumulation_get(vct_context *ctx, const vct_pathtrace_options *opt, vct_error *err) {
+    if (opt->resume && ctx->pt_accum && ctx->pt_size[0] == opt->width &&
+        ctx->pt_size[1] == opt->height)
+        return VCT_OK;
+    vct_pathtrace_release(ctx);
+    const size_t pixels = (size_t)opt->width * opt->height;
+    ctx->pt_accum =
+        vct_buffer_create(ctx, STAGE, "accumulation", 16 * pixels, CL_MEM_READ_WRITE, NULL, err);
+    ctx->pt_discarded = ctx->pt_accum ? vct_buffer_create(ctx, STAGE, "discarded count", 4,
+                                                          CL_MEM_READ_WRITE, NULL, err)
+                                      : NULL;
+    int rc = ctx->pt_discarded ? VCT_OK : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_buffer_fill_u32(ctx, STAGE, ctx->pt_accum, 0, 4 * pixels, err);
+    if (rc == VCT_OK)
+        rc = vct_buffer_fill_u32(ctx, STAGE, ctx->pt_discarded, 0, 1, err);
+    if (rc != VCT_OK)
+        vct_pathtrace_release(ctx);
+    else {
+        ctx->pt_size[0] = opt->width;
+        ctx->pt_size[1] = opt->height;
+    }
+    return rc;
+}
+
 int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g,
                          const vct_pathtrace_options *opt, vct_image *image,
                          vct_pathtrace_result *result, vct_error *err) {
@@ -106,19 +140,9 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
     if (rc == VCT_OK)
         rc = emitters_make(ctx, s, &eb, err);
     const size_t pixels = (size_t)opt->width * opt->height;
-    cl_mem accum = NULL, discarded = NULL;
-    if (rc == VCT_OK) {
-        accum = vct_buffer_create(ctx, STAGE, "accumulation", 16 * pixels, CL_MEM_READ_WRITE, NULL,
-                                  err);
-        discarded = accum ? vct_buffer_create(ctx, STAGE, "discarded count", 4, CL_MEM_READ_WRITE,
-                                              NULL, err)
-                          : NULL;
-        rc = discarded ? VCT_OK : (int)err->status;
-    }
     if (rc == VCT_OK)
-        rc = vct_buffer_fill_u32(ctx, STAGE, accum, 0, 4 * pixels, err);
-    if (rc == VCT_OK)
-        rc = vct_buffer_fill_u32(ctx, STAGE, discarded, 0, 1, err);
+        rc = accumulation_get(ctx, opt, err);
+    cl_mem accum = ctx->pt_accum, discarded = ctx->pt_discarded;
     cl_kernel k = rc == VCT_OK ? vct_kernel_create(ctx, p, "pathtrace", err) : NULL;
     if (rc == VCT_OK && !k)
         rc = err->status;
@@ -138,7 +162,7 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
     const int show = opt->progress && isatty(2);
     const cl_uint per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;
     const double t0 = vct_now_ms();
-    cl_uint done = 0;
+    cl_uint done = 0, sample = ctx->pt_done;
     while (rc == VCT_OK) {
         const double elapsed = (vct_now_ms() - t0) * 1e-3;
         if (opt->spp ? done >= opt->spp : elapsed >= opt->time_limit_s)
@@ -146,7 +170,7 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
         cl_uint n = per_pass;
         if (opt->spp && done + n > opt->spp)
             n = opt->spp - done;
-        rc = vct_set_args(err, STAGE, k, 14, 2, VCT_ARG_OF(done), VCT_ARG_OF(n));
+        rc = vct_set_args(err, STAGE, k, 14, 2, VCT_ARG_OF(sample), VCT_ARG_OF(n));
         if (rc == VCT_OK)
             rc = vct_launch_2d(ctx, k, global, local, err);
         /* Waiting per pass only serves the clock and the progress bar; a fixed
@@ -154,39 +178,34 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
         if (rc == VCT_OK && (show || !opt->spp))
             rc = vct_finish(ctx, STAGE, err);
         done += n;
+        sample += n;
         if (show)
             progress_line(done, opt->spp, (vct_now_ms() - t0) * 1e-3, opt->time_limit_s);
     }
     if (show)
         fputc('\n', stderr);
-    result->spp = done;
+    ctx->pt_done = sample;
+    result->spp = sample;
     result->seconds = (vct_now_ms() - t0) * 1e-3;
-    float *acc = rc == VCT_OK ? malloc(16 * pixels) : NULL;
-    if (rc == VCT_OK && !acc)
-        rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    cl_mem frame = rc == VCT_OK ? vct_frame_get(ctx, STAGE, opt->width, opt->height, err) : NULL;
+    if (rc == VCT_OK && !frame)
+        rc = err->status;
+    const cl_uint pixel_count = (cl_uint)pixels;
+    if (rc == VCT_OK)
+        rc = vct_run_kernel(ctx, p, "pathtrace_resolve", STAGE, pixels, err, 3, VCT_ARG_OF(accum),
+                            VCT_ARG_OF(pixel_count), VCT_ARG_OF(frame));
     cl_uint dropped = 0;
     if (rc == VCT_OK)
-        rc = vct_buffer_read(ctx, STAGE, accum, 0, 16 * pixels, acc, err);
-    if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, STAGE, discarded, 0, 4, &dropped, err);
-    if (rc == VCT_OK) {
-        result->discarded = dropped;
-        for (size_t i = 0; i < pixels; ++i) {
-            const float w = acc[4 * i + 3];
-            for (int c = 0; c < 3; ++c)
-                acc[4 * i + c] = w > 0.0f ? acc[4 * i + c] / w : 0.0f;
-            acc[4 * i + 3] = 1.0f;
-        }
-        image->width = opt->width;
-        image->height = opt->height;
-        image->rgba = acc;
-        acc = NULL;
+    result->discarded = dropped;
+    if (rc == VCT_OK)
+        rc = vct_frame_deliver(ctx, STAGE, image, err);
+    if (rc != VCT_OK) {
+        vct_image_free(image);
+        vct_pathtrace_release(ctx); /* the running sums are no longer whole */
     }
-    free(acc);
     if (k)
         clReleaseKernel(k);
-    vct_buffer_release(ctx, accum);
-    vct_buffer_release(ctx, discarded);
     vct_buffer_release(ctx, eb.tris);
     vct_buffer_release(ctx, eb.cdf);
     vct_scene_buffers_release(ctx, &sb);

@@ -64,10 +64,7 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     vct_scene_buffers sb = {0};
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, stage, &sb, err);
-    const size_t pixels = (size_t)opt->width * opt->height;
-    cl_mem img = rc == VCT_OK ? vct_buffer_create(ctx, stage, "image", 16 * pixels,
-                                                  CL_MEM_WRITE_ONLY, NULL, err)
-                              : NULL;
+    cl_mem img = rc == VCT_OK ? vct_frame_get(ctx, stage, opt->width, opt->height, err) : NULL;
     cl_kernel k = img ? vct_kernel_create(ctx, p, "render_direct", err) : NULL;
     if (rc == VCT_OK)
         rc = k ? vct_grid_set_args(k, g, stage, err) : (int)err->status;
@@ -80,10 +77,9 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     if (rc == VCT_OK)
         rc = vct_launch_2d(ctx, k, global, local, err);
     if (rc == VCT_OK)
-        rc = vct_image_read_device(ctx, stage, img, opt->width, opt->height, image, err);
+        rc = vct_frame_deliver(ctx, stage, image, err);
     if (k)
         clReleaseKernel(k);
-    vct_buffer_release(ctx, img);
     vct_scene_buffers_release(ctx, &sb);
     vct_stage_end(ctx);
     if (rc != VCT_OK)

@@ -242,9 +242,7 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
     f.gbuf = rc == VCT_OK ? vct_buffer_create(ctx, PRIMARY_STAGE, "G-buffer", 64 * pixels,
                                               CL_MEM_READ_WRITE, NULL, err)
                           : NULL;
-    f.image = f.gbuf ? vct_buffer_create(ctx, PRIMARY_STAGE, "image", 16 * pixels,
-                                         CL_MEM_READ_WRITE, NULL, err)
-                     : NULL;
+    f.image = f.gbuf ? vct_frame_get(ctx, PRIMARY_STAGE, opt->width, opt->height, err) : NULL;
     rc = f.image ? VCT_OK : (int)err->status;
     if (rc == VCT_OK && aovs) {
         f.aov = vct_buffer_create(ctx, PRIMARY_STAGE, "AOVs", 64 * pixels, CL_MEM_READ_WRITE, NULL,
@@ -273,12 +271,11 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
         vct_stage_end(ctx);
     }
     if (rc == VCT_OK)
-        rc = vct_image_read_device(ctx, "vct image", f.image, opt->width, opt->height, image, err);
+        rc = vct_frame_deliver(ctx, "vct image", image, err);
     if (rc == VCT_OK && aovs)
         rc = read_aovs(&f, aovs, err);
     vct_scene_buffers_release(ctx, &f.scene);
     vct_buffer_release(ctx, f.aov);
-    vct_buffer_release(ctx, f.image);
     vct_buffer_release(ctx, f.gbuf);
     if (rc != VCT_OK) {
         vct_image_free(image);

@@ -226,10 +226,14 @@ typedef struct vct_pathtrace_options {
     uint32_t seed;             /* same seed and spp: same image, bit for bit */
     uint32_t samples_per_pass; /* samples per launch (0: 1) */
     int progress;              /* progress bar on a terminal's stderr */
+    /* 1: add to the running sums of the previous call on this context (same
+     * scene, camera and size), continuing its sample sequence: n calls of k
+     * samples give the image of one call of n * k. 0: start over. */
+    int resume;
 } vct_pathtrace_options;
 
 typedef struct vct_pathtrace_result {
-    uint32_t spp;       /* samples per pixel done */
+    uint32_t spp;       /* samples per pixel in the image (all resumed calls) */
     uint32_t discarded; /* samples dropped because they were not finite */
     double seconds;
 } vct_pathtrace_result;
@@ -305,6 +309,11 @@ int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *voxels, float *
  * their injected radiance once light is injected, else albedo under a headlight. */
 int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels, int width,
                       int height, vct_image *image, vct_error *err);
+/* The same at octree level `level` (0 = root .. levels = voxels): below the
+ * leaf level every node with geometry in it shows as a grey cube. */
+int vct_render_voxels_level(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels,
+                            uint32_t level, int width, int height, vct_image *image,
+                            vct_error *err);
 void vct_voxels_free(vct_voxels *voxels);
 
 /* ---- bricks ---------------------------------------------------------------------- */
@@ -469,6 +478,29 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene, vct_voxel
 int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
                    const vct_voxels *voxels, const vct_plan *plan, const vct_vct_options *options,
                    vct_image *image, vct_aovs *aovs, vct_error *err);
+
+/* ---- the frame and OpenGL display ----------------------------------------------- */
+
+/* Every renderer writes its image into the context's frame, a device buffer
+ * of width * height float4 (linear radiance, rows top to bottom) kept between
+ * calls, and copies it into the vct_image it returns. With host copies off
+ * the returned image carries its size and rgba NULL: for displays that take
+ * the frame on the device. On by default. */
+void vct_frame_host_copy(vct_context *ctx, int on);
+/* A host copy of the last frame rendered. */
+int vct_frame_read(vct_context *ctx, vct_image *image, vct_error *err);
+
+/* A context that shares objects with an OpenGL context (cl_khr_gl_sharing on
+ * GLX): glx_context is the GLXContext, x_display the X Display it belongs to.
+ * Fails with the reason when the device has no such sharing or cannot share
+ * with that context; plain contexts then display through the host. */
+vct_context *vct_context_create_gl(const char *selector, void *glx_context, void *x_display,
+                                   vct_error *err);
+int vct_context_shares_gl(const vct_context *ctx);
+/* Copies the frame into an OpenGL buffer object of at least width * height
+ * * 16 bytes, on the device: acquire, copy, release, finish. Call glFinish()
+ * first so that GL is done with the buffer; it is complete on return. */
+int vct_frame_to_gl_buffer(vct_context *ctx, unsigned gl_buffer, vct_error *err);
 
 /* ---- images --------------------------------------------------------------------- */
 

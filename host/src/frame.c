@@ -1,0 +1,48 @@
+/* The frame: one device image (float4 per pixel, rows top to bottom) that
+ * every renderer writes, kept in the context between calls. A display takes
+ * it on the device (vct_frame_to_gl_buffer); offline callers get a host copy. */
+#include <string.h>
+
+#include "internal.h"
+
+cl_mem vct_frame_get(vct_context *ctx, const char *stage, int width, int height, vct_error *err) {
+    if (ctx->frame && ctx->frame_size[0] == width && ctx->frame_size[1] == height)
+        return ctx->frame;
+    vct_buffer_release(ctx, ctx->frame);
+    ctx->frame = vct_buffer_create(ctx, stage, "image", 16 * (size_t)width * (size_t)height,
+                                   CL_MEM_READ_WRITE, NULL, err);
+    ctx->frame_size[0] = ctx->frame ? width : 0;
+    ctx->frame_size[1] = ctx->frame ? height : 0;
+    return ctx->frame;
+}
+
+int vct_frame_deliver(vct_context *ctx, const char *stage, vct_image *image, vct_error *err) {
+    if (!ctx->frame)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: no frame has been rendered", stage);
+    if (ctx->frame_device_only) {
+        image->width = ctx->frame_size[0];
+        image->height = ctx->frame_size[1];
+        image->rgba = NULL;
+        return VCT_OK;
+    }
+    return vct_image_read_device(ctx, stage, ctx->frame, ctx->frame_size[0], ctx->frame_size[1],
+                                 image, err);
+}
+
+void vct_frame_host_copy(vct_context *ctx, int on) {
+    ctx->frame_device_only = !on;
+}
+
+int vct_frame_read(vct_context *ctx, vct_image *image, vct_error *err) {
+    memset(image, 0, sizeof *image);
+    if (!ctx->frame)
+        return vct_fail(err, VCT_ERR_INPUT, "frame: nothing has been rendered yet");
+    return vct_image_read_device(ctx, "frame", ctx->frame, ctx->frame_size[0], ctx->frame_size[1],
+                                 image, err);
+}
+
+void vct_frame_release(vct_context *ctx) {
+    vct_buffer_release(ctx, ctx->frame);
+    ctx->frame = NULL;
+    ctx->frame_size[0] = ctx->frame_size[1] = 0;
+}
