@@ -33,12 +33,19 @@ void vct_frame_host_copy(vct_context *ctx, int on) {
     ctx->frame_device_only = !on;
 }
 
-int vct_frame_read(vct_context *ctx, vct_image *image, vct_error *err) {
-    memset(image, 0, sizeof *image);
+void vct_frame_size(const vct_context *ctx, int *width, int *height) {
+    *width = ctx->frame_size[0];
+    *height = ctx->frame_size[1];
+}
+
+int vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err) {
     if (!ctx->frame)
         return vct_fail(err, VCT_ERR_INPUT, "frame: nothing has been rendered yet");
-    return vct_image_read_device(ctx, "frame", ctx->frame, ctx->frame_size[0], ctx->frame_size[1],
-                                 image, err);
+    const size_t need = 4 * (size_t)ctx->frame_size[0] * (size_t)ctx->frame_size[1];
+    if (floats < need)
+        return vct_fail(err, VCT_ERR_INPUT, "frame: %zu floats given, the %dx%d frame has %zu",
+                        floats, ctx->frame_size[0], ctx->frame_size[1], need);
+    return vct_buffer_read(ctx, "frame", ctx->frame, 0, 4 * need, rgba, err);
 }
 
 void vct_frame_release(vct_context *ctx) {

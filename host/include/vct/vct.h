@@ -487,8 +487,10 @@ int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_grid *gri
  * the returned image carries its size and rgba NULL: for displays that take
  * the frame on the device. On by default. */
 void vct_frame_host_copy(vct_context *ctx, int on);
-/* A host copy of the last frame rendered. */
-int vct_frame_read(vct_context *ctx, vct_image *image, vct_error *err);
+/* The last frame's size (0 x 0 before any), and a copy of it into `rgba`,
+ * which holds `floats` floats (at least width * height * 4). */
+void vct_frame_size(const vct_context *ctx, int *width, int *height);
+int vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err);
 
 /* A context that shares objects with an OpenGL context (cl_khr_gl_sharing on
  * GLX): glx_context is the GLXContext, x_display the X Display it belongs to.

@@ -1,0 +1,269 @@
+/* The viewer's model (view_app.h): builds what the method and plan need,
+ * lazily, and renders one frame at a time into the context's frame. */
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "commands.h"
+#include "view_app.h"
+
+/* Bounce gathering uses the 6-cone preset, as vct_vct_prepare does. */
+#define BOUNCE_CONES 6u
+
+static const char *const METHOD_NAMES[VIEW_METHODS] = {"ray cast", "VCT", "path tracer", "voxels"};
+
+static int input_error(vct_error *err, const char *fmt, const char *what) {
+    err->status = VCT_ERR_INPUT;
+    snprintf(err->message, sizeof err->message, fmt, what);
+    return err->status;
+}
+
+static double now_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+const char *view_method_name(view_method m) {
+    return METHOD_NAMES[m];
+}
+
+static float scene_extent(const vct_scene *s) {
+    float e = 0.0f;
+    for (int k = 0; k < 3; ++k)
+        e = s->bounds_max[k] - s->bounds_min[k] > e ? s->bounds_max[k] - s->bounds_min[k] : e;
+    return e;
+}
+
+int view_app_init(view_app *app, const cli_options *opt, vct_error *err) {
+    memset(app, 0, sizeof *app);
+    app->opt = *opt;
+    const char *m = opt->method;
+    app->method = strcmp(m, "raycast") == 0  ? VIEW_RAYCAST
+                  : strcmp(m, "pt") == 0     ? VIEW_PATHTRACE
+                  : strcmp(m, "voxels") == 0 ? VIEW_VOXELS
+                                             : VIEW_VCT;
+    if (strcmp(m, "vct") != 0 && app->method == VIEW_VCT)
+        return input_error(err, "unknown --method %s (vct, raycast, pt, voxels)", m);
+    memcpy(app->force, opt->force, sizeof app->force);
+    app->width = opt->width;
+    app->height = opt->height;
+    app->scene = cli_load_scene(opt, err);
+    if (!app->scene)
+        return err->status;
+    vct_plan_make(app->scene, app->force, &app->plan);
+    view_camera_init(&app->camera, &app->scene->camera, scene_extent(app->scene));
+    app->dirty = 1;
+    return VCT_OK;
+}
+
+int view_app_attach(view_app *app, vct_context *ctx, vct_error *err) {
+    app->ctx = ctx;
+    app->grid = vct_grid_build(ctx, app->scene, app->opt.grid_res, err);
+    return app->grid ? VCT_OK : (int)err->status;
+}
+
+void view_app_free(view_app *app) {
+    vct_voxels_free(app->voxels);
+    vct_grid_free(app->grid);
+    vct_scene_free(app->scene);
+    app->voxels = NULL;
+    app->grid = NULL;
+    app->scene = NULL;
+}
+
+static void drop_voxels(view_app *app) {
+    vct_voxels_free(app->voxels);
+    app->voxels = NULL;
+    app->voxels_lit = app->voxels_for_plan = 0;
+}
+
+static void note_levels(view_app *app) {
+    vct_voxel_info info;
+    vct_voxels_info_get(app->voxels, &info);
+    app->voxel_levels = info.levels;
+    if (app->voxel_level == 0 || app->voxel_level > info.levels) {
+        /* The finest level, moved by the level keys pressed before voxels existed. */
+        const int level = (int)info.levels + app->pending_level;
+        app->voxel_level = (uint32_t)(level < 1                  ? 1
+                                      : level > (int)info.levels ? (int)info.levels
+                                                                 : level);
+    }
+}
+
+/* What the method and plan read: the cone-traced hierarchy, or for the
+ * voxel view at least the octree. */
+static int ensure_voxels(view_app *app, vct_error *err) {
+    vct_voxel_options vo;
+    cli_voxel_options(&app->opt, 128, &vo);
+    if (app->method == VIEW_VCT && vct_plan_needs_voxels(&app->plan)) {
+        const int lit = vct_plan_needs_voxel_light(&app->plan);
+        if (app->voxels && app->voxels_for_plan && (app->voxels_lit || !lit))
+            return VCT_OK;
+        drop_voxels(app);
+        const vct_brick_options bricks = {app->opt.bricks, app->opt.anisotropic != 0};
+        int rc = vct_vct_prepare(app->ctx, app->scene, app->grid, &app->plan, &vo, &bricks,
+                                 (uint32_t)app->opt.bounces, &app->opt.cones, &app->voxels, err);
+        if (rc)
+            return rc;
+        app->voxels_for_plan = 1;
+        app->voxels_lit = lit;
+        app->light_moved = 0;
+        note_levels(app);
+        return VCT_OK;
+    }
+    if (app->method == VIEW_VOXELS && !app->voxels) {
+        app->voxels = vct_voxelize(app->ctx, app->scene, &vo, err);
+        int rc = app->voxels ? vct_octree_build(app->ctx, app->voxels, err) : (int)err->status;
+        if (rc)
+            return rc;
+        note_levels(app);
+    }
+    return VCT_OK;
+}
+
+/* A moved light: re-injected and bounced in the voxels, never re-voxelized. */
+static int update_light(view_app *app, vct_error *err) {
+    if (!app->light_moved || !app->voxels || !app->voxels_lit)
+        return VCT_OK;
+    int rc = vct_voxels_inject_light(app->ctx, app->scene, app->grid, app->voxels, err);
+    for (int b = 1; rc == VCT_OK && b < app->opt.bounces; ++b)
+        rc = vct_voxels_inject_bounce(app->ctx, app->scene, app->voxels, &app->opt.cones,
+                                      BOUNCE_CONES, err);
+    if (rc == VCT_OK)
+        app->light_moved = 0;
+    return rc;
+}
+
+static void summarise_stages(view_app *app) {
+    const vct_stage_stat *st = NULL;
+    const int n = vct_stats(app->ctx, &st);
+    size_t used = 0;
+    app->stages[0] = '\0';
+    for (int i = 0; i < n && used + 48 < sizeof app->stages; ++i)
+        used += (size_t)snprintf(app->stages + used, sizeof app->stages - used, "%s%s %.0f",
+                                 i ? ", " : "", st[i].name, st[i].host_ms);
+}
+
+static int render_method(view_app *app, vct_image *image, vct_error *err) {
+    const vct_scene *s = app->scene;
+    switch (app->method) {
+    case VIEW_RAYCAST: {
+        const vct_render_options ro = {app->width, app->height, {0, 0, 0}};
+        return vct_render_raycast(app->ctx, s, app->grid, &ro, image, err);
+    }
+    case VIEW_VCT: {
+        vct_vct_options vo = vct_vct_options_default();
+        vo.width = app->width;
+        vo.height = app->height;
+        vo.diffuse_cones = (uint32_t)app->opt.diffuse_cones;
+        vo.cones = app->opt.cones;
+        return vct_render_vct(app->ctx, s, app->grid, app->voxels, &app->plan, &vo, image, NULL,
+                              err);
+    }
+    case VIEW_PATHTRACE: {
+        const vct_pathtrace_options po = {app->width,
+                                          app->height,
+                                          1,
+                                          0.0,
+                                          (uint32_t)app->opt.max_depth,
+                                          (uint32_t)app->opt.seed,
+                                          1,
+                                          0,
+                                          app->pt_spp > 0};
+        vct_pathtrace_result pr;
+        int rc = vct_render_pathtrace(app->ctx, s, app->grid, &po, image, &pr, err);
+        app->pt_spp = rc == VCT_OK ? pr.spp : 0;
+        return rc;
+    }
+    default:
+        return vct_render_voxels_level(app->ctx, s, app->voxels, app->voxel_level, app->width,
+                                       app->height, image, err);
+    }
+}
+
+int view_app_wants_frame(const view_app *app) {
+    return app->dirty || (app->method == VIEW_PATHTRACE && app->pt_spp < VIEW_PT_MAX_SPP);
+}
+
+int view_app_render(view_app *app, vct_error *err) {
+    const double t0 = now_ms();
+    view_camera_get(&app->camera, &app->scene->camera);
+    vct_stats_reset(app->ctx);
+    int rc = ensure_voxels(app, err);
+    if (rc == VCT_OK)
+        rc = update_light(app, err);
+    vct_image image = {0};
+    if (rc == VCT_OK)
+        rc = render_method(app, &image, err);
+    vct_image_free(&image);
+    summarise_stages(app);
+    app->frame_ms = now_ms() - t0;
+    if (rc == VCT_OK)
+        app->dirty = 0;
+    return rc;
+}
+
+void view_app_set_method(view_app *app, view_method m) {
+    if (m == app->method)
+        return;
+    app->method = m;
+    app->pt_spp = 0;
+    app->dirty = 1;
+}
+
+void view_app_toggle_effect(view_app *app, vct_effect e) {
+    app->force[e] = app->plan.on[e] ? VCT_FORCE_OFF : VCT_FORCE_ON;
+    vct_plan_make(app->scene, app->force, &app->plan);
+    app->dirty = 1;
+}
+
+void view_app_set_level(view_app *app, int delta) {
+    if (!app->voxel_levels) {
+        app->pending_level += delta;
+        return;
+    }
+    const int level = (int)app->voxel_level + delta;
+    if (level < 1 || level > (int)app->voxel_levels)
+        return;
+    app->voxel_level = (uint32_t)level;
+    app->dirty = app->method == VIEW_VOXELS;
+}
+
+int view_app_move_light(view_app *app, float dx, float dy, float dz) {
+    if (app->scene->light_count == 0)
+        return 0;
+    vct_light *l = &app->scene->lights[0];
+    /* A step is a fifth of a second's flight; a direction turns by about 6 degrees. */
+    float *target = l->type == VCT_LIGHT_DIRECTIONAL ? l->direction : l->position;
+    const float scale = l->type == VCT_LIGHT_DIRECTIONAL ? 0.1f : 0.2f * app->camera.speed;
+    target[0] += dx * scale;
+    target[1] += dy * scale;
+    target[2] += dz * scale;
+    app->light_moved = 1;
+    app->pt_spp = 0;
+    app->dirty = 1;
+    return 1;
+}
+
+void view_app_camera_changed(view_app *app) {
+    app->pt_spp = 0;
+    app->dirty = 1;
+}
+
+void view_app_status(const view_app *app, const char *display_path, char *out, size_t size) {
+    char plan[160] = "";
+    size_t used = 0;
+    for (int e = 0; e < VCT_EFFECTS && used + 16 < sizeof plan; ++e)
+        if (app->plan.on[e])
+            used += (size_t)snprintf(plan + used, sizeof plan - used, "%s%s", used ? " " : "",
+                                     vct_effect_name((vct_effect)e));
+    char extra[64] = "";
+    if (app->method == VIEW_PATHTRACE)
+        snprintf(extra, sizeof extra, " %u spp", app->pt_spp);
+    else if (app->method == VIEW_VOXELS)
+        snprintf(extra, sizeof extra, " level %u/%u", app->voxel_level, app->voxel_levels);
+    snprintf(out, size, "vct-view | %s%s | %dx%d %.0f ms (%s) | plan: %s | %s",
+             view_method_name(app->method), extra, app->width, app->height, app->frame_ms,
+             app->stages, plan[0] ? plan : "nothing", display_path);
+}

@@ -1,0 +1,63 @@
+/* What the viewer shows and how it is made: the scene, its structures, the
+ * method and effect plan, and the frame they render. No window here: the
+ * display (view_display.h) takes the frame from the context. */
+#ifndef VCT_VIEW_APP_H
+#define VCT_VIEW_APP_H
+
+#include "options.h"
+#include "view_camera.h"
+
+typedef enum view_method {
+    VIEW_RAYCAST,   /* direct light with hard shadows */
+    VIEW_VCT,       /* voxel cone tracing (the default) */
+    VIEW_PATHTRACE, /* progressive: one sample per pixel per frame, summed */
+    VIEW_VOXELS,    /* the voxels of one octree level */
+    VIEW_METHODS
+} view_method;
+
+#define VIEW_PT_MAX_SPP 4096u
+
+typedef struct view_app {
+    cli_options opt;
+    vct_context *ctx;
+    vct_scene *scene;
+    vct_grid *grid;
+    vct_voxels *voxels;
+    int voxels_lit;      /* light injected into the voxels (and bounced) */
+    int voxels_for_plan; /* built for the plan (with bricks), not only for viewing */
+    vct_effect_force force[VCT_EFFECTS];
+    vct_plan plan;
+    view_method method;
+    uint32_t voxel_level, voxel_levels;
+    int pending_level; /* level keys pressed before the voxels were built */
+    view_camera camera;
+    int width, height; /* the frame's size */
+    int dirty;         /* the frame is out of date */
+    int light_moved;   /* the voxels' light is out of date */
+    uint32_t pt_spp;   /* samples in the progressive frame */
+    double frame_ms;
+    char stages[256]; /* ms per stage of the last frame */
+} view_app;
+
+const char *view_method_name(view_method m);
+/* Loads the scene and checks the options (before any window opens). */
+int view_app_init(view_app *app, const cli_options *opt, vct_error *err);
+/* Builds the triangle grid on the caller's context, which renders from now on. */
+int view_app_attach(view_app *app, vct_context *ctx, vct_error *err);
+void view_app_free(view_app *app);
+/* Whether another frame is wanted now (changes, or a path tracer still converging). */
+int view_app_wants_frame(const view_app *app);
+/* Renders one frame into the context's frame at app->width x app->height. */
+int view_app_render(view_app *app, vct_error *err);
+
+void view_app_set_method(view_app *app, view_method m);
+/* Flips an effect against the current plan (a forced setting). */
+void view_app_toggle_effect(view_app *app, vct_effect e);
+void view_app_set_level(view_app *app, int delta);
+/* Moves the first light (positions; a directional light turns instead). */
+int view_app_move_light(view_app *app, float dx, float dy, float dz);
+void view_app_camera_changed(view_app *app);
+/* One line: method, plan, ms per stage (the window title). */
+void view_app_status(const view_app *app, const char *display_path, char *out, size_t size);
+
+#endif

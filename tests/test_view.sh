@@ -1,0 +1,101 @@
+#!/bin/sh
+# vct-view on a virtual X display (Xvfb with Mesa, started here): each case
+# opens the window, renders a frame of the Cornell box, reads the
+# framebuffer back and compares it with `vct render` of the same camera and
+# settings, pixel for pixel within one 8-bit step. Keys drive the method
+# and effect switches, and a resize, on the way. Where no display can be
+# opened the test is skipped (exit 77) with the reason, never passed.
+# usage: test_view.sh VCT_VIEW VCT PNG_COMPARE
+set -u
+VIEW=$1 VCT=$2 COMPARE=$3
+SCENE=${VCT_SOURCE_DIR:-.}/scenes/cornell_box.gltf
+TMP=$(mktemp -d)
+XPID=""
+cleanup() {
+    [ -n "$XPID" ] && kill "$XPID" 2>/dev/null
+    rm -rf "$TMP"
+}
+trap cleanup EXIT INT TERM
+
+skip() {
+    echo "SKIPPED: $*"
+    exit 77
+}
+
+if command -v Xvfb >/dev/null 2>&1; then
+    n=90
+    while [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ]; do
+        n=$((n + 1))
+        [ $n -gt 140 ] && skip "no free X display number between :90 and :140"
+    done
+    Xvfb ":$n" -screen 0 640x480x24 -nolisten tcp >"$TMP/xvfb.log" 2>&1 &
+    XPID=$!
+    tries=0
+    while [ ! -e "/tmp/.X11-unix/X$n" ]; do
+        tries=$((tries + 1))
+        if [ $tries -gt 100 ] || ! kill -0 "$XPID" 2>/dev/null; then
+            skip "Xvfb :$n did not start: $(tail -n 3 "$TMP/xvfb.log")"
+        fi
+        sleep 0.1
+    done
+    export DISPLAY=":$n"
+elif [ -z "${DISPLAY:-}" ]; then
+    skip "no Xvfb (Debian package xvfb) and no DISPLAY"
+fi
+
+failed=0
+# case NAME "VIEW ARGS" "RENDER ARGS"
+case_compare() {
+    name=$1 view_args=$2 render_args=$3
+    # shellcheck disable=SC2086
+    "$VIEW" "$SCENE" --voxel-res 32 --display host --capture "$TMP/$name.view.png" $view_args \
+        >"$TMP/$name.view.log" 2>&1
+    rc=$?
+    if [ $rc -eq 3 ]; then
+        cat "$TMP/$name.view.log"
+        skip "vct-view could not open a window: $(tail -n 1 "$TMP/$name.view.log")"
+    fi
+    # shellcheck disable=SC2086
+    "$VCT" render "$SCENE" --voxel-res 32 -o "$TMP/$name.offline.png" $render_args \
+        >"$TMP/$name.render.log" 2>&1
+    render_rc=$?
+    if [ $rc -ne 0 ] || [ $render_rc -ne 0 ]; then
+        echo "FAIL $name: vct-view exited $rc, vct render $render_rc"
+        cat "$TMP/$name.view.log" "$TMP/$name.render.log"
+        failed=1
+        return
+    fi
+    if "$COMPARE" "$TMP/$name.view.png" "$TMP/$name.offline.png" 1; then
+        echo "ok   $name"
+    else
+        echo "FAIL $name: the window differs from the offline render"
+        failed=1
+    fi
+}
+
+case_compare vct "--size 96 64" "--size 96 64"
+case_compare raycast "--size 80 80 --method raycast" "--size 80 80 --method raycast"
+case_compare pathtracer "--size 64 64 --keys 3" "--size 64 64 --method pt --spp 1"
+case_compare indirect-off "--size 64 64 --keys F1" "--size 64 64 --effect indirect=off"
+case_compare shadows-off "--size 64 64 --keys 1,F4" "--size 64 64 --method raycast --effect shadows=off"
+case_compare resized "--size 64 64 --keys size=72x40" "--size 72 40"
+case_compare exposure "--size 48 48 --keys +,+" "--size 48 48 --exposure 1"
+
+# The voxel view at a coarse level: a window of octree cells, not black.
+"$VIEW" "$SCENE" --voxel-res 32 --display host --size 64 64 --keys "4,[,[" \
+    --capture "$TMP/voxels.png" >"$TMP/voxels.log" 2>&1 ||
+    { echo "FAIL voxels: $(cat "$TMP/voxels.log")"; failed=1; }
+grep -q "level 3/5" "$TMP/voxels.log" || { echo "FAIL voxels: level not 3/5"; cat "$TMP/voxels.log"; failed=1; }
+
+# Bad input: a clear message and a non-zero exit, no window left behind.
+if "$VIEW" "$SCENE" --keys nosuchkey --capture "$TMP/bad.png" >"$TMP/bad.log" 2>&1; then
+    echo "FAIL: an unknown key name was accepted"
+    failed=1
+fi
+grep -q 'unknown key "nosuchkey"' "$TMP/bad.log" || { echo "FAIL: no message for a bad key"; failed=1; }
+[ ! -e "$TMP/bad.png" ] || { echo "FAIL: a capture was written after an error"; failed=1; }
+if "$VIEW" "$SCENE" --display sideways >"$TMP/bad.log" 2>&1; then
+    echo "FAIL: --display sideways was accepted"
+    failed=1
+fi
+exit $failed
