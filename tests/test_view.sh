@@ -74,6 +74,8 @@ case_compare() {
 }
 
 case_compare vct "--size 96 64" "--size 96 64"
+case_compare vct64 "--size 64 64" "--size 64 64"
+cp "$TMP/vct64.offline.png" "$TMP/vct-ref.png"
 case_compare raycast "--size 80 80 --method raycast" "--size 80 80 --method raycast"
 case_compare pathtracer "--size 64 64 --keys 3" "--size 64 64 --method pt --spp 1"
 case_compare indirect-off "--size 64 64 --keys F1" "--size 64 64 --effect indirect=off"
@@ -87,6 +89,32 @@ case_compare exposure "--size 48 48 --keys +,+" "--size 48 48 --exposure 1"
     { echo "FAIL voxels: $(cat "$TMP/voxels.log")"; failed=1; }
 grep -q "level 3/5" "$TMP/voxels.log" || { echo "FAIL voxels: level not 3/5"; cat "$TMP/voxels.log"; failed=1; }
 
+# A moved light re-injects and re-filters, and nothing is voxelized again.
+"$VIEW" "$SCENE" --voxel-res 32 --display host --size 48 48 --keys "frame,right" \
+    --capture "$TMP/light.png" >"$TMP/light.log" 2>&1 ||
+    { echo "FAIL light: $(cat "$TMP/light.log")"; failed=1; }
+second=$(grep "^vct-view |" "$TMP/light.log" | sed -n 2p)
+case "$second" in
+*"light injection"*"light bounce"*) ;;
+*) echo "FAIL light: the second frame did not re-inject: $second"; failed=1 ;;
+esac
+case "$second" in
+*voxelize* | *"octree build"*) echo "FAIL light: the second frame re-voxelized: $second"; failed=1 ;;
+esac
+[ $failed -eq 0 ] && echo "ok   light move: $second"
+
+# Interop where the device shares with GL (then it must match too), else a
+# clear refusal naming the missing extension.
+if "$VIEW" "$SCENE" --voxel-res 32 --display interop --size 64 64 \
+    --capture "$TMP/interop.png" >"$TMP/interop.log" 2>&1; then
+    "$COMPARE" "$TMP/interop.png" "$TMP/vct-ref.png" 1 || failed=1
+elif grep -q "cl_khr_gl_sharing" "$TMP/interop.log"; then
+    echo "ok   interop refused: $(grep cl_khr "$TMP/interop.log")"
+else
+    echo "FAIL interop: $(cat "$TMP/interop.log")"
+    failed=1
+fi
+
 # Bad input: a clear message and a non-zero exit, no window left behind.
 if "$VIEW" "$SCENE" --keys nosuchkey --capture "$TMP/bad.png" >"$TMP/bad.log" 2>&1; then
     echo "FAIL: an unknown key name was accepted"
@@ -96,6 +124,10 @@ grep -q 'unknown key "nosuchkey"' "$TMP/bad.log" || { echo "FAIL: no message for
 [ ! -e "$TMP/bad.png" ] || { echo "FAIL: a capture was written after an error"; failed=1; }
 if "$VIEW" "$SCENE" --display sideways >"$TMP/bad.log" 2>&1; then
     echo "FAIL: --display sideways was accepted"
+    failed=1
+fi
+if "$VIEW" "$SCENE" --method nope >"$TMP/bad.log" 2>&1 || ! grep -q "unknown --method nope" "$TMP/bad.log"; then
+    echo "FAIL: --method nope: $(cat "$TMP/bad.log")"
     failed=1
 fi
 exit $failed

@@ -179,6 +179,31 @@ static const struct {
                  {"-", GLFW_KEY_MINUS},
                  {"p", GLFW_KEY_P}};
 
+/* Renders, takes the frame into the window's texture and puts the status
+ * in the title (and on stdout with `print`). A failure keeps the last image
+ * and says why; the next change tries again. */
+static int render_frame(viewer *v, int print) {
+    view_app *app = &v->app;
+    vct_error err = {0};
+    char title[512];
+    int rc = view_app_render(app, &err);
+    if (rc == VCT_OK)
+        rc = display_upload(&v->display, app->ctx, app->width, app->height, &err);
+    if (rc == VCT_OK) {
+        view_app_status(app, v->display.path, title, sizeof title);
+        if (print)
+            printf("%s\n", title);
+    } else {
+        fprintf(stderr, "vct-view: %s\n", err.message);
+        snprintf(title, sizeof title, "vct-view | error: %.400s", err.message);
+        app->dirty = 0;
+        if (app->method == VIEW_PATHTRACE)
+            app->pt_spp = VIEW_PT_MAX_SPP;
+    }
+    glfwSetWindowTitle(v->display.window, title);
+    return rc;
+}
+
 /* The window at width x height, once the window system has made it so. */
 static int resize_window(GLFWwindow *w, int width, int height) {
     glfwSetWindowSize(w, width, height);
@@ -192,7 +217,8 @@ static int resize_window(GLFWwindow *w, int width, int height) {
     return 1;
 }
 
-/* --keys: each name pressed as the keyboard would; size=WxH resizes. */
+/* --keys: each name pressed as the keyboard would; size=WxH resizes;
+ * `frame` renders one frame there and then. */
 static int press_keys(viewer *v, const char *list) {
     char buf[512];
     snprintf(buf, sizeof buf, "%s", list);
@@ -203,6 +229,11 @@ static int press_keys(viewer *v, const char *list) {
                 fprintf(stderr, "vct-view: the window did not take the size %s\n", k + 5);
                 return 1;
             }
+            continue;
+        }
+        if (strcmp(k, "frame") == 0) {
+            if (render_frame(v, 1) != VCT_OK)
+                return 1;
             continue;
         }
         size_t i = 0;
@@ -273,7 +304,6 @@ static int run(viewer *v, const view_args *va) {
         return 2;
     double last = glfwGetTime();
     int status = 0;
-    char title[512];
     while (!glfwWindowShouldClose(d->window)) {
         float motion[3];
         if (view_app_wants_frame(app) || held_motion(d->window, motion))
@@ -296,26 +326,8 @@ static int run(viewer *v, const view_args *va) {
             view_app_camera_changed(app);
         }
         vct_error err = {0};
-        int rc = VCT_OK;
-        if (view_app_wants_frame(app)) {
-            rc = view_app_render(app, &err);
-            if (rc == VCT_OK)
-                rc = display_upload(d, app->ctx, app->width, app->height, &err);
-            if (rc == VCT_OK) {
-                view_app_status(app, d->path, title, sizeof title);
-                if (capture)
-                    printf("%s\n", title);
-            } else {
-                /* Keep the last image and say why; the next change tries again. */
-                fprintf(stderr, "vct-view: %s\n", err.message);
-                snprintf(title, sizeof title, "vct-view | error: %.400s", err.message);
-                app->dirty = 0;
-                if (app->method == VIEW_PATHTRACE)
-                    app->pt_spp = VIEW_PT_MAX_SPP;
-                status = 1;
-            }
-            glfwSetWindowTitle(d->window, title);
-        }
+        if (view_app_wants_frame(app) && render_frame(v, capture != NULL) != VCT_OK)
+            status = 1;
         if (display_draw(d, &err) != VCT_OK) {
             fprintf(stderr, "vct-view: %s\n", err.message);
             status = 1;
