@@ -115,8 +115,10 @@ static int ensure_voxels(view_app *app, vct_error *err) {
     if (app->method == VIEW_VOXELS && !app->voxels) {
         app->voxels = vct_voxelize(app->ctx, app->scene, &vo, err);
         int rc = app->voxels ? vct_octree_build(app->ctx, app->voxels, err) : (int)err->status;
-        if (rc)
+        if (rc) {
+            drop_voxels(app); /* the next frame tries again from the start */
             return rc;
+        }
         note_levels(app);
     }
     return VCT_OK;
@@ -227,7 +229,8 @@ void view_app_set_level(view_app *app, int delta) {
     if (level < 1 || level > (int)app->voxel_levels)
         return;
     app->voxel_level = (uint32_t)level;
-    app->dirty = app->method == VIEW_VOXELS;
+    if (app->method == VIEW_VOXELS)
+        app->dirty = 1;
 }
 
 int view_app_move_light(view_app *app, float dx, float dy, float dz) {
