@@ -51,7 +51,7 @@ inline int light_visible(const grid_view *g, float3 p, float3 n, float eps, floa
     return !grid_trace(g, p + n * eps, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h);
 }
 
-/* What every light sends to p (normal n): the irradiance sum of radiant *
+/* What lights send to p (normal n): the irradiance sum of radiant *
  * cos(theta), with hard shadows when `shadows`, and, for a Phong exponent
  * e >= 0 about the mirror direction r, the lobe-weighted sum
  * radiant * cos(theta) * cos(alpha)^e * (e + 2) / (2 pi). */
@@ -59,12 +59,28 @@ typedef struct direct_terms {
     float3 irradiance, lobe;
 } direct_terms;
 
+inline void direct_add(direct_terms *sum, float3 radiant, float cos_theta, float3 wi, float3 r,
+                       float e, float visible) {
+    sum->irradiance += radiant * (cos_theta * visible);
+    if (e >= 0.0f)
+        sum->lobe += radiant * (cos_theta * visible) * pow(fmax(dot(r, wi), 0.0f), e) * (e + 2.0f) *
+                     (0.5f * VCT_INV_PI);
+}
+
+inline int light_is_soft(__global const vct_light_desc *lights, uint i) {
+    return lights[i].shape.x > 0.0f;
+}
+
+/* Every light but, when skip_soft, those with a radius (their shadows are
+ * traced elsewhere); lights with a radius are otherwise shaded as points. */
 inline direct_terms direct_gather(const grid_view *g, __global const vct_light_desc *lights,
                                   uint light_count, float3 p, float3 n, int shadows, float3 r,
-                                  float e) {
+                                  float e, int skip_soft) {
     direct_terms sum = {(float3)(0.0f), (float3)(0.0f)};
     const float eps = surface_epsilon(g, p);
     for (uint i = 0; i < light_count; ++i) {
+        if (skip_soft && light_is_soft(lights, i))
+            continue;
         float3 wi, radiant;
         float dist;
         if (!light_incident(lights, i, p, &wi, &dist, &radiant))
@@ -74,12 +90,33 @@ inline direct_terms direct_gather(const grid_view *g, __global const vct_light_d
             continue;
         if (shadows && !light_visible(g, p, n, eps, wi, dist))
             continue;
-        sum.irradiance += radiant * cos_theta;
-        if (e >= 0.0f)
-            sum.lobe += radiant * cos_theta * pow(fmax(dot(r, wi), 0.0f), e) * (e + 2.0f) *
-                        (0.5f * VCT_INV_PI);
+        direct_add(&sum, radiant, cos_theta, wi, r, e, 1.0f);
     }
     return sum;
+}
+
+/* A point of light i's extent as seen from p towards its centre wi (dist
+ * away), for uniform u1, u2: on the disk of its radius facing p, or, for a
+ * directional light, a direction within its angular radius. Returns the
+ * unit direction towards it and sets *to_dist. */
+inline float3 light_extent_sample(__global const vct_light_desc *lights, uint i, float3 wi,
+                                  float dist, float u1, float u2, float *to_dist) {
+    const float size = lights[i].shape.x;
+    const float3 t = normalize(fabs(wi.x) > 0.9f ? cross(wi, (float3)(0.0f, 1.0f, 0.0f))
+                                                 : cross(wi, (float3)(1.0f, 0.0f, 0.0f)));
+    const float3 b = cross(wi, t);
+    const float phi = 6.28318531f * u2;
+    if (isinf(dist)) {
+        /* Uniform in solid angle over the cone of half-angle atan(size). */
+        const float cos_max = 1.0f / sqrt(1.0f + size * size);
+        const float c = 1.0f - u1 * (1.0f - cos_max), s = sqrt(fmax(0.0f, 1.0f - c * c));
+        *to_dist = INFINITY;
+        return normalize(c * wi + s * (cos(phi) * t + sin(phi) * b));
+    }
+    const float rad = size * sqrt(u1);
+    const float3 to = wi * dist + rad * (cos(phi) * t + sin(phi) * b);
+    *to_dist = length(to);
+    return to / *to_dist;
 }
 
 /* Radiance reflected towards the viewer by a Lambertian point p with normal n
@@ -87,7 +124,7 @@ inline direct_terms direct_gather(const grid_view *g, __global const vct_light_d
 inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *lights,
                              uint light_count, float3 p, float3 n, float3 albedo) {
     return albedo * VCT_INV_PI *
-           direct_gather(g, lights, light_count, p, n, 1, (float3)(0.0f), -1.0f).irradiance;
+           direct_gather(g, lights, light_count, p, n, 1, (float3)(0.0f), -1.0f, 0).irradiance;
 }
 
 #endif

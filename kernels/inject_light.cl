@@ -8,10 +8,30 @@
  * The centre can lie up to half a voxel diagonal behind the voxel's own
  * surface, so shadow rays start that far along the mean normal, in front of
  * it (along the light direction for a voxel without one). Shadow edges move
- * by less than a voxel; no voxel shadows itself at grazing light. */
+ * by less than a voxel; no voxel shadows itself at grazing light. A light
+ * with a radius is seen through INJECT_EXTENT_SAMPLES fixed points of its
+ * extent (a spiral), so that its penumbrae reach the voxels too. */
 #include "direct_light.h"
 #include "octree.h"
 #include "vct_types.h"
+
+#define INJECT_EXTENT_SAMPLES 8u
+
+/* The fraction of light i that p sees, lifted by `lift` along `up`. */
+inline float inject_visibility(const grid_view *g, __global const vct_light_desc *lights, uint i,
+                               float3 p, float3 up, float lift, float3 wi, float dist) {
+    if (!light_is_soft(lights, i))
+        return (float)light_visible(g, p, up, lift, wi, dist);
+    uint seen = 0;
+    for (uint s = 0; s < INJECT_EXTENT_SAMPLES; ++s) {
+        float reach;
+        const float u1 = ((float)s + 0.5f) / (float)INJECT_EXTENT_SAMPLES;
+        const float u2 = (float)s * 0.618034f;
+        const float3 to = light_extent_sample(lights, i, wi, dist, u1, u2 - floor(u2), &reach);
+        seen += (uint)light_visible(g, p, up, lift, to, reach);
+    }
+    return (float)seen / (float)INJECT_EXTENT_SAMPLES;
+}
 
 __kernel void inject_direct(GRID_ARGS, vct_volume_desc vol, __global const uint *keys, uint voxels,
                             __global const float4 *albedo, __global const float4 *normal,
@@ -35,8 +55,8 @@ __kernel void inject_direct(GRID_ARGS, vct_volume_desc vol, __global const uint 
         const float cos_theta = oriented ? dot(n, wi) : 1.0f;
         if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
             continue;
-        if (light_visible(&g, p, oriented ? n : wi, lift, wi, dist))
-            irradiance += radiant * cos_theta;
+        irradiance += radiant * cos_theta *
+                      inject_visibility(&g, lights, i, p, oriented ? n : wi, lift, wi, dist);
     }
     radiance[v] = (float4)(albedo[v].xyz * VCT_INV_PI * irradiance + emission[v].xyz, 0.0f);
 }

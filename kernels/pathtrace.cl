@@ -38,10 +38,12 @@ inline uint pick_emitter(const emitters *e, float u) {
     return lo;
 }
 
-/* Radiance from the punctual lights, for any BSDF (delta lobes excluded). */
+/* Radiance from the punctual lights, for any BSDF (delta lobes excluded).
+ * A light with a radius is shaded from its centre; its shadow ray goes to a
+ * random point of its extent. */
 inline float3 nee_punctual(const grid_view *g, __global const vct_light_desc *lights,
                            uint light_count, const vct_material_desc *m, float3 p, float3 n,
-                           float3 wo) {
+                           float3 wo, uint *rng) {
     float3 sum = (float3)(0.0f);
     const float eps = surface_epsilon(g, p);
     for (uint i = 0; i < light_count; ++i) {
@@ -52,7 +54,13 @@ inline float3 nee_punctual(const grid_view *g, __global const vct_light_desc *li
         const float3 fc = bsdf_eval(m, n, wo, wi, &pdf);
         if (all(fc == 0.0f) || all(radiant == 0.0f))
             continue;
-        if (light_visible(g, p, n, eps, wi, dist))
+        float3 towards = wi;
+        float reach = dist;
+        if (light_is_soft(lights, i)) {
+            const float u1 = rng_next(rng), u2 = rng_next(rng);
+            towards = light_extent_sample(lights, i, wi, dist, u1, u2, &reach);
+        }
+        if (light_visible(g, p, n, eps, towards, reach))
             sum += radiant * fc;
     }
     return sum;
@@ -144,7 +152,7 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
             }
             /* Next-event estimation (delta lobes cannot be lit this way). */
             if (!is_dielectric(&m) && !(is_mirror(&m) && glossy_probability(&m) >= 1.0f)) {
-                radiance += throughput * nee_punctual(&g, lights, light_count, &m, p, n, wo);
+                radiance += throughput * nee_punctual(&g, lights, light_count, &m, p, n, wo, &rng);
                 radiance +=
                     throughput * nee_emitters(&g, &em, materials, tri_material, &m, p, n, wo, &rng);
             }

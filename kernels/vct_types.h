@@ -37,6 +37,8 @@ typedef struct vct_light_desc {
     vct_f4 position;  /* xyz; w = kind */
     vct_f4 direction; /* xyz normalised, direction of travel; w = cos(outer cone) */
     vct_f4 color;     /* intensity (W/sr) or irradiance; w = cos(inner cone) */
+    vct_f4 shape;     /* x = radius (world units), or tan(angular radius) for a
+                         directional light; 0 for a point */
 } vct_light_desc;
 
 typedef struct vct_material_desc {

@@ -158,7 +158,7 @@ static vct_scene *quads_scene(const float *quads, uint32_t count) {
 }
 
 static void add_point_light(vct_scene *s, float x, float y, float z, float power) {
-    vct_light l = {VCT_LIGHT_POINT, {x, y, z}, {0}, {power, power, power}, 0, 0};
+    vct_light l = {VCT_LIGHT_POINT, {x, y, z}, {0}, {power, power, power}, 0, 0, 0};
     vct_error err = {0};
     REQUIRE_OK(vct_scene_add_light(s, &l, &err), err);
 }

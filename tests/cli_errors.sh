@@ -114,6 +114,8 @@ expect_failure "unknown effect" "NAME=on or NAME=off" render ok.obj --effect spa
 expect_failure "effect without a value" "NAME=on or NAME=off" render ok.obj --effect ao -o out.png
 expect_failure "unknown cone preset" "presets are 1, 5, 6, 9 and 16" render ok.obj --ambient 1 1 1 --cones 7 -o out.png
 expect_failure "negative ambient" "ambient radiance" render ok.obj --ambient 1 -1 1 -o out.png
+expect_failure "negative light radius" "radius -1" render ok.obj --point-light 0 2 0 1 1 1 --light-radius -1 -o out.png
+expect_failure "sun radius of a radian or more" "below 1 radian" render ok.obj --dir-light 0 -1 0 1 1 1 --light-radius 1.5 -o out.png
 expect_failure "bad cone step" "cone step" render ok.obj --ambient 1 1 1 --cone-step 0 -o out.png
 expect_failure "too many bounces" "not an integer in 1..4" render ok.obj --bounces 9 -o out.png
 # The plan: printed with reasons; a forced effect says so; the image is written.

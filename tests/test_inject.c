@@ -82,7 +82,7 @@ static int shadowed(const double p[3], const double light[3], double margin) {
 /* Checks every plane voxel against I cos / d^2 * albedo / pi (0 in shadow). */
 static void check_point_light(const char *name, inject_case *c, const double light[3],
                               double intensity, int occluder) {
-    vct_light l = {VCT_LIGHT_POINT, {0}, {0, 0, 0}, {0}, 0, 0};
+    vct_light l = {VCT_LIGHT_POINT, {0}, {0, 0, 0}, {0}, 0, 0, 0};
     for (int k = 0; k < 3; ++k) {
         l.position[k] = (float)light[k];
         l.color[k] = (float)intensity;
@@ -140,7 +140,7 @@ int main(void) {
     /* A moved light: re-injected, nothing re-voxelized. */
     check_point_light("point light, moved", &c, moved, 250.0, 0);
     /* A directional light at 60 degrees from the normal: E cos / pi * albedo everywhere. */
-    vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0}, {0.0f, -0.8660254f, -0.5f}, {2, 2, 2}, 0, 0};
+    vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0}, {0.0f, -0.8660254f, -0.5f}, {2, 2, 2}, 0, 0, 0};
     c.scene->light_count = 0;
     vct_error err = {0};
     REQUIRE_OK(vct_scene_add_light(c.scene, &sun, &err), err);
@@ -152,7 +152,7 @@ int main(void) {
     CHECK(worst < 1e-5, "directional light: worst relative error %g", worst);
     /* No light from behind: a light under the plane leaves it dark. */
     const double below[3] = {8, 8, 3};
-    vct_light under = {VCT_LIGHT_POINT, {8, 8, 3}, {0}, {100, 100, 100}, 0, 0};
+    vct_light under = {VCT_LIGHT_POINT, {8, 8, 3}, {0}, {100, 100, 100}, 0, 0, 0};
     (void)below;
     c.scene->light_count = 0;
     REQUIRE_OK(vct_scene_add_light(c.scene, &under, &err), err);

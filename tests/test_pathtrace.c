@@ -84,7 +84,7 @@ static vct_scene *plane_scene(float albedo, const vct_light *light) {
 }
 
 static void direct_matches_raycast(vct_context *ctx) {
-    vct_light point = {VCT_LIGHT_POINT, {1.0f, 3.0f, -0.5f}, {0, 0, 0}, {10, 20, 30}, 0, 0};
+    vct_light point = {VCT_LIGHT_POINT, {1.0f, 3.0f, -0.5f}, {0, 0, 0}, {10, 20, 30}, 0, 0, 0};
     vct_scene *s = plane_scene(0.6f, &point);
     vct_error err = {0};
     vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
@@ -130,7 +130,7 @@ static void direct_matches_raycast(vct_context *ctx) {
 /* An open plane of albedo 1 under a sun of irradiance E reflects exactly
  * E / pi: paths that leave it never return, so there is nothing to add. */
 static void open_scene_energy(vct_context *ctx) {
-    vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {0, -1, 0}, {1, 1, 1}, 0, 0};
+    vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {0, -1, 0}, {1, 1, 1}, 0, 0, 0};
     vct_scene *s = plane_scene(1.0f, &sun);
     vct_pathtrace_result r;
     vct_image im = trace(ctx, s, 32, 24, 16, 32, 5, &r);
@@ -194,7 +194,7 @@ static void adversarial(vct_context *ctx) {
     vct_error err = {0};
     vct_scene *s = vct_scene_from_arrays(soup.pos, soup.nv, soup.tri, soup.nt, mats, m, 4, &err);
     REQUIRE_OK(s ? VCT_OK : err.status, err);
-    vct_light grazing = {VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {1, -1e-4f, 0}, {3, 3, 3}, 0, 0};
+    vct_light grazing = {VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {1, -1e-4f, 0}, {3, 3, 3}, 0, 0, 0};
     REQUIRE_OK(vct_scene_add_light(s, &grazing, &err), err);
     s->camera = (vct_camera){{0.5f, 0.5f, 2.5f}, {0.5f, 0.5f, 0.5f}, {0, 1, 0}, 50.0f};
     vct_pathtrace_result r;

@@ -6,36 +6,11 @@
 #include <string.h>
 
 #include "check.h"
+#include "vec3d.h"
 
 #define W 96
 #define H 72
 #define TOL 1e-4
-
-typedef struct v3 {
-    double x, y, z;
-} v3;
-
-static v3 v(double x, double y, double z) {
-    return (v3){x, y, z};
-}
-static v3 sub(v3 a, v3 b) {
-    return v(a.x - b.x, a.y - b.y, a.z - b.z);
-}
-static v3 add(v3 a, v3 b) {
-    return v(a.x + b.x, a.y + b.y, a.z + b.z);
-}
-static v3 mul(v3 a, double s) {
-    return v(a.x * s, a.y * s, a.z * s);
-}
-static double dot(v3 a, v3 b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-static v3 cross(v3 a, v3 b) {
-    return v(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static v3 norm(v3 a) {
-    return mul(a, 1.0 / sqrt(dot(a, a)));
-}
 
 /* Plane y = height, quad of half-size 50 around the origin, plus an optional
  * small occluding square above it. */
@@ -120,16 +95,12 @@ static void run_case(vct_context *ctx, const char *name, vct_light light, double
     vct_render_options ro = {W, H, {0, 0, 0}};
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &im, &err), err);
 
-    const v3 f = norm(sub(at, eye)), r = norm(cross(f, up)), u = cross(r, f);
-    const double th = tan(fov * CHECK_PI / 360.0), aspect = (double)W / H;
     const v3 albedo = v(0.8, 0.5, 0.25);
     int bad = 0, compared = 0, shadowed = 0;
     double worst = 0;
     for (int y = 0; y < H; ++y) {
         for (int x = 0; x < W; ++x) {
-            double sx = (2.0 * (x + 0.5) / W - 1.0) * th * aspect;
-            double sy = (1.0 - 2.0 * (y + 0.5) / H) * th;
-            v3 d = norm(add(f, add(mul(r, sx), mul(u, sy))));
+            const v3 d = camera_ray(eye, at, up, fov, W, H, x, y);
             if (d.y >= 0)
                 continue;
             double t = (height - eye.y) / d.y;
@@ -182,11 +153,11 @@ static void run_case(vct_context *ctx, const char *name, vct_light light, double
 
 int main(void) {
     vct_context *ctx = check_context();
-    vct_light point = {VCT_LIGHT_POINT, {1.0f, 3.0f, -0.5f}, {0, 0, 0}, {10, 20, 30}, 0, 0};
+    vct_light point = {VCT_LIGHT_POINT, {1.0f, 3.0f, -0.5f}, {0, 0, 0}, {10, 20, 30}, 0, 0, 0};
     vct_light spot = {
-        VCT_LIGHT_SPOT, {0.5f, 4.0f, 0.0f}, {0.2f, -1.0f, 0.1f}, {40, 40, 40}, 0.3f, 0.6f};
-    vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {0.3f, -1.0f, -0.4f},
-                     {2.0f, 1.5f, 1.0f},    0,         0};
+        VCT_LIGHT_SPOT, {0.5f, 4.0f, 0.0f}, {0.2f, -1.0f, 0.1f}, {40, 40, 40}, 0.3f, 0.6f, 0};
+    vct_light sun = {
+        VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {0.3f, -1.0f, -0.4f}, {2.0f, 1.5f, 1.0f}, 0, 0, 0};
     run_case(ctx, "point", point, 0.0, 0);
     run_case(ctx, "spot", spot, 0.0, 0);
     run_case(ctx, "directional", sun, 0.0, 0);

@@ -82,6 +82,8 @@ case_compare indirect-off "--size 64 64 --keys F1" "--size 64 64 --effect indire
 case_compare shadows-off "--size 64 64 --keys 1,F4" "--size 64 64 --method raycast --effect shadows=off"
 case_compare resized "--size 64 64 --keys size=72x40" "--size 72 40"
 case_compare exposure "--size 48 48 --keys +,+" "--size 48 48 --exposure 1"
+case_compare soft-shadows "--size 48 48 --light-radius 60" "--size 48 48 --light-radius 60"
+case_compare soft-off "--size 48 48 --light-radius 60 --keys F5" "--size 48 48 --light-radius 60 --effect soft_shadows=off"
 
 # The voxel view at a coarse level: a window of octree cells, not black.
 "$VIEW" "$SCENE" --voxel-res 32 --display host --size 64 64 --keys "4,[,[" \

@@ -24,7 +24,8 @@ void cli_usage(void) {
           "  --method vct                     voxel cone tracing (default): --plan prints the\n"
           "                                   effect plan; --effect NAME=on|off forces one\n"
           "                                   (direct, shadows, indirect, specular, refraction,\n"
-          "                                   emission, ao); --cones 1|5|6|9|16 diffuse cones\n"
+          "                                   emission, ao, soft_shadows); --cones 1|5|6|9|16 "
+          "diffuse cones\n"
           "                                   (default 6); --cone-step F (fraction of the\n"
           "                                   diameter, 0.5); --cone-offset V (voxels, 4);\n"
           "                                   --ao-distance F (of the volume, 0.125);\n"
@@ -41,6 +42,8 @@ void cli_usage(void) {
           "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
           "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
           "  --dir-light DX DY DZ R G B       irradiance, travelling along D (repeatable)\n"
+          "  --light-radius R                 every light's size for soft shadows: world units\n"
+          "                                   (point, spot), radians (directional); 0 = hard\n"
           "  --ambient R G B                  radiance arriving where nothing is hit\n"
           "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
           "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default\n"
@@ -280,6 +283,10 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
             if (parse_floats(argc, argv, &i, 3, opt->ambient))
                 return 1;
             opt->has_ambient = 1;
+        } else if (strcmp(a, "--light-radius") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->light_radius))
+                return 1;
+            opt->has_light_radius = 1;
         } else if (strcmp(a, "--plan") == 0) {
             opt->print_plan = 1;
         } else if (strcmp(a, "--effect") == 0) {
@@ -349,5 +356,7 @@ int cli_apply_scene_overrides(const cli_options *opt, vct_scene *s, vct_error *e
         if (rc)
             return rc;
     }
-    return VCT_OK;
+    for (uint32_t i = 0; opt->has_light_radius && i < s->light_count; ++i)
+        s->lights[i].radius = opt->light_radius;
+    return opt->has_light_radius ? vct_scene_validate(s, err) : VCT_OK;
 }

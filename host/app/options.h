@@ -25,6 +25,8 @@ typedef struct cli_options {
     float camera_pos[3], look_at[3], up[3], fov;
     vct_light lights[MAX_CLI_LIGHTS];
     int light_count;
+    int has_light_radius;
+    float light_radius;
     int voxel_res, thin_voxels, has_voxel_bounds;
     float voxel_bounds[4]; /* x, y, z, size */
     vct_brick_storage bricks;

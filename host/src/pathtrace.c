@@ -119,6 +119,9 @@ static int accumulation_get(vct_context *ctx, const vct_pathtrace_options *opt, 
 int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g,
                          const vct_pathtrace_options *opt, vct_image *image,
                          vct_pathtrace_result *result, vct_error *err) {
+    vct_pathtrace_result unused;
+    if (!result)
+        result = &unused;
     memset(image, 0, sizeof *image);
     memset(result, 0, sizeof *result);
     if (opt->spp == 0 && !(opt->time_limit_s > 0.0))

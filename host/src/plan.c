@@ -8,7 +8,7 @@
 #include "internal.h"
 
 static const char *const effect_names[VCT_EFFECTS] = {
-    "direct", "shadows", "indirect", "specular", "refraction", "emission", "ao"};
+    "direct", "shadows", "indirect", "specular", "refraction", "emission", "ao", "soft_shadows"};
 
 const char *vct_effect_name(vct_effect effect) {
     return effect >= 0 && effect < VCT_EFFECTS ? effect_names[effect] : "unknown";
@@ -71,9 +71,11 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
     unsigned char *used = calloc(s->material_count + 1, 1);
     for (uint32_t t = 0; used && t < s->triangle_count; ++t)
         used[s->triangle_material[t]] = 1;
-    uint32_t lights = 0;
-    for (uint32_t l = 0; l < s->light_count; ++l)
+    uint32_t lights = 0, soft = 0;
+    for (uint32_t l = 0; l < s->light_count; ++l) {
         lights += positive3(s->lights[l].color);
+        soft += positive3(s->lights[l].color) && s->lights[l].radius > 0.0f;
+    }
     const int diffuse = used ? first_used(s, used, is_diffuse) : -1;
     const int glossy = used ? first_used(s, used, is_glossy) : -1;
     const int clear = used ? first_used(s, used, is_transmissive) : -1;
@@ -120,6 +122,12 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
     else
         say(p, VCT_EFFECT_AO, 0, "no ambient light");
 
+    if (soft)
+        say(p, VCT_EFFECT_SOFT_SHADOWS, 1, "%u light%s with a radius: one cone as wide as each",
+            soft, soft == 1 ? "" : "s");
+    else
+        say(p, VCT_EFFECT_SOFT_SHADOWS, 0, "%s", lights ? "no light has a radius" : "no lights");
+
     for (int e = 0; force && e < VCT_EFFECTS; ++e) {
         if (force[e] == VCT_FORCE_AUTO)
             continue;
@@ -130,10 +138,15 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
             p->on[e] ? "on" : "off", scene_said);
         p->forced[e] = 1;
     }
+    /* Soft shadows replace shadow rays: nothing to soften without them. */
+    if (p->on[VCT_EFFECT_SOFT_SHADOWS] && !(p->on[VCT_EFFECT_SHADOWS] && p->on[VCT_EFFECT_DIRECT]))
+        say(p, VCT_EFFECT_SOFT_SHADOWS, 0, "%s is off",
+            p->on[VCT_EFFECT_DIRECT] ? "shadows" : "direct light");
 }
 
 int vct_plan_needs_voxels(const vct_plan *p) {
-    return p->on[VCT_EFFECT_INDIRECT] || p->on[VCT_EFFECT_SPECULAR] || p->on[VCT_EFFECT_AO];
+    return p->on[VCT_EFFECT_INDIRECT] || p->on[VCT_EFFECT_SPECULAR] || p->on[VCT_EFFECT_AO] ||
+           p->on[VCT_EFFECT_SOFT_SHADOWS];
 }
 
 int vct_plan_needs_voxel_light(const vct_plan *p) {

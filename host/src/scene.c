@@ -1,4 +1,5 @@
 /* Host scene: flat arrays, validation, bounds and a default camera. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,6 +30,19 @@ void vct_scene_free(vct_scene *scene) {
 
 static int finite3(const float *v) {
     return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+static int check_light(const char *src, uint32_t index, const vct_light *l, vct_error *err) {
+    if (!finite3(l->position) || !finite3(l->direction) || !finite3(l->color) ||
+        !isfinite(l->radius))
+        return vct_fail(err, VCT_ERR_INPUT, "scene %s: light %u has a non-finite value", src,
+                        index);
+    const int directional = l->type == VCT_LIGHT_DIRECTIONAL;
+    if (!(l->radius >= 0.0f && l->radius < (directional ? 1.0f : FLT_MAX)))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "scene %s: light %u has radius %g: give 0 (a point) or more%s", src, index,
+                        l->radius, directional ? ", below 1 radian for a directional light" : "");
+    return VCT_OK;
 }
 
 int vct_scene_validate(vct_scene *s, vct_error *err) {
@@ -81,10 +95,9 @@ int vct_scene_validate(vct_scene *s, vct_error *err) {
                             src, m, mat->name);
     }
     for (uint32_t l = 0; l < s->light_count; ++l) {
-        const vct_light *li = &s->lights[l];
-        if (!finite3(li->position) || !finite3(li->direction) || !finite3(li->color))
-            return vct_fail(err, VCT_ERR_INPUT, "scene %s: light %u has a non-finite value", src,
-                            l);
+        int rc = check_light(src, l, &s->lights[l], err);
+        if (rc)
+            return rc;
     }
     if (!finite3(s->ambient) || s->ambient[0] < 0 || s->ambient[1] < 0 || s->ambient[2] < 0)
         return vct_fail(err, VCT_ERR_INPUT,
@@ -135,6 +148,9 @@ vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
 }
 
 int vct_scene_add_light(vct_scene *s, const vct_light *light, vct_error *err) {
+    int rc = check_light(s->source[0] ? s->source : "(arrays)", s->light_count, light, err);
+    if (rc)
+        return rc;
     vct_light *grown = realloc(s->lights, (s->light_count + 1) * sizeof *grown);
     if (!grown)
         return vct_fail(err, VCT_ERR_MEMORY, "scene: out of host memory for lights");

@@ -53,6 +53,7 @@ void vct_light_desc_make(const vct_light *l, vct_light_desc *d) {
     d->position.s[3] = (float)l->type;
     d->direction.s[3] = cosf(l->outer_cone);
     d->color.s[3] = cosf(l->inner_cone < l->outer_cone ? l->inner_cone : l->outer_cone);
+    d->shape.s[0] = l->type == VCT_LIGHT_DIRECTIONAL ? tanf(l->radius) : l->radius;
 }
 
 void vct_material_desc_make(const vct_material *m, vct_material_desc *d) {

@@ -12,6 +12,7 @@
 #define PRIMARY_STAGE "vct primary"
 #define DIFFUSE_STAGE "vct diffuse cones"
 #define SPECULAR_STAGE "vct specular cone"
+#define SOFT_STAGE "vct soft shadows"
 #define BOUNCE_STAGE "light bounce"
 
 vct_vct_options vct_vct_options_default(void) {
@@ -112,7 +113,7 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_grid *g, con
 static void program_options(const vct_plan *plan, const vct_voxels *v, char *out, size_t size) {
     static const char *defines[VCT_EFFECTS] = {
         "-DVCT_DIRECT",     "-DVCT_SHADOWS",  "-DVCT_INDIRECT", "-DVCT_SPECULAR",
-        "-DVCT_REFRACTION", "-DVCT_EMISSION", "-DVCT_AO"};
+        "-DVCT_REFRACTION", "-DVCT_EMISSION", "-DVCT_AO",       "-DVCT_SOFT_SHADOWS"};
     size_t len = 0;
     out[0] = '\0';
     for (int e = 0; e < VCT_EFFECTS; ++e)
@@ -157,15 +158,16 @@ static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_ca
     return rc;
 }
 
-/* One cone kernel over the G-buffer: CONE_POOLS, child, desc, then `extra`
- * (count, VCT_ARG_OF pairs), then gbuf, materials, size, image, aov. */
-static int cone_pass(frame *f, const char *stage, const char *name, cl_mem cones,
-                     cl_uint cone_count, vct_error *err) {
+/* One cone kernel over the G-buffer: CONE_POOLS, child, desc, then, if
+ * given, a buffer and its element count (cones or lights), then gbuf,
+ * materials, size, image, aov. */
+static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list, cl_uint list_count,
+                     vct_error *err) {
     cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
     int next = 0;
     int rc = k ? vct_cone_set_args(k, f->v, &f->desc, stage, &next, err) : (int)err->status;
-    if (rc == VCT_OK && cones) {
-        rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_OF(cones), VCT_ARG_OF(cone_count));
+    if (rc == VCT_OK && list) {
+        rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_OF(list), VCT_ARG_OF(list_count));
         next += 2;
     }
     if (rc == VCT_OK)
@@ -256,6 +258,12 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
         rc = primary(&f, s, g, &cam, err);
     vct_stage_end(ctx);
 
+    if (rc == VCT_OK && plan->on[VCT_EFFECT_SOFT_SHADOWS]) {
+        vct_stage_begin(ctx, SOFT_STAGE);
+        rc =
+            cone_pass(&f, SOFT_STAGE, "vct_soft_shadows", f.scene.lights, f.scene.light_count, err);
+        vct_stage_end(ctx);
+    }
     if (rc == VCT_OK && (plan->on[VCT_EFFECT_INDIRECT] || plan->on[VCT_EFFECT_AO])) {
         vct_stage_begin(ctx, DIFFUSE_STAGE);
         cl_mem cones = cone_buffer(ctx, opt->diffuse_cones, DIFFUSE_STAGE, err);

@@ -40,7 +40,8 @@ static void help(void) {
     puts(
         "keys: mouse drag look | W A S D move, Q E down/up, scroll speed\n"
         "      1 ray cast, 2 VCT, 3 path tracer (progressive), 4 voxels ([ ] level)\n"
-        "      F1 indirect, F2 specular, F3 AO, F4 shadows (forced against the plan)\n"
+        "      F1 indirect, F2 specular, F3 AO, F4 shadows, F5 soft shadows (forced against\n"
+        "      the plan; --light-radius R gives the lights a size)\n"
         "      arrows, R F move the first light | + - exposure | P screenshot | H help | Esc quit");
 }
 
@@ -77,11 +78,11 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
     view_app *app = &v->app;
     if (action != GLFW_PRESS && action != GLFW_REPEAT)
         return;
-    const vct_effect toggles[4] = {VCT_EFFECT_INDIRECT, VCT_EFFECT_SPECULAR, VCT_EFFECT_AO,
-                                   VCT_EFFECT_SHADOWS};
+    const vct_effect toggles[5] = {VCT_EFFECT_INDIRECT, VCT_EFFECT_SPECULAR, VCT_EFFECT_AO,
+                                   VCT_EFFECT_SHADOWS, VCT_EFFECT_SOFT_SHADOWS};
     if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4) {
         view_app_set_method(app, (view_method)(key - GLFW_KEY_1));
-    } else if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F4) {
+    } else if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F5) {
         view_app_toggle_effect(app, toggles[key - GLFW_KEY_F1]);
         print_plan(&app->plan);
     } else if (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) {
@@ -167,6 +168,7 @@ static const struct {
                  {"F2", GLFW_KEY_F2},
                  {"F3", GLFW_KEY_F3},
                  {"F4", GLFW_KEY_F4},
+                 {"F5", GLFW_KEY_F5},
                  {"[", GLFW_KEY_LEFT_BRACKET},
                  {"]", GLFW_KEY_RIGHT_BRACKET},
                  {"left", GLFW_KEY_LEFT},

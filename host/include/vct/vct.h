@@ -109,6 +109,11 @@ typedef struct vct_light {
     float color[3];     /* point/spot: radiant intensity W/sr; directional: irradiance */
     float inner_cone;   /* spot: radians, full intensity inside */
     float outer_cone;   /* spot: radians, zero outside */
+    /* Size for soft shadows (0: a point, hard shadows): point and spot, the
+     * radius of the disk facing the lit point, in world units; directional,
+     * the angular radius in radians (below 1). The light is shaded as from
+     * its centre, times the fraction of it that the point sees. */
+    float radius;
 } vct_light;
 
 typedef struct vct_camera {
@@ -239,7 +244,7 @@ typedef struct vct_pathtrace_result {
 } vct_pathtrace_result;
 
 /* Unbiased path tracing: next-event estimation with MIS, Lambert, glossy,
- * mirror and dielectric materials, Russian roulette. */
+ * mirror and dielectric materials, Russian roulette. result may be NULL. */
 int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
                          const vct_pathtrace_options *options, vct_image *image,
                          vct_pathtrace_result *result, vct_error *err);
@@ -410,13 +415,14 @@ int vct_cone_trace(vct_context *ctx, const vct_voxels *voxels, const vct_cone_se
 /* The effect plan: which effects a scene calls for, and why. The renderer
  * enqueues no work for an effect that is off. */
 typedef enum vct_effect {
-    VCT_EFFECT_DIRECT,     /* light from the scene's lights */
-    VCT_EFFECT_SHADOWS,    /* hard shadows by shadow rays */
-    VCT_EFFECT_INDIRECT,   /* indirect diffuse light by cones */
-    VCT_EFFECT_SPECULAR,   /* glossy highlights and a specular cone */
-    VCT_EFFECT_REFRACTION, /* rays followed through transmissive materials */
-    VCT_EFFECT_EMISSION,   /* emissive surfaces */
-    VCT_EFFECT_AO,         /* ambient occlusion of the ambient light */
+    VCT_EFFECT_DIRECT,       /* light from the scene's lights */
+    VCT_EFFECT_SHADOWS,      /* hard shadows by shadow rays */
+    VCT_EFFECT_INDIRECT,     /* indirect diffuse light by cones */
+    VCT_EFFECT_SPECULAR,     /* glossy highlights and a specular cone */
+    VCT_EFFECT_REFRACTION,   /* rays followed through transmissive materials */
+    VCT_EFFECT_EMISSION,     /* emissive surfaces */
+    VCT_EFFECT_AO,           /* ambient occlusion of the ambient light */
+    VCT_EFFECT_SOFT_SHADOWS, /* shadows of lights with a radius, by cones */
     VCT_EFFECTS
 } vct_effect;
 
