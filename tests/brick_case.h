@@ -119,23 +119,36 @@ static uint32_t node_at(const brick_case *c, const uint32_t cell[3], uint32_t le
     return node;
 }
 
-/* Trilinear interpolation of lattice `lat` at lattice coordinates p. */
-static void ref_trilinear(const ref_lattice *lat, const double p[3], double out[4]) {
+/* Trilinear interpolation of lattice `lat` at lattice coordinates p; the
+ * spread (max - min) of the 8 values it mixes goes to `spread` if given. */
+static void ref_trilinear_spread(const ref_lattice *lat, const double p[3], double out[4],
+                                 double spread[4]) {
     int64_t lo[3];
     double f[3];
     for (int k = 0; k < 3; ++k) {
         lo[k] = (int64_t)fmin(floor(p[k]), lat->n - 2.0);
         f[k] = p[k] - (double)lo[k];
     }
+    double lo_v[4] = {INFINITY, INFINITY, INFINITY, INFINITY},
+           hi_v[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
     for (int k = 0; k < 4; ++k)
         out[k] = 0.0;
     for (int d = 0; d < 8; ++d) {
         const int dx = d & 1, dy = d >> 1 & 1, dz = d >> 2;
         const double w = (dx ? f[0] : 1 - f[0]) * (dy ? f[1] : 1 - f[1]) * (dz ? f[2] : 1 - f[2]);
         const float *v = ref_at(lat, lo[0] + dx, lo[1] + dy, lo[2] + dz);
-        for (int k = 0; k < 4; ++k)
+        for (int k = 0; k < 4; ++k) {
             out[k] += w * v[k];
+            lo_v[k] = fmin(lo_v[k], v[k]);
+            hi_v[k] = fmax(hi_v[k], v[k]);
+        }
     }
+    for (int k = 0; spread && k < 4; ++k)
+        spread[k] = hi_v[k] - lo_v[k];
+}
+
+static inline void ref_trilinear(const ref_lattice *lat, const double p[3], double out[4]) {
+    ref_trilinear_spread(lat, p, out, NULL);
 }
 
 static vct_scene *scene_of(const test_mesh *m, const vct_material *mats, uint32_t nmat) {
