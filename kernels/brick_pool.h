@@ -42,6 +42,8 @@ inline int4 brick_texel_coord(uint2 pool, uint b, uint3 t) {
 /* Linear index of brick b's texel (0, 0, 0) in a buffer pool of the same
  * layout; compute it once per brick (it divides). */
 inline uint brick_base(uint2 pool, uint b) {
+    if (pool.x == 1u && pool.y == 1u)
+        return b * BRICK_TEXELS; /* a buffer pool: no division */
     const int4 c = brick_texel_coord(pool, b, (uint3)(0u));
     return ((uint)c.z * (3u * pool.y) + (uint)c.y) * (3u * pool.x) + (uint)c.x;
 }
