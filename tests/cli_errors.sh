@@ -121,10 +121,11 @@ expect_failure "too many bounces" "not an integer in 1..4" render ok.obj --bounc
 # The plan: printed with reasons; a forced effect says so; the image is written.
 if "$VCT" render ok.obj --plan --ambient 0.5 0.5 0.5 --effect specular=on --voxel-res 16 --size 16 16 \
     -o sky.png >stdout.txt 2>stderr.txt &&
-    grep -q "^  indirect   on   diffuse material" stdout.txt &&
-    grep -q "^  specular   on   forced on (the scene alone: off" stdout.txt &&
-    grep -q "^  ao         on   ambient light" stdout.txt &&
-    grep -q "^  direct     off  no lights" stdout.txt && [ -s sky.png ]; then
+    grep -q "^  indirect     on   diffuse material" stdout.txt &&
+    grep -q "^  specular     on   forced on (the scene alone: off" stdout.txt &&
+    grep -q "^  ao           on   ambient light" stdout.txt &&
+    grep -q "^  soft_shadows off  no lights" stdout.txt &&
+    grep -q "^  direct       off  no lights" stdout.txt && [ -s sky.png ]; then
     echo "ok   render --plan prints each effect, on or off, and why"
 else
     echo "FAIL render --plan:"; cat stdout.txt stderr.txt; failures=$((failures + 1))

@@ -18,7 +18,7 @@ void cli_voxel_options(const cli_options *opt, uint32_t default_res, vct_voxel_o
 void cli_print_plan(const vct_plan *plan, FILE *out) {
     fprintf(out, "effect plan:\n");
     for (int e = 0; e < VCT_EFFECTS; ++e)
-        fprintf(out, "  %-10s %-3s  %s\n", vct_effect_name((vct_effect)e),
+        fprintf(out, "  %-12s %-3s  %s\n", vct_effect_name((vct_effect)e),
                 plan->on[e] ? "on" : "off", plan->why[e]);
 }
 
