@@ -274,6 +274,47 @@ static void cornell_against_path_tracer(void) {
     vct_scene_free(box);
 }
 
+/* A glossy coat on the box's white surfaces: the Phong highlights of the
+ * direct light and the specular cone against the path tracer, and against
+ * the same render with specular left out. */
+static void glossy_cornell_against_path_tracer(void) {
+    vct_scene *box = check_cornell_box();
+    box->materials[0].specular[0] = box->materials[0].specular[1] = box->materials[0].specular[2] =
+        0.3f;
+    box->materials[0].roughness = 0.3f;
+    const int w = 64, h = 64;
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, box, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_pathtrace_options po = {w, h, 1024, 0.0, 16, 5, 64, 0, 0};
+    vct_image ref;
+    REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, NULL, &err), err);
+    vct_grid_free(g);
+    vct_plan p;
+    vct_plan_make(box, NULL, &p);
+    CHECK(p.on[VCT_EFFECT_SPECULAR], "glossy box: specular planned (%s)",
+          p.why[VCT_EFFECT_SPECULAR]);
+    rendered with = render(box, &p, 64, w, h, 2);
+    vct_effect_force force[VCT_EFFECTS] = {0};
+    force[VCT_EFFECT_SPECULAR] = VCT_FORCE_OFF;
+    vct_plan_make(box, force, &p);
+    rendered without = render(box, &p, 64, w, h, 2);
+    vct_image_metrics m_with, m_without;
+    REQUIRE_OK(vct_image_compare(&with.image, &ref, &m_with, &err), err);
+    REQUIRE_OK(vct_image_compare(&without.image, &ref, &m_without, &err), err);
+    /* Measured: 0.182 with specular, 0.456 without (64^3, 2 bounces). */
+    CHECK(m_with.relative_rmse < 0.22 && m_with.relative_rmse < 0.5 * m_without.relative_rmse,
+          "glossy Cornell box: relative RMSE %.4f with specular, %.4f without",
+          m_with.relative_rmse, m_without.relative_rmse);
+    printf(
+        "glossy Cornell box %dx%d: relative RMSE %.4f against 1024 spp (%.4f without specular)\n",
+        w, h, m_with.relative_rmse, m_without.relative_rmse);
+    rendered_free(&with);
+    rendered_free(&without);
+    vct_image_free(&ref);
+    vct_scene_free(box);
+}
+
 /* Only degenerate triangles and sky: no voxels, no bricks; cones see the
  * sky, and nothing is NaN. */
 static void empty_volume(void) {
@@ -302,6 +343,7 @@ int main(void) {
     constant_environment();
     empty_volume();
     cornell_against_path_tracer();
+    glossy_cornell_against_path_tracer();
     vct_context_destroy(ctx);
     return check_exit("test_vct");
 }
