@@ -98,6 +98,12 @@ inline float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, ui
     return fine == coarse ? value[0] : value[0] + f * (value[1] - value[0]);
 }
 
+/* Where a cone from surface point p with normal n starts: lifted off the
+ * surface by the offset (in voxels), so that it does not see its own voxel. */
+inline float3 cone_origin(const vct_cone_desc *c, float3 p, float3 n) {
+    return p + n * (c->march.y * (c->volume.w / (float)c->res.x));
+}
+
 /* 1 - (1 - a)^ratio: opacity a of one thickness over `ratio` of it. pow is
  * slow on CPU devices, and the common ratios (1, 1/2, 1/4) need none. */
 inline float opacity_over(float a, float ratio) {

@@ -67,6 +67,16 @@ inline void direct_add(direct_terms *sum, float3 radiant, float cos_theta, float
                      (0.5f * VCT_INV_PI);
 }
 
+/* light_incident for a surface with normal n: also the cosine, and 0 where
+ * the light sends nothing or arrives from behind. */
+inline int light_reaches(__global const vct_light_desc *lights, uint i, float3 p, float3 n,
+                         float3 *wi, float *dist, float3 *radiant, float *cos_theta) {
+    if (!light_incident(lights, i, p, wi, dist, radiant))
+        return 0;
+    *cos_theta = dot(n, *wi);
+    return *cos_theta > 0.0f && any(*radiant != 0.0f);
+}
+
 inline int light_is_soft(__global const vct_light_desc *lights, uint i) {
     return lights[i].shape.x > 0.0f;
 }
@@ -82,11 +92,8 @@ inline direct_terms direct_gather(const grid_view *g, __global const vct_light_d
         if (skip_soft && light_is_soft(lights, i))
             continue;
         float3 wi, radiant;
-        float dist;
-        if (!light_incident(lights, i, p, &wi, &dist, &radiant))
-            continue;
-        const float cos_theta = dot(n, wi);
-        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
+        float dist, cos_theta;
+        if (!light_reaches(lights, i, p, n, &wi, &dist, &radiant, &cos_theta))
             continue;
         if (shadows && !light_visible(g, p, n, eps, wi, dist))
             continue;

@@ -23,7 +23,7 @@ __kernel void inject_bounce(CONE_POOLS, __global const uint *child, vct_cone_des
     const float3 n = len > 1e-3f ? mean / len : (float3)(0.0f, 0.0f, 1.0f);
     float3 t, b;
     basis_of(n, &t, &b);
-    const float3 origin = centre + n * (cd.march.y * voxel);
+    const float3 origin = cone_origin(&cd, centre, n);
     float3 gathered = (float3)(0.0f);
     for (uint i = 0; i < cone_count; ++i) {
         const vct_cone_dir c = cones[i];

@@ -176,8 +176,7 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
         return;
     float3 r;
     const float e = direct_lobe(&g.m, g.wo, g.n, &r);
-    const float voxel = cd.volume.w / (float)cd.res.x;
-    const float3 origin = g.p + g.n * (cd.march.y * voxel);
+    const float3 origin = cone_origin(&cd, g.p, g.n);
     direct_terms sum = {(float3)(0.0f), (float3)(0.0f)};
     vct_cone_desc sd = cd;
     sd.march.x *= SOFT_STEP_SCALE;
@@ -185,11 +184,8 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
         if (!light_is_soft(lights, i))
             continue;
         float3 wi, radiant;
-        float dist;
-        if (!light_incident(lights, i, g.p, &wi, &dist, &radiant))
-            continue;
-        const float cos_theta = dot(g.n, wi);
-        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
+        float dist, cos_theta;
+        if (!light_reaches(lights, i, g.p, g.n, &wi, &dist, &radiant, &cos_theta))
             continue;
         const float size_of = lights[i].shape.x;
         const int far = isinf(dist);
@@ -217,8 +213,7 @@ __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone
     const float3 n = g.n;
     float3 t, b;
     basis_of(n, &t, &b);
-    const float voxel = cd.volume.w / (float)cd.res.x;
-    const float3 origin = g.p + n * (cd.march.y * voxel);
+    const float3 origin = cone_origin(&cd, g.p, n);
 #ifdef VCT_INDIRECT
     const float reach = INFINITY;
 #else
@@ -272,8 +267,7 @@ __kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone
     const float3 r = reflect_dir(g.wo, n);
     const int mirror = is_mirror(&m);
     const float e = phong_exponent(m.emission.w);
-    const float voxel = cd.volume.w / (float)cd.res.x;
-    const float3 origin = g.p + n * (cd.march.y * voxel);
+    const float3 origin = cone_origin(&cd, g.p, n);
     const cone_result c = cone_trace(CONE_POOLS_PASS, child, &cd, origin, r,
                                      mirror ? 0.0f : specular_tan_half(e), INFINITY);
     float3 weight = glossy_color(&m) * g.throughput;

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "vct_case.h"
 #include "vec3d.h"
 
 #define W 64
@@ -138,23 +139,7 @@ static vct_image render_vct(const vct_scene *s, const vct_effect_force *extra, u
         memcpy(force, extra, sizeof force);
     force[VCT_EFFECT_INDIRECT] = force[VCT_EFFECT_AO] = VCT_FORCE_OFF;
     vct_plan_make(s, force, plan);
-    vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
-    REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_voxel_options vo = {0};
-    vo.resolution = res;
-    const vct_brick_options bo = {VCT_BRICKS_AUTO, 1};
-    vct_vct_options o = vct_vct_options_default();
-    o.width = W;
-    o.height = H;
-    vct_voxels *vox = NULL;
-    REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, 1, &o.cones, &vox, &err), err);
-    vct_image im;
-    vct_stats_reset(ctx);
-    REQUIRE_OK(vct_render_vct(ctx, s, g, vox, plan, &o, &im, NULL, &err), err);
-    vct_voxels_free(vox);
-    vct_grid_free(g);
-    return im;
+    return vct_case_render(ctx, s, plan, res, W, H, 1, NULL);
 }
 
 static vct_image render_pt(const vct_scene *s, uint32_t spp) {

@@ -8,6 +8,7 @@
 
 #include "check.h"
 #include "mesh_gen.h"
+#include "vct_case.h"
 
 static vct_context *ctx;
 
@@ -19,23 +20,8 @@ typedef struct rendered {
 /* Builds what `plan` needs at voxel resolution res and renders w x h. */
 static rendered render(const vct_scene *s, const vct_plan *plan, uint32_t res, int w, int h,
                        uint32_t bounces) {
-    vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
-    REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_voxel_options vo = {0};
-    vo.resolution = res;
-    const vct_brick_options bo = {VCT_BRICKS_AUTO, 1};
-    vct_vct_options o = vct_vct_options_default();
-    o.width = w;
-    o.height = h;
-    o.aovs = 1;
-    vct_voxels *v = NULL;
-    REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, bounces, &o.cones, &v, &err), err);
     rendered r;
-    vct_stats_reset(ctx);
-    REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &r.image, &r.aovs, &err), err);
-    vct_voxels_free(v);
-    vct_grid_free(g);
+    r.image = vct_case_render(ctx, s, plan, res, w, h, bounces, &r.aovs);
     return r;
 }
 

@@ -1,0 +1,34 @@
+/* Renders a scene by voxel cone tracing for tests: the triangle grid, what
+ * the plan needs of the voxel hierarchy, then the image, with the context's
+ * statistics reset first so that kernel launches count this frame alone. */
+#ifndef VCT_TEST_VCT_CASE_H
+#define VCT_TEST_VCT_CASE_H
+
+#include "check.h"
+
+/* w x h at res^3 voxels and `bounces` light bounces; AOVs too when aovs is
+ * not NULL. */
+static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, const vct_plan *plan,
+                                        uint32_t res, int w, int h, uint32_t bounces,
+                                        vct_aovs *aovs) {
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_voxel_options vo = {0};
+    vo.resolution = res;
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, 1};
+    vct_vct_options o = vct_vct_options_default();
+    o.width = w;
+    o.height = h;
+    o.aovs = aovs != NULL;
+    vct_voxels *v = NULL;
+    REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, bounces, &o.cones, &v, &err), err);
+    vct_image image;
+    vct_stats_reset(ctx);
+    REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &image, aovs, &err), err);
+    vct_voxels_free(v);
+    vct_grid_free(g);
+    return image;
+}
+
+#endif
