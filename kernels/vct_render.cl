@@ -3,11 +3,12 @@
  *   vct_primary        camera rays through the triangle grid, direct light
  *                      exactly as the ray caster computes it, emission, and
  *                      refraction through dielectrics; writes the G-buffer
- *   vct_diffuse_cones  indirect diffuse light and ambient occlusion
  *   vct_soft_shadows   direct light of the lights with a radius, through one
  *                      cone per light as wide as the light
  *   vct_diffuse_cones  indirect diffuse light and ambient occlusion
  *   vct_specular_cone  one cone along the mirror direction
+ *   vct_glass_reflection  the Fresnel reflection off the first dielectric
+ *                      the camera ray enters, one mirror cone
  * Effects are chosen with -D: VCT_DIRECT, VCT_SHADOWS, VCT_SOFT_SHADOWS,
  * VCT_EMISSION, VCT_REFRACTION, VCT_SPECULAR, VCT_INDIRECT, VCT_AO (and the
  * pool's VCT_BRICK_IMAGE, VCT_ANISOTROPIC).
@@ -16,7 +17,9 @@
  * facing the viewer and 1 where a surface was found; direction towards the
  * viewer; the throughput of the refractions on the way. AOVs, 4 float4 per
  * pixel when given: direct, indirect diffuse, specular, (open fraction,
- * mean level sampled, 0, 1). */
+ * mean level sampled, 0, 1). Glass reflections, 3 float4 per pixel, when
+ * refraction and specular are both planned: (point, weight.x), (normal,
+ * weight.y), (mirror direction, weight.z), the weight 0 where there is none. */
 #include "bsdf.h"
 #include "camera.h"
 #include "cone_trace.h"
@@ -67,7 +70,8 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
                           __global const vct_material_desc *materials,
                           __global const uint *tri_material, __global const vct_light_desc *lights,
                           uint light_count, float4 ambient, __global float4 *gbuf,
-                          __global float4 *image, __global float4 *aov) {
+                          __global float4 *image, __global float4 *aov,
+                          __global float4 *reflection) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
@@ -76,6 +80,8 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
     float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
     float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
     float4 gpos = (float4)(0.0f), gnormal = (float4)(0.0f), gview = (float4)(0.0f);
+    float4 rpos = (float4)(0.0f), rnormal = (float4)(0.0f), rdir = (float4)(0.0f);
+    int reflected = 0;
     for (uint depth = 0; depth < VCT_MAX_INTERFACES; ++depth) {
         hit_record h;
         if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
@@ -92,7 +98,8 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
 #ifdef VCT_REFRACTION
         if (is_dielectric(&m)) {
             /* Follow the transmitted ray exactly (total internal reflection
-             * where there is none); the reflected part is left out. */
+             * where there is none). The reflected part of the first surface
+             * entered goes to vct_glass_reflection; later ones are left out. */
             const float ior = fmax(m.extra.x, 1.0001f);
             const float eta = front ? 1.0f / ior : ior;
             const float cos_i = fmin(dot(n, wo), 1.0f);
@@ -105,6 +112,15 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
                 const float sin2_t = eta * eta * fmax(0.0f, 1.0f - cos_i * cos_i);
                 const float cos_t = sqrt(fmax(0.0f, 1.0f - sin2_t));
                 dir = normalize(-eta * wo + (eta * cos_i - cos_t) * n);
+#ifdef VCT_SPECULAR
+                if (front && !reflected) {
+                    reflected = 1;
+                    const float3 w = throughput * F;
+                    rpos = (float4)(p, w.x);
+                    rnormal = (float4)(n, w.y);
+                    rdir = (float4)(reflect_dir(wo, n), w.z);
+                }
+#endif
                 throughput *= (1.0f - F) * m.albedo.xyz;
                 org = p - n * eps;
             }
@@ -133,6 +149,11 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
     image[pixel] = (float4)(radiance, 1.0f);
     if (aov)
         aov[4u * pixel] = (float4)(radiance, 1.0f);
+    if (reflection) {
+        reflection[3u * pixel] = rpos;
+        reflection[3u * pixel + 1u] = rnormal;
+        reflection[3u * pixel + 2u] = rdir;
+    }
 }
 
 /* The surface a pixel's camera ray found, from the G-buffer; 0 where it
@@ -277,6 +298,31 @@ __kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone
     image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
     if (aov)
         aov[4u * pixel + 2u] = (float4)(add, 1.0f);
+}
+
+/* The Fresnel reflection vct_primary recorded, through a mirror cone.
+ * gbuf and materials are unused: the signature is every cone pass's. */
+__kernel void vct_glass_reflection(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                                   __global const float4 *reflection, uint per_pixel,
+                                   __global const float4 *gbuf,
+                                   __global const vct_material_desc *materials, uint2 size,
+                                   __global float4 *image, __global float4 *aov) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= size.x || y >= size.y)
+        return;
+    const uint pixel = y * size.x + x;
+    const float4 rpos = reflection[per_pixel * pixel];
+    const float4 rnormal = reflection[per_pixel * pixel + 1u];
+    const float4 rdir = reflection[per_pixel * pixel + 2u];
+    const float3 weight = (float3)(rpos.w, rnormal.w, rdir.w);
+    if (!(weight.x > 0.0f || weight.y > 0.0f || weight.z > 0.0f))
+        return;
+    const float3 origin = cone_origin(&cd, rpos.xyz, rnormal.xyz);
+    const cone_result c = cone_trace(CONE_POOLS_PASS, child, &cd, origin, rdir.xyz, 0.0f, INFINITY);
+    const float3 add = weight * c.radiance;
+    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
+    if (aov)
+        aov[4u * pixel + 2u] = (float4)(aov[4u * pixel + 2u].xyz + add, 1.0f);
 }
 
 /* Cones given one by one (for tests and tools): 2 float4 in, origin and

@@ -9,6 +9,7 @@
 #include "check.h"
 #include "mesh_gen.h"
 #include "vct_case.h"
+#include "vec3d.h"
 
 static vct_context *ctx;
 
@@ -301,6 +302,89 @@ static void glossy_cornell_against_path_tracer(void) {
     vct_scene_free(box);
 }
 
+/* Fresnel reflectance of an unpolarised ray, cos_i from the side of
+ * refractive index ratio eta = n_incident / n_transmitted. */
+static double fresnel(double cos_i, double eta) {
+    const double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2_t >= 1.0)
+        return 1.0;
+    const double cos_t = sqrt(1.0 - sin2_t);
+    const double rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    const double rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+/* A clear glass pane (IOR 1.5, tinted a) under a constant sky L, seen from
+ * above. The renderer follows the transmitted ray through both faces and
+ * reflects the first face's share F by a mirror cone, which sees the sky:
+ * L (F + (1 - F)^2 a^2), exact for that model; forced specular off leaves
+ * L (1 - F)^2 a^2. (An untinted pane returns all of L; the model leaves
+ * out the light reflected between the faces, F (1 - F) of it, and without
+ * the reflection F (2 - F).) */
+static void glass_pane(void) {
+    const double top = 0.5, bottom = 0.3, half = 0.95;
+    const float quads[24] = {-1, 0.5f, -1, -1, 0.5f, 1,  1, 0.5f, 1, 1,  0.5f, -1,
+                             -1, 0.3f, -1, 1,  0.3f, -1, 1, 0.3f, 1, -1, 0.3f, 1};
+    vct_material glass = vct_material_default();
+    glass.albedo[0] = 1.0f, glass.albedo[1] = 0.9f, glass.albedo[2] = 0.6f;
+    glass.transmission = 1.0f;
+    glass.ior = 1.5f;
+    vct_scene *s = one_material_scene(quads, 2, glass);
+    s->ambient[0] = 1.0f, s->ambient[1] = 2.0f, s->ambient[2] = 0.5f;
+    const v3 eye = v(0.3, 2.5, 0.4), at = v(0, 0, 0), up = v(0, 0, -1);
+    s->camera = (vct_camera){{0.3f, 2.5f, 0.4f}, {0, 0, 0}, {0, 0, -1}, 60.0f};
+    vct_plan p;
+    vct_plan_make(s, NULL, &p);
+    CHECK(p.on[VCT_EFFECT_REFRACTION] && p.on[VCT_EFFECT_SPECULAR] &&
+              strstr(p.why[VCT_EFFECT_SPECULAR], "Fresnel"),
+          "glass plans refraction %d and specular %d (%s)", p.on[VCT_EFFECT_REFRACTION],
+          p.on[VCT_EFFECT_SPECULAR], p.why[VCT_EFFECT_SPECULAR]);
+    const int n = 48;
+    rendered with = render(s, &p, 16, n, n, 1);
+    CHECK(vct_kernel_launches(ctx, "vct_glass_reflection") == 1, "glass: %d reflection launches",
+          vct_kernel_launches(ctx, "vct_glass_reflection"));
+    vct_effect_force force[VCT_EFFECTS] = {0};
+    force[VCT_EFFECT_SPECULAR] = VCT_FORCE_OFF;
+    vct_plan off;
+    vct_plan_make(s, force, &off);
+    rendered without = render(s, &off, 16, n, n, 1);
+    CHECK(vct_kernel_launches(ctx, "vct_glass_reflection") == 0,
+          "specular off: %d glass reflection launches",
+          vct_kernel_launches(ctx, "vct_glass_reflection"));
+    double worst = 0.0, worst_off = 0.0, worst_aov = 0.0;
+    int pane = 0;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const v3 d = camera_ray(eye, at, up, 60.0, n, n, x, y);
+            const v3 a = add(eye, mul(d, (top - eye.y) / d.y));
+            const v3 b = add(eye, mul(d, (bottom - eye.y) / d.y));
+            if (fmax(fmax(fabs(a.x), fabs(a.z)), fmax(fabs(b.x), fabs(b.z))) > half)
+                continue; /* misses the pane, or leaves it through a side */
+            ++pane;
+            const double F = fresnel(-d.y, 1.0 / 1.5), T = (1.0 - F) * (1.0 - F);
+            const int px = y * n + x;
+            for (int k = 0; k < 3; ++k) {
+                const double L = s->ambient[k], a2 = glass.albedo[k] * glass.albedo[k];
+                worst = fmax(worst, fabs(with.image.rgba[4 * px + k] / (L * (F + T * a2)) - 1.0));
+                worst_off =
+                    fmax(worst_off, fabs(without.image.rgba[4 * px + k] / (L * T * a2) - 1.0));
+                worst_aov =
+                    fmax(worst_aov, fabs(with.aovs.specular.rgba[4 * px + k] / (L * F) - 1.0));
+            }
+        }
+    CHECK(pane > n * n / 4, "glass pane covers %d pixels", pane);
+    CHECK(worst < 1e-4 && worst_aov < 1e-4,
+          "glass pane: L (F + (1 - F)^2 a^2) within %.2g, reflection AOV L F within %.2g", worst,
+          worst_aov);
+    CHECK(worst_off < 1e-4, "glass pane, specular off: L (1 - F)^2 a^2 within %.2g", worst_off);
+    printf("glass pane under a sky (%d pixels): within %.1g of L (F + (1 - F)^2 a^2), and "
+           "%.1g of L (1 - F)^2 a^2 with specular off\n",
+           pane, worst, worst_off);
+    rendered_free(&with);
+    rendered_free(&without);
+    vct_scene_free(s);
+}
+
 /* Only degenerate triangles and sky: no voxels, no bricks; cones see the
  * sky, and nothing is NaN. */
 static void empty_volume(void) {
@@ -328,6 +412,7 @@ int main(void) {
     specular_only_when_planned();
     constant_environment();
     empty_volume();
+    glass_pane();
     cornell_against_path_tracer();
     glossy_cornell_against_path_tracer();
     vct_context_destroy(ctx);

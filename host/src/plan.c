@@ -105,8 +105,11 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
     if (glossy >= 0)
         say(p, VCT_EFFECT_SPECULAR, 1, "glossy material \"%s\" (roughness %g)",
             s->materials[glossy].name, s->materials[glossy].roughness);
+    else if (clear >= 0)
+        say(p, VCT_EFFECT_SPECULAR, 1, "dielectric \"%s\" reflects (Fresnel)",
+            s->materials[clear].name);
     else
-        say(p, VCT_EFFECT_SPECULAR, 0, "no glossy or metallic material");
+        say(p, VCT_EFFECT_SPECULAR, 0, "no glossy, metallic or transmissive material");
     if (clear >= 0)
         say(p, VCT_EFFECT_REFRACTION, 1, "material \"%s\" transmits %g", s->materials[clear].name,
             s->materials[clear].transmission);

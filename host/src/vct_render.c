@@ -13,6 +13,7 @@
 #define DIFFUSE_STAGE "vct diffuse cones"
 #define SPECULAR_STAGE "vct specular cone"
 #define SOFT_STAGE "vct soft shadows"
+#define GLASS_STAGE "vct glass reflection"
 #define BOUNCE_STAGE "light bounce"
 
 vct_vct_options vct_vct_options_default(void) {
@@ -128,6 +129,7 @@ typedef struct frame {
     const vct_voxels *v;
     cl_program program;
     cl_mem gbuf, image, aov;
+    cl_mem reflection;       /* glass reflections, when refraction and specular are planned */
     vct_scene_buffers scene; /* materials and lights, uploaded once per frame */
     vct_cone_desc desc;
     cl_uint size[2];
@@ -145,10 +147,10 @@ static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_ca
     int rc = k ? vct_grid_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)
-        rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 9, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 10, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
                           VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
                           VCT_ARG_OF(sb.light_count), VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
-                          VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov));
+                          VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov), VCT_ARG_OF(f->reflection));
     if (rc == VCT_OK)
         rc = launch_frame_kernel(f, k, err);
     if (rc == VCT_OK)
@@ -159,8 +161,8 @@ static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_ca
 }
 
 /* One cone kernel over the G-buffer: CONE_POOLS, child, desc, then, if
- * given, a buffer and its element count (cones or lights), then gbuf,
- * materials, size, image, aov. */
+ * given, a buffer and a count (cones, lights, or glass reflections and
+ * float4 per pixel), then gbuf, materials, size, image, aov. */
 static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list, cl_uint list_count,
                      vct_error *err) {
     cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
@@ -252,6 +254,12 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
         rc = f.aov ? vct_buffer_fill_u32(ctx, PRIMARY_STAGE, f.aov, 0, 16 * pixels, err)
                    : (int)err->status;
     }
+    const int glass = plan->on[VCT_EFFECT_REFRACTION] && plan->on[VCT_EFFECT_SPECULAR];
+    if (rc == VCT_OK && glass) {
+        f.reflection = vct_buffer_create(ctx, PRIMARY_STAGE, "glass reflections", 48 * pixels,
+                                         CL_MEM_READ_WRITE, NULL, err);
+        rc = f.reflection ? VCT_OK : (int)err->status;
+    }
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, PRIMARY_STAGE, &f.scene, err);
     if (rc == VCT_OK)
@@ -278,6 +286,11 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
         rc = cone_pass(&f, SPECULAR_STAGE, "vct_specular_cone", NULL, 0, err);
         vct_stage_end(ctx);
     }
+    if (rc == VCT_OK && glass) {
+        vct_stage_begin(ctx, GLASS_STAGE);
+        rc = cone_pass(&f, GLASS_STAGE, "vct_glass_reflection", f.reflection, 3, err);
+        vct_stage_end(ctx);
+    }
     if (rc == VCT_OK)
         rc = vct_frame_deliver(ctx, "vct image", image, err);
     if (rc == VCT_OK && aovs)
@@ -285,6 +298,7 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
     vct_scene_buffers_release(ctx, &f.scene);
     vct_buffer_release(ctx, f.aov);
     vct_buffer_release(ctx, f.gbuf);
+    vct_buffer_release(ctx, f.reflection);
     if (rc != VCT_OK) {
         vct_image_free(image);
         if (aovs)
