@@ -72,27 +72,49 @@ inline float4 brick_load(BRICK_POOL p, uint2 pool, uint b, uint3 t) {
 #endif
 }
 
+#ifndef VCT_BRICK_IMAGE
+/* Where a trilinear sample at `at` ([0, 2]^3 texel units) in brick b of a
+ * buffer pool reads: the first of its 2x2x2 texels, the strides to the
+ * others, and the fractions between them. Computed once, it serves every
+ * pool of the same layout. */
+typedef struct brick_lerp {
+    uint first, row, slice;
+    float3 f;
+} brick_lerp;
+
+inline brick_lerp brick_lerp_at(uint2 pool, uint b, float3 at) {
+    at = clamp(at, 0.0f, 2.0f);
+    const uint3 lo = min(convert_uint3(at), (uint3)(1u));
+    brick_lerp l;
+    l.row = 3u * pool.x;
+    l.slice = l.row * 3u * pool.y;
+    l.first = brick_base(pool, b) + lo.z * l.slice + lo.y * l.row + lo.x;
+    l.f = at - convert_float3(lo);
+    return l;
+}
+
+inline float4 brick_lerp_read(__global const half *p, brick_lerp l) {
+    const uint a = l.first, c = a + l.slice;
+    const float4 y0 =
+        mix(mix(vload_half4(a, p), vload_half4(a + 1u, p), l.f.x),
+            mix(vload_half4(a + l.row, p), vload_half4(a + l.row + 1u, p), l.f.x), l.f.y);
+    const float4 y1 =
+        mix(mix(vload_half4(c, p), vload_half4(c + 1u, p), l.f.x),
+            mix(vload_half4(c + l.row, p), vload_half4(c + l.row + 1u, p), l.f.x), l.f.y);
+    return mix(y0, y1, l.f.z);
+}
+#endif
+
 /* Trilinear sample at `at` in [0, 2]^3 texel units inside brick b. */
 inline float4 brick_sample(BRICK_POOL p, uint2 pool, uint b, float3 at) {
-    at = clamp(at, 0.0f, 2.0f);
 #ifdef VCT_BRICK_IMAGE
+    at = clamp(at, 0.0f, 2.0f);
     const sampler_t linear =
         CLK_NORMALIZED_COORDS_FALSE | CLK_ADDRESS_CLAMP_TO_EDGE | CLK_FILTER_LINEAR;
     const float4 base = convert_float4(brick_texel_coord(pool, b, (uint3)(0u)));
     return read_imagef(p, linear, base + (float4)(at + 0.5f, 0.0f));
 #else
-    const uint3 lo = min(convert_uint3(at), (uint3)(1u));
-    const float3 f = at - convert_float3(lo);
-    const uint base = brick_base(pool, b);
-    float4 acc = (float4)(0.0f);
-    for (uint k = 0; k < 2u; ++k)
-        for (uint j = 0; j < 2u; ++j)
-            for (uint i = 0; i < 2u; ++i) {
-                const float w =
-                    (i ? f.x : 1.0f - f.x) * (j ? f.y : 1.0f - f.y) * (k ? f.z : 1.0f - f.z);
-                acc += w * vload_half4(base + brick_offset(pool, lo + (uint3)(i, j, k)), p);
-            }
-    return acc;
+    return brick_lerp_read(p, brick_lerp_at(pool, b, at));
 #endif
 }
 

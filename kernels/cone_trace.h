@@ -50,12 +50,19 @@ inline float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint 
 #ifdef VCT_ANISOTROPIC
     if (level + 1u < levels) {
         const float3 w = d * d;
+#ifdef VCT_BRICK_IMAGE
         const float4 sx =
             d.x >= 0.0f ? brick_sample(dir0, pool, b, at) : brick_sample(dir3, pool, b, at);
         const float4 sy =
             d.y >= 0.0f ? brick_sample(dir1, pool, b, at) : brick_sample(dir4, pool, b, at);
         const float4 sz =
             d.z >= 0.0f ? brick_sample(dir2, pool, b, at) : brick_sample(dir5, pool, b, at);
+#else
+        const brick_lerp l = brick_lerp_at(pool, b, at); /* shared by the three pools */
+        const float4 sx = brick_lerp_read(d.x >= 0.0f ? dir0 : dir3, l);
+        const float4 sy = brick_lerp_read(d.y >= 0.0f ? dir1 : dir4, l);
+        const float4 sz = brick_lerp_read(d.z >= 0.0f ? dir2 : dir5, l);
+#endif
         return (w.x * sx + w.y * sy + w.z * sz) / (w.x + w.y + w.z);
     }
 #endif
