@@ -65,7 +65,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     vct_plan_make(s, NULL, &plan);
     vct_voxel_options vo = {0};
     vo.resolution = vs->res;
-    const vct_brick_options bo = {VCT_BRICKS_AUTO, vs->anisotropic};
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, vs->anisotropic, 0};
     vct_vct_options o = vct_vct_options_default();
     o.width = cfg->width;
     o.height = cfg->height;
@@ -120,7 +120,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
     vct_image im;
     if (strcmp(method, "pt") == 0) {
         vct_pathtrace_options o = {cfg->width, cfg->height,         spp, 0.0, 16,
-                                   seed,       spp < 16 ? spp : 16, 1, 0};
+                                   seed,       spp < 16 ? spp : 16, 1,   0};
         vct_pathtrace_result pr;
         if (vct_render_pathtrace(ctx, s, g, &o, &im, &pr, &err))
             bench_die(&err);

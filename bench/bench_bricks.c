@@ -46,7 +46,7 @@ static spine_run run_once(vct_context *ctx, vct_scene *s, vct_grid *grid, uint32
     vct_voxel_options o = {0};
     o.resolution = res;
     vct_voxels *v = vct_voxelize(ctx, s, &o, &err);
-    const vct_brick_options bo = {VCT_BRICKS_AUTO, anisotropic};
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, anisotropic, 1}; /* injection follows */
     if (!v || vct_octree_build(ctx, v, &err) != VCT_OK ||
         vct_bricks_build(ctx, v, &bo, &err) != VCT_OK ||
         vct_voxels_inject_light(ctx, s, grid, v, &err) != VCT_OK)

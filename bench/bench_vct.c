@@ -43,7 +43,7 @@ static vct_voxels *prepare(vct_context *ctx, const vct_scene *s, const vct_grid 
     vct_error err = {0};
     vct_voxel_options vo = {0};
     vo.resolution = res;
-    const vct_brick_options bo = {VCT_BRICKS_AUTO, anisotropic};
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, anisotropic, 0};
     const vct_cone_settings cs = vct_cone_settings_default();
     vct_voxels *v = NULL;
     const double t0 = vct_now_ms();

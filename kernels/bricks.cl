@@ -9,7 +9,9 @@
  *   brick_around     per brick, top-down: the 27 same-level nodes around
  *                    its node, from the parent's 27 (no links, no descent).
  *   brick_leaf       level L-1: a sample is the mean of the up to 8 voxels
- *                    around its corner (those with geometry; none gives 0).
+ *                    around its corner (those with geometry; none gives 0),
+ *                    for channels channel_from .. channel_to - 1 (0 albedo,
+ *                    1 normal, 2 radiance).
  *   brick_filter     level l from level l+1: each sample is the 3x3x3
  *                    Gaussian (1/4, 1/2, 1/4 per axis; the inverse
  *                    multiplicity of corner-centred samples) of the child
@@ -76,9 +78,9 @@ inline void gather_children(__global const uint *child, __global const uint *aro
 
 __kernel void brick_leaf(__global const uint *child, __global const uint *around, uint first_brick,
                          uint count, __global const float4 *albedo, __global const float4 *normal,
-                         __global const float4 *radiance, uint has_radiance, uint write_geometry,
-                         uint2 pool, __global half *albedo_pool, __global half *normal_pool,
-                         __global half *radiance_pool) {
+                         __global const float4 *radiance, uint has_radiance, uint channel_from,
+                         uint channel_to, uint2 pool, __global half *albedo_pool,
+                         __global half *normal_pool, __global half *radiance_pool) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
@@ -99,15 +101,17 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
                                    (v[20] != OCT_NULL) + (v[21] != OCT_NULL);
                 inv_found[(z * 3u + y) * 3u + x] = found ? 1.0f / (float)found : 0.0f;
             }
-    for (uint channel = write_geometry ? 0u : 2u; channel < 3u; ++channel) {
+    float alpha[64];
+    for (uint c = 0; c < 64u; ++c)
+        alpha[c] = voxel[c] == OCT_NULL ? 0.0f : albedo[voxel[c]].w;
+    for (uint channel = channel_from; channel < channel_to; ++channel) {
         __global const float4 *value = channel == 0u ? albedo : channel == 1u ? normal : radiance;
         const int has_value = channel < 2u || has_radiance;
         float4 premultiplied[64];
         for (uint c = 0; c < 64u; ++c) {
             const uint v = voxel[c];
-            const float alpha = v == OCT_NULL ? 0.0f : albedo[v].w;
             const float3 x = v == OCT_NULL || !has_value ? (float3)(0.0f) : value[v].xyz;
-            premultiplied[c] = (float4)(alpha * x, alpha);
+            premultiplied[c] = (float4)(alpha[c] * x, alpha[c]);
         }
         __global half *dst = channel == 0u   ? albedo_pool
                              : channel == 1u ? normal_pool

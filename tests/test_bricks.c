@@ -194,14 +194,14 @@ static void random_volumes(void) {
         add_point_light(scene, 0.3f, 0.8f, 0.6f, 0.5f);
         char name[64];
         snprintf(name, sizeof name, "soup %u^3, directional", sizes[s]);
-        const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1};
+        const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1, 0};
         brick_case c = make_case(name, scene, sizes[s], 1.0f, &opt);
         CHECK(c.bricks.bricks == (c.info.nodes - 1) / 8, "%s: one brick per node with children",
               name);
         check_all_channels(&c);
 
         /* The image pool holds the same texels, read through the image path. */
-        const vct_brick_options image = {VCT_BRICKS_IMAGE, 1};
+        const vct_brick_options image = {VCT_BRICKS_IMAGE, 1, 0};
         vct_error err = {0};
         const uint32_t n = c.bricks.bricks;
         float *a = malloc(27ull * 16 * n), *b = malloc(27ull * 16 * n);
@@ -238,7 +238,7 @@ static void moved_light_and_determinism(void) {
     vct_scene *scene = scene_of(&m, mats, 4);
     mesh_free(&m);
     add_point_light(scene, 0.9f, 0.9f, 0.2f, 1.0f);
-    const vct_brick_options opt = {VCT_BRICKS_AUTO, 1};
+    const vct_brick_options opt = {VCT_BRICKS_AUTO, 1, 0};
     brick_case c = make_case("icosphere 64^3, light moved", scene, 64, 1.0f, &opt);
     scene->lights[0].position[0] = 0.05f;
     scene->lights[0].position[2] = 0.95f;
@@ -254,6 +254,43 @@ static void moved_light_and_determinism(void) {
     REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
     REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, 0, n, b, &err), err);
     CHECK(memcmp(a, b, 27ull * 16 * n) == 0, "two builds of the same scene differ");
+
+    /* Radiance left for the injection: refused until then, then the same
+     * bricks, every channel, as a build that filled it first. */
+    const int last = VCT_BRICK_RADIANCE_DIR0 + 5;
+    const uint32_t nd = c.bricks.directional_bricks;
+    float *full[VCT_BRICK_CHANNELS] = {0};
+    for (int ch = 0; ch <= last; ++ch) {
+        const uint32_t count = ch >= VCT_BRICK_RADIANCE_DIR0 ? nd : n;
+        full[ch] = malloc(27ull * 16 * count + 16);
+        REQUIRE_OK(vct_bricks_read(ctx, c.voxels, ch, 0, count, full[ch], &err), err);
+    }
+    const vct_brick_options later = {VCT_BRICKS_AUTO, 1, 1};
+    REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &later, &err), err);
+    vct_error refused = {0};
+    const int rc = vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, 0, n, b, &refused);
+    CHECK(rc == VCT_ERR_INPUT && strstr(refused.message, "vct_voxels_inject_light"),
+          "radiance read before injection: status %d (%s)", rc, refused.message);
+    const float probe[8] = {0.1f, 0.5f, 0.5f, 0.0f, 1.0f, 0.0f, 0.0f, 0.2f};
+    const vct_cone_settings cs = vct_cone_settings_default();
+    const float sky[3] = {0, 0, 0};
+    float out[8];
+    memset(&refused, 0, sizeof refused);
+    CHECK(vct_cone_trace(ctx, c.voxels, &cs, sky, probe, 1, out, &refused) == VCT_ERR_INPUT,
+          "a cone before injection: %s", refused.message);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+    int same = 1;
+    for (int ch = 0; ch <= last; ++ch) {
+        const uint32_t count = ch >= VCT_BRICK_RADIANCE_DIR0 ? nd : n;
+        REQUIRE_OK(vct_bricks_read(ctx, c.voxels, ch, 0, count, b, &err), err);
+        const int equal = memcmp(full[ch], b, 27ull * 16 * count) == 0;
+        CHECK(equal, "radiance_later: channel %d differs from the full build", ch);
+        same &= equal;
+        free(full[ch]);
+    }
+    printf("radiance left for the injection: refused before it, every channel bit-identical "
+           "after it: %s\n",
+           same ? "yes" : "no");
     free(a);
     free(b);
     case_free(&c);
@@ -325,7 +362,7 @@ static void thin_wall(void) {
     const float q[12] = {10.5f, 0, 0, 10.5f, 32, 0, 10.5f, 32, 32, 10.5f, 0, 32};
     vct_scene *s = quads_scene(q, 1);
     add_point_light(s, 20.0f, 16.0f, 16.0f, 50.0f);
-    const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1};
+    const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1, 0};
     brick_case c = make_case("one-voxel wall", s, 32, 32.0f, &opt);
     CHECK(c.info.voxels == 32 * 32, "wall: %u voxels", c.info.voxels);
     check_all_channels(&c);
@@ -397,7 +434,7 @@ static void boundary(void) {
                          0, 16, 0, 16, 16, 0, 16, 16, 16, 0, 16, 16};
     vct_scene *s = quads_scene(q, 2);
     add_point_light(s, 8.0f, 8.0f, 8.0f, 20.0f);
-    const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1};
+    const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1, 0};
     brick_case c = make_case("faces of the volume", s, 16, 16.0f, &opt);
     CHECK(c.info.voxels == 2 * 256 - 16, "boundary: %u voxels", c.info.voxels);
     check_all_channels(&c);
@@ -416,7 +453,7 @@ static void empty_volume(void) {
     vct_voxels *v = vct_voxelize(ctx, s, &o, &err);
     REQUIRE_OK(v ? VCT_OK : err.status, err);
     REQUIRE_OK(vct_octree_build(ctx, v, &err), err);
-    const vct_brick_options image = {VCT_BRICKS_IMAGE, 1};
+    const vct_brick_options image = {VCT_BRICKS_IMAGE, 1, 0};
     REQUIRE_OK(vct_bricks_build(ctx, v, &image, &err), err);
     vct_brick_info info;
     CHECK(vct_bricks_info_get(v, &info) && info.bricks == 0, "empty volume: %u bricks",

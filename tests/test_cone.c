@@ -209,10 +209,10 @@ static void random_volumes(void) {
             char name[64];
             snprintf(name, sizeof name, "soup %u^3 %s", sizes[s],
                      directional ? "directional" : "isotropic");
-            const vct_brick_options buffer = {VCT_BRICKS_BUFFER, directional};
+            const vct_brick_options buffer = {VCT_BRICKS_BUFFER, directional, 0};
             brick_case c = make_case(name, scene, sizes[s], 1.0f, &buffer);
             compare_cones(&c, directional, "buffer", 2e-3);
-            const vct_brick_options image = {VCT_BRICKS_IMAGE, directional};
+            const vct_brick_options image = {VCT_BRICKS_IMAGE, directional, 0};
             vct_error err = {0};
             REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &image, &err), err);
             REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
@@ -289,7 +289,7 @@ static void hard_cases(void) {
     {
         const float quad[12] = {5, 5, 5, 6, 5, 5, 6, 6, 5, 5, 6, 5};
         vct_scene *s = quads_scene(quad, 1);
-        const vct_brick_options opt = {VCT_BRICKS_AUTO, 1};
+        const vct_brick_options opt = {VCT_BRICKS_AUTO, 1, 0};
         brick_case c = make_case("empty volume", s, 16, 1.0f, &opt);
         float cones[16] = {0.5f, 0.5f, 0.5f, 0.3f, 0,    1,    0,    INFINITY,
                            0.1f, 0.9f, 0.2f, 0.0f, 0.6f, 0.0f, 0.8f, INFINITY};
@@ -308,7 +308,7 @@ static void hard_cases(void) {
     for (int directional = 0; directional < 2; ++directional) {
         vct_scene *s = quads_scene(wall, 1);
         add_point_light(s, 0.2f, 0.5f, 0.5f, 0.1f);
-        const vct_brick_options opt = {VCT_BRICKS_BUFFER, directional};
+        const vct_brick_options opt = {VCT_BRICKS_BUFFER, directional, 0};
         brick_case c =
             make_case(directional ? "wall, directional" : "wall, isotropic", s, 32, 1.0f, &opt);
         /* Thin cones crossing it at 0 to 75 degrees stop at it: no leak. */
@@ -379,7 +379,7 @@ static void second_bounce(void) {
     vct_scene *scene = scene_of(&m, mats, 4);
     mesh_free(&m);
     add_point_light(scene, 0.3f, 0.8f, 0.6f, 0.5f);
-    const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1};
+    const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1, 0};
     brick_case c = make_case("second bounce 32^3", scene, 32, 1.0f, &opt);
     ref_pyramid p = pyramid_of(&c, 1);
     const uint32_t nv = c.info.voxels;

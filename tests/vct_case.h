@@ -16,7 +16,7 @@ static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, co
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_voxel_options vo = {0};
     vo.resolution = res;
-    const vct_brick_options bo = {VCT_BRICKS_AUTO, 1};
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, 1, 0};
     vct_vct_options o = vct_vct_options_default();
     o.width = w;
     o.height = h;

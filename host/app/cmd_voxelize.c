@@ -65,7 +65,7 @@ int cmd_voxelize(const cli_options *opt) {
     cli_voxel_options(opt, 256, &vo);
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
     int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
-    const vct_brick_options bo = {opt->bricks, opt->anisotropic == 1};
+    const vct_brick_options bo = {opt->bricks, opt->anisotropic == 1, s->light_count > 0};
     if (rc == VCT_OK)
         rc = vct_bricks_build(ctx, v, &bo, &err);
     /* With lights, inject direct light (shadows through the triangle grid). */

@@ -175,42 +175,51 @@ static int run_around(level_run *r, vct_error *err) {
     return rc;
 }
 
-/* Level L-1 bricks from the voxels: all channels, or radiance only. */
-static int run_leaf(const level_run *r, int geometry, vct_error *err) {
+/* Level L-1 bricks from the voxels: albedo and normal when `geometry`,
+ * radiance when `radiance`. */
+static int run_leaf(const level_run *r, int geometry, int radiance_too, vct_error *err) {
     vct_voxels *v = r->v;
     const uint32_t level = v->info.levels - 1, first = v->brick_info.level_first[level];
     const uint32_t count = v->brick_info.level_bricks[level];
-    const cl_uint has_radiance = v->radiance != NULL, write_geometry = (cl_uint)geometry;
+    const cl_uint has_radiance = v->radiance != NULL;
+    const cl_uint from = geometry ? 0 : 2, to = radiance_too ? 3 : 2;
     cl_mem radiance = has_radiance ? v->radiance : v->albedo;
     cl_mem *pool = v->brick_buffer;
     cl_mem albedo_pool = geometry ? pool[VCT_BRICK_ALBEDO] : pool[VCT_BRICK_RADIANCE];
     cl_mem normal_pool = geometry ? pool[VCT_BRICK_NORMAL] : pool[VCT_BRICK_RADIANCE];
-    return vct_run_kernel(r->ctx, r->program, "brick_leaf", r->stage, count, err, 13,
+    return vct_run_kernel(r->ctx, r->program, "brick_leaf", r->stage, count, err, 14,
                           VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
                           VCT_ARG_OF(count), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
-                          VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance),
-                          VCT_ARG_OF(write_geometry), VCT_ARG_OF(r->pool), VCT_ARG_OF(albedo_pool),
+                          VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance), VCT_ARG_OF(from),
+                          VCT_ARG_OF(to), VCT_ARG_OF(r->pool), VCT_ARG_OF(albedo_pool),
                           VCT_ARG_OF(normal_pool), VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
 }
 
 /* Levels L-2 .. 0, each from the level below: albedo and normal when
- * `geometry`, radiance always, and the directions when anisotropic. */
-static int run_filters(const level_run *r, int geometry, vct_error *err) {
+ * `geometry`; radiance, and its directions when anisotropic, when
+ * `radiance_too`. */
+static int run_filters(const level_run *r, int geometry, int radiance_too, vct_error *err) {
     vct_voxels *v = r->v;
     const vct_brick_info *b = &v->brick_info;
     cl_mem *pool = v->brick_buffer;
     int rc = VCT_OK;
     for (int level = (int)v->info.levels - 2; level >= 0 && rc == VCT_OK; --level) {
         const cl_uint first = b->level_first[level], count = b->level_bricks[level];
-        const cl_uint channels = geometry ? 3 : 1;
-        cl_mem c0 = pool[VCT_BRICK_RADIANCE];
-        cl_mem c1 = geometry ? pool[VCT_BRICK_ALBEDO] : c0;
-        cl_mem c2 = geometry ? pool[VCT_BRICK_NORMAL] : c0;
+        /* the channels to filter, first to last: (albedo, normal), radiance */
+        cl_mem list[3];
+        cl_uint channels = 0;
+        if (geometry) {
+            list[channels++] = pool[VCT_BRICK_ALBEDO];
+            list[channels++] = pool[VCT_BRICK_NORMAL];
+        }
+        if (radiance_too)
+            list[channels++] = pool[VCT_BRICK_RADIANCE];
+        cl_mem c0 = list[0], c1 = list[channels > 1 ? 1 : 0], c2 = list[channels > 2 ? 2 : 0];
         rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, count, err, 9,
                             VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
                             VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(channels),
                             VCT_ARG_OF(c0), VCT_ARG_OF(c1), VCT_ARG_OF(c2));
-        if (rc != VCT_OK || !b->anisotropic)
+        if (rc != VCT_OK || !b->anisotropic || !radiance_too)
             continue;
         /* children at level L-1 have one isotropic value for every direction */
         const int from_leaf = level + 2 == (int)v->info.levels;
@@ -275,7 +284,7 @@ int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *o
                      vct_error *err) {
     if (!v->child)
         return vct_fail(err, VCT_ERR_INPUT, "bricks: build the octree first (vct_octree_build)");
-    const vct_brick_options defaults = {VCT_BRICKS_AUTO, 0};
+    const vct_brick_options defaults = {VCT_BRICKS_AUTO, 0, 0};
     if (!options)
         options = &defaults;
     vct_bricks_release(v);
@@ -292,16 +301,17 @@ int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *o
         rc = level_run_init(ctx, v, CREATE_STAGE, &r, err);
     if (rc == VCT_OK && b->bricks)
         rc = run_around(&r, err);
+    const int radiance_too = !options->radiance_later;
     if (rc == VCT_OK && b->bricks)
-        rc = run_leaf(&r, 1, err);
+        rc = run_leaf(&r, 1, radiance_too, err);
     if (rc == VCT_OK)
         rc = vct_finish(ctx, CREATE_STAGE, err);
     vct_stage_begin(ctx, FILTER_STAGE);
     r.stage = FILTER_STAGE;
     if (rc == VCT_OK && b->bricks)
-        rc = run_filters(&r, 1, err);
+        rc = run_filters(&r, 1, radiance_too, err);
     if (rc == VCT_OK)
-        rc = copy_to_images(&r, 0, channel_count(b), err);
+        rc = copy_to_images(&r, 0, radiance_too ? channel_count(b) : VCT_BRICK_RADIANCE, err);
     if (rc == VCT_OK && b->image) {
         /* geometry never changes: only the radiance buffers stay, for re-filtering */
         b->staging_bytes = b->pool_bytes;
@@ -315,16 +325,31 @@ int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *o
         rc = vct_finish(ctx, FILTER_STAGE, err);
     vct_buffer_release(ctx, r.around);
     vct_stage_end(ctx);
-    if (rc != VCT_OK)
+    if (rc != VCT_OK) {
         vct_bricks_release(v);
-    else
+    } else {
         v->has_bricks = 1;
+        v->radiance_ready = radiance_too;
+    }
     return rc;
 }
 
+int vct_bricks_radiance_check(const vct_voxels *v, const char *stage, vct_error *err) {
+    if (v->has_bricks && !v->radiance_ready)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: the bricks' radiance waits for light injection "
+                        "(built with radiance_later): call vct_voxels_inject_light first",
+                        stage);
+    return VCT_OK;
+}
+
 int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err) {
-    if (!v->has_bricks || v->brick_info.bricks == 0)
+    if (!v->has_bricks)
         return VCT_OK;
+    if (v->brick_info.bricks == 0) {
+        v->radiance_ready = 1;
+        return VCT_OK;
+    }
     vct_stage_begin(ctx, REFRESH_STAGE);
     level_run r = {0};
     int rc = level_run_init(ctx, v, REFRESH_STAGE, &r, err);
@@ -332,15 +357,17 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
     if (rc == VCT_OK)
         rc = run_around(&r, err);
     if (rc == VCT_OK)
-        rc = run_leaf(&r, 0, err);
+        rc = run_leaf(&r, 0, 1, err);
     if (rc == VCT_OK)
-        rc = run_filters(&r, 0, err);
+        rc = run_filters(&r, 0, 1, err);
     if (rc == VCT_OK)
         rc = copy_to_images(&r, VCT_BRICK_RADIANCE, channels, err);
     if (rc == VCT_OK)
         rc = vct_finish(ctx, REFRESH_STAGE, err);
     vct_buffer_release(ctx, r.around);
     vct_stage_end(ctx);
+    if (rc == VCT_OK)
+        v->radiance_ready = 1;
     return rc;
 }
 
@@ -371,6 +398,8 @@ int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t
         return vct_fail(err, VCT_ERR_INPUT,
                         "%s: channel %d, bricks %u..%u: not built (%u bricks, %u directional)",
                         stage, channel, first, first + count, b->bricks, b->directional_bricks);
+    if (channel >= VCT_BRICK_RADIANCE && vct_bricks_radiance_check(v, stage, err))
+        return err->status;
     if (count == 0)
         return VCT_OK;
     cl_program p;
@@ -401,6 +430,8 @@ int vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32
     if (channel < 0 || channel >= channel_count(b) || level >= top)
         return vct_fail(err, VCT_ERR_INPUT, "%s: channel %d has no bricks at level %u", stage,
                         channel, level);
+    if (channel >= VCT_BRICK_RADIANCE && vct_bricks_radiance_check(v, stage, err))
+        return err->status;
     if (n == 0 || b->bricks == 0) {
         memset(out, 0, 16ull * n);
         return VCT_OK;

@@ -135,6 +135,8 @@ const char *vct_cone_pool_options(const vct_voxels *v) {
 int vct_cone_set_args(cl_kernel k, const vct_voxels *v, const void *desc, const char *stage,
                       int *next, vct_error *err) {
     const vct_brick_info *b = &v->brick_info;
+    if (vct_bricks_radiance_check(v, stage, err))
+        return err->status;
     const int pools = b->anisotropic ? 7 : 1;
     for (int i = 0; i < pools; ++i) {
         const int c = VCT_BRICK_RADIANCE + i;

@@ -17,6 +17,7 @@ struct vct_voxels {
      * the build storage; an image pool also has images, and keeps only the
      * radiance buffers for re-filtering. */
     int has_bricks;
+    int radiance_ready; /* 0 while radiance_later waits for light injection */
     vct_brick_info brick_info;
     cl_mem brick_buffer[VCT_BRICK_CHANNELS], brick_image[VCT_BRICK_CHANNELS];
 };
@@ -31,6 +32,9 @@ uint32_t vct_voxel_res_that_fits(uint32_t res, double bytes, double limit);
 int vct_voxel_buffer_fits(vct_context *ctx, const vct_voxel_info *info, const char *stage,
                           const char *what, double bytes, vct_error *err);
 
+/* Fails, naming the stage, while the radiance bricks wait for light
+ * injection (vct_brick_options.radiance_later). */
+int vct_bricks_radiance_check(const vct_voxels *voxels, const char *stage, vct_error *err);
 /* Re-creates the radiance bricks from the voxels' radiance and filters
  * them up (after light injection); nothing when no bricks are built. */
 int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *voxels, vct_error *err);

@@ -101,7 +101,7 @@ static int ensure_voxels(view_app *app, vct_error *err) {
         if (app->voxels && app->voxels_for_plan && (app->voxels_lit || !lit))
             return VCT_OK;
         drop_voxels(app);
-        const vct_brick_options bricks = {app->opt.bricks, app->opt.anisotropic != 0};
+        const vct_brick_options bricks = {app->opt.bricks, app->opt.anisotropic != 0, 0};
         int rc = vct_vct_prepare(app->ctx, app->scene, app->grid, &app->plan, &vo, &bricks,
                                  (uint32_t)app->opt.bounces, &app->opt.cones, &app->voxels, err);
         if (rc)

@@ -342,6 +342,12 @@ typedef struct vct_brick_options {
      * the way a cone travels) at levels 0 .. L-2: the child lattice
      * composited front to back along the axis, then averaged. */
     int anisotropic;
+    /* 1: light injection follows (vct_voxels_inject_light), so the radiance
+     * channels are left for it to build: the build fills albedo and normal
+     * only, and cones and radiance reads refuse the bricks until then. 0:
+     * radiance too (the voxels' radiance, or 0 with opacity before any
+     * injection, which is all that occlusion needs). */
+    int radiance_later;
 } vct_brick_options;
 
 typedef enum vct_brick_channel {
@@ -367,7 +373,8 @@ typedef struct vct_brick_info {
 } vct_brick_info;
 
 /* Builds the bricks of every channel (radiance from the injected light, or 0
- * before injection). Later vct_voxels_inject_light calls re-filter radiance. */
+ * before injection; left out with radiance_later). vct_voxels_inject_light
+ * (re-)builds and re-filters radiance. */
 int vct_bricks_build(vct_context *ctx, vct_voxels *voxels, const vct_brick_options *options,
                      vct_error *err);
 /* 0 and no change when no bricks are built. */
@@ -407,7 +414,8 @@ int vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err
  * tan(half-angle); unit direction xyz, reach), 8 floats out each (radiance
  * rgb and opacity; opacity within the AO distance, sum of levels sampled,
  * samples, 1 if it left the volume). `ambient`: radiance beyond the volume
- * (NULL: none). The bricks must be built. */
+ * (NULL: none). The bricks must be built (and lit, when built with
+ * radiance_later). */
 int vct_cone_trace(vct_context *ctx, const vct_voxels *voxels, const vct_cone_settings *settings,
                    const float *ambient, const float *cones, uint32_t n, float *out,
                    vct_error *err);
