@@ -220,7 +220,11 @@ inline float4 half_thickness(float4 v) {
 }
 
 /* Direction dir (0..5: +x, +y, +z, -x, -y, -z; the way a cone travels) of
- * brick b from `src`, the child level's values for that direction. */
+ * brick b from `src`, the child level's values for that direction. Along
+ * the axis, lattice points 2g, 2g + 1, 2g + 2 composite into output g; each
+ * lattice point is loaded (and an end point halved) once, for every output
+ * that reads it, and the 7x7 composited columns of each g are then averaged
+ * separably, across the axis. */
 inline void filter_direction(const uint *texel, uint2 pool, uint b, uint dir,
                              __global const half *src, __global half *dst) {
     const float w[3] = {0.25f, 0.5f, 0.25f};
@@ -228,27 +232,42 @@ inline void filter_direction(const uint *texel, uint2 pool, uint b, uint dir,
     const uint stride[3] = {1u, 7u, 49u};
     const uint step = stride[axis], u_step = stride[(axis + 1u) % 3u];
     const uint v_step = stride[(axis + 2u) % 3u];
-    const uint base = brick_base(pool, b);
-    for (uint k = 0; k < 3u; ++k)
-        for (uint j = 0; j < 3u; ++j)
-            for (uint t = 0; t < 3u; ++t) {
-                const uint centre = ((2u * k + 1u) * 7u + 2u * j + 1u) * 7u + 2u * t + 1u;
-                float4 sum = (float4)(0.0f);
-                for (uint v = 0; v < 3u; ++v)
-                    for (uint u = 0; u < 3u; ++u) {
-                        const uint column = centre + u * u_step + v * v_step - u_step - v_step;
-                        float4 acc = (float4)(0.0f);
-                        for (uint s = 0; s < 3u; ++s) {
-                            const uint along = backwards ? 2u - s : s;
-                            float4 x = texel_load(src, texel[column + along * step - step]);
-                            if (along != 1u)
-                                x = half_thickness(x);
-                            acc += (1.0f - acc.w) * x;
-                        }
-                        sum += (w[u] * w[v]) * acc;
-                    }
-                brick_store_at(dst, pool, base, (uint3)(t, j, k), sum);
+    float4 column[3][7][7]; /* [g][q][p]: output g along the axis, lattice p, q across */
+    for (uint q = 0; q < 7u; ++q)
+        for (uint p = 0; p < 7u; ++p) {
+            float4 x[7];
+            for (uint a = 0; a < 7u; ++a) {
+                x[a] = texel_load(src, texel[a * step + p * u_step + q * v_step]);
+                if ((a & 1u) == 0u)
+                    x[a] = half_thickness(x[a]);
             }
+            for (uint g = 0; g < 3u; ++g) {
+                float4 acc = (float4)(0.0f);
+                for (uint s = 0; s < 3u; ++s) {
+                    const uint along = backwards ? 2u - s : s;
+                    acc += (1.0f - acc.w) * x[2u * g + along];
+                }
+                column[g][q][p] = acc;
+            }
+        }
+    const uint base = brick_base(pool, b);
+    for (uint g = 0; g < 3u; ++g) {
+        float4 row[7][3]; /* [q][i]: averaged across p */
+        for (uint q = 0; q < 7u; ++q)
+            for (uint i = 0; i < 3u; ++i)
+                row[q][i] = w[0] * column[g][q][2u * i] + w[1] * column[g][q][2u * i + 1u] +
+                            w[2] * column[g][q][2u * i + 2u];
+        for (uint m = 0; m < 3u; ++m)
+            for (uint i = 0; i < 3u; ++i) {
+                uint t[3];
+                t[axis] = g;
+                t[(axis + 1u) % 3u] = i;
+                t[(axis + 2u) % 3u] = m;
+                brick_store_at(dst, pool, base, (uint3)(t[0], t[1], t[2]),
+                               w[0] * row[2u * m][i] + w[1] * row[2u * m + 1u][i] +
+                                   w[2] * row[2u * m + 2u][i]);
+            }
+    }
 }
 
 /* All six directions of the level's bricks: the three samples along the
