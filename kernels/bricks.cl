@@ -19,7 +19,9 @@
  *   brick_filter_dir the same lattice seen along one axis direction: the
  *                    three samples along the axis are composited front to
  *                    back (thicknesses 1/2, 1, 1/2 child samples), the nine
- *                    columns averaged with the same Gaussian weights.
+ *                    columns averaged with the same Gaussian weights. With
+ *                    one_source, all six read one pool (the leaves', which
+ *                    have no directions), each value loaded once per axis.
  *
  * A sample depends only on its lattice point, never on the brick asking, and
  * sums run in a fixed world order: samples on faces shared by neighbouring
@@ -219,54 +221,69 @@ inline float4 half_thickness(float4 v) {
     return v / (1.0f + sqrt(fmax(1.0f - v.w, 0.0f)));
 }
 
-/* Direction dir (0..5: +x, +y, +z, -x, -y, -z; the way a cone travels) of
- * brick b from `src`, the child level's values for that direction. Along
- * the axis, lattice points 2g, 2g + 1, 2g + 2 composite into output g; each
- * lattice point is loaded (and an end point halved) once, for every output
- * that reads it, and the 7x7 composited columns of each g are then averaged
- * separably, across the axis. */
-inline void filter_direction(const uint *texel, uint2 pool, uint b, uint dir,
-                             __global const half *src, __global half *dst) {
+/* Front-to-back composite of three samples met in this order. */
+inline float4 composite3(float4 a, float4 b, float4 c) {
+    float4 acc = (float4)(0.0f);
+    acc += (1.0f - acc.w) * a;
+    acc += (1.0f - acc.w) * b;
+    acc += (1.0f - acc.w) * c;
+    return acc;
+}
+
+/* Output layer g along `axis` from its 7x7 composited columns ([q][p],
+ * lattice p and q across the axis), averaged separably. */
+inline void store_layer(const float4 column[7][7], uint2 pool, uint base, uint axis, uint g,
+                        __global half *dst) {
     const float w[3] = {0.25f, 0.5f, 0.25f};
-    const uint axis = dir % 3u, backwards = dir >= 3u;
+    float4 row[7][3]; /* [q][i]: averaged across p */
+    for (uint q = 0; q < 7u; ++q)
+        for (uint i = 0; i < 3u; ++i)
+            row[q][i] = w[0] * column[q][2u * i] + w[1] * column[q][2u * i + 1u] +
+                        w[2] * column[q][2u * i + 2u];
+    for (uint m = 0; m < 3u; ++m)
+        for (uint i = 0; i < 3u; ++i) {
+            uint t[3];
+            t[axis] = g;
+            t[(axis + 1u) % 3u] = i;
+            t[(axis + 2u) % 3u] = m;
+            brick_store_at(dst, pool, base, (uint3)(t[0], t[1], t[2]),
+                           w[0] * row[2u * m][i] + w[1] * row[2u * m + 1u][i] +
+                               w[2] * row[2u * m + 2u][i]);
+        }
+}
+
+/* Both directions along `axis` (0..2) of brick b: `up` travels +axis and
+ * reads its child values from src_up, `down` travels -axis from src_down.
+ * Lattice points 2g, 2g + 1, 2g + 2 along the axis composite into output g,
+ * the end points over half their thickness; with one_source both read
+ * src_up, and each point is loaded and halved once for the two. */
+inline void filter_axis(const uint *texel, uint2 pool, uint b, uint axis,
+                        __global const half *src_up, __global const half *src_down, uint one_source,
+                        __global half *up, __global half *down) {
     const uint stride[3] = {1u, 7u, 49u};
     const uint step = stride[axis], u_step = stride[(axis + 1u) % 3u];
     const uint v_step = stride[(axis + 2u) % 3u];
-    float4 column[3][7][7]; /* [g][q][p]: output g along the axis, lattice p, q across */
-    for (uint q = 0; q < 7u; ++q)
-        for (uint p = 0; p < 7u; ++p) {
-            float4 x[7];
-            for (uint a = 0; a < 7u; ++a) {
-                x[a] = texel_load(src, texel[a * step + p * u_step + q * v_step]);
-                if ((a & 1u) == 0u)
-                    x[a] = half_thickness(x[a]);
-            }
-            for (uint g = 0; g < 3u; ++g) {
-                float4 acc = (float4)(0.0f);
-                for (uint s = 0; s < 3u; ++s) {
-                    const uint along = backwards ? 2u - s : s;
-                    acc += (1.0f - acc.w) * x[2u * g + along];
-                }
-                column[g][q][p] = acc;
-            }
-        }
     const uint base = brick_base(pool, b);
     for (uint g = 0; g < 3u; ++g) {
-        float4 row[7][3]; /* [q][i]: averaged across p */
+        float4 column_up[7][7], column_down[7][7];
         for (uint q = 0; q < 7u; ++q)
-            for (uint i = 0; i < 3u; ++i)
-                row[q][i] = w[0] * column[g][q][2u * i] + w[1] * column[g][q][2u * i + 1u] +
-                            w[2] * column[g][q][2u * i + 2u];
-        for (uint m = 0; m < 3u; ++m)
-            for (uint i = 0; i < 3u; ++i) {
-                uint t[3];
-                t[axis] = g;
-                t[(axis + 1u) % 3u] = i;
-                t[(axis + 2u) % 3u] = m;
-                brick_store_at(dst, pool, base, (uint3)(t[0], t[1], t[2]),
-                               w[0] * row[2u * m][i] + w[1] * row[2u * m + 1u][i] +
-                                   w[2] * row[2u * m + 2u][i]);
+            for (uint p = 0; p < 7u; ++p) {
+                const uint at = 2u * g * step + p * u_step + q * v_step;
+                const uint t0 = texel[at], t1 = texel[at + step], t2 = texel[at + 2u * step];
+                const float4 a0 = half_thickness(texel_load(src_up, t0));
+                const float4 a1 = texel_load(src_up, t1);
+                const float4 a2 = half_thickness(texel_load(src_up, t2));
+                column_up[q][p] = composite3(a0, a1, a2);
+                if (one_source) {
+                    column_down[q][p] = composite3(a2, a1, a0);
+                } else {
+                    column_down[q][p] = composite3(half_thickness(texel_load(src_down, t2)),
+                                                   texel_load(src_down, t1),
+                                                   half_thickness(texel_load(src_down, t0)));
+                }
             }
+        store_layer(column_up, pool, base, axis, g, up);
+        store_layer(column_down, pool, base, axis, g, down);
     }
 }
 
@@ -279,17 +296,14 @@ __kernel void brick_filter_dir(__global const uint *child, __global const uint *
                                __global const half *s3, __global const half *s4,
                                __global const half *s5, __global half *d0, __global half *d1,
                                __global half *d2, __global half *d3, __global half *d4,
-                               __global half *d5) {
+                               __global half *d5, uint one_source) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
     const uint b = first_brick + i;
     uint texel[343];
     lattice_texels(child, around, b, pool, texel);
-    filter_direction(texel, pool, b, 0u, s0, d0);
-    filter_direction(texel, pool, b, 1u, s1, d1);
-    filter_direction(texel, pool, b, 2u, s2, d2);
-    filter_direction(texel, pool, b, 3u, s3, d3);
-    filter_direction(texel, pool, b, 4u, s4, d4);
-    filter_direction(texel, pool, b, 5u, s5, d5);
+    filter_axis(texel, pool, b, 0u, s0, s3, one_source, d0, d3);
+    filter_axis(texel, pool, b, 1u, s1, s4, one_source, d1, d4);
+    filter_axis(texel, pool, b, 2u, s2, s5, one_source, d2, d5);
 }

@@ -222,17 +222,18 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
         if (rc != VCT_OK || !b->anisotropic || !radiance_too)
             continue;
         /* children at level L-1 have one isotropic value for every direction */
-        const int from_leaf = level + 2 == (int)v->info.levels;
+        const cl_uint from_leaf = level + 2 == (int)v->info.levels, one_source = from_leaf;
         cl_mem *dir = pool + VCT_BRICK_RADIANCE_DIR0;
         cl_mem src[6];
         for (int d = 0; d < 6; ++d)
             src[d] = from_leaf ? pool[VCT_BRICK_RADIANCE] : dir[d];
-        rc = vct_run_kernel(
-            r->ctx, r->program, "brick_filter_dir", r->stage, count, err, 17, VCT_ARG_OF(v->child),
-            VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
-            VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
-            VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]), VCT_ARG_OF(dir[1]),
-            VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]));
+        rc = vct_run_kernel(r->ctx, r->program, "brick_filter_dir", r->stage, count, err, 18,
+                            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
+                            VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(src[0]),
+                            VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
+                            VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]),
+                            VCT_ARG_OF(dir[1]), VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]),
+                            VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]), VCT_ARG_OF(one_source));
     }
     return rc;
 }
