@@ -146,7 +146,7 @@ int main(void) {
     const char *rows[7] = {"voxelization [thesis]",
                            "octree with neighbour links [1st + 2nd SVO build + neighbours]",
                            "brick creation [brick creation]",
-                           "brick filtering (3 channels) [brick MIP mapping]",
+                           "brick filtering (albedo, normal) [brick MIP mapping]",
                            "light injection + radiance filtering [shadow map + photon storage "
                            "+ distribution + photon MIP mapping]",
                            "bricks + filtering + injection (goal at 256^3: < 500)",
