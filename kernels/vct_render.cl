@@ -181,6 +181,15 @@ inline int gbuffer_read(__global const float4 *gbuf, __global const vct_material
     return 1;
 }
 
+/* Adds a cone pass's radiance to the pixel, and to AOV `slot` when AOVs are
+ * kept (the buffer starts at 0). */
+inline void pixel_add(__global float4 *image, __global float4 *aov, uint pixel, uint slot,
+                      float3 add) {
+    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
+    if (aov)
+        aov[4u * pixel + slot] = (float4)(aov[4u * pixel + slot].xyz + add, 1.0f);
+}
+
 /* Lights with a radius: the cone from the surface towards the light's
  * centre, as wide as the light (tan = radius / distance, or the angular
  * radius) and reaching to it, sees opacity alpha; the light is shaded as a
@@ -216,10 +225,7 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
         direct_add(&sum, radiant, cos_theta, wi, r, e,
                    clamp(1.0f - c.alpha / cd.march.w, 0.0f, 1.0f));
     }
-    const float3 add = g.throughput * direct_shade(&g.m, sum, e);
-    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
-    if (aov)
-        aov[4u * pixel] = (float4)(aov[4u * pixel].xyz + add, 1.0f);
+    pixel_add(image, aov, pixel, 0u, g.throughput * direct_shade(&g.m, sum, e));
 }
 
 __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
@@ -259,12 +265,10 @@ __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone
 #elif defined(VCT_AO)
     add = diffuse_color(&g.m) * g.throughput * cd.ambient.xyz * open;
 #endif
-    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
-    if (aov) {
-        aov[4u * pixel + 1u] = (float4)(add, 1.0f);
+    pixel_add(image, aov, pixel, 1u, add);
+    if (aov)
         aov[4u * pixel + 3u] =
             (float4)(open, samples ? level_sum / (float)samples : 0.0f, 0.0f, 1.0f);
-    }
 }
 
 /* Half-angle of a Phong lobe cos^e: the cone that holds half its energy. */
@@ -294,10 +298,7 @@ __kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone
     float3 weight = glossy_color(&m) * g.throughput;
     if (!mirror)
         weight *= (e + 2.0f) / (e + 1.0f) * fmax(dot(n, r), 0.0f);
-    const float3 add = weight * c.radiance;
-    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
-    if (aov)
-        aov[4u * pixel + 2u] = (float4)(add, 1.0f);
+    pixel_add(image, aov, pixel, 2u, weight * c.radiance);
 }
 
 /* The Fresnel reflection vct_primary recorded, through a mirror cone.
@@ -319,10 +320,7 @@ __kernel void vct_glass_reflection(CONE_POOLS, __global const uint *child, vct_c
         return;
     const float3 origin = cone_origin(&cd, rpos.xyz, rnormal.xyz);
     const cone_result c = cone_trace(CONE_POOLS_PASS, child, &cd, origin, rdir.xyz, 0.0f, INFINITY);
-    const float3 add = weight * c.radiance;
-    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
-    if (aov)
-        aov[4u * pixel + 2u] = (float4)(aov[4u * pixel + 2u].xyz + add, 1.0f);
+    pixel_add(image, aov, pixel, 2u, weight * c.radiance);
 }
 
 /* Cones given one by one (for tests and tools): 2 float4 in, origin and

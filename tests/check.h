@@ -3,6 +3,7 @@
 #ifndef VCT_CHECK_H
 #define VCT_CHECK_H
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -73,6 +74,19 @@ static inline uint64_t check_rand(uint64_t *s) {
 
 static inline float check_randf(uint64_t *s) {
     return (float)(check_rand(s) >> 40) / (float)(1ull << 24);
+}
+
+/* Fresnel reflectance of an unpolarised ray, cos_i from the side of
+ * refractive index ratio eta = n_incident / n_transmitted (1 past the
+ * critical angle). */
+static inline double check_fresnel(double cos_i, double eta) {
+    const double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2_t >= 1.0)
+        return 1.0;
+    const double cos_t = sqrt(1.0 - sin2_t);
+    const double rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    const double rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5 * (rs * rs + rp * rp);
 }
 
 #endif

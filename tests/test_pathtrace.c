@@ -235,9 +235,7 @@ static void glass_slab(vct_context *ctx, float angle_deg) {
     s->camera = (vct_camera){{0, 0, 0}, {0, (float)-sin(a), (float)-cos(a)}, {0, 1, 0}, 0.5f};
     vct_pathtrace_result r;
     vct_image im = trace(ctx, s, 8, 8, 512, 64, 13, &r);
-    const double ci = cos(a), eta = 1.0 / 1.5, ct = sqrt(1.0 - eta * eta * (1.0 - ci * ci));
-    const double rs = (eta * ci - ct) / (eta * ci + ct), rp = (ci - eta * ct) / (ci + eta * ct);
-    const double F = 0.5 * (rs * rs + rp * rp), expect = (1.0 - F) / (1.0 + F);
+    const double F = check_fresnel(cos(a), 1.0 / 1.5), expect = (1.0 - F) / (1.0 + F);
     double mean, se;
     image_mean(&im, 0, &mean, &se);
     /* Each sample is 0 or 1: its spread gives the bound. */

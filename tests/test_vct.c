@@ -302,18 +302,6 @@ static void glossy_cornell_against_path_tracer(void) {
     vct_scene_free(box);
 }
 
-/* Fresnel reflectance of an unpolarised ray, cos_i from the side of
- * refractive index ratio eta = n_incident / n_transmitted. */
-static double fresnel(double cos_i, double eta) {
-    const double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
-    if (sin2_t >= 1.0)
-        return 1.0;
-    const double cos_t = sqrt(1.0 - sin2_t);
-    const double rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    const double rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    return 0.5 * (rs * rs + rp * rp);
-}
-
 /* A clear glass pane (IOR 1.5, tinted a) under a constant sky L, seen from
  * above. The renderer follows the transmitted ray through both faces and
  * reflects the first face's share F by a mirror cone, which sees the sky:
@@ -361,7 +349,7 @@ static void glass_pane(void) {
             if (fmax(fmax(fabs(a.x), fabs(a.z)), fmax(fabs(b.x), fabs(b.z))) > half)
                 continue; /* misses the pane, or leaves it through a side */
             ++pane;
-            const double F = fresnel(-d.y, 1.0 / 1.5), T = (1.0 - F) * (1.0 - F);
+            const double F = check_fresnel(-d.y, 1.0 / 1.5), T = (1.0 - F) * (1.0 - F);
             const int px = y * n + x;
             for (int k = 0; k < 3; ++k) {
                 const double L = s->ambient[k], a2 = glass.albedo[k] * glass.albedo[k];
