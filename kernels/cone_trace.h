@@ -112,11 +112,13 @@ inline float3 cone_origin(const vct_cone_desc *c, float3 p, float3 n) {
 }
 
 /* 1 - (1 - a)^ratio: opacity a of one thickness over `ratio` of it. pow is
- * slow on CPU devices, and the common ratios (1, 1/2, 1/4) need none. */
+ * slow on CPU devices, and the common ratios (2, 1, 1/2, 1/4) need none. */
 inline float opacity_over(float a, float ratio) {
     const float clear = 1.0f - a;
     if (ratio == 1.0f)
         return a;
+    if (ratio == 2.0f)
+        return a * (2.0f - a);
     if (ratio == 0.5f)
         return 1.0f - sqrt(clear);
     if (ratio == 0.25f)

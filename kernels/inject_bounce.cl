@@ -1,7 +1,9 @@
-/* A second diffuse bounce into the voxels: cones from each voxel along its
- * mean normal gather the filtered radiance of the bounce before, and the
- * voxel sends albedo times that on (Lambert: albedo / pi times the
- * irradiance, pi times the cosine-weighted mean radiance). The same cones,
+/* One more diffuse bounce into the voxels: cones from each voxel along its
+ * mean normal gather the filtered radiance of the bounces so far, and the
+ * voxel's radiance becomes its direct radiance plus albedo times that
+ * (Lambert: albedo / pi times the irradiance, pi times the cosine-weighted
+ * mean radiance). Starting again from the direct part each time counts
+ * every path once: k calls give the light of paths up to k + 1 bounces. The same cones,
  * weights and march as the renderer's indirect diffuse light. A voxel whose
  * fragments face every way (no mean normal) gathers around +z. */
 #include "bsdf.h"
@@ -12,7 +14,8 @@
 __kernel void inject_bounce(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                             __global const vct_cone_dir *cones, uint cone_count,
                             __global const uint *keys, uint voxels, __global const float4 *albedo,
-                            __global const float4 *normal, __global float4 *voxel_radiance) {
+                            __global const float4 *normal, __global const float4 *direct,
+                            __global float4 *voxel_radiance) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
@@ -32,5 +35,7 @@ __kernel void inject_bounce(CONE_POOLS, __global const uint *child, vct_cone_des
             c.dir.w *
             cone_trace(CONE_POOLS_PASS, child, &cd, origin, d, c.aperture.x, INFINITY).radiance;
     }
-    voxel_radiance[v].xyz += albedo[v].xyz * gathered;
+    float4 out = direct[v];
+    out.xyz += albedo[v].xyz * gathered;
+    voxel_radiance[v] = out;
 }

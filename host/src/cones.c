@@ -9,7 +9,7 @@
 #include "voxels.h"
 
 vct_cone_settings vct_cone_settings_default(void) {
-    const vct_cone_settings s = {0.5f, 4.0f, 0.125f, 0.99f};
+    const vct_cone_settings s = {1.0f, 4.0f, 0.125f, 0.99f};
     return s;
 }
 

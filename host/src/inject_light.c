@@ -40,6 +40,7 @@ int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid
         clReleaseKernel(k);
     vct_scene_buffers_release(ctx, &sb);
     vct_stage_end(ctx);
+    v->bounces = 0; /* the radiance is direct light again */
     if (rc == VCT_OK)
         rc = vct_bricks_refresh_radiance(ctx, v, err);
     return rc;

@@ -61,8 +61,20 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v
     if (rc || n == 0)
         return rc;
     vct_stage_begin(ctx, BOUNCE_STAGE);
+    if (v->bounces == 0) { /* keep the direct light that every bounce adds to */
+        if (!v->direct_radiance)
+            v->direct_radiance = vct_buffer_create(ctx, BOUNCE_STAGE, "direct voxel radiance",
+                                                   16ull * n, CL_MEM_READ_WRITE, NULL, err);
+        rc = v->direct_radiance ? VCT_OK : (int)err->status;
+        if (rc == VCT_OK)
+            rc = vct_cl_check(err,
+                              clEnqueueCopyBuffer(ctx->queue, v->radiance, v->direct_radiance, 0, 0,
+                                                  16ull * n, 0, NULL, NULL),
+                              BOUNCE_STAGE, "clEnqueueCopyBuffer");
+    }
     cl_program p;
-    rc = vct_program_get(ctx, "inject_bounce.cl", vct_cone_pool_options(v), &p, err);
+    if (rc == VCT_OK)
+        rc = vct_program_get(ctx, "inject_bounce.cl", vct_cone_pool_options(v), &p, err);
     cl_mem cones = rc == VCT_OK ? cone_buffer(ctx, diffuse_cones, BOUNCE_STAGE, err) : NULL;
     cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
     vct_cone_desc desc;
@@ -70,13 +82,16 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v
     int next = 0;
     rc = k ? vct_cone_set_args(k, v, &desc, BOUNCE_STAGE, &next, err) : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, BOUNCE_STAGE, k, next, 7, VCT_ARG_OF(cones),
+        rc = vct_set_args(err, BOUNCE_STAGE, k, next, 8, VCT_ARG_OF(cones),
                           VCT_ARG_OF(diffuse_cones), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
-                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->radiance));
+                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
+                          VCT_ARG_OF(v->direct_radiance), VCT_ARG_OF(v->radiance));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k, n, 64, err);
     if (rc == VCT_OK)
         rc = vct_finish(ctx, BOUNCE_STAGE, err);
+    if (rc == VCT_OK)
+        ++v->bounces;
     if (k)
         clReleaseKernel(k);
     vct_buffer_release(ctx, cones);

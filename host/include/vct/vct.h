@@ -399,7 +399,7 @@ typedef struct vct_cone_settings {
     float stop_alpha;  /* a cone stops once its opacity reaches this */
 } vct_cone_settings;
 
-/* step 0.5, offset 4 voxels, AO over 1/8 of the volume, stop at 0.99. */
+/* step 1, offset 4 voxels, AO over 1/8 of the volume, stop at 0.99. */
 vct_cone_settings vct_cone_settings_default(void);
 
 /* Diffuse cone preset of `count` cones (1, 5, 6, 9 or 16): directions in a
@@ -479,9 +479,11 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_grid *gr
                     const vct_brick_options *brick_options, uint32_t bounces,
                     const vct_cone_settings *cones, vct_voxels **voxels, vct_error *err);
 
-/* Adds one diffuse bounce to the voxels' injected light: cones from every
- * voxel gather the filtered radiance, albedo times it is added, and the
- * radiance bricks are filtered again. */
+/* Adds one diffuse bounce to the voxels' light: cones from every voxel
+ * gather the filtered radiance, the voxel's radiance becomes its injected
+ * direct radiance plus albedo times that, and the radiance bricks are
+ * filtered again. After k calls the voxels hold paths of up to k + 1
+ * bounces, each counted once; vct_voxels_inject_light starts over. */
 int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene, vct_voxels *voxels,
                              const vct_cone_settings *cones, uint32_t diffuse_cones,
                              vct_error *err);
