@@ -11,9 +11,9 @@ struct vct_voxels {
     /* Per voxel, sorted by Morton key. */
     cl_mem keys, albedo, normal, emission;
     cl_mem radiance; /* outgoing radiance, after vct_voxels_inject_light */
-    /* The direct part of radiance, kept by the first bounce so that each
-     * further one adds to it, not to the bounces before (a copy only while
-     * bounces > 0, which light injection resets). */
+    /* The direct part of radiance, copied by the first bounce so that each
+     * bounce adds to it, not to the bounces before. Valid while bounces > 0;
+     * light injection sets bounces back to 0. */
     cl_mem direct_radiance;
     uint32_t bounces;
     /* Octree: built by vct_octree_build (child is NULL before). */
