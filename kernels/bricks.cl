@@ -63,18 +63,22 @@ __kernel void brick_around(__global const uint *child, __global const uint *tile
 
 /* The 4^3 child cells from -1 to 2 around brick b's node, through its 27
  * neighbours: cell index c per axis lies in neighbour (c + 1) / 2 - 1 at
- * octant bit (c + 1) & 1. Each entry is the child node or OCT_NULL. */
+ * octant bit (c + 1) & 1. Each entry is the child node or OCT_NULL. Each
+ * neighbour's child tile is looked up once. */
 inline void gather_children(__global const uint *child, __global const uint *around, uint b,
                             uint *cells) {
+    uint first[AROUND];
+    for (uint k = 0; k < AROUND; ++k) {
+        const uint n = around[AROUND * b + k];
+        first[k] = n == OCT_NULL ? OCT_NULL : child[n];
+    }
     for (uint z = 0; z < 4u; ++z)
         for (uint y = 0; y < 4u; ++y)
             for (uint x = 0; x < 4u; ++x) {
-                const uint n = around[AROUND * b + ((z + 1u) / 2u) * 9u + ((y + 1u) / 2u) * 3u +
-                                      (x + 1u) / 2u];
-                const uint first = n == OCT_NULL ? OCT_NULL : child[n];
+                const uint f = first[((z + 1u) / 2u) * 9u + ((y + 1u) / 2u) * 3u + (x + 1u) / 2u];
                 const uint octant =
                     ((x + 1u) & 1u) | (((y + 1u) & 1u) << 1) | (((z + 1u) & 1u) << 2);
-                cells[z * 16u + y * 4u + x] = first == OCT_NULL ? OCT_NULL : first + octant;
+                cells[z * 16u + y * 4u + x] = f == OCT_NULL ? OCT_NULL : f + octant;
             }
 }
 
@@ -132,40 +136,35 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
     }
 }
 
-/* Where child lattice point e (0..6 per axis; point 2i + 1 is the parent's
- * texel i) is stored: an even e is the middle of child cell e / 2, an odd e
- * the shared face of cells (e - 1) / 2 and (e + 1) / 2, held bit-identically
- * by either. The pool texel index, or BRICK_NULL where no child brick holds
- * it (empty space). */
-inline uint lattice_texel(const uint *cell_base, uint2 pool, uint3 e) {
-    const uint3 odd = e & 1u;
-    const uint3 lo = (e - odd) / 2u; /* first candidate cell per axis */
-    for (uint cz = 0; cz <= odd.z; ++cz)
-        for (uint cy = 0; cy <= odd.y; ++cy)
-            for (uint cx = 0; cx <= odd.x; ++cx) {
-                const uint3 c = lo + (uint3)(cx, cy, cz);
-                const uint base = cell_base[c.z * 16u + c.y * 4u + c.x];
-                if (base == BRICK_NULL)
-                    continue;
-                /* texel 1 in the middle; 2 or 0 on the low or high cell's face */
-                return base + brick_offset(pool, 1u + odd - 2u * odd * (uint3)(cx, cy, cz));
-            }
-    return BRICK_NULL;
-}
-
-/* The pool texel of each of the 7^3 child lattice points around brick b. */
+/* The pool texel of each of the 7^3 child lattice points around brick b
+ * (0..6 per axis; point 2i + 1 is the parent's texel i), or BRICK_NULL where
+ * no child brick holds it (empty space). Child cell c (0..3 per axis, cells
+ * -1..2 around the node) holds points 2c - 1 .. 2c + 1; a point on a face
+ * between two cells is held bit-identically by either, so each present cell
+ * simply writes the points it holds. */
 inline void lattice_texels(__global const uint *child, __global const uint *around, uint b,
                            uint2 pool, uint *texel) {
-    uint cell_base[64]; /* pool index of each child cell's brick */
-    gather_children(child, around, b, cell_base);
+    uint cell[64];
+    gather_children(child, around, b, cell);
+    for (uint e = 0; e < 343u; ++e)
+        texel[e] = BRICK_NULL;
     for (uint c = 0; c < 64u; ++c) {
-        const uint cb = cell_base[c] == OCT_NULL ? BRICK_NULL : brick_of(child, cell_base[c]);
-        cell_base[c] = cb == BRICK_NULL ? BRICK_NULL : brick_base(pool, cb);
+        const uint cb = cell[c] == OCT_NULL ? BRICK_NULL : brick_of(child, cell[c]);
+        if (cb == BRICK_NULL)
+            continue;
+        const uint base = brick_base(pool, cb);
+        const uint3 at = (uint3)(c & 3u, (c >> 2) & 3u, c >> 4);
+        /* texels 0..2 of the cell sit at points 2c - 1 + t, kept inside 0..6 */
+        const uint3 lo = select((uint3)(0u), (uint3)(1u), at == 0u);
+        const uint3 hi = select((uint3)(2u), (uint3)(1u), at == 3u);
+        for (uint tz = lo.z; tz <= hi.z; ++tz)
+            for (uint ty = lo.y; ty <= hi.y; ++ty)
+                for (uint tx = lo.x; tx <= hi.x; ++tx) {
+                    const uint3 e = 2u * at + (uint3)(tx, ty, tz) - 1u;
+                    texel[(e.z * 7u + e.y) * 7u + e.x] =
+                        base + brick_offset(pool, (uint3)(tx, ty, tz));
+                }
     }
-    for (uint z = 0; z < 7u; ++z)
-        for (uint y = 0; y < 7u; ++y)
-            for (uint x = 0; x < 7u; ++x)
-                texel[(z * 7u + y) * 7u + x] = lattice_texel(cell_base, pool, (uint3)(x, y, z));
 }
 
 inline float4 texel_load(__global const half *src, uint texel) {
