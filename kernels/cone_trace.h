@@ -72,36 +72,58 @@ inline float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint 
     return brick_sample(radiance, pool, b, at);
 }
 
+/* The octree nodes, from the root down to level `depth`, that hold the
+ * previous sample's cell (`cell`, in cells of the finest brick level). A
+ * cone's samples lie close together, so the next descent starts at the
+ * deepest node the two cells share instead of at the root. */
+typedef struct cone_path {
+    uint node[VCT_VOXEL_MAX_LEVELS];
+    uint3 cell;
+    uint depth;
+} cone_path;
+
+inline cone_path cone_path_root(void) {
+    cone_path p;
+    p.node[0] = 0u;
+    p.cell = (uint3)(0u);
+    p.depth = 0u;
+    return p;
+}
+
 /* The pool at `at` (volume units, [0, 1)^3) and fractional level `level`:
- * one descent from the root reads both neighbouring levels. Empty nodes
- * read 0. */
+ * one descent reads both neighbouring levels. Empty nodes read 0. */
 inline float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels,
-                          float3 at, float level, float3 d) {
-    const uint coarse = (uint)level, fine = min(coarse + 1u, levels - 1u);
+                          float3 at, float level, float3 d, cone_path *path) {
+    const uint coarse = (uint)level, finest = levels - 1u, fine = min(coarse + 1u, finest);
     const float f = level - (float)coarse;
     float4 value[2] = {(float4)(0.0f), (float4)(0.0f)};
     /* Scaling by a power of two is exact: a coarser level's cell is the
      * finest one's shifted right. */
-    const uint3 fine_cell =
-        min(convert_uint3(at * (float)(1u << fine)), (uint3)((1u << fine) - 1u));
-    uint node = 0;
-    for (uint l = 0; l <= fine; ++l) {
-        if (l > 0u) {
-            const uint first = child[node];
+    const uint3 cell = min(convert_uint3(at * (float)(1u << finest)), (uint3)((1u << finest) - 1u));
+    /* the levels whose cells agree lie above the highest differing bit */
+    const uint3 diff = cell ^ path->cell;
+    const uint differ = diff.x | diff.y | diff.z;
+    const uint shared = differ == 0u ? finest : finest - 1u - (31u - clz(differ));
+    uint depth = min(shared, path->depth);
+    for (uint l = min(depth, coarse); l <= fine; ++l) {
+        if (l > depth) {
+            const uint first = child[path->node[l - 1u]];
             if (first == OCT_NULL)
                 break; /* empty here and below */
-            node = first + octant_of_cell(fine_cell, fine - l);
+            path->node[l] = first + octant_of_cell(cell, finest - l);
+            depth = l;
         }
         if (l >= coarse) {
-            const uint b = brick_of(child, node);
+            const uint b = brick_of(child, path->node[l]);
             if (b == BRICK_NULL)
                 break;
-            const uint3 cell = fine_cell >> (fine - l);
-            const float3 in_cell = at * (float)(1u << l) - convert_float3(cell);
+            const float3 in_cell = at * (float)(1u << l) - convert_float3(cell >> (finest - l));
             value[l - coarse] =
                 cone_brick_sample(CONE_POOLS_PASS, pool, b, 2.0f * in_cell, l, levels, d);
         }
     }
+    path->cell = cell;
+    path->depth = depth;
     return fine == coarse ? value[0] : value[0] + f * (value[1] - value[0]);
 }
 
@@ -135,6 +157,7 @@ inline cone_result cone_trace(CONE_POOLS, __global const uint *child, const vct_
     const float voxel = c->volume.w / (float)c->res.x, min_diameter = 2.0f * voxel;
     const float finest = (float)(levels - 1u);
     float t = voxel;
+    cone_path path = cone_path_root();
     for (uint i = 0; i < CONE_MAX_STEPS && t <= max_t; ++i) {
         const float3 at = (origin + t * d - c->volume.xyz) * c->ambient.w;
         if (any(at < 0.0f) || any(at >= 1.0f)) {
@@ -143,7 +166,8 @@ inline cone_result cone_trace(CONE_POOLS, __global const uint *child, const vct_
         }
         const float diameter = fmax(2.0f * t * tan_half, min_diameter);
         const float level = clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest);
-        const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d);
+        const float4 s =
+            cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, &path);
         const float step = c->march.x * diameter;
         /* The level follows the diameter, so the samples are D / 2 apart and
          * step / spacing is 2 * step fraction, except where the level is held
