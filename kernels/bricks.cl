@@ -167,8 +167,12 @@ inline void lattice_texels(__global const uint *child, __global const uint *arou
     }
 }
 
+/* Empty space reads 0. Without a branch: which lattice points are empty
+ * follows no pattern a CPU could predict, and texel 0 always exists. */
 inline float4 texel_load(__global const half *src, uint texel) {
-    return texel == BRICK_NULL ? (float4)(0.0f) : vload_half4(texel, src);
+    const int present = texel != BRICK_NULL;
+    const float4 v = vload_half4(present ? texel : 0u, src);
+    return present ? v : (float4)(0.0f);
 }
 
 /* One channel of brick b from the child lattice: separable, z into a 7x7
