@@ -80,12 +80,16 @@ __attribute__((always_inline)) inline int grid_trace(const grid_view *g, float3 
         lo + size * convert_float3(cell + (int3)(step.x > 0, step.y > 0, step.z > 0));
     float3 tnext = select((next_bound - org) * inv, (float3)(INFINITY), parallel);
     const float3 tdelta = select(fabs(size * inv), (float3)(INFINITY), parallel);
+    /* The cell index and the cells left before the ray leaves the grid
+     * advance with each step: no multiply, and one axis to test. */
+    uint index = grid_cell_index(convert_uint3(cell), res);
+    const int3 index_step = step * (int3)(1, (int)res.x, (int)(res.x * res.y));
+    int3 left = select(cell, last - cell, step > 0);
 
     float best = tmax;
     int found = 0;
     for (;;) {
         const float cell_exit = fmin(fmin(tnext.x, tnext.y), tnext.z);
-        const uint index = grid_cell_index(convert_uint3(cell), res);
         /* The bitmask is small enough to stay in cache: empty cells cost no
          * trip to the range array. */
         if (g->cell_bits[index >> 5] & (1u << (index & 31u))) {
@@ -114,17 +118,21 @@ __attribute__((always_inline)) inline int grid_trace(const grid_view *g, float3 
             return found;
         /* Step along the axis whose boundary comes first. */
         if (tnext.x <= tnext.y && tnext.x <= tnext.z) {
-            cell.x += step.x;
+            if (--left.x < 0)
+                return found;
+            index += index_step.x;
             tnext.x += tdelta.x;
         } else if (tnext.y <= tnext.z) {
-            cell.y += step.y;
+            if (--left.y < 0)
+                return found;
+            index += index_step.y;
             tnext.y += tdelta.y;
         } else {
-            cell.z += step.z;
+            if (--left.z < 0)
+                return found;
+            index += index_step.z;
             tnext.z += tdelta.z;
         }
-        if (any(cell < (int3)(0)) || any(cell > last))
-            return found;
     }
 }
 

@@ -15,14 +15,22 @@
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #endif
 
+/* The shear as a matrix: row x = e_kx - sx e_kz, row y = e_ky - sy e_kz,
+ * row z = e_kz, stored by columns. Multiplying by it gives exactly the
+ * permuted, sheared components (every other term is an exact zero) without
+ * a run-time shuffle, which CPU devices do through memory. */
 typedef struct ray_shear {
-    float4 org;
-    uint4 perm; /* (kx, ky, kz, 3): vertex components in sheared order */
-    float sx, sy, sz;
+    float3 org;
+    float3 col[3];
+    float sz;
 } ray_shear;
 
 inline float axis_of(float3 v, int k) {
     return k == 0 ? v.x : (k == 1 ? v.y : v.z);
+}
+
+inline float3 unit_axis(int k) {
+    return (float3)(k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f);
 }
 
 inline ray_shear ray_shear_make(float3 org, float3 dir) {
@@ -37,26 +45,32 @@ inline ray_shear ray_shear_make(float3 org, float3 dir) {
         ky = t;
     }
     const float dz = axis_of(dir, kz);
-    r.sx = axis_of(dir, kx) / dz;
-    r.sy = axis_of(dir, ky) / dz;
+    const float sx = axis_of(dir, kx) / dz, sy = axis_of(dir, ky) / dz;
+    const float3 row_x = unit_axis(kx) - sx * unit_axis(kz);
+    const float3 row_y = unit_axis(ky) - sy * unit_axis(kz);
+    const float3 row_z = unit_axis(kz);
+    r.col[0] = (float3)(row_x.x, row_y.x, row_z.x);
+    r.col[1] = (float3)(row_x.y, row_y.y, row_z.y);
+    r.col[2] = (float3)(row_x.z, row_y.z, row_z.z);
     r.sz = 1.0f / dz;
-    r.perm = (uint4)((uint)kx, (uint)ky, (uint)kz, 3u);
-    r.org = (float4)(org, 0.0f);
+    r.org = org;
     return r;
+}
+
+/* Vertex v relative to the origin in the sheared frame: (x, y) across the
+ * ray, z along it (unscaled). */
+inline float3 ray_sheared(const ray_shear *r, float3 v) {
+    const float3 p = v - r->org;
+    return (p.x * r->col[0] + p.y * r->col[1]) + p.z * r->col[2];
 }
 
 /* On a hit in (tmin, tmax]: returns 1 with t and barycentrics of v1 (u), v2 (v). */
 __attribute__((always_inline)) inline int ray_triangle(const ray_shear *r, float3 v0, float3 v1,
                                                        float3 v2, float tmin, float tmax,
                                                        float *t_out, float *u_out, float *v_out) {
-    /* Vertices relative to the origin, components permuted to (kx, ky, kz). */
-    const float4 A = shuffle((float4)(v0, 0.0f) - r->org, r->perm);
-    const float4 B = shuffle((float4)(v1, 0.0f) - r->org, r->perm);
-    const float4 C = shuffle((float4)(v2, 0.0f) - r->org, r->perm);
+    const float3 A = ray_sheared(r, v0), B = ray_sheared(r, v1), C = ray_sheared(r, v2);
     const float Az = A.z, Bz = B.z, Cz = C.z;
-    const float Ax = A.x - r->sx * Az, Ay = A.y - r->sy * Az;
-    const float Bx = B.x - r->sx * Bz, By = B.y - r->sy * Bz;
-    const float Cx = C.x - r->sx * Cz, Cy = C.y - r->sy * Cz;
+    const float Ax = A.x, Ay = A.y, Bx = B.x, By = B.y, Cx = C.x, Cy = C.y;
     float U = Cx * By - Cy * Bx;
     float V = Ax * Cy - Ay * Cx;
     float W = Bx * Ay - By * Ax;
