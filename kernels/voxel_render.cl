@@ -26,7 +26,8 @@ __kernel void voxel_render(vct_camera_desc cam, vct_volume_desc vol, __global co
     const float3 t_near = fmin(t_a, t_b), t_far = fmax(t_a, t_b);
     float t = fmax(0.0f, fmax(t_near.x, fmax(t_near.y, t_near.z)));
     /* The axis of the face the ray last entered a cell through. */
-    uint axis = t_near.x >= t_near.y && t_near.x >= t_near.z ? 0u : (t_near.y >= t_near.z ? 1u : 2u);
+    uint axis =
+        t_near.x >= t_near.y && t_near.x >= t_near.z ? 0u : (t_near.y >= t_near.z ? 1u : 2u);
     const float t_exit = fmin(t_far.x, fmin(t_far.y, t_far.z));
     float4 colour = (float4)(0.0f, 0.0f, 0.0f, 1.0f);
     const float nudge = 1e-3f;
@@ -55,8 +56,9 @@ __kernel void voxel_render(vct_camera_desc cam, vct_volume_desc vol, __global co
         const float3 bound = base + select((float3)(0.0f), (float3)(size), dir > 0.0f);
         const float3 t_cell = (bound - origin) * inv;
         const float3 t_valid = select(t_cell, (float3)(INFINITY), dir == 0.0f);
-        axis = t_valid.x <= t_valid.y && t_valid.x <= t_valid.z ? 0u
-                                                                : (t_valid.y <= t_valid.z ? 1u : 2u);
+        axis = t_valid.x <= t_valid.y && t_valid.x <= t_valid.z
+                   ? 0u
+                   : (t_valid.y <= t_valid.z ? 1u : 2u);
         t = fmax(t + nudge, fmin(t_valid.x, fmin(t_valid.y, t_valid.z)));
     }
     image[y * cam.size.x + x] = colour;
