@@ -17,8 +17,9 @@
 
 /* The shear as a matrix: row x = e_kx - sx e_kz, row y = e_ky - sy e_kz,
  * row z = e_kz, stored by columns. Multiplying by it gives exactly the
- * permuted, sheared components (every other term is an exact zero) without
- * a run-time shuffle, which CPU devices do through memory. */
+ * permuted, sheared components (every other term is an exact zero, as the
+ * scene loader accepts finite vertices only) without a run-time shuffle,
+ * which CPU devices do through memory. */
 typedef struct ray_shear {
     float3 org;
     float3 col[3];
