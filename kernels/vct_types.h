@@ -41,6 +41,13 @@ typedef struct vct_light_desc {
                          directional light; 0 for a point */
 } vct_light_desc;
 
+/* A light's triangle bins (kernels/light_bins.h): a cube map of F x F
+ * direction cells per face around a point or spot light. */
+typedef struct vct_light_bins_desc {
+    vct_f4 light; /* xyz: the light's position; w: distance quanta per unit */
+    vct_u4 info;  /* x: its first cell, y: F, z: distance bits, w: 1 if it has bins */
+} vct_light_bins_desc;
+
 typedef struct vct_material_desc {
     vct_f4 albedo;   /* rgb; w = metallic */
     vct_f4 emission; /* rgb; w = roughness */

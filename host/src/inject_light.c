@@ -1,5 +1,6 @@
 /* Direct light into the voxels (kernels/inject_light.cl). */
 #include "internal.h"
+#include "light_bins.h"
 #include "scene_device.h"
 #include "vct_types.h"
 #include "voxels.h"
@@ -8,6 +9,11 @@
 
 int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid *g, vct_voxels *v,
                             vct_error *err) {
+    return vct_voxels_inject_light_with(ctx, s, g, v, 1, 0, err);
+}
+
+int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                                 vct_voxels *v, int light_bins, uint32_t face_res, vct_error *err) {
     const uint32_t n = v->info.voxels;
     vct_stage_begin(ctx, STAGE);
     cl_program p;
@@ -20,6 +26,9 @@ int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid
     vct_scene_buffers sb = {0};
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
+    vct_light_bins bins = {0};
+    if (rc == VCT_OK && n)
+        rc = vct_light_bins_build(ctx, s, g, light_bins, face_res, STAGE, &bins, err);
     vct_volume_desc vol;
     vct_voxels_volume_desc(v, &vol);
     cl_kernel k = rc == VCT_OK && n ? vct_kernel_create(ctx, p, "inject_direct", err) : NULL;
@@ -28,7 +37,9 @@ int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid
     if (k)
         rc = vct_grid_set_args(k, g, STAGE, err);
     if (k && rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 5, 9, VCT_ARG_OF(vol), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
+        rc = vct_light_bins_set_args(k, 5, &bins, STAGE, err);
+    if (k && rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 9, 9, VCT_ARG_OF(vol), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
                           VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission),
                           VCT_ARG_OF(sb.lights), VCT_ARG_OF(sb.light_count),
                           VCT_ARG_OF(v->radiance));
@@ -38,6 +49,7 @@ int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid
         rc = vct_finish(ctx, STAGE, err);
     if (k)
         clReleaseKernel(k);
+    vct_light_bins_release(ctx, &bins);
     vct_scene_buffers_release(ctx, &sb);
     vct_stage_end(ctx);
     v->bounces = 0; /* the radiance is direct light again */

@@ -1,0 +1,29 @@
+/* Light-space triangle bins for the hard point and spot lights of a scene
+ * (kernels/light_bins.h): built for one set of light positions, read by the
+ * shadow rays of light injection. */
+#ifndef VCT_LIGHT_BINS_HOST_H
+#define VCT_LIGHT_BINS_HOST_H
+
+#include "internal.h"
+
+typedef struct vct_light_bins {
+    cl_mem desc;   /* vct_light_bins_desc per light */
+    cl_mem ranges; /* (start, end) per cell */
+    cl_mem keys, tris;
+    uint32_t lights;   /* lights with bins */
+    uint32_t face_res; /* cells per face side */
+    uint32_t entries;  /* (cell, triangle) pairs */
+} vct_light_bins;
+
+/* Bins for every point and spot light of s without a radius; face_res 0
+ * chooses the resolution from the triangle count. Lights without bins
+ * (and every light when `enabled` is 0) keep to the grid. */
+int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g, int enabled,
+                         uint32_t face_res, const char *stage, vct_light_bins *bins,
+                         vct_error *err);
+/* Sets the four LIGHT_BINS_ARGS from argument `first`. */
+int vct_light_bins_set_args(cl_kernel k, int first, const vct_light_bins *bins, const char *stage,
+                            vct_error *err);
+void vct_light_bins_release(vct_context *ctx, vct_light_bins *bins);
+
+#endif
