@@ -50,10 +50,23 @@ inline int light_bins_face_box(float3 a, float3 b, float3 c, uint face, uint fac
     p[1] = light_bins_local(b, face);
     p[2] = light_bins_local(c, face);
     const float w = 1.0f + LIGHT_BINS_PAD;
-    uint n = clip_polygon(p, 3u, q, (float3)(w, 1.0f, 0.0f));
-    n = clip_polygon(q, n, p, (float3)(w, -1.0f, 0.0f));
-    n = clip_polygon(p, n, q, (float3)(w, 0.0f, 1.0f));
-    n = clip_polygon(q, n, p, (float3)(w, 0.0f, -1.0f));
+    const float3 planes[4] = {(float3)(w, 1.0f, 0.0f), (float3)(w, -1.0f, 0.0f),
+                              (float3)(w, 0.0f, 1.0f), (float3)(w, 0.0f, -1.0f)};
+    /* Most triangles lie wholly outside one plane or inside all four. */
+    int inside = 1;
+    for (uint k = 0; k < 4u; ++k) {
+        const float d0 = dot(planes[k], p[0]), d1 = dot(planes[k], p[1]), d2 = dot(planes[k], p[2]);
+        if (d0 < 0.0f && d1 < 0.0f && d2 < 0.0f)
+            return 0;
+        inside &= d0 >= 0.0f && d1 >= 0.0f && d2 >= 0.0f;
+    }
+    uint n = 3u;
+    if (!inside) {
+        n = clip_polygon(p, n, q, planes[0]);
+        n = clip_polygon(q, n, p, planes[1]);
+        n = clip_polygon(p, n, q, planes[2]);
+        n = clip_polygon(q, n, p, planes[3]);
+    }
     if (n == 0u)
         return 0;
     const float size = fmax(length(a), fmax(length(b), length(c)));

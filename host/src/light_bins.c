@@ -6,9 +6,11 @@
 #include "light_bins.h"
 #include "vct_types.h"
 
-/* At most this many cells in all, so that at least 8 bits of each 32-bit
- * sort key are left for the distance. */
-#define MAX_CELL_BITS 24
+/* Each sort key is a cell above at least MIN_DISTANCE_BITS of distance,
+ * rounded up to whole radix digits (one sort pass each): 128 distance steps
+ * already stop a ray within a few voxels of its start. */
+#define MIN_DISTANCE_BITS 7
+#define MAX_CELL_BITS (32 - MIN_DISTANCE_BITS)
 #define MIN_FACE_RES 4u
 #define MAX_FACE_RES 512u
 
@@ -48,8 +50,8 @@ static double farthest_corner(const vct_scene *s, const float l[3]) {
 }
 
 static int make_desc(vct_context *ctx, const vct_scene *s, int enabled, uint32_t face_res,
-                     const char *stage, vct_light_bins *b, int *bits, uint64_t *cells,
-                     vct_error *err) {
+                     const char *stage, vct_light_bins *b, int *key_bits, int *bits,
+                     uint64_t *cells, vct_error *err) {
     const uint32_t n = s->light_count;
     for (uint32_t i = 0; enabled && s->triangle_count && i < n; ++i)
         b->lights += (uint32_t)binned(&s->lights[i]);
@@ -61,7 +63,10 @@ static int make_desc(vct_context *ctx, const vct_scene *s, int enabled, uint32_t
                         "%s: %u lights of %u x %u cells per face exceed 2^%d light-bin cells: "
                         "choose a smaller face resolution",
                         stage, b->lights, b->face_res, b->face_res, MAX_CELL_BITS);
-    *bits = 32 - bits_for(*cells ? *cells : 1);
+    const int cell_bits = bits_for(*cells ? *cells : 1), digit = ctx->radix_bits;
+    *key_bits = (cell_bits + MIN_DISTANCE_BITS + digit - 1) / digit * digit;
+    *key_bits = *key_bits > 32 ? 32 : *key_bits;
+    *bits = *key_bits - cell_bits;
     vct_light_bins_desc *d = calloc(n + 1, sizeof *d);
     if (!d)
         return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
@@ -126,9 +131,9 @@ static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_grid *g, 
 int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g, int enabled,
                          uint32_t face_res, const char *stage, vct_light_bins *b, vct_error *err) {
     memset(b, 0, sizeof *b);
-    int bits = 0;
+    int key_bits = 0, bits = 0;
     uint64_t cells = 0;
-    int rc = make_desc(ctx, s, enabled, face_res, stage, b, &bits, &cells, err);
+    int rc = make_desc(ctx, s, enabled, face_res, stage, b, &key_bits, &bits, &cells, err);
     cl_program p = NULL;
     if (rc == VCT_OK && b->lights)
         rc = vct_program_get(ctx, "light_bins.cl", "", &p, err);
@@ -136,29 +141,26 @@ int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g
     if (rc == VCT_OK && b->lights)
         rc = write_pairs(ctx, s, g, p, stage, b, &keys, err);
     if (rc == VCT_OK && b->entries)
-        rc = vct_sort_pairs_u32(ctx, keys, b->tris, b->entries, 32, err);
+        rc = vct_sort_pairs_u32(ctx, keys, b->tris, b->entries, key_bits, err);
     if (rc == VCT_OK) {
         b->ranges = vct_buffer_create(ctx, stage, "light bin ranges", 8ull * (cells ? cells : 1),
                                       CL_MEM_READ_WRITE, NULL, err);
         rc = b->ranges ? vct_buffer_fill_u32(ctx, stage, b->ranges, 0, 2 * (cells ? cells : 1), err)
                        : (int)err->status;
     }
-    const cl_uint key_bits = (cl_uint)bits;
+    const cl_uint distance_bits = (cl_uint)bits;
     if (rc == VCT_OK && b->entries)
-        rc =
-            vct_run_kernel(ctx, p, "light_bins_ranges", stage, b->entries, err, 4, VCT_ARG_OF(keys),
-                           VCT_ARG_OF(b->entries), VCT_ARG_OF(key_bits), VCT_ARG_OF(b->ranges));
-    if (rc == VCT_OK && !b->tris) { /* nothing binned: the kernels still take buffers */
+        rc = vct_run_kernel(ctx, p, "light_bins_ranges", stage, b->entries, err, 4,
+                            VCT_ARG_OF(keys), VCT_ARG_OF(b->entries), VCT_ARG_OF(distance_bits),
+                            VCT_ARG_OF(b->ranges));
+    b->keys = keys;
+    if (rc == VCT_OK && !b->keys) { /* no light binned: the kernels still take buffers */
         b->keys = vct_buffer_create(ctx, stage, "light bin keys", 4, CL_MEM_READ_WRITE, NULL, err);
         b->tris = b->keys ? vct_buffer_create(ctx, stage, "light bin triangles", 4,
                                               CL_MEM_READ_WRITE, NULL, err)
                           : NULL;
         rc = b->tris ? VCT_OK : (int)err->status;
-    } else {
-        b->keys = keys;
-        keys = NULL;
     }
-    vct_buffer_release(ctx, keys);
     if (rc != VCT_OK)
         vct_light_bins_release(ctx, b);
     return rc;
