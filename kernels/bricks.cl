@@ -11,7 +11,7 @@
  *   brick_leaf       level L-1: a sample is the mean of the up to 8 voxels
  *                    around its corner (those with geometry; none gives 0),
  *                    for channels channel_from .. channel_to - 1 (0 albedo,
- *                    1 normal, 2 radiance).
+ *                    1 normal, 2 radiance, whose w is the voxel's opacity).
  *   brick_filter     level l from level l+1: each sample is the 3x3x3
  *                    Gaussian (1/4, 1/2, 1/4 per axis; the inverse
  *                    multiplicity of corner-centred samples) of the child
@@ -107,8 +107,11 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
                                    (v[20] != OCT_NULL) + (v[21] != OCT_NULL);
                 inv_found[(z * 3u + y) * 3u + x] = found ? 1.0f / (float)found : 0.0f;
             }
+    /* Injected radiance carries the opacity in w: radiance alone reads
+     * one array. */
+    const int radiance_only = channel_from == 2u && has_radiance;
     float alpha[64];
-    for (uint c = 0; c < 64u; ++c)
+    for (uint c = 0; c < 64u && !radiance_only; ++c)
         alpha[c] = voxel[c] == OCT_NULL ? 0.0f : albedo[voxel[c]].w;
     for (uint channel = channel_from; channel < channel_to; ++channel) {
         __global const float4 *value = channel == 0u ? albedo : channel == 1u ? normal : radiance;
@@ -116,6 +119,11 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
         float4 premultiplied[64];
         for (uint c = 0; c < 64u; ++c) {
             const uint v = voxel[c];
+            if (radiance_only) {
+                const float4 r = v == OCT_NULL ? (float4)(0.0f) : radiance[v];
+                premultiplied[c] = (float4)(r.w * r.xyz, r.w);
+                continue;
+            }
             const float3 x = v == OCT_NULL || !has_value ? (float3)(0.0f) : value[v].xyz;
             premultiplied[c] = (float4)(alpha[c] * x, alpha[c]);
         }

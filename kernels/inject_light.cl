@@ -71,5 +71,7 @@ __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         irradiance += radiant * cos_theta *
                       inject_visibility(&g, &bins, lights, i, p, oriented ? n : wi, lift, wi, dist);
     }
-    radiance[v] = (float4)(albedo[v].xyz * VCT_INV_PI * irradiance + emission[v].xyz, 0.0f);
+    /* w: the opacity, so that re-filtering reads one array */
+    const float4 a = albedo[v];
+    radiance[v] = (float4)(a.xyz * VCT_INV_PI * irradiance + emission[v].xyz, a.w);
 }

@@ -157,15 +157,16 @@ typedef struct level_run {
     cl_program program;
     const char *stage;
     cl_uint pool[2];
-    cl_mem around; /* 27 nodes around each brick's node (transient) */
+    cl_mem around; /* 27 nodes around each brick's node (v->brick_around) */
 } level_run;
 
 /* Every brick's neighbourhood, top-down: level l's from level l-1's. */
 static int run_around(level_run *r, vct_error *err) {
     vct_voxels *v = r->v;
-    const vct_brick_info *b = &v->brick_info;
-    r->around = vct_buffer_create(r->ctx, r->stage, "brick neighbourhoods", 27ull * 4 * b->bricks,
-                                  CL_MEM_READ_WRITE, NULL, err);
+    vct_brick_info *b = &v->brick_info;
+    b->around_bytes = 27ull * 4 * b->bricks;
+    r->around = v->brick_around = vct_buffer_create(r->ctx, r->stage, "brick neighbourhoods",
+                                                    b->around_bytes, CL_MEM_READ_WRITE, NULL, err);
     int rc = r->around ? VCT_OK : (int)err->status;
     for (cl_uint l = 0; l < v->info.levels && rc == VCT_OK; ++l)
         rc = vct_run_kernel(r->ctx, r->program, "brick_around", r->stage, b->level_bricks[l], err,
@@ -277,7 +278,7 @@ static int level_run_init(vct_context *ctx, vct_voxels *v, const char *stage, le
     r->stage = stage;
     r->pool[0] = v->brick_info.pool[0];
     r->pool[1] = v->brick_info.pool[1];
-    r->around = NULL;
+    r->around = v->brick_around;
     return vct_program_get(ctx, "bricks.cl", "", &r->program, err);
 }
 
@@ -324,7 +325,6 @@ int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *o
     }
     if (rc == VCT_OK)
         rc = vct_finish(ctx, FILTER_STAGE, err);
-    vct_buffer_release(ctx, r.around);
     vct_stage_end(ctx);
     if (rc != VCT_OK) {
         vct_bricks_release(v);
@@ -355,7 +355,7 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
     level_run r = {0};
     int rc = level_run_init(ctx, v, REFRESH_STAGE, &r, err);
     const int channels = channel_count(&v->brick_info);
-    if (rc == VCT_OK)
+    if (rc == VCT_OK && !r.around)
         rc = run_around(&r, err);
     if (rc == VCT_OK)
         rc = run_leaf(&r, 0, 1, err);
@@ -365,7 +365,6 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
         rc = copy_to_images(&r, VCT_BRICK_RADIANCE, channels, err);
     if (rc == VCT_OK)
         rc = vct_finish(ctx, REFRESH_STAGE, err);
-    vct_buffer_release(ctx, r.around);
     vct_stage_end(ctx);
     if (rc == VCT_OK)
         v->radiance_ready = 1;
@@ -378,6 +377,8 @@ void vct_bricks_release(vct_voxels *v) {
         vct_buffer_release(v->ctx, v->brick_image[c]);
         v->brick_buffer[c] = v->brick_image[c] = NULL;
     }
+    vct_buffer_release(v->ctx, v->brick_around);
+    v->brick_around = NULL;
     v->has_bricks = 0;
 }
 

@@ -303,11 +303,13 @@ int vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels, const uint32_t
                       uint32_t n, uint32_t *nodes, vct_error *err);
 /* Injects direct light into the voxels: per voxel, the outgoing radiance
  * albedo / pi * irradiance (every light of the scene, shadows through the
- * grid) + emission, at the voxel centre with its mean normal. Call again
- * after moving lights: nothing is re-voxelized. */
+ * grid, or for point and spot lights without a radius through triangle bins
+ * around the light: the same answer) + emission, at the voxel centre with
+ * its mean normal. Call again after moving lights: nothing is re-voxelized. */
 int vct_voxels_inject_light(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
                             vct_voxels *voxels, vct_error *err);
-/* Per voxel: injected radiance rgb (w unused), in voxel order. */
+/* Per voxel: injected radiance rgb and the voxel's opacity (as in its
+ * albedo's w), in voxel order. */
 int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *voxels, float *radiance,
                              vct_error *err);
 /* The voxels as the scene camera sees them, ray marched through the octree:
@@ -369,6 +371,7 @@ typedef struct vct_brick_info {
     uint64_t channel_bytes;     /* one channel of all bricks */
     uint64_t pool_bytes;        /* every channel, as allocated */
     uint64_t staging_bytes;     /* image pools: buffers kept for re-filtering */
+    uint64_t around_bytes;      /* each brick's 27 neighbour nodes, kept for re-filtering */
     uint64_t dense_rgba8_bytes; /* a dense RGBA8 3D texture at the voxel resolution */
 } vct_brick_info;
 
