@@ -65,15 +65,17 @@ int cmd_voxelize(const cli_options *opt) {
     cli_voxel_options(opt, 256, &vo);
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
     int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
-    const vct_brick_options bo = {opt->bricks, opt->anisotropic == 1, s->light_count > 0};
-    if (rc == VCT_OK)
-        rc = vct_bricks_build(ctx, v, &bo, &err);
-    /* With lights, inject direct light (shadows through the triangle grid). */
+    /* With lights, inject direct light (shadows through the triangle grid
+     * or the lights' bins) first: the bricks then take every channel in
+     * one pass. */
     vct_grid *grid = NULL;
     if (rc == VCT_OK && s->light_count) {
         grid = vct_grid_build(ctx, s, opt->grid_res, &err);
         rc = grid ? vct_voxels_inject_light(ctx, s, grid, v, &err) : (int)err.status;
     }
+    const vct_brick_options bo = {opt->bricks, opt->anisotropic == 1, 0};
+    if (rc == VCT_OK)
+        rc = vct_bricks_build(ctx, v, &bo, &err);
     vct_image image = {0};
     if (rc == VCT_OK && out)
         rc = vct_render_voxels(ctx, s, v, opt->width, opt->height, &image, &err);
