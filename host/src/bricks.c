@@ -115,8 +115,14 @@ static int channel_count(const vct_brick_info *b) {
     return b->anisotropic ? VCT_BRICK_CHANNELS : VCT_BRICK_RADIANCE + 1;
 }
 
+/* Channel c has bricks [channel_first, channel_bricks): the directions at
+ * levels 0 .. L-2, and with them isotropic radiance at level L-1 only. */
 static uint32_t channel_bricks(const vct_brick_info *b, int c) {
     return c >= VCT_BRICK_RADIANCE_DIR0 ? b->directional_bricks : b->bricks;
+}
+
+static uint32_t channel_first(const vct_brick_info *b, int c) {
+    return c == VCT_BRICK_RADIANCE && b->anisotropic ? b->directional_bricks : 0;
 }
 
 /* Channel c's pool: the same rows and columns as the main pool (the kernels
@@ -213,13 +219,16 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
             list[channels++] = pool[VCT_BRICK_ALBEDO];
             list[channels++] = pool[VCT_BRICK_NORMAL];
         }
-        if (radiance_too)
+        /* Anisotropic cones read the six directions above the leaves: no
+         * isotropic radiance there. */
+        if (radiance_too && !b->anisotropic)
             list[channels++] = pool[VCT_BRICK_RADIANCE];
         cl_mem c0 = list[0], c1 = list[channels > 1 ? 1 : 0], c2 = list[channels > 2 ? 2 : 0];
-        rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, count, err, 9,
-                            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
-                            VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(channels),
-                            VCT_ARG_OF(c0), VCT_ARG_OF(c1), VCT_ARG_OF(c2));
+        if (channels)
+            rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, count, err, 9,
+                                VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
+                                VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(channels),
+                                VCT_ARG_OF(c0), VCT_ARG_OF(c1), VCT_ARG_OF(c2));
         if (rc != VCT_OK || !b->anisotropic || !radiance_too)
             continue;
         /* children at level L-1 have one isotropic value for every direction */
@@ -395,11 +404,13 @@ int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t
     const vct_brick_info *b = &v->brick_info;
     if (!v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT, "%s: build the bricks first (vct_bricks_build)", stage);
-    if (channel < 0 || channel >= channel_count(b) ||
+    if (channel < 0 || channel >= channel_count(b) || first < channel_first(b, channel) ||
         (uint64_t)first + count > channel_bricks(b, channel))
         return vct_fail(err, VCT_ERR_INPUT,
-                        "%s: channel %d, bricks %u..%u: not built (%u bricks, %u directional)",
-                        stage, channel, first, first + count, b->bricks, b->directional_bricks);
+                        "%s: channel %d, bricks %u..%u: not built (%u bricks, %u directional; "
+                        "anisotropic bricks keep isotropic radiance from brick %u, the leaves')",
+                        stage, channel, first, first + count, b->bricks, b->directional_bricks,
+                        b->directional_bricks);
     if (channel >= VCT_BRICK_RADIANCE && vct_bricks_radiance_check(v, stage, err))
         return err->status;
     if (count == 0)
@@ -429,7 +440,8 @@ int vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32
     if (!v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT, "%s: build the bricks first (vct_bricks_build)", stage);
     const uint32_t top = channel >= VCT_BRICK_RADIANCE_DIR0 ? v->info.levels - 1 : v->info.levels;
-    if (channel < 0 || channel >= channel_count(b) || level >= top)
+    const uint32_t bottom = channel_first(b, channel) ? v->info.levels - 1 : 0;
+    if (channel < 0 || channel >= channel_count(b) || level >= top || level < bottom)
         return vct_fail(err, VCT_ERR_INPUT, "%s: channel %d has no bricks at level %u", stage,
                         channel, level);
     if (channel >= VCT_BRICK_RADIANCE && vct_bricks_radiance_check(v, stage, err))

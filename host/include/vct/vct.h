@@ -355,7 +355,8 @@ typedef struct vct_brick_options {
 typedef enum vct_brick_channel {
     VCT_BRICK_ALBEDO,       /* albedo * opacity, opacity */
     VCT_BRICK_NORMAL,       /* mean normal * opacity (its length is coherence), opacity */
-    VCT_BRICK_RADIANCE,     /* injected outgoing radiance * opacity, opacity */
+    VCT_BRICK_RADIANCE,     /* injected outgoing radiance * opacity, opacity; with
+                               anisotropic bricks at level L-1 only */
     VCT_BRICK_RADIANCE_DIR0 /* + direction 0..5, anisotropic only, levels 0 .. L-2 */
 } vct_brick_channel;
 #define VCT_BRICK_CHANNELS 9
