@@ -8,8 +8,8 @@
  * Without --reference, a path-traced reference of --reference-spp samples
  * (default 2048, a different seed from the runs) is rendered and saved.
  * "heavy" is bench/heavy_scene.h's 102,430-triangle scene. Voxel cone
- * tracing runs over voxel resolutions, cone presets, step sizes, isotropic
- * against anisotropic bricks and 1, 2 or 3 bounces; its time is split into
+ * tracing runs over voxel resolutions, cone presets, step sizes, cone start
+ * offsets, isotropic against anisotropic bricks and 1, 2 or 3 bounces; its time is split into
  * building the voxel hierarchy (voxels, octree, bricks, light) and tracing. */
 #include <math.h>
 #include <stdio.h>
@@ -21,7 +21,7 @@
 #include "heavy_scene.h"
 
 typedef struct run {
-    char name[64];
+    char name[96];
     double grid_ms, build_ms, render_ms, total_ms; /* device time per stage, and their sum */
     double wall_ms;
     vct_image_metrics m;
@@ -39,6 +39,7 @@ typedef struct vct_setting {
     uint32_t res, cones, bounces;
     float step;
     int anisotropic;
+    float offset; /* cone start offset in voxels; 0: the default */
 } vct_setting;
 
 static const char *const build_stages[] = {
@@ -72,6 +73,8 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     o.height = cfg->height;
     o.diffuse_cones = vs->cones;
     o.cones.step = vs->step;
+    if (vs->offset > 0.0f)
+        o.cones.offset = vs->offset;
     vct_voxels *v = NULL;
     vct_image im;
     if (vct_vct_prepare(ctx, s, g, &plan, &vo, &bo, vs->bounces, &o.cones, &v, &err) ||
@@ -82,9 +85,9 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     r->build_ms = stages_ms(ctx, build_stages, sizeof build_stages / sizeof build_stages[0]);
     r->render_ms = stages_ms(ctx, trace_stages, sizeof trace_stages / sizeof trace_stages[0]);
     r->total_ms = r->grid_ms + r->build_ms + r->render_ms;
-    snprintf(r->name, sizeof r->name, "vct %u^3, %u cones, step %g, %s, %u bounce%s", vs->res,
-             vs->cones, vs->step, vs->anisotropic ? "aniso" : "iso", vs->bounces,
-             vs->bounces == 1 ? "" : "s");
+    snprintf(r->name, sizeof r->name, "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s",
+             vs->res, vs->cones, vs->step, o.cones.offset, vs->anisotropic ? "aniso" : "iso",
+             vs->bounces, vs->bounces == 1 ? "" : "s");
     vct_voxels_free(v);
     vct_grid_free(g);
     return im;
@@ -288,9 +291,13 @@ int main(int argc, char **argv) {
     /* The default (128^3, 6 cones, step 1, anisotropic, 2 bounces) and one
      * setting changed at a time. */
     static const vct_setting vct_runs[] = {
-        {64, 6, 2, 1.0f, 1},  {128, 6, 2, 1.0f, 1}, {256, 6, 2, 1.0f, 1},  {128, 1, 2, 1.0f, 1},
-        {128, 5, 2, 1.0f, 1}, {128, 9, 2, 1.0f, 1}, {128, 16, 2, 1.0f, 1}, {128, 6, 2, 0.25f, 1},
-        {128, 6, 2, 0.5f, 1}, {128, 6, 2, 1.0f, 0}, {128, 6, 1, 1.0f, 1},  {128, 6, 3, 1.0f, 1}};
+        {64, 6, 2, 1.0f, 1, 0.0f},   {128, 6, 2, 1.0f, 1, 0.0f},  {256, 6, 2, 1.0f, 1, 0.0f},
+        {128, 1, 2, 1.0f, 1, 0.0f},  {128, 5, 2, 1.0f, 1, 0.0f},  {128, 9, 2, 1.0f, 1, 0.0f},
+        {128, 16, 2, 1.0f, 1, 0.0f}, {128, 6, 2, 0.25f, 1, 0.0f}, {128, 6, 2, 0.5f, 1, 0.0f},
+        {128, 6, 2, 1.0f, 0, 0.0f},  {128, 6, 1, 1.0f, 1, 0.0f},  {128, 6, 3, 1.0f, 1, 0.0f},
+        {64, 6, 2, 1.0f, 1, 2.0f},   {64, 6, 2, 1.0f, 1, 8.0f},   {128, 6, 2, 1.0f, 1, 2.0f},
+        {128, 6, 2, 1.0f, 1, 8.0f},  {128, 6, 2, 1.0f, 1, 16.0f}, {256, 6, 2, 1.0f, 1, 8.0f},
+        {256, 6, 2, 1.0f, 1, 16.0f}, {256, 6, 2, 1.0f, 1, 32.0f}};
     for (size_t i = 0; cfg.vct && i < sizeof vct_runs / sizeof vct_runs[0] && n < 32; ++i) {
         vct_image im = render_vct(ctx, s, &cfg, &vct_runs[i], &runs[n]);
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
