@@ -225,7 +225,8 @@ static void check_bins(const char *name, float offset, uint32_t face_res) {
     vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_light_bins b;
-    REQUIRE_OK(vct_light_bins_build(ctx, s, g, 1, face_res, "test", &b, &err), err);
+    const vct_light_bins_options bo = {1, face_res, 0};
+    REQUIRE_OK(vct_light_bins_build(ctx, s, g, &bo, "test", &b, &err), err);
     bins_host h = bins_read(s, &b);
 
     CHECK(b.lights == 2, "%s: %u lights binned, expected the point and the spot", name, b.lights);
@@ -292,11 +293,11 @@ static void check_bins(const char *name, float offset, uint32_t face_res) {
     vct_scene_free(s);
 }
 
-static float *inject_with(const vct_scene *s, const vct_grid *g, vct_voxels *v, int bins,
-                          uint32_t n) {
+static float *inject_with(const vct_scene *s, const vct_grid *g, vct_voxels *v,
+                          const vct_light_bins_options *bins, uint32_t n) {
     vct_error err = {0};
     float *r = malloc(16ull * n);
-    REQUIRE_OK(vct_voxels_inject_light_with(ctx, s, g, v, bins, 8, &err), err);
+    REQUIRE_OK(vct_voxels_inject_light_with(ctx, s, g, v, bins, &err), err);
     REQUIRE_OK(vct_voxels_read_radiance(ctx, v, r, &err), err);
     return r;
 }
@@ -347,7 +348,18 @@ static void check_injection(const char *name, float offset, int sphere) {
     vct_voxel_info info;
     vct_voxels_info_get(v, &info);
     const uint32_t n = info.voxels;
-    float *with_bins = inject_with(s, g, v, 1, n), *with_grid = inject_with(s, g, v, 0, n);
+    /* bins, the grid, and bins over a budget of 10 entries (the grid again) */
+    const vct_light_bins_options binned = {1, 8, 0}, grid_only = {0, 0, 0}, over = {1, 8, 10};
+    float *with_bins = inject_with(s, g, v, &binned, n),
+          *with_grid = inject_with(s, g, v, &grid_only, n),
+          *fallback = inject_with(s, g, v, &over, n);
+    CHECK(memcmp(with_grid, fallback, 16ull * n) == 0,
+          "%s: bins over their budget fall back to the grid's radiance", name);
+    vct_light_bins b;
+    vct_error berr = {0};
+    REQUIRE_OK(vct_light_bins_build(ctx, s, g, &over, "test", &b, &berr), berr);
+    CHECK(b.lights == 0 && b.entries == 0, "%s: over budget, no light binned (%u)", name, b.lights);
+    vct_light_bins_release(ctx, &b);
     uint32_t differ = 0, lit = 0, leaks = 0;
     uint32_t *keys = malloc(4ull * n);
     REQUIRE_OK(vct_voxels_read(ctx, v, keys, NULL, NULL, NULL, &err), err);
@@ -378,6 +390,7 @@ static void check_injection(const char *name, float offset, int sphere) {
     free(keys);
     free(with_bins);
     free(with_grid);
+    free(fallback);
     vct_voxels_free(v);
     vct_grid_free(g);
     vct_scene_free(s);

@@ -9,11 +9,12 @@
 
 int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid *g, vct_voxels *v,
                             vct_error *err) {
-    return vct_voxels_inject_light_with(ctx, s, g, v, 1, 0, err);
+    return vct_voxels_inject_light_with(ctx, s, g, v, NULL, err);
 }
 
 int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_grid *g,
-                                 vct_voxels *v, int light_bins, uint32_t face_res, vct_error *err) {
+                                 vct_voxels *v, const vct_light_bins_options *bins_options,
+                                 vct_error *err) {
     const uint32_t n = v->info.voxels;
     vct_stage_begin(ctx, STAGE);
     cl_program p;
@@ -28,7 +29,7 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
         rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
     vct_light_bins bins = {0};
     if (rc == VCT_OK && n)
-        rc = vct_light_bins_build(ctx, s, g, light_bins, face_res, STAGE, &bins, err);
+        rc = vct_light_bins_build(ctx, s, g, bins_options, STAGE, &bins, err);
     vct_volume_desc vol;
     vct_voxels_volume_desc(v, &vol);
     cl_kernel k = rc == VCT_OK && n ? vct_kernel_create(ctx, p, "inject_direct", err) : NULL;

@@ -50,6 +50,8 @@ static double farthest_corner(const vct_scene *s, const float l[3]) {
     return sqrt(far2);
 }
 
+#define DEFAULT_MAX_ENTRIES (1ull << 24)
+
 static int make_desc(vct_context *ctx, const vct_scene *s, int enabled, uint32_t face_res,
                      const char *stage, vct_light_bins *b, int *key_bits, int *bits,
                      uint64_t *cells, vct_error *err) {
@@ -93,8 +95,11 @@ static int make_desc(vct_context *ctx, const vct_scene *s, int enabled, uint32_t
     return b->desc ? VCT_OK : (int)err->status;
 }
 
+/* Counts and writes the (cell, triangle) pairs; sets *too_many, writing
+ * nothing, when there are more than max_entries. */
 static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_grid *g, cl_program p,
-                       const char *stage, vct_light_bins *b, cl_mem *keys, vct_error *err) {
+                       const char *stage, uint64_t max_entries, vct_light_bins *b, cl_mem *keys,
+                       int *too_many, vct_error *err) {
     const uint32_t n = s->triangle_count, lights = s->light_count;
     cl_mem counts =
         vct_buffer_create(ctx, stage, "light bin counts", 4ull * n, CL_MEM_READ_WRITE, NULL, err);
@@ -105,11 +110,12 @@ static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_grid *g, 
     uint64_t total = 0;
     if (rc == VCT_OK)
         rc = vct_scan_u32(ctx, counts, counts, n, 0, &total, err);
-    if (rc == VCT_ERR_OVERFLOW)
-        rc = vct_fail(err, VCT_ERR_MEMORY,
-                      "%s: %llu light-bin entries do not fit 32-bit offsets: use fewer lights "
-                      "or a smaller face resolution",
-                      stage, (unsigned long long)total);
+    *too_many = rc == VCT_ERR_OVERFLOW || (rc == VCT_OK && total > max_entries);
+    if (*too_many) {
+        memset(err, 0, sizeof *err);
+        vct_buffer_release(ctx, counts);
+        return VCT_OK;
+    }
     b->entries = (uint32_t)total;
     const size_t bytes = 4ull * (total ? total : 1);
     if (rc == VCT_OK) {
@@ -129,18 +135,31 @@ static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_grid *g, 
     return rc;
 }
 
-int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g, int enabled,
-                         uint32_t face_res, const char *stage, vct_light_bins *b, vct_error *err) {
+int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                         const vct_light_bins_options *options, const char *stage,
+                         vct_light_bins *b, vct_error *err) {
+    vct_light_bins_options o = {1, 0, 0};
+    if (options)
+        o = *options;
+    if (!o.max_entries) {
+        o.max_entries = ctx->info.max_alloc / 4;
+        o.max_entries = o.max_entries < DEFAULT_MAX_ENTRIES ? o.max_entries : DEFAULT_MAX_ENTRIES;
+    }
     memset(b, 0, sizeof *b);
-    int key_bits = 0, bits = 0;
+    int key_bits = 0, bits = 0, too_many = 0;
     uint64_t cells = 0;
-    int rc = make_desc(ctx, s, enabled, face_res, stage, b, &key_bits, &bits, &cells, err);
+    int rc = make_desc(ctx, s, o.enabled, o.face_res, stage, b, &key_bits, &bits, &cells, err);
     cl_program p = NULL;
     if (rc == VCT_OK && b->lights)
         rc = vct_program_get(ctx, "light_bins.cl", "", &p, err);
     cl_mem keys = NULL;
     if (rc == VCT_OK && b->lights)
-        rc = write_pairs(ctx, s, g, p, stage, b, &keys, err);
+        rc = write_pairs(ctx, s, g, p, stage, o.max_entries, b, &keys, &too_many, err);
+    if (rc == VCT_OK && too_many) { /* every light back to the grid */
+        vct_light_bins_release(ctx, b);
+        const vct_light_bins_options none = {0, 0, 1};
+        return vct_light_bins_build(ctx, s, g, &none, stage, b, err);
+    }
     if (rc == VCT_OK && b->entries)
         rc = vct_sort_pairs_u32(ctx, keys, b->tris, b->entries, key_bits, err);
     if (rc == VCT_OK) {

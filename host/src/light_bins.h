@@ -6,6 +6,17 @@
 
 #include "internal.h"
 
+/* What to bin: enabled 0 leaves every light to the grid; face_res 0
+ * chooses the cells per face side from the triangle count; max_entries 0
+ * allows up to 2^24 (cell, triangle) entries (256 MiB with the sort) or a
+ * quarter of the device's largest buffer. A scene that needs more keeps
+ * its lights on the grid: the same answer, slower. */
+typedef struct vct_light_bins_options {
+    int enabled;
+    uint32_t face_res;
+    uint64_t max_entries;
+} vct_light_bins_options;
+
 typedef struct vct_light_bins {
     cl_mem desc;   /* vct_light_bins_desc per light */
     cl_mem ranges; /* (start, end) per cell */
@@ -15,12 +26,11 @@ typedef struct vct_light_bins {
     uint32_t entries;  /* (cell, triangle) pairs */
 } vct_light_bins;
 
-/* Bins for every point and spot light of s without a radius; face_res 0
- * chooses the resolution from the triangle count. Lights without bins
- * (and every light when `enabled` is 0) keep to the grid. */
-int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g, int enabled,
-                         uint32_t face_res, const char *stage, vct_light_bins *bins,
-                         vct_error *err);
+/* Bins for every point and spot light of s without a radius (options may
+ * be NULL: the defaults). Lights without bins keep to the grid. */
+int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                         const vct_light_bins_options *options, const char *stage,
+                         vct_light_bins *bins, vct_error *err);
 /* Sets the four LIGHT_BINS_ARGS from argument `first`. */
 int vct_light_bins_set_args(cl_kernel k, int first, const vct_light_bins *bins, const char *stage,
                             vct_error *err);

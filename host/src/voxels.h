@@ -4,6 +4,7 @@
 #define VCT_VOXELS_H
 
 #include "internal.h"
+#include "light_bins.h"
 
 struct vct_voxels {
     vct_context *ctx;
@@ -41,10 +42,11 @@ int vct_voxel_buffer_fits(vct_context *ctx, const vct_voxel_info *info, const ch
                           const char *what, double bytes, vct_error *err);
 
 /* vct_voxels_inject_light, with the shadow rays of hard point and spot
- * lights through light-space triangle bins (face_res cells per face side, 0
- * to choose) or, with light_bins 0, through the grid: the same radiance. */
+ * lights through light-space triangle bins as `bins_options` says (NULL:
+ * the defaults), or through the grid: the same radiance. */
 int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_grid *g,
-                                 vct_voxels *v, int light_bins, uint32_t face_res, vct_error *err);
+                                 vct_voxels *v, const vct_light_bins_options *bins_options,
+                                 vct_error *err);
 /* Fails, naming the stage, while the radiance bricks wait for light
  * injection (vct_brick_options.radiance_later). */
 int vct_bricks_radiance_check(const vct_voxels *voxels, const char *stage, vct_error *err);
