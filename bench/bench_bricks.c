@@ -89,8 +89,8 @@ static void bins_against_grid(vct_context *ctx, vct_scene *s, vct_grid *grid, in
             bench_die(&err);
         best[i & 1] = fmin(best[i & 1], stage_device_ms(ctx, "light injection"));
     }
-    printf("light injection at 256^3, shadow rays through the light's triangle bins: %.0f ms; "
-           "through the triangle grid: %.0f ms (%.2fx)\n",
+    printf("light injection at 256^3, shadow rays through the light's triangle bins: %.1f ms; "
+           "through the triangle grid: %.1f ms (%.2fx)\n",
            best[0], best[1], best[1] / best[0]);
     vct_voxels_free(v);
 }

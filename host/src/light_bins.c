@@ -138,9 +138,11 @@ static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_grid *g, 
 int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g,
                          const vct_light_bins_options *options, const char *stage,
                          vct_light_bins *b, vct_error *err) {
-    vct_light_bins_options o = {1, 0, 0};
+    vct_light_bins_options o = {-1, 0, 0};
     if (options)
         o = *options;
+    if (o.enabled < 0)
+        o.enabled = !ctx->info.is_gpu;
     if (!o.max_entries) {
         o.max_entries = ctx->info.max_alloc / 4;
         o.max_entries = o.max_entries < DEFAULT_MAX_ENTRIES ? o.max_entries : DEFAULT_MAX_ENTRIES;
