@@ -404,13 +404,16 @@ int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t
     const vct_brick_info *b = &v->brick_info;
     if (!v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT, "%s: build the bricks first (vct_bricks_build)", stage);
-    if (channel < 0 || channel >= channel_count(b) || first < channel_first(b, channel) ||
+    if (channel < 0 || channel >= channel_count(b) ||
         (uint64_t)first + count > channel_bricks(b, channel))
         return vct_fail(err, VCT_ERR_INPUT,
-                        "%s: channel %d, bricks %u..%u: not built (%u bricks, %u directional; "
-                        "anisotropic bricks keep isotropic radiance from brick %u, the leaves')",
-                        stage, channel, first, first + count, b->bricks, b->directional_bricks,
-                        b->directional_bricks);
+                        "%s: channel %d, bricks %u..%u: not built (%u bricks, %u directional)",
+                        stage, channel, first, first + count, b->bricks, b->directional_bricks);
+    if (first < channel_first(b, channel))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: bricks %u..%u: anisotropic bricks keep isotropic radiance at the "
+                        "leaves only, from brick %u; read the directional channels above",
+                        stage, first, first + count, channel_first(b, channel));
     if (channel >= VCT_BRICK_RADIANCE && vct_bricks_radiance_check(v, stage, err))
         return err->status;
     if (count == 0)
@@ -440,10 +443,14 @@ int vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32
     if (!v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT, "%s: build the bricks first (vct_bricks_build)", stage);
     const uint32_t top = channel >= VCT_BRICK_RADIANCE_DIR0 ? v->info.levels - 1 : v->info.levels;
-    const uint32_t bottom = channel_first(b, channel) ? v->info.levels - 1 : 0;
-    if (channel < 0 || channel >= channel_count(b) || level >= top || level < bottom)
+    if (channel < 0 || channel >= channel_count(b) || level >= top)
         return vct_fail(err, VCT_ERR_INPUT, "%s: channel %d has no bricks at level %u", stage,
                         channel, level);
+    if (channel_first(b, channel) && level + 1 < v->info.levels)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: level %u: anisotropic bricks keep isotropic radiance at the leaves "
+                        "(level %u) only; sample the directional channels above",
+                        stage, level, v->info.levels - 1);
     if (channel >= VCT_BRICK_RADIANCE && vct_bricks_radiance_check(v, stage, err))
         return err->status;
     if (n == 0 || b->bricks == 0) {
