@@ -364,9 +364,7 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
     level_run r = {0};
     int rc = level_run_init(ctx, v, REFRESH_STAGE, &r, err);
     const int channels = channel_count(&v->brick_info);
-    if (rc == VCT_OK && !r.around)
-        rc = run_around(&r, err);
-    if (rc == VCT_OK)
+    if (rc == VCT_OK) /* r.around: the neighbourhoods kept from the build */
         rc = run_leaf(&r, 0, 1, err);
     if (rc == VCT_OK)
         rc = run_filters(&r, 0, 1, err);

@@ -117,13 +117,6 @@ static int gather_vertices(vct_context *ctx, vct_grid *g, const vct_scene *s, cl
     return rc;
 }
 
-static int bits_for(uint64_t count) {
-    int b = 1;
-    while (b < 32 && (1ull << b) < count)
-        ++b;
-    return b;
-}
-
 vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *res_in,
                          vct_error *err) {
     vct_grid *g = calloc(1, sizeof *g);
@@ -201,7 +194,7 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_write, n, 0, err);
     if (rc == VCT_OK)
-        rc = vct_sort_pairs_u32(ctx, keys, g->tri_ids, g->references, bits_for(cells), err);
+        rc = vct_sort_pairs_u32(ctx, keys, g->tri_ids, g->references, vct_key_bits_for(cells), err);
     if (rc == VCT_OK) {
         g->cell_ranges = vct_buffer_create(ctx, STAGE, "cell ranges", 8ull * cells,
                                            CL_MEM_READ_WRITE, NULL, err);

@@ -133,6 +133,9 @@ int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first,
 int vct_run_kernel(vct_context *ctx, cl_program program, const char *name, const char *stage,
                    size_t global, vct_error *err, int count, ...);
 
+/* Sort key bits that tell `count` values apart (1 to 32). */
+int vct_key_bits_for(uint64_t count);
+
 /* Reads a device image of width x height float4 pixels into `image`. */
 int vct_image_read_device(vct_context *ctx, const char *stage, cl_mem mem, int width, int height,
                           vct_image *image, vct_error *err);

@@ -18,20 +18,13 @@ static int binned(const vct_light *l) {
     return l->type != VCT_LIGHT_DIRECTIONAL && l->radius == 0.0f;
 }
 
-static int bits_for(uint64_t count) {
-    int b = 1;
-    while (b < 32 && (1ull << b) < count)
-        ++b;
-    return b;
-}
-
 /* About four triangles per cell over the six faces. Finer cells test fewer
  * triangles per ray but cost more to bin: on a 100k-triangle scene, one
  * to eight triangles per cell all took 98-111 ms (rays and bins together). */
 static uint32_t face_res_for(uint32_t triangles, uint32_t lights) {
     uint32_t f = (uint32_t)ceil(sqrt(triangles / 24.0));
     f = f < MIN_FACE_RES ? MIN_FACE_RES : (f > MAX_FACE_RES ? MAX_FACE_RES : f);
-    while (f > MIN_FACE_RES && bits_for(6ull * f * f * lights) > MAX_CELL_BITS)
+    while (f > MIN_FACE_RES && vct_key_bits_for(6ull * f * f * lights) > MAX_CELL_BITS)
         f /= 2;
     return f;
 }
@@ -66,7 +59,7 @@ static int make_desc(vct_context *ctx, const vct_scene *s, int enabled, uint32_t
                         "%s: %u lights of %u x %u cells per face exceed 2^%d light-bin cells: "
                         "choose a smaller face resolution",
                         stage, b->lights, b->face_res, b->face_res, MAX_CELL_BITS);
-    const int cell_bits = bits_for(*cells ? *cells : 1), digit = ctx->radix_bits;
+    const int cell_bits = vct_key_bits_for(*cells ? *cells : 1), digit = ctx->radix_bits;
     *key_bits = (cell_bits + MIN_DISTANCE_BITS + digit - 1) / digit * digit;
     *key_bits = *key_bits > 32 ? 32 : *key_bits;
     *bits = *key_bits - cell_bits;

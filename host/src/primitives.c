@@ -212,6 +212,13 @@ static int sort_impl(vct_context *ctx, cl_mem keys, cl_mem values, uint32_t n, i
     return rc;
 }
 
+int vct_key_bits_for(uint64_t count) {
+    int b = 1;
+    while (b < 32 && (1ull << b) < count)
+        ++b;
+    return b;
+}
+
 int vct_sort_pairs_u32(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n, int key_bits,
                        vct_error *err) {
     return sort_impl(ctx, (cl_mem)keys_mem, (cl_mem)values_mem, n, key_bits, 0, err);
