@@ -10,8 +10,10 @@
  * scaled alike. Samples composite front to back:
  *     C += (1 - A) c,  A += (1 - A) a
  * (c is premultiplied, as the pool stores it). The march stops when A
- * reaches the stop opacity, or when the cone leaves the volume: then what it
- * still sees, (1 - A), is the environment's radiance.
+ * reaches the stop opacity, or when the cone leaves the volume, after one
+ * last sample just inside it for the way from the previous sample's step to
+ * the boundary: then what it still sees, (1 - A), is the environment's
+ * radiance.
  *
  * Build with -DVCT_ANISOTROPIC to read the six directional radiance pools
  * (weighted by the squared direction components) at levels 0 .. L-2. */
@@ -134,7 +136,9 @@ inline float3 cone_origin(const vct_cone_desc *c, float3 p, float3 n) {
 }
 
 /* 1 - (1 - a)^ratio: opacity a of one thickness over `ratio` of it. pow is
- * slow on CPU devices, and the common ratios (2, 1, 1/2, 1/4) need none. */
+ * slow on CPU devices (on PoCL, one pow per cone, for the last sample at the
+ * volume's boundary, cost the diffuse cones about 10%), and the common
+ * ratios (2, 1, 1/2, 1/4) need no power at all. */
 inline float opacity_over(float a, float ratio) {
     const float clear = 1.0f - a;
     if (ratio == 1.0f)
@@ -145,18 +149,41 @@ inline float opacity_over(float a, float ratio) {
         return 1.0f - sqrt(clear);
     if (ratio == 0.25f)
         return 1.0f - sqrt(sqrt(clear));
-    return 1.0f - pow(clear, ratio);
+    return clear > 0.0f ? 1.0f - native_exp2(ratio * native_log2(clear)) : 1.0f;
+}
+
+/* Distance along unit d from origin to where it leaves the volume's cube,
+ * if it is inside. */
+inline float cone_volume_exit(const vct_cone_desc *c, float3 origin, float3 d) {
+    const float3 from = (origin - c->volume.xyz) * c->ambient.w, along = d * c->ambient.w;
+    const float3 face = select((float3)(0.0f), (float3)(1.0f), along > 0.0f);
+    const float3 t = select((face - from) / along, (float3)(INFINITY), along == 0.0f);
+    return fmin(fmin(t.x, t.y), t.z);
+}
+
+/* Composites sample s, whose opacity stands for one spacing, over `ratio`
+ * spacings, behind what r has gathered. */
+inline void cone_composite(cone_result *r, float4 s, float ratio) {
+    const float a_in = clamp(s.w, 0.0f, 1.0f);
+    const float a = a_in > 0.0f ? opacity_over(a_in, ratio) : 0.0f;
+    const float3 colour = a_in > 0.0f ? s.xyz * (a / a_in) : (float3)(0.0f);
+    r->radiance += (1.0f - r->alpha) * colour;
+    r->alpha += (1.0f - r->alpha) * a;
 }
 
 /* Marches one cone up to distance max_t; origin is already lifted off its
- * surface. */
+ * surface. Each sample stands for the step around it. Where the next sample
+ * would lie outside the volume, one last sample just inside the boundary
+ * stands for the rest of the way, so that a wall on the volume's face is not
+ * stepped over (the Cornell box's walls are). */
 inline cone_result cone_trace(CONE_POOLS, __global const uint *child, const vct_cone_desc *c,
                               float3 origin, float3 d, float tan_half, float max_t) {
     cone_result r = {(float3)(0.0f), 0.0f, 0.0f, 0.0f, 0u, 0};
     const uint levels = c->res.y;
     const float voxel = c->volume.w / (float)c->res.x, min_diameter = 2.0f * voxel;
-    const float finest = (float)(levels - 1u);
-    float t = voxel;
+    const float finest = (float)(levels - 1u), root_spacing = voxel * exp2(finest);
+    const float exit = cone_volume_exit(c, origin, d);
+    float t = voxel, last = 0.0f; /* last: the boundary sample's thickness */
     cone_path path = cone_path_root();
     for (uint i = 0; i < CONE_MAX_STEPS && t <= max_t; ++i) {
         const float3 at = (origin + t * d - c->volume.xyz) * c->ambient.w;
@@ -171,21 +198,28 @@ inline cone_result cone_trace(CONE_POOLS, __global const uint *child, const vct_
         const float step = c->march.x * diameter;
         /* The level follows the diameter, so the samples are D / 2 apart and
          * step / spacing is 2 * step fraction, except where the level is held
-         * at the root. */
-        const float ratio = level > 0.0f ? 2.0f * c->march.x : step / (voxel * exp2(finest));
-        const float a_in = clamp(s.w, 0.0f, 1.0f);
-        const float a = a_in > 0.0f ? opacity_over(a_in, ratio) : 0.0f;
-        const float3 colour = a_in > 0.0f ? s.xyz * (a / a_in) : (float3)(0.0f);
-        r.radiance += (1.0f - r.alpha) * colour;
-        r.alpha += (1.0f - r.alpha) * a;
+         * at the root, and for the last sample's thickness. */
+        const float spacing = level > 0.0f ? 0.5f * diameter : root_spacing;
+        const float thickness_ratio = last > 0.0f    ? last / spacing
+                                      : level > 0.0f ? 2.0f * c->march.x
+                                                     : step / spacing;
+        cone_composite(&r, s, thickness_ratio);
         if (t <= c->march.z)
             r.ao_alpha = r.alpha;
         r.level_sum += level;
         ++r.samples;
-        if (r.alpha >= c->march.w)
+        if (r.alpha >= c->march.w || last > 0.0f)
             break;
-        t += step;
+        const float rest = exit - (t + 0.5f * step);
+        if (t + step >= exit && rest > 0.0f && exit <= max_t) {
+            last = rest;
+            t = exit * 0.99999f;
+        } else {
+            t += step;
+        }
     }
+    if (last > 0.0f)
+        r.left = 1;
     if (r.left)
         r.radiance += (1.0f - r.alpha) * c->ambient.xyz;
     return r;
