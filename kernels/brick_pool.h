@@ -17,6 +17,8 @@
 #ifndef VCT_BRICK_POOL_H
 #define VCT_BRICK_POOL_H
 
+#include "vct_types.h"
+
 #define BRICK_NULL 0xffffffffu
 #define BRICK_TEXELS 27u
 
@@ -82,7 +84,7 @@ typedef struct brick_lerp {
     float3 f;
 } brick_lerp;
 
-inline brick_lerp brick_lerp_at(uint2 pool, uint b, float3 at) {
+VCT_INLINE brick_lerp brick_lerp_at(uint2 pool, uint b, float3 at) {
     at = clamp(at, 0.0f, 2.0f);
     const uint3 lo = min(convert_uint3(at), (uint3)(1u));
     brick_lerp l;
@@ -93,7 +95,7 @@ inline brick_lerp brick_lerp_at(uint2 pool, uint b, float3 at) {
     return l;
 }
 
-inline float4 brick_lerp_read(__global const half *p, brick_lerp l) {
+VCT_INLINE float4 brick_lerp_read(__global const half *p, brick_lerp l) {
     const uint a = l.first, c = a + l.slice;
     const float4 y0 =
         mix(mix(vload_half4(a, p), vload_half4(a + 1u, p), l.f.x),

@@ -47,8 +47,8 @@ typedef struct cone_result {
 
 /* Brick b's trilinear sample at `at` ([0, 2]^3 texel units) of a level-`level`
  * node, seen by a cone travelling along d. */
-inline float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint level, uint levels,
-                                float3 d) {
+VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint level,
+                                    uint levels, float3 d) {
 #ifdef VCT_ANISOTROPIC
     if (level + 1u < levels) {
         const float3 w = d * d;
@@ -94,8 +94,8 @@ inline cone_path cone_path_root(void) {
 
 /* The pool at `at` (volume units, [0, 1)^3) and fractional level `level`:
  * one descent reads both neighbouring levels. Empty nodes read 0. */
-inline float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels,
-                          float3 at, float level, float3 d, cone_path *path) {
+VCT_INLINE float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels,
+                              float3 at, float level, float3 d, cone_path *path) {
     const uint coarse = (uint)level, finest = levels - 1u, fine = min(coarse + 1u, finest);
     const float f = level - (float)coarse;
     float4 value[2] = {(float4)(0.0f), (float4)(0.0f)};
@@ -176,8 +176,8 @@ inline void cone_composite(cone_result *r, float4 s, float ratio) {
  * would lie outside the volume, one last sample just inside the boundary
  * stands for the rest of the way, so that a wall on the volume's face is not
  * stepped over (the Cornell box's walls are). */
-inline cone_result cone_trace(CONE_POOLS, __global const uint *child, const vct_cone_desc *c,
-                              float3 origin, float3 d, float tan_half, float max_t) {
+VCT_INLINE cone_result cone_trace(CONE_POOLS, __global const uint *child, const vct_cone_desc *c,
+                                  float3 origin, float3 d, float tan_half, float max_t) {
     cone_result r = {(float3)(0.0f), 0.0f, 0.0f, 0.0f, 0u, 0};
     const uint levels = c->res.y;
     const float voxel = c->volume.w / (float)c->res.x, min_diameter = 2.0f * voxel;

@@ -6,6 +6,16 @@
 #ifdef __OPENCL_VERSION__
 typedef float4 vct_f4;
 typedef uint4 vct_u4;
+/* For helpers called once or twice inside a kernel's hot loop: PoCL leaves
+ * large inline functions as calls, and inlining the cone marcher's measured
+ * 5-10% faster there (bit-identical images). Not for helpers with large
+ * private arrays: forced into the brick filters, they crashed PoCL's
+ * kernels. GPU compilers inline them anyway. */
+#if defined(__clang__) || defined(__GNUC__)
+#define VCT_INLINE inline __attribute__((always_inline))
+#else
+#define VCT_INLINE inline
+#endif
 #else
 #define CL_TARGET_OPENCL_VERSION 120
 #include <CL/cl.h>
