@@ -144,34 +144,41 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
     }
 }
 
-/* The pool texel of each of the 7^3 child lattice points around brick b
- * (0..6 per axis; point 2i + 1 is the parent's texel i), or BRICK_NULL where
- * no child brick holds it (empty space). Child cell c (0..3 per axis, cells
- * -1..2 around the node) holds points 2c - 1 .. 2c + 1; a point on a face
- * between two cells is held bit-identically by either, so each present cell
- * simply writes the points it holds. */
+/* The child lattice of brick b: points 0..6 per axis (point 2i + 1 is the
+ * parent's texel i), kept in a table padded to 9^3 (points -1..7) so that
+ * every child cell writes its 27 texels without clipping: cell c (0..3 per
+ * axis, cells -1..2 around the node) holds points 2c - 1 .. 2c + 1, table
+ * entries 2c .. 2c + 2. LATTICE(x, y, z) is point (x, y, z)'s entry.
+ * Each entry is the pool texel, or BRICK_NULL where no child brick holds
+ * the point (empty space). A point on a face between two cells is held
+ * bit-identically by either, so each present cell simply writes the points
+ * it holds. (Clipping each cell's writes to 7^3 cost as much as filtering
+ * radiance.) */
+#define LATTICE_SIDE 9u
+#define LATTICE_ENTRIES (LATTICE_SIDE * LATTICE_SIDE * LATTICE_SIDE)
+#define LATTICE_STRIDE_Y LATTICE_SIDE
+#define LATTICE_STRIDE_Z (LATTICE_SIDE * LATTICE_SIDE)
+#define LATTICE(x, y, z) (((z) + 1u) * LATTICE_STRIDE_Z + ((y) + 1u) * LATTICE_STRIDE_Y + (x) + 1u)
+
 inline void lattice_texels(__global const uint *child, __global const uint *around, uint b,
                            uint2 pool, uint *texel) {
     uint cell[64];
     gather_children(child, around, b, cell);
-    for (uint e = 0; e < 343u; ++e)
+    for (uint e = 0; e < LATTICE_ENTRIES; ++e)
         texel[e] = BRICK_NULL;
+    const uint row = 3u * pool.x, slice = row * 3u * pool.y;
     for (uint c = 0; c < 64u; ++c) {
         const uint cb = cell[c] == OCT_NULL ? BRICK_NULL : brick_of(child, cell[c]);
         if (cb == BRICK_NULL)
             continue;
         const uint base = brick_base(pool, cb);
-        const uint3 at = (uint3)(c & 3u, (c >> 2) & 3u, c >> 4);
-        /* texels 0..2 of the cell sit at points 2c - 1 + t, kept inside 0..6 */
-        const uint3 lo = select((uint3)(0u), (uint3)(1u), at == 0u);
-        const uint3 hi = select((uint3)(2u), (uint3)(1u), at == 3u);
-        for (uint tz = lo.z; tz <= hi.z; ++tz)
-            for (uint ty = lo.y; ty <= hi.y; ++ty)
-                for (uint tx = lo.x; tx <= hi.x; ++tx) {
-                    const uint3 e = 2u * at + (uint3)(tx, ty, tz) - 1u;
-                    texel[(e.z * 7u + e.y) * 7u + e.x] =
-                        base + brick_offset(pool, (uint3)(tx, ty, tz));
-                }
+        uint *first = texel + 2u * ((c >> 4) * LATTICE_STRIDE_Z +
+                                    ((c >> 2) & 3u) * LATTICE_STRIDE_Y + (c & 3u));
+        for (uint tz = 0; tz < 3u; ++tz)
+            for (uint ty = 0; ty < 3u; ++ty)
+                for (uint tx = 0; tx < 3u; ++tx)
+                    first[tz * LATTICE_STRIDE_Z + ty * LATTICE_STRIDE_Y + tx] =
+                        base + tz * slice + ty * row + tx;
     }
 }
 
@@ -190,12 +197,13 @@ inline void filter_channel(const uint *texel, uint2 pool, uint b, __global half 
     const uint base = brick_base(pool, b);
     for (uint k = 0; k < 3u; ++k) {
         float4 plane[49];
-        for (uint yx = 0; yx < 49u; ++yx) {
-            float4 s = (float4)(0.0f);
-            for (uint d = 0; d < 3u; ++d)
-                s += w[d] * texel_load(channel, texel[(2u * k + d) * 49u + yx]);
-            plane[yx] = s;
-        }
+        for (uint y = 0; y < 7u; ++y)
+            for (uint x = 0; x < 7u; ++x) {
+                float4 s = (float4)(0.0f);
+                for (uint d = 0; d < 3u; ++d)
+                    s += w[d] * texel_load(channel, texel[LATTICE(x, y, 2u * k + d)]);
+                plane[y * 7u + x] = s;
+            }
         for (uint j = 0; j < 3u; ++j) {
             float4 row[7];
             for (uint x = 0; x < 7u; ++x)
@@ -217,7 +225,7 @@ __kernel void brick_filter(__global const uint *child, __global const uint *arou
     if (i >= count)
         return;
     const uint b = first_brick + i;
-    uint texel[343];
+    uint texel[LATTICE_ENTRIES];
     lattice_texels(child, around, b, pool, texel);
     filter_channel(texel, pool, b, c0);
     if (channels > 1u)
@@ -271,7 +279,7 @@ inline void store_layer(const float4 column[7][7], uint2 pool, uint base, uint a
 inline void filter_axis(const uint *texel, uint2 pool, uint b, uint axis,
                         __global const half *src_up, __global const half *src_down, uint one_source,
                         __global half *up, __global half *down) {
-    const uint stride[3] = {1u, 7u, 49u};
+    const uint stride[3] = {1u, LATTICE_STRIDE_Y, LATTICE_STRIDE_Z};
     const uint step = stride[axis], u_step = stride[(axis + 1u) % 3u];
     const uint v_step = stride[(axis + 2u) % 3u];
     const uint base = brick_base(pool, b);
@@ -279,7 +287,7 @@ inline void filter_axis(const uint *texel, uint2 pool, uint b, uint axis,
         float4 column_up[7][7], column_down[7][7];
         for (uint q = 0; q < 7u; ++q)
             for (uint p = 0; p < 7u; ++p) {
-                const uint at = 2u * g * step + p * u_step + q * v_step;
+                const uint at = LATTICE(0u, 0u, 0u) + 2u * g * step + p * u_step + q * v_step;
                 const uint t0 = texel[at], t1 = texel[at + step], t2 = texel[at + 2u * step];
                 const float4 a0 = half_thickness(texel_load(src_up, t0));
                 const float4 a1 = texel_load(src_up, t1);
@@ -312,7 +320,7 @@ __kernel void brick_filter_dir(__global const uint *child, __global const uint *
     if (i >= count)
         return;
     const uint b = first_brick + i;
-    uint texel[343];
+    uint texel[LATTICE_ENTRIES];
     lattice_texels(child, around, b, pool, texel);
     filter_axis(texel, pool, b, 0u, s0, s3, one_source, d0, d3);
     filter_axis(texel, pool, b, 1u, s1, s4, one_source, d1, d4);

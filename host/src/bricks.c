@@ -182,6 +182,11 @@ static int run_around(level_run *r, vct_error *err) {
     return rc;
 }
 
+/* Work-items per group for the brick kernels, whose private arrays take
+ * kilobytes per work-item (a 9^3 lattice table, 7x7 columns): PoCL's own
+ * choice, thousands per group, overflowed its threads' stacks at 256^3. */
+#define BRICK_GROUP 64
+
 /* Level L-1 bricks from the voxels: albedo and normal when `geometry`,
  * radiance when `radiance`. */
 static int run_leaf(const level_run *r, int geometry, int radiance_too, vct_error *err) {
@@ -194,12 +199,12 @@ static int run_leaf(const level_run *r, int geometry, int radiance_too, vct_erro
     cl_mem *pool = v->brick_buffer;
     cl_mem albedo_pool = geometry ? pool[VCT_BRICK_ALBEDO] : pool[VCT_BRICK_RADIANCE];
     cl_mem normal_pool = geometry ? pool[VCT_BRICK_NORMAL] : pool[VCT_BRICK_RADIANCE];
-    return vct_run_kernel(r->ctx, r->program, "brick_leaf", r->stage, count, err, 14,
-                          VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
-                          VCT_ARG_OF(count), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
-                          VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance), VCT_ARG_OF(from),
-                          VCT_ARG_OF(to), VCT_ARG_OF(r->pool), VCT_ARG_OF(albedo_pool),
-                          VCT_ARG_OF(normal_pool), VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
+    return vct_run_kernel_grouped(
+        r->ctx, r->program, "brick_leaf", r->stage, count, BRICK_GROUP, err, 14,
+        VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count),
+        VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance),
+        VCT_ARG_OF(has_radiance), VCT_ARG_OF(from), VCT_ARG_OF(to), VCT_ARG_OF(r->pool),
+        VCT_ARG_OF(albedo_pool), VCT_ARG_OF(normal_pool), VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
 }
 
 /* Levels L-2 .. 0, each from the level below: albedo and normal when
@@ -225,10 +230,11 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
             list[channels++] = pool[VCT_BRICK_RADIANCE];
         cl_mem c0 = list[0], c1 = list[channels > 1 ? 1 : 0], c2 = list[channels > 2 ? 2 : 0];
         if (channels)
-            rc = vct_run_kernel(r->ctx, r->program, "brick_filter", r->stage, count, err, 9,
-                                VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
-                                VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(channels),
-                                VCT_ARG_OF(c0), VCT_ARG_OF(c1), VCT_ARG_OF(c2));
+            rc = vct_run_kernel_grouped(r->ctx, r->program, "brick_filter", r->stage, count,
+                                        BRICK_GROUP, err, 9, VCT_ARG_OF(v->child),
+                                        VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count),
+                                        VCT_ARG_OF(r->pool), VCT_ARG_OF(channels), VCT_ARG_OF(c0),
+                                        VCT_ARG_OF(c1), VCT_ARG_OF(c2));
         if (rc != VCT_OK || !b->anisotropic || !radiance_too)
             continue;
         /* children at level L-1 have one isotropic value for every direction */
@@ -237,13 +243,13 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
         cl_mem src[6];
         for (int d = 0; d < 6; ++d)
             src[d] = from_leaf ? pool[VCT_BRICK_RADIANCE] : dir[d];
-        rc = vct_run_kernel(r->ctx, r->program, "brick_filter_dir", r->stage, count, err, 18,
-                            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first),
-                            VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG_OF(src[0]),
-                            VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
-                            VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]),
-                            VCT_ARG_OF(dir[1]), VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]),
-                            VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]), VCT_ARG_OF(one_source));
+        rc = vct_run_kernel_grouped(
+            r->ctx, r->program, "brick_filter_dir", r->stage, count, BRICK_GROUP, err, 18,
+            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count),
+            VCT_ARG_OF(r->pool), VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]),
+            VCT_ARG_OF(src[3]), VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]),
+            VCT_ARG_OF(dir[1]), VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]),
+            VCT_ARG_OF(dir[5]), VCT_ARG_OF(one_source));
     }
     return rc;
 }

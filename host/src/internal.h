@@ -132,6 +132,13 @@ int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first,
  * launches it over `global` work-items (none when global is 0). */
 int vct_run_kernel(vct_context *ctx, cl_program program, const char *name, const char *stage,
                    size_t global, vct_error *err, int count, ...);
+/* The same in work-groups of `local` (global rounded up to a multiple; the
+ * kernel must ignore the extra work-items). For kernels with kilobytes of
+ * private arrays per work-item: left to choose, PoCL runs thousands of
+ * work-items per group, whose private memory overflows its threads' stacks. */
+int vct_run_kernel_grouped(vct_context *ctx, cl_program program, const char *name,
+                           const char *stage, size_t global, size_t local, vct_error *err,
+                           int count, ...);
 
 /* Sort key bits that tell `count` values apart (1 to 32). */
 int vct_key_bits_for(uint64_t count);

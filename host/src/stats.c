@@ -195,19 +195,35 @@ int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first,
     return rc;
 }
 
-int vct_run_kernel(vct_context *ctx, cl_program program, const char *name, const char *stage,
-                   size_t global, vct_error *err, int count, ...) {
+static int run_kernel_v(vct_context *ctx, cl_program program, const char *name, const char *stage,
+                        size_t global, size_t local, vct_error *err, int count, va_list ap) {
     if (global == 0)
         return VCT_OK;
     cl_kernel k = vct_kernel_create(ctx, program, name, err);
     if (!k)
         return err->status;
+    int rc = set_args_v(err, stage, k, 0, count, ap);
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k, global, local, err);
+    clReleaseKernel(k);
+    return rc;
+}
+
+int vct_run_kernel(vct_context *ctx, cl_program program, const char *name, const char *stage,
+                   size_t global, vct_error *err, int count, ...) {
     va_list ap;
     va_start(ap, count);
-    int rc = set_args_v(err, stage, k, 0, count, ap);
+    const int rc = run_kernel_v(ctx, program, name, stage, global, 0, err, count, ap);
     va_end(ap);
-    if (rc == VCT_OK)
-        rc = vct_launch(ctx, k, global, 0, err);
-    clReleaseKernel(k);
+    return rc;
+}
+
+int vct_run_kernel_grouped(vct_context *ctx, cl_program program, const char *name,
+                           const char *stage, size_t global, size_t local, vct_error *err,
+                           int count, ...) {
+    va_list ap;
+    va_start(ap, count);
+    const int rc = run_kernel_v(ctx, program, name, stage, global, local, err, count, ap);
+    va_end(ap);
     return rc;
 }
