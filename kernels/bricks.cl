@@ -31,9 +31,11 @@
 
 #define AROUND 27u /* nodes per neighbourhood, index (z+1)*9 + (y+1)*3 + x+1 */
 
-/* Level-`level` bricks: their node's 27 neighbours (OCT_NULL where no node
- * exists). A neighbour is a child of one of the parent's 27 neighbours, and
- * the parent's brick is the tile the node belongs to. */
+/* Level-`level` bricks: the child tiles of their node's 27 neighbours, the
+ * first child's index (OCT_NULL where no node or no child exists): what the
+ * leaf and filter passes need, one load each. A neighbour is a child of one
+ * of the parent's 27 neighbours, and the parent's brick is the tile the node
+ * belongs to. */
 __kernel void brick_around(__global const uint *child, __global const uint *tile_parent, uint level,
                            uint first_brick, uint count, __global uint *around) {
     const uint i = get_global_id(0);
@@ -42,7 +44,7 @@ __kernel void brick_around(__global const uint *child, __global const uint *tile
     const uint b = first_brick + i, node = tile_parent[b];
     if (level == 0u) {
         for (uint k = 0; k < AROUND; ++k)
-            around[AROUND * b + k] = k == 13u ? node : OCT_NULL;
+            around[AROUND * b + k] = k == 13u ? child[node] : OCT_NULL;
         return;
     }
     const uint octant = (node - 1u) & 7u, parent_brick = (node - 1u) >> 3;
@@ -53,25 +55,22 @@ __kernel void brick_around(__global const uint *child, __global const uint *tile
                 const int3 s = bit + (int3)(x, y, z) + 2; /* 1..4: child cell + 2 */
                 const int3 up = s / 2 - 1;                /* the parent's neighbour */
                 const uint3 oct = convert_uint3(s & 1);
-                const uint p = around[AROUND * parent_brick +
-                                      (uint)((up.z + 1) * 9 + (up.y + 1) * 3 + up.x + 1)];
-                const uint first = p == OCT_NULL ? OCT_NULL : child[p];
+                const uint tile = around[AROUND * parent_brick +
+                                         (uint)((up.z + 1) * 9 + (up.y + 1) * 3 + up.x + 1)];
                 around[AROUND * b + (uint)((z + 1) * 9 + (y + 1) * 3 + x + 1)] =
-                    first == OCT_NULL ? OCT_NULL : first + (oct.x | (oct.y << 1) | (oct.z << 2));
+                    tile == OCT_NULL ? OCT_NULL
+                                     : child[tile + (oct.x | (oct.y << 1) | (oct.z << 2))];
             }
 }
 
 /* The 4^3 child cells from -1 to 2 around brick b's node, through its 27
- * neighbours: cell index c per axis lies in neighbour (c + 1) / 2 - 1 at
- * octant bit (c + 1) & 1. Each entry is the child node or OCT_NULL. Each
- * neighbour's child tile is looked up once. */
-inline void gather_children(__global const uint *child, __global const uint *around, uint b,
-                            uint *cells) {
+ * neighbours' child tiles: cell index c per axis lies in neighbour
+ * (c + 1) / 2 - 1 at octant bit (c + 1) & 1. Each entry is the child node or
+ * OCT_NULL. */
+inline void gather_children(__global const uint *around, uint b, uint *cells) {
     uint first[AROUND];
-    for (uint k = 0; k < AROUND; ++k) {
-        const uint n = around[AROUND * b + k];
-        first[k] = n == OCT_NULL ? OCT_NULL : child[n];
-    }
+    for (uint k = 0; k < AROUND; ++k)
+        first[k] = around[AROUND * b + k];
     for (uint z = 0; z < 4u; ++z)
         for (uint y = 0; y < 4u; ++y)
             for (uint x = 0; x < 4u; ++x) {
@@ -92,7 +91,7 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
         return;
     const uint b = first_brick + i;
     uint voxel[64];
-    gather_children(child, around, b, voxel);
+    gather_children(around, b, voxel);
     for (uint c = 0; c < 64u; ++c)
         voxel[c] = voxel[c] == OCT_NULL ? OCT_NULL : child[voxel[c]];
 
@@ -163,7 +162,7 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
 inline void lattice_texels(__global const uint *child, __global const uint *around, uint b,
                            uint2 pool, uint *texel) {
     uint cell[64];
-    gather_children(child, around, b, cell);
+    gather_children(around, b, cell);
     for (uint e = 0; e < LATTICE_ENTRIES; ++e)
         texel[e] = BRICK_NULL;
     const uint row = 3u * pool.x, slice = row * 3u * pool.y;

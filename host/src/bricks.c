@@ -163,7 +163,7 @@ typedef struct level_run {
     cl_program program;
     const char *stage;
     cl_uint pool[2];
-    cl_mem around; /* 27 nodes around each brick's node (v->brick_around) */
+    cl_mem around; /* the child tiles of the 27 nodes around each brick's node */
 } level_run;
 
 /* Every brick's neighbourhood, top-down: level l's from level l-1's. */

@@ -26,8 +26,9 @@ struct vct_voxels {
     int radiance_ready; /* 0 while radiance_later waits for light injection */
     vct_brick_info brick_info;
     cl_mem brick_buffer[VCT_BRICK_CHANNELS], brick_image[VCT_BRICK_CHANNELS];
-    /* The 27 nodes around each brick's node, from the build, kept so that a
-     * light update re-filters without finding them again. */
+    /* The child tiles of the 27 nodes around each brick's node, from the
+     * build, kept so that a light update re-filters without finding them
+     * again. */
     cl_mem brick_around;
 };
 
