@@ -40,7 +40,10 @@ typedef struct vct_setting {
     float step;
     int anisotropic;
     float offset; /* cone start offset in voxels; 0: the default */
+    int nearest;  /* 1: each sample reads the nearest level alone */
 } vct_setting;
+
+#define MAX_RUNS 40
 
 static const char *const build_stages[] = {
     "voxelize",        "octree build",       "brick creation", "brick filtering",
@@ -75,6 +78,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     o.cones.step = vs->step;
     if (vs->offset > 0.0f)
         o.cones.offset = vs->offset;
+    o.cones.nearest_level = vs->nearest;
     vct_voxels *v = NULL;
     vct_image im;
     if (vct_vct_prepare(ctx, s, g, &plan, &vo, &bo, vs->bounces, &o.cones, &v, &err) ||
@@ -85,9 +89,9 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     r->build_ms = stages_ms(ctx, build_stages, sizeof build_stages / sizeof build_stages[0]);
     r->render_ms = stages_ms(ctx, trace_stages, sizeof trace_stages / sizeof trace_stages[0]);
     r->total_ms = r->grid_ms + r->build_ms + r->render_ms;
-    snprintf(r->name, sizeof r->name, "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s",
+    snprintf(r->name, sizeof r->name, "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s%s",
              vs->res, vs->cones, vs->step, o.cones.offset, vs->anisotropic ? "aniso" : "iso",
-             vs->bounces, vs->bounces == 1 ? "" : "s");
+             vs->bounces, vs->bounces == 1 ? "" : "s", vs->nearest ? ", nearest level" : "");
     vct_voxels_free(v);
     vct_grid_free(g);
     return im;
@@ -268,7 +272,7 @@ int main(int argc, char **argv) {
         fprintf(stderr, "reference: %.1f s\n", r.wall_ms / 1e3);
         cfg.reference = ref_path;
     }
-    run runs[32];
+    run runs[MAX_RUNS];
     int n = 0;
     {
         vct_image im = render(ctx, s, &cfg, "raycast", 0, 0, &runs[n]);
@@ -278,7 +282,7 @@ int main(int argc, char **argv) {
         vct_image_free(&im);
         ++n;
     }
-    for (uint32_t spp = 1; spp <= cfg.max_spp && n < 32; spp *= 2) {
+    for (uint32_t spp = 1; spp <= cfg.max_spp && n < MAX_RUNS; spp *= 2) {
         vct_image im = render(ctx, s, &cfg, "pt", spp, 1, &runs[n]);
         snprintf(runs[n].name, sizeof runs[n].name, "path trace %u spp", spp);
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
@@ -291,14 +295,20 @@ int main(int argc, char **argv) {
     /* The default (128^3, 6 cones, step 1, anisotropic, 2 bounces) and one
      * setting changed at a time. */
     static const vct_setting vct_runs[] = {
-        {64, 6, 2, 1.0f, 1, 0.0f},   {128, 6, 2, 1.0f, 1, 0.0f},  {256, 6, 2, 1.0f, 1, 0.0f},
-        {128, 1, 2, 1.0f, 1, 0.0f},  {128, 5, 2, 1.0f, 1, 0.0f},  {128, 9, 2, 1.0f, 1, 0.0f},
-        {128, 16, 2, 1.0f, 1, 0.0f}, {128, 6, 2, 0.25f, 1, 0.0f}, {128, 6, 2, 0.5f, 1, 0.0f},
-        {128, 6, 2, 1.0f, 0, 0.0f},  {128, 6, 1, 1.0f, 1, 0.0f},  {128, 6, 3, 1.0f, 1, 0.0f},
-        {64, 6, 2, 1.0f, 1, 2.0f},   {64, 6, 2, 1.0f, 1, 8.0f},   {128, 6, 2, 1.0f, 1, 2.0f},
-        {128, 6, 2, 1.0f, 1, 8.0f},  {128, 6, 2, 1.0f, 1, 16.0f}, {256, 6, 2, 1.0f, 1, 8.0f},
-        {256, 6, 2, 1.0f, 1, 16.0f}, {256, 6, 2, 1.0f, 1, 32.0f}};
-    for (size_t i = 0; cfg.vct && i < sizeof vct_runs / sizeof vct_runs[0] && n < 32; ++i) {
+        {64, 6, 2, 1.0f, 1, 0.0f, 0},   {128, 6, 2, 1.0f, 1, 0.0f, 0},
+        {256, 6, 2, 1.0f, 1, 0.0f, 0},  {128, 1, 2, 1.0f, 1, 0.0f, 0},
+        {128, 5, 2, 1.0f, 1, 0.0f, 0},  {128, 9, 2, 1.0f, 1, 0.0f, 0},
+        {128, 16, 2, 1.0f, 1, 0.0f, 0}, {128, 6, 2, 0.25f, 1, 0.0f, 0},
+        {128, 6, 2, 0.5f, 1, 0.0f, 0},  {128, 6, 2, 1.0f, 0, 0.0f, 0},
+        {128, 6, 1, 1.0f, 1, 0.0f, 0},  {128, 6, 3, 1.0f, 1, 0.0f, 0},
+        {64, 6, 2, 1.0f, 1, 2.0f, 0},   {64, 6, 2, 1.0f, 1, 8.0f, 0},
+        {128, 6, 2, 1.0f, 1, 2.0f, 0},  {128, 6, 2, 1.0f, 1, 8.0f, 0},
+        {128, 6, 2, 1.0f, 1, 16.0f, 0}, {256, 6, 2, 1.0f, 1, 8.0f, 0},
+        {256, 6, 2, 1.0f, 1, 16.0f, 0}, {256, 6, 2, 1.0f, 1, 32.0f, 0},
+        {64, 6, 2, 1.0f, 1, 0.0f, 1},   {128, 6, 2, 1.0f, 1, 0.0f, 1},
+        {256, 6, 2, 1.0f, 1, 0.0f, 1},  {128, 6, 2, 1.0f, 1, 2.0f, 1},
+        {128, 16, 2, 1.0f, 1, 0.0f, 1}};
+    for (size_t i = 0; cfg.vct && i < sizeof vct_runs / sizeof vct_runs[0] && n < MAX_RUNS; ++i) {
         vct_image im = render_vct(ctx, s, &cfg, &vct_runs[i], &runs[n]);
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
             bench_die(&err);

@@ -16,7 +16,10 @@
  * radiance.
  *
  * Build with -DVCT_ANISOTROPIC to read the six directional radiance pools
- * (weighted by the squared direction components) at levels 0 .. L-2. */
+ * (weighted by the squared direction components) at levels 0 .. L-2, and
+ * with -DVCT_CONE_NEAREST_LEVEL to read, instead of the two levels around
+ * the diameter, the nearest one alone, its opacity corrected for that
+ * level's own spacing. */
 #ifndef VCT_CONE_TRACE_H
 #define VCT_CONE_TRACE_H
 
@@ -96,8 +99,9 @@ inline cone_path cone_path_root(void) {
  * one descent reads both neighbouring levels. Empty nodes read 0. */
 VCT_INLINE float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels,
                               float3 at, float level, float3 d, cone_path *path) {
-    const uint coarse = (uint)level, finest = levels - 1u, fine = min(coarse + 1u, finest);
+    const uint coarse = (uint)level, finest = levels - 1u;
     const float f = level - (float)coarse;
+    const uint fine = f > 0.0f ? min(coarse + 1u, finest) : coarse; /* a whole level: one */
     float4 value[2] = {(float4)(0.0f), (float4)(0.0f)};
     /* Scaling by a power of two is exact: a coarser level's cell is the
      * finest one's shifted right. */
@@ -192,17 +196,25 @@ VCT_INLINE cone_result cone_trace(CONE_POOLS, __global const uint *child, const 
             break;
         }
         const float diameter = fmax(2.0f * t * tan_half, min_diameter);
+#ifdef VCT_CONE_NEAREST_LEVEL
+        const float level =
+            rint(clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest));
+        const float spacing = voxel * exp2(finest - level);
+        const int follows = 0; /* the spacing is the level's own */
+#else
         const float level = clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest);
+        const float spacing = level > 0.0f ? 0.5f * diameter : root_spacing;
+        const int follows = level > 0.0f;
+#endif
         const float4 s =
             cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, &path);
         const float step = c->march.x * diameter;
-        /* The level follows the diameter, so the samples are D / 2 apart and
-         * step / spacing is 2 * step fraction, except where the level is held
-         * at the root, and for the last sample's thickness. */
-        const float spacing = level > 0.0f ? 0.5f * diameter : root_spacing;
-        const float thickness_ratio = last > 0.0f    ? last / spacing
-                                      : level > 0.0f ? 2.0f * c->march.x
-                                                     : step / spacing;
+        /* Where the level follows the diameter, the samples are D / 2 apart
+         * and step / spacing is 2 * step fraction; otherwise (a whole level,
+         * the root, the last sample's thickness) it is divided out. */
+        const float thickness_ratio = last > 0.0f ? last / spacing
+                                      : follows   ? 2.0f * c->march.x
+                                                  : step / spacing;
         cone_composite(&r, s, thickness_ratio);
         if (t <= c->march.z)
             r.ao_alpha = r.alpha;

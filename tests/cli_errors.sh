@@ -48,6 +48,7 @@ expect_failure "unreadable glTF" "garbage.gltf" render garbage.gltf -o out.png
 expect_failure "bad output name" "must end in .png or .pfm" render ok.obj -o out.jpg
 expect_failure "bad size" "--size" render ok.obj --size 0 10 -o out.png
 expect_failure "bad number" "not a finite number" render ok.obj --point-light 1 2 x 1 1 1 -o out.png
+expect_failure "bad cone levels" "--cone-levels takes blend or nearest" render ok.obj --cone-levels bilinear -o out.png
 expect_failure "unknown option" "unknown option --bogus" render ok.obj --bogus -o out.png
 expect_failure "no such device" "device 99 does not exist" render ok.obj --device 99 -o out.png
 expect_failure "degenerate camera" "do not define a view" render ok.obj --camera-pos 0 0 5 --look-at 0 0 5 -o out.png

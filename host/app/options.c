@@ -27,7 +27,8 @@ void cli_usage(void) {
           "                                   emission, ao, soft_shadows); --cones 1|5|6|9|16\n"
           "                                   diffuse cones (default 6); --cone-step F\n"
           "                                   (fraction of the diameter, 1); --cone-offset V\n"
-          "                                   (voxels, 4);\n"
+          "                                   (voxels, 4); --cone-levels blend|nearest (a\n"
+          "                                   sample blends two octree levels, or reads one)\n"
           "                                   --ao-distance F (of the volume, 0.125);\n"
           "                                   --bounces 1..4 light bounces in the voxels (2);\n"
           "                                   --isotropic: one radiance per brick sample\n"
@@ -301,6 +302,16 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
         } else if (strcmp(a, "--cone-step") == 0) {
             if (parse_floats(argc, argv, &i, 1, &opt->cones.step))
                 return 1;
+        } else if (strcmp(a, "--cone-levels") == 0) {
+            const char *how = i + 1 < argc ? argv[++i] : "";
+            if (strcmp(how, "blend") == 0)
+                opt->cones.nearest_level = 0;
+            else if (strcmp(how, "nearest") == 0)
+                opt->cones.nearest_level = 1;
+            else {
+                fprintf(stderr, "vct: --cone-levels takes blend or nearest, not '%s'\n", how);
+                return 1;
+            }
         } else if (strcmp(a, "--cone-offset") == 0) {
             if (parse_floats(argc, argv, &i, 1, &opt->cones.offset))
                 return 1;

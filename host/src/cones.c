@@ -9,7 +9,7 @@
 #include "voxels.h"
 
 vct_cone_settings vct_cone_settings_default(void) {
-    const vct_cone_settings s = {1.0f, 4.0f, 0.125f, 0.99f};
+    const vct_cone_settings s = {1.0f, 4.0f, 0.125f, 0.99f, 0};
     return s;
 }
 
@@ -26,6 +26,9 @@ int vct_cone_settings_check(const vct_cone_settings *s, vct_error *err) {
     if (!(s->stop_alpha > 0.0f && s->stop_alpha <= 1.0f))
         return vct_fail(err, VCT_ERR_INPUT, "cone stop opacity %g: give a value in (0, 1]",
                         s->stop_alpha);
+    if (s->nearest_level != 0 && s->nearest_level != 1)
+        return vct_fail(err, VCT_ERR_INPUT, "cone levels %d: give 0 (blend) or 1 (nearest)",
+                        s->nearest_level);
     return VCT_OK;
 }
 
@@ -125,11 +128,11 @@ void vct_cone_desc_make(const vct_voxels *v, const vct_cone_settings *s, const f
     d->march.s[3] = s->stop_alpha;
 }
 
-const char *vct_cone_pool_options(const vct_voxels *v) {
+void vct_cone_options(const vct_voxels *v, const vct_cone_settings *s, char *out, size_t size) {
     const vct_brick_info *b = &v->brick_info;
-    if (b->image)
-        return b->anisotropic ? "-DVCT_BRICK_IMAGE -DVCT_ANISOTROPIC" : "-DVCT_BRICK_IMAGE";
-    return b->anisotropic ? "-DVCT_ANISOTROPIC" : "";
+    snprintf(out, size, "%s%s%s", b->image ? " -DVCT_BRICK_IMAGE" : "",
+             b->anisotropic ? " -DVCT_ANISOTROPIC" : "",
+             s->nearest_level ? " -DVCT_CONE_NEAREST_LEVEL" : "");
 }
 
 int vct_cone_set_args(cl_kernel k, const vct_voxels *v, const void *desc, const char *stage,
@@ -161,7 +164,9 @@ int vct_cone_trace(vct_context *ctx, const vct_voxels *v, const vct_cone_setting
     if (rc || n == 0)
         return rc;
     cl_program p;
-    rc = vct_program_get(ctx, "vct_render.cl", vct_cone_pool_options(v), &p, err);
+    char options[128];
+    vct_cone_options(v, s, options, sizeof options);
+    rc = vct_program_get(ctx, "vct_render.cl", options, &p, err);
     cl_mem in = rc == VCT_OK ? vct_buffer_create(ctx, stage, "cones", 32ull * n, CL_MEM_READ_ONLY,
                                                  (void *)cones, err)
                              : NULL;

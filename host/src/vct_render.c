@@ -73,8 +73,10 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v
                               BOUNCE_STAGE, "clEnqueueCopyBuffer");
     }
     cl_program p;
+    char options[128];
+    vct_cone_options(v, cs, options, sizeof options);
     if (rc == VCT_OK)
-        rc = vct_program_get(ctx, "inject_bounce.cl", vct_cone_pool_options(v), &p, err);
+        rc = vct_program_get(ctx, "inject_bounce.cl", options, &p, err);
     cl_mem cones = rc == VCT_OK ? cone_buffer(ctx, diffuse_cones, BOUNCE_STAGE, err) : NULL;
     cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
     vct_cone_desc desc;
@@ -131,8 +133,9 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_grid *g, con
     return VCT_OK;
 }
 
-/* -D options: the planned effects, then the brick pool's kind. */
-static void program_options(const vct_plan *plan, const vct_voxels *v, char *out, size_t size) {
+/* -D options: the planned effects, then the cones' (pool kind, levels). */
+static void program_options(const vct_plan *plan, const vct_voxels *v,
+                            const vct_cone_settings *cones, char *out, size_t size) {
     static const char *defines[VCT_EFFECTS] = {
         "-DVCT_DIRECT",     "-DVCT_SHADOWS",  "-DVCT_INDIRECT", "-DVCT_SPECULAR",
         "-DVCT_REFRACTION", "-DVCT_EMISSION", "-DVCT_AO",       "-DVCT_SOFT_SHADOWS"};
@@ -142,7 +145,7 @@ static void program_options(const vct_plan *plan, const vct_voxels *v, char *out
         if (plan->on[e])
             len += (size_t)snprintf(out + len, size - len, "%s%s", len ? " " : "", defines[e]);
     if (v && len < size)
-        snprintf(out + len, size - len, "%s%s", len ? " " : "", vct_cone_pool_options(v));
+        vct_cone_options(v, cones, out + len, size - len);
 }
 
 typedef struct frame {
@@ -259,7 +262,7 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
     if (f.v)
         vct_cone_desc_make(f.v, &opt->cones, s->ambient, &f.desc);
     char options[256];
-    program_options(plan, f.v, options, sizeof options);
+    program_options(plan, f.v, &opt->cones, options, sizeof options);
     const size_t pixels = (size_t)opt->width * opt->height;
 
     vct_stage_begin(ctx, PRIMARY_STAGE);

@@ -401,9 +401,13 @@ typedef struct vct_cone_settings {
     float offset;      /* start offset along the surface normal, in voxels */
     float ao_distance; /* ambient-occlusion range, as a fraction of the volume's side */
     float stop_alpha;  /* a cone stops once its opacity reaches this */
+    /* 0: a sample blends the two levels around its diameter; 1: it reads
+     * the nearest level alone (kernels built with -DVCT_CONE_NEAREST_LEVEL) */
+    int nearest_level;
 } vct_cone_settings;
 
-/* step 1, offset 4 voxels, AO over 1/8 of the volume, stop at 0.99. */
+/* step 1, offset 4 voxels, AO over 1/8 of the volume, stop at 0.99, levels
+ * blended. */
 vct_cone_settings vct_cone_settings_default(void);
 
 /* Diffuse cone preset of `count` cones (1, 5, 6, 9 or 16): directions in a
