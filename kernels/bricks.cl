@@ -165,7 +165,6 @@ inline void lattice_texels(__global const uint *child, __global const uint *arou
     gather_children(around, b, cell);
     for (uint e = 0; e < LATTICE_ENTRIES; ++e)
         texel[e] = BRICK_NULL;
-    const uint row = 3u * pool.x, slice = row * 3u * pool.y;
     for (uint c = 0; c < 64u; ++c) {
         const uint cb = cell[c] == OCT_NULL ? BRICK_NULL : brick_of(child, cell[c]);
         if (cb == BRICK_NULL)
@@ -177,7 +176,7 @@ inline void lattice_texels(__global const uint *child, __global const uint *arou
             for (uint ty = 0; ty < 3u; ++ty)
                 for (uint tx = 0; tx < 3u; ++tx)
                     first[tz * LATTICE_STRIDE_Z + ty * LATTICE_STRIDE_Y + tx] =
-                        base + tz * slice + ty * row + tx;
+                        base + brick_offset(pool, (uint3)(tx, ty, tz));
     }
 }
 

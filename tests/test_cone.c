@@ -315,6 +315,16 @@ static void trace(const brick_case *c, const float ambient[3], const float *cone
     REQUIRE_OK(vct_cone_trace(ctx, c->voxels, &s, ambient, cones, n, out, &err), err);
 }
 
+/* One quad (a wall) in a 32^3 buffer pool of the unit cube, lit by a point
+ * light at (light_x, 0.5, 0.5). */
+static brick_case lit_wall_case(const float quad[12], float light_x, int directional,
+                                const char *name) {
+    vct_scene *s = quads_scene(quad, 1);
+    add_point_light(s, light_x, 0.5f, 0.5f, 0.1f);
+    const vct_brick_options opt = {VCT_BRICKS_BUFFER, directional, 0};
+    return make_case(name, s, 32, 1.0f, &opt);
+}
+
 static void hard_cases(void) {
     const float ambient[3] = {0.5f, 1.0f, 2.0f};
     vct_error err = {0};
@@ -339,11 +349,8 @@ static void hard_cases(void) {
     const float wall[12] = {0.5f, 0.01f, 0.01f, 0.5f, 0.99f, 0.01f,
                             0.5f, 0.99f, 0.99f, 0.5f, 0.01f, 0.99f};
     for (int directional = 0; directional < 2; ++directional) {
-        vct_scene *s = quads_scene(wall, 1);
-        add_point_light(s, 0.2f, 0.5f, 0.5f, 0.1f);
-        const vct_brick_options opt = {VCT_BRICKS_BUFFER, directional, 0};
-        brick_case c =
-            make_case(directional ? "wall, directional" : "wall, isotropic", s, 32, 1.0f, &opt);
+        brick_case c = lit_wall_case(wall, 0.2f, directional,
+                                     directional ? "wall, directional" : "wall, isotropic");
         /* Thin cones crossing it at 0 to 75 degrees stop at it: no leak. */
         enum { CROSS = 16 };
         float cones[8 * (CROSS + 4)], out[8 * (CROSS + 4)];
@@ -403,11 +410,9 @@ static void hard_cases(void) {
     const float face_wall[12] = {0.99f, 0.01f, 0.01f, 0.99f, 0.99f, 0.01f,
                                  0.99f, 0.99f, 0.99f, 0.99f, 0.01f, 0.99f};
     for (int directional = 0; directional < 2; ++directional) {
-        vct_scene *s = quads_scene(face_wall, 1);
-        add_point_light(s, 0.5f, 0.5f, 0.5f, 0.1f);
-        const vct_brick_options opt = {VCT_BRICKS_BUFFER, directional, 0};
-        brick_case c = make_case(directional ? "face wall, directional" : "face wall, isotropic", s,
-                                 32, 1.0f, &opt);
+        brick_case c =
+            lit_wall_case(face_wall, 0.5f, directional,
+                          directional ? "face wall, directional" : "face wall, isotropic");
         enum { WIDE = 12 };
         float cones[8 * WIDE], out[8 * WIDE];
         for (int i = 0; i < WIDE; ++i) {
