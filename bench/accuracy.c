@@ -21,7 +21,7 @@
 #include "heavy_scene.h"
 
 typedef struct run {
-    char name[96];
+    char name[128];
     double grid_ms, build_ms, render_ms, total_ms; /* device time per stage, and their sum */
     double wall_ms;
     vct_image_metrics m;
@@ -41,9 +41,10 @@ typedef struct vct_setting {
     int anisotropic;
     float offset; /* cone start offset in voxels; 0: the default */
     int nearest;  /* 1: each sample reads the nearest level alone */
+    int sparse;   /* 1: diffuse cones at every other pixel per axis */
 } vct_setting;
 
-#define MAX_RUNS 40
+#define MAX_RUNS 48
 
 static const char *const build_stages[] = {
     "voxelize",        "octree build",       "brick creation", "brick filtering",
@@ -79,6 +80,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     if (vs->offset > 0.0f)
         o.cones.offset = vs->offset;
     o.cones.nearest_level = vs->nearest;
+    o.sparse_diffuse = vs->sparse;
     vct_voxels *v = NULL;
     vct_image im;
     if (vct_vct_prepare(ctx, s, g, &plan, &vo, &bo, vs->bounces, &o.cones, &v, &err) ||
@@ -89,9 +91,10 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     r->build_ms = stages_ms(ctx, build_stages, sizeof build_stages / sizeof build_stages[0]);
     r->render_ms = stages_ms(ctx, trace_stages, sizeof trace_stages / sizeof trace_stages[0]);
     r->total_ms = r->grid_ms + r->build_ms + r->render_ms;
-    snprintf(r->name, sizeof r->name, "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s%s",
+    snprintf(r->name, sizeof r->name, "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s%s%s",
              vs->res, vs->cones, vs->step, o.cones.offset, vs->anisotropic ? "aniso" : "iso",
-             vs->bounces, vs->bounces == 1 ? "" : "s", vs->nearest ? ", nearest level" : "");
+             vs->bounces, vs->bounces == 1 ? "" : "s", vs->nearest ? ", nearest level" : "",
+             vs->sparse ? ", sparse diffuse" : "");
     vct_voxels_free(v);
     vct_grid_free(g);
     return im;
@@ -295,19 +298,21 @@ int main(int argc, char **argv) {
     /* The default (128^3, 6 cones, step 1, anisotropic, 2 bounces) and one
      * setting changed at a time. */
     static const vct_setting vct_runs[] = {
-        {64, 6, 2, 1.0f, 1, 0.0f, 0},   {128, 6, 2, 1.0f, 1, 0.0f, 0},
-        {256, 6, 2, 1.0f, 1, 0.0f, 0},  {128, 1, 2, 1.0f, 1, 0.0f, 0},
-        {128, 5, 2, 1.0f, 1, 0.0f, 0},  {128, 9, 2, 1.0f, 1, 0.0f, 0},
-        {128, 16, 2, 1.0f, 1, 0.0f, 0}, {128, 6, 2, 0.25f, 1, 0.0f, 0},
-        {128, 6, 2, 0.5f, 1, 0.0f, 0},  {128, 6, 2, 1.0f, 0, 0.0f, 0},
-        {128, 6, 1, 1.0f, 1, 0.0f, 0},  {128, 6, 3, 1.0f, 1, 0.0f, 0},
-        {64, 6, 2, 1.0f, 1, 2.0f, 0},   {64, 6, 2, 1.0f, 1, 8.0f, 0},
-        {128, 6, 2, 1.0f, 1, 2.0f, 0},  {128, 6, 2, 1.0f, 1, 8.0f, 0},
-        {128, 6, 2, 1.0f, 1, 16.0f, 0}, {256, 6, 2, 1.0f, 1, 8.0f, 0},
-        {256, 6, 2, 1.0f, 1, 16.0f, 0}, {256, 6, 2, 1.0f, 1, 32.0f, 0},
-        {64, 6, 2, 1.0f, 1, 0.0f, 1},   {128, 6, 2, 1.0f, 1, 0.0f, 1},
-        {256, 6, 2, 1.0f, 1, 0.0f, 1},  {128, 6, 2, 1.0f, 1, 2.0f, 1},
-        {128, 16, 2, 1.0f, 1, 0.0f, 1}};
+        {64, 6, 2, 1.0f, 1, 0.0f, 0, 0},   {128, 6, 2, 1.0f, 1, 0.0f, 0, 0},
+        {256, 6, 2, 1.0f, 1, 0.0f, 0, 0},  {128, 1, 2, 1.0f, 1, 0.0f, 0, 0},
+        {128, 5, 2, 1.0f, 1, 0.0f, 0, 0},  {128, 9, 2, 1.0f, 1, 0.0f, 0, 0},
+        {128, 16, 2, 1.0f, 1, 0.0f, 0, 0}, {128, 6, 2, 0.25f, 1, 0.0f, 0, 0},
+        {128, 6, 2, 0.5f, 1, 0.0f, 0, 0},  {128, 6, 2, 1.0f, 0, 0.0f, 0, 0},
+        {128, 6, 1, 1.0f, 1, 0.0f, 0, 0},  {128, 6, 3, 1.0f, 1, 0.0f, 0, 0},
+        {64, 6, 2, 1.0f, 1, 2.0f, 0, 0},   {64, 6, 2, 1.0f, 1, 8.0f, 0, 0},
+        {128, 6, 2, 1.0f, 1, 2.0f, 0, 0},  {128, 6, 2, 1.0f, 1, 8.0f, 0, 0},
+        {128, 6, 2, 1.0f, 1, 16.0f, 0, 0}, {256, 6, 2, 1.0f, 1, 8.0f, 0, 0},
+        {256, 6, 2, 1.0f, 1, 16.0f, 0, 0}, {256, 6, 2, 1.0f, 1, 32.0f, 0, 0},
+        {64, 6, 2, 1.0f, 1, 0.0f, 1, 0},   {128, 6, 2, 1.0f, 1, 0.0f, 1, 0},
+        {256, 6, 2, 1.0f, 1, 0.0f, 1, 0},  {128, 6, 2, 1.0f, 1, 2.0f, 1, 0},
+        {128, 16, 2, 1.0f, 1, 0.0f, 1, 0}, {64, 6, 2, 1.0f, 1, 0.0f, 0, 1},
+        {128, 6, 2, 1.0f, 1, 0.0f, 0, 1},  {256, 6, 2, 1.0f, 1, 0.0f, 0, 1},
+        {128, 6, 2, 1.0f, 1, 0.0f, 1, 1}};
     for (size_t i = 0; cfg.vct && i < sizeof vct_runs / sizeof vct_runs[0] && n < MAX_RUNS; ++i) {
         vct_image im = render_vct(ctx, s, &cfg, &vct_runs[i], &runs[n]);
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))

@@ -15,9 +15,10 @@
  *
  * G-buffer, 4 float4 per pixel: position and material id (as bits); normal
  * facing the viewer and 1 where a surface was found; direction towards the
- * viewer; the throughput of the refractions on the way. AOVs, 4 float4 per
- * pixel when given: direct, indirect diffuse, specular, (open fraction,
- * mean level sampled, 0, 1). Glass reflections, 3 float4 per pixel, when
+ * viewer; the throughput of the refractions on the way. AOVs, AOV_SLOTS
+ * float4 per pixel when given: direct, indirect diffuse, specular, (open
+ * fraction, mean level sampled, 0, 1), position and normal (w 1 where a
+ * surface was found, else the slot stays 0). Glass reflections, 3 float4 per pixel, when
  * refraction and specular are both planned: (point, weight.x), (normal,
  * weight.y), (mirror direction, weight.z), the weight 0 where there is none. */
 #include "bsdf.h"
@@ -28,6 +29,7 @@
 #include "vct_types.h"
 
 #define VCT_MAX_INTERFACES 8u
+#define AOV_SLOTS 6u
 /* Shadow cones step an eighth as far as the setting says, 1/8 of the
  * diameter at the default step: a thin occluder then falls between samples
  * less often (measured: no leak into the umbra at 1/8 of the diameter, up
@@ -148,8 +150,11 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
     gbuf[4u * pixel + 2u] = gview;
     gbuf[4u * pixel + 3u] = (float4)(throughput, 0.0f);
     image[pixel] = (float4)(radiance, 1.0f);
-    if (aov)
-        aov[4u * pixel] = (float4)(radiance, 1.0f);
+    if (aov) {
+        aov[AOV_SLOTS * pixel] = (float4)(radiance, 1.0f);
+        aov[AOV_SLOTS * pixel + 4u] = (float4)(gpos.xyz, gnormal.w);
+        aov[AOV_SLOTS * pixel + 5u] = gnormal;
+    }
     if (reflection) {
         reflection[3u * pixel] = rpos;
         reflection[3u * pixel + 1u] = rnormal;
@@ -164,9 +169,8 @@ typedef struct gbuffer_surface {
     vct_material_desc m;
 } gbuffer_surface;
 
-inline int gbuffer_read(__global const float4 *gbuf, __global const vct_material_desc *materials,
-                        uint2 size, uint *pixel, gbuffer_surface *s) {
-    const uint x = get_global_id(0), y = get_global_id(1);
+inline int gbuffer_at(__global const float4 *gbuf, __global const vct_material_desc *materials,
+                      uint2 size, uint x, uint y, uint *pixel, gbuffer_surface *s) {
     if (x >= size.x || y >= size.y)
         return 0;
     *pixel = y * size.x + x;
@@ -182,13 +186,19 @@ inline int gbuffer_read(__global const float4 *gbuf, __global const vct_material
     return 1;
 }
 
+/* The G-buffer at this work-item's pixel. */
+inline int gbuffer_read(__global const float4 *gbuf, __global const vct_material_desc *materials,
+                        uint2 size, uint *pixel, gbuffer_surface *s) {
+    return gbuffer_at(gbuf, materials, size, get_global_id(0), get_global_id(1), pixel, s);
+}
+
 /* Adds a cone pass's radiance to the pixel, and to AOV `slot` when AOVs are
  * kept (the buffer starts at 0). */
 inline void pixel_add(__global float4 *image, __global float4 *aov, uint pixel, uint slot,
                       float3 add) {
     image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
     if (aov)
-        aov[4u * pixel + slot] = (float4)(aov[4u * pixel + slot].xyz + add, 1.0f);
+        aov[AOV_SLOTS * pixel + slot] = (float4)(aov[AOV_SLOTS * pixel + slot].xyz + add, 1.0f);
 }
 
 /* Lights with a radius: the cone from the surface towards the light's
@@ -229,6 +239,57 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
     pixel_add(image, aov, pixel, 0u, g.throughput * direct_shade(&g.m, sum, e));
 }
 
+/* What a pixel's diffuse cones gathered: the cosine-weighted radiance (or,
+ * for occlusion alone, nothing), the open fraction within the AO distance,
+ * and the mean level sampled. */
+typedef struct diffuse_light {
+    float3 radiance;
+    float open, level;
+} diffuse_light;
+
+inline diffuse_light diffuse_trace(CONE_POOLS, __global const uint *child, const vct_cone_desc *cd,
+                                   __global const vct_cone_dir *cones, uint cone_count,
+                                   const gbuffer_surface *g) {
+    const float3 n = g->n;
+    float3 t, b;
+    basis_of(n, &t, &b);
+    const float3 origin = cone_origin(cd, g->p, n);
+#ifdef VCT_INDIRECT
+    const float reach = INFINITY;
+#else
+    const float reach = cd->march.z; /* occlusion only: no further than the AO distance */
+#endif
+    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
+    float level_sum = 0.0f;
+    uint samples = 0;
+    for (uint i = 0; i < cone_count; ++i) {
+        const vct_cone_dir c = cones[i];
+        const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
+        const cone_result r =
+            cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
+        l.radiance += c.dir.w * r.radiance;
+        l.open += c.dir.w * (1.0f - r.ao_alpha);
+        level_sum += r.level_sum;
+        samples += r.samples;
+    }
+    l.level = samples ? level_sum / (float)samples : 0.0f;
+    return l;
+}
+
+/* Adds what the diffuse cones gathered, reflected by the pixel's surface. */
+inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pixel,
+                          const gbuffer_surface *g, diffuse_light l, float3 ambient) {
+    float3 add = (float3)(0.0f);
+#if defined(VCT_INDIRECT)
+    add = diffuse_color(&g->m) * g->throughput * l.radiance;
+#elif defined(VCT_AO)
+    add = diffuse_color(&g->m) * g->throughput * ambient * l.open;
+#endif
+    pixel_add(image, aov, pixel, 1u, add);
+    if (aov)
+        aov[AOV_SLOTS * pixel + 3u] = (float4)(l.open, l.level, 0.0f, 1.0f);
+}
+
 __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                                 __global const vct_cone_dir *cones, uint cone_count,
                                 __global const float4 *gbuf,
@@ -238,38 +299,90 @@ __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone
     gbuffer_surface g;
     if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
         return;
-    const float3 n = g.n;
-    float3 t, b;
-    basis_of(n, &t, &b);
-    const float3 origin = cone_origin(&cd, g.p, n);
-#ifdef VCT_INDIRECT
-    const float reach = INFINITY;
-#else
-    const float reach = cd.march.z; /* occlusion only: no further than the AO distance */
-#endif
-    float3 gathered = (float3)(0.0f);
-    float open = 0.0f, level_sum = 0.0f;
-    uint samples = 0;
-    for (uint i = 0; i < cone_count; ++i) {
-        const vct_cone_dir c = cones[i];
-        const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
-        const cone_result r =
-            cone_trace(CONE_POOLS_PASS, child, &cd, origin, d, c.aperture.x, reach);
-        gathered += c.dir.w * r.radiance;
-        open += c.dir.w * (1.0f - r.ao_alpha);
-        level_sum += r.level_sum;
-        samples += r.samples;
+    const diffuse_light l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+    diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
+}
+
+/* Diffuse light traced sparsely: vct_diffuse_sparse traces the cones of
+ * every other pixel per axis, pixel (2i, 2j) into cell (i, j) of `sparse`
+ * (2 float4 each: radiance and open fraction, mean level), and
+ * vct_diffuse_fill gives every pixel the mean of the cells around it (itself
+ * at (2i, 2j), else the 2 or 4 nearest) whose surface agrees with its own:
+ * normals within SPARSE_NORMAL_COS, the cell's point within
+ * SPARSE_PLANE_VOXELS of the pixel's tangent plane, and no further from the
+ * pixel than the cones start off the surface (the cone offset, at least
+ * SPARSE_MIN_REACH voxels): from that height two such points see nearly the
+ * same hemisphere. Where none agrees (edges, corners, thin parts), the pixel
+ * traces its own cones. vct_diffuse_sparse takes image and aov only to share
+ * every cone pass's signature. */
+#define SPARSE_NORMAL_COS 0.9f
+#define SPARSE_PLANE_VOXELS 0.25f
+#define SPARSE_MIN_REACH 2.0f
+
+__kernel void vct_diffuse_sparse(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                                 __global const vct_cone_dir *cones, uint cone_count,
+                                 __global const float4 *gbuf,
+                                 __global const vct_material_desc *materials, uint2 size,
+                                 __global float4 *image, __global float4 *aov,
+                                 __global float4 *sparse) {
+    const uint i = get_global_id(0), j = get_global_id(1);
+    const uint2 cells = (size + 1u) / 2u;
+    if (i >= cells.x || j >= cells.y)
+        return;
+    uint pixel;
+    gbuffer_surface g;
+    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
+    if (gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &pixel, &g))
+        l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+    const uint cell = j * cells.x + i;
+    sparse[2u * cell] = (float4)(l.radiance, l.open);
+    sparse[2u * cell + 1u] = (float4)(l.level, 0.0f, 0.0f, 0.0f);
+}
+
+inline int sparse_agrees(const vct_cone_desc *cd, const gbuffer_surface *g,
+                         const gbuffer_surface *cell) {
+    const float voxel = cd->volume.w / (float)cd->res.x;
+    const float3 off = cell->p - g->p;
+    const float reach = fmax(cd->march.y, SPARSE_MIN_REACH) * voxel;
+    return dot(g->n, cell->n) >= SPARSE_NORMAL_COS &&
+           fabs(dot(g->n, off)) <= SPARSE_PLANE_VOXELS * voxel && dot(off, off) <= reach * reach;
+}
+
+__kernel void vct_diffuse_fill(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                               __global const vct_cone_dir *cones, uint cone_count,
+                               __global const float4 *gbuf,
+                               __global const vct_material_desc *materials, uint2 size,
+                               __global float4 *image, __global float4 *aov,
+                               __global const float4 *sparse) {
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
+        return;
+    const uint x = get_global_id(0), y = get_global_id(1), columns = (size.x + 1u) / 2u;
+    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
+    float agree = 0.0f;
+    for (uint dy = 0; dy <= (y & 1u); ++dy)
+        for (uint dx = 0; dx <= (x & 1u); ++dx) {
+            const uint i = x / 2u + dx, j = y / 2u + dy;
+            uint at;
+            gbuffer_surface q;
+            if (!gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &at, &q) ||
+                !sparse_agrees(&cd, &g, &q))
+                continue;
+            const float4 a = sparse[2u * (j * columns + i)];
+            l.radiance += a.xyz;
+            l.open += a.w;
+            l.level += sparse[2u * (j * columns + i) + 1u].x;
+            agree += 1.0f;
+        }
+    if (agree > 0.0f) {
+        l.radiance /= agree;
+        l.open /= agree;
+        l.level /= agree;
+    } else {
+        l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
     }
-    float3 add = (float3)(0.0f);
-#if defined(VCT_INDIRECT)
-    add = diffuse_color(&g.m) * g.throughput * gathered;
-#elif defined(VCT_AO)
-    add = diffuse_color(&g.m) * g.throughput * cd.ambient.xyz * open;
-#endif
-    pixel_add(image, aov, pixel, 1u, add);
-    if (aov)
-        aov[4u * pixel + 3u] =
-            (float4)(open, samples ? level_sum / (float)samples : 0.0f, 0.0f, 1.0f);
+    diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }
 
 /* Half-angle of a Phong lobe cos^e: the cone that holds half its energy. */

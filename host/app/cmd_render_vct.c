@@ -26,11 +26,9 @@ static int write_aovs(const vct_aovs *a, const char *prefix, float exposure, vct
     const struct {
         const char *name;
         const vct_image *image;
-    } outs[] = {{"direct", &a->direct},
-                {"indirect", &a->indirect},
-                {"specular", &a->specular},
-                {"ao", &a->ao},
-                {"level", &a->level}};
+    } outs[] = {{"direct", &a->direct}, {"indirect", &a->indirect}, {"specular", &a->specular},
+                {"ao", &a->ao},         {"level", &a->level},       {"position", &a->position},
+                {"normal", &a->normal}};
     for (size_t i = 0; i < sizeof outs / sizeof outs[0]; ++i) {
         char path[4096];
         snprintf(path, sizeof path, "%s_%s.pfm", prefix, outs[i].name);
@@ -55,6 +53,7 @@ int cli_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *grid,
     vo.height = opt->height;
     vo.diffuse_cones = (uint32_t)opt->diffuse_cones;
     vo.cones = opt->cones;
+    vo.sparse_diffuse = opt->sparse_diffuse;
     vo.aovs = opt->aov_prefix != NULL;
     vct_voxel_options voxel;
     /* 128^3 by default: within 1 % of the best error measured on the Cornell

@@ -28,13 +28,17 @@ void cli_usage(void) {
           "                                   diffuse cones (default 6); --cone-step F\n"
           "                                   (fraction of the diameter, 1); --cone-offset V\n"
           "                                   (voxels, 4); --cone-levels blend|nearest (a\n"
-          "                                   sample blends two octree levels, or reads one)\n"
+          "                                   sample blends two octree levels, or reads one);\n"
+          "                                   --sparse-diffuse: diffuse cones at every other\n"
+          "                                   pixel per axis, the rest filled in from the\n"
+          "                                   traced neighbours on the same surface;\n"
           "                                   --ao-distance F (of the volume, 0.125);\n"
           "                                   --bounces 1..4 light bounces in the voxels (2);\n"
           "                                   --isotropic: one radiance per brick sample\n"
           "                                   (default: six directional values);\n"
           "                                   --aov PREFIX writes PREFIX_direct.pfm, _indirect,\n"
-          "                                   _specular, _ao, _level; --voxel-res, --bricks,\n"
+          "                                   _specular, _ao, _level, _position, _normal;\n"
+          "                                   --voxel-res, --bricks,\n"
           "                                   --anisotropic as for voxelize\n"
           "  --method raycast                 direct light with hard shadows\n"
           "  --method pt                      path tracing (the reference): --spp N or --time S,\n"
@@ -312,6 +316,8 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 fprintf(stderr, "vct: --cone-levels takes blend or nearest, not '%s'\n", how);
                 return 1;
             }
+        } else if (strcmp(a, "--sparse-diffuse") == 0) {
+            opt->sparse_diffuse = 1;
         } else if (strcmp(a, "--cone-offset") == 0) {
             if (parse_floats(argc, argv, &i, 1, &opt->cones.offset))
                 return 1;

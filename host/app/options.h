@@ -36,7 +36,7 @@ typedef struct cli_options {
     /* vct method */
     int print_plan;
     vct_effect_force force[VCT_EFFECTS];
-    int diffuse_cones, bounces;
+    int diffuse_cones, bounces, sparse_diffuse;
     vct_cone_settings cones;
     const char *aov_prefix;
 } cli_options;

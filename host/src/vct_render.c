@@ -32,6 +32,8 @@ void vct_aovs_free(vct_aovs *a) {
     vct_image_free(&a->specular);
     vct_image_free(&a->ao);
     vct_image_free(&a->level);
+    vct_image_free(&a->position);
+    vct_image_free(&a->normal);
 }
 
 /* The preset on the device: vct_cone_dir per cone. */
@@ -159,8 +161,10 @@ typedef struct frame {
     cl_uint size[2];
 } frame;
 
-static int launch_frame_kernel(frame *f, cl_kernel k, vct_error *err) {
-    const size_t global[2] = {f->size[0], f->size[1]}, local[2] = {8, 8};
+/* Over every pixel, or with `every` 2 over every other pixel per axis. */
+static int launch_frame_kernel(frame *f, cl_kernel k, cl_uint every, vct_error *err) {
+    const size_t global[2] = {(f->size[0] + every - 1) / every, (f->size[1] + every - 1) / every};
+    const size_t local[2] = {8, 8};
     return vct_launch_2d(f->ctx, k, global, local, err);
 }
 
@@ -176,7 +180,7 @@ static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_ca
                           VCT_ARG_OF(sb.light_count), VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
                           VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov), VCT_ARG_OF(f->reflection));
     if (rc == VCT_OK)
-        rc = launch_frame_kernel(f, k, err);
+        rc = launch_frame_kernel(f, k, 1, err);
     if (rc == VCT_OK)
         rc = vct_finish(f->ctx, PRIMARY_STAGE, err);
     if (k)
@@ -186,9 +190,11 @@ static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_ca
 
 /* One cone kernel over the G-buffer: CONE_POOLS, child, desc, then, if
  * given, a buffer and a count (cones, lights, or glass reflections and
- * float4 per pixel), then gbuf, materials, size, image, aov. */
-static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list, cl_uint list_count,
-                     vct_error *err) {
+ * float4 per pixel), then gbuf, materials, size, image, aov, and the sparse
+ * diffuse cells if given (which the kernel runs over, one per 2x2 pixels,
+ * when `over_cells`). */
+static int cone_pass_with(frame *f, const char *stage, const char *name, cl_mem list,
+                          cl_uint list_count, cl_mem sparse, int over_cells, vct_error *err) {
     cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
     int next = 0;
     int rc = k ? vct_cone_set_args(k, f->v, &f->desc, stage, &next, err) : (int)err->status;
@@ -200,8 +206,10 @@ static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list,
         rc = vct_set_args(err, stage, k, next, 5, VCT_ARG_OF(f->gbuf),
                           VCT_ARG_OF(f->scene.materials), VCT_ARG_OF(f->size), VCT_ARG_OF(f->image),
                           VCT_ARG_OF(f->aov));
+    if (rc == VCT_OK && sparse)
+        rc = vct_set_args(err, stage, k, next + 5, 1, VCT_ARG_OF(sparse));
     if (rc == VCT_OK)
-        rc = launch_frame_kernel(f, k, err);
+        rc = launch_frame_kernel(f, k, over_cells ? 2 : 1, err);
     if (rc == VCT_OK)
         rc = vct_finish(f->ctx, stage, err);
     if (k)
@@ -209,28 +217,57 @@ static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list,
     return rc;
 }
 
-/* The AOV buffer (4 float4 per pixel) split into images. */
+static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list, cl_uint list_count,
+                     vct_error *err) {
+    return cone_pass_with(f, stage, name, list, list_count, NULL, 0, err);
+}
+
+/* Indirect diffuse light (or AO): every pixel's cones, or with sparse
+ * diffuse, those of every other pixel per axis and the rest filled in. */
+static int diffuse_pass(frame *f, cl_mem cones, cl_uint count, int sparse, vct_error *err) {
+    if (!sparse)
+        return cone_pass(f, DIFFUSE_STAGE, "vct_diffuse_cones", cones, count, err);
+    const size_t cells = (size_t)((f->size[0] + 1) / 2) * ((f->size[1] + 1) / 2);
+    cl_mem buffer = vct_buffer_create(f->ctx, DIFFUSE_STAGE, "sparse diffuse cells", 32 * cells,
+                                      CL_MEM_READ_WRITE, NULL, err);
+    int rc = buffer ? cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_sparse", cones, count, buffer,
+                                     1, err)
+                    : (int)err->status;
+    if (rc == VCT_OK)
+        rc = cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_fill", cones, count, buffer, 0, err);
+    vct_buffer_release(f->ctx, buffer);
+    return rc;
+}
+
+/* The AOV buffer (AOV_SLOTS float4 per pixel, kernels/vct_render.cl) split
+ * into images: a slot's float4 as it is, or one of its components as grey. */
+#define AOV_SLOTS 6
 static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
-    const size_t pixels = (size_t)f->size[0] * f->size[1];
-    float *raw = malloc(64 * pixels);
-    vct_image *slots[5] = {&a->direct, &a->indirect, &a->specular, &a->ao, &a->level};
-    int rc = raw ? vct_buffer_read(f->ctx, "vct AOVs", f->aov, 0, 64 * pixels, raw, err)
+    const struct {
+        vct_image *image;
+        int slot, component; /* component -1: the whole float4 */
+    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1}, {&a->specular, 2, -1}, {&a->ao, 3, 0},
+                {&a->level, 3, 1},   {&a->position, 4, -1}, {&a->normal, 5, -1}};
+    const size_t pixels = (size_t)f->size[0] * f->size[1], bytes = 16 * AOV_SLOTS * pixels;
+    float *raw = malloc(bytes);
+    int rc = raw ? vct_buffer_read(f->ctx, "vct AOVs", f->aov, 0, bytes, raw, err)
                  : vct_fail(err, VCT_ERR_MEMORY, "vct AOVs: out of host memory");
-    for (int i = 0; i < 5 && rc == VCT_OK; ++i) {
-        slots[i]->width = (int)f->size[0];
-        slots[i]->height = (int)f->size[1];
-        slots[i]->rgba = malloc(16 * pixels);
-        if (!slots[i]->rgba) {
+    for (size_t i = 0; i < sizeof outs / sizeof outs[0] && rc == VCT_OK; ++i) {
+        vct_image *im = outs[i].image;
+        im->width = (int)f->size[0];
+        im->height = (int)f->size[1];
+        im->rgba = malloc(16 * pixels);
+        if (!im->rgba) {
             rc = vct_fail(err, VCT_ERR_MEMORY, "vct AOVs: out of host memory");
             break;
         }
         for (size_t p = 0; p < pixels; ++p) {
-            const float *src = &raw[16 * p + 4 * (i < 3 ? i : 3)];
-            float *dst = &slots[i]->rgba[4 * p];
-            if (i < 3)
+            const float *src = &raw[4 * (AOV_SLOTS * p + (size_t)outs[i].slot)];
+            float *dst = &im->rgba[4 * p];
+            if (outs[i].component < 0)
                 memcpy(dst, src, 16);
             else
-                dst[0] = dst[1] = dst[2] = src[i - 3], dst[3] = 1.0f;
+                dst[0] = dst[1] = dst[2] = src[outs[i].component], dst[3] = 1.0f;
         }
     }
     free(raw);
@@ -273,9 +310,9 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
     f.image = f.gbuf ? vct_frame_get(ctx, PRIMARY_STAGE, opt->width, opt->height, err) : NULL;
     rc = f.image ? VCT_OK : (int)err->status;
     if (rc == VCT_OK && aovs) {
-        f.aov = vct_buffer_create(ctx, PRIMARY_STAGE, "AOVs", 64 * pixels, CL_MEM_READ_WRITE, NULL,
-                                  err);
-        rc = f.aov ? vct_buffer_fill_u32(ctx, PRIMARY_STAGE, f.aov, 0, 16 * pixels, err)
+        f.aov = vct_buffer_create(ctx, PRIMARY_STAGE, "AOVs", 16 * AOV_SLOTS * pixels,
+                                  CL_MEM_READ_WRITE, NULL, err);
+        rc = f.aov ? vct_buffer_fill_u32(ctx, PRIMARY_STAGE, f.aov, 0, 4 * AOV_SLOTS * pixels, err)
                    : (int)err->status;
     }
     const int glass = plan->on[VCT_EFFECT_REFRACTION] && plan->on[VCT_EFFECT_SPECULAR];
@@ -300,8 +337,7 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
         vct_stage_begin(ctx, DIFFUSE_STAGE);
         cl_mem cones = cone_buffer(ctx, opt->diffuse_cones, DIFFUSE_STAGE, err);
         const cl_uint count = opt->diffuse_cones;
-        rc = cones ? cone_pass(&f, DIFFUSE_STAGE, "vct_diffuse_cones", cones, count, err)
-                   : (int)err->status;
+        rc = cones ? diffuse_pass(&f, cones, count, opt->sparse_diffuse, err) : (int)err->status;
         vct_buffer_release(ctx, cones);
         vct_stage_end(ctx);
     }

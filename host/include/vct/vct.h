@@ -463,6 +463,10 @@ typedef struct vct_vct_options {
     int width, height;
     uint32_t diffuse_cones; /* preset: 1, 5, 6, 9 or 16 */
     vct_cone_settings cones;
+    /* 1: trace the diffuse cones at every other pixel per axis and give the
+     * others the mean of the traced neighbours on the same surface (a pixel
+     * with none traces its own); 0: at every pixel */
+    int sparse_diffuse;
     int aovs; /* also fill the AOV images */
 } vct_vct_options;
 
@@ -475,6 +479,8 @@ typedef struct vct_aovs {
     vct_image specular; /* the specular cone */
     vct_image ao;       /* fraction of the hemisphere open within the AO distance */
     vct_image level;    /* mean octree level the diffuse cones sampled */
+    vct_image position; /* the surface the camera ray found, w 1 (all 0 where none) */
+    vct_image normal;   /* its shading normal, facing the viewer, w 1 (all 0 where none) */
 } vct_aovs;
 void vct_aovs_free(vct_aovs *aovs);
 
