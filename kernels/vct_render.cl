@@ -6,6 +6,9 @@
  *   vct_soft_shadows   direct light of the lights with a radius, through one
  *                      cone per light as wide as the light
  *   vct_diffuse_cones  indirect diffuse light and ambient occlusion
+ *   vct_diffuse_sparse, vct_diffuse_fill  the same, traced at every other
+ *                      pixel per axis (over (w + 1) / 2 x (h + 1) / 2
+ *                      work-items) and filled in at every pixel
  *   vct_specular_cone  one cone along the mirror direction
  *   vct_glass_reflection  the Fresnel reflection off the first dielectric
  *                      the camera ray enters, one mirror cone
@@ -18,9 +21,10 @@
  * viewer; the throughput of the refractions on the way. AOVs, AOV_SLOTS
  * float4 per pixel when given: direct, indirect diffuse, specular, (open
  * fraction, mean level sampled, 0, 1), position and normal (w 1 where a
- * surface was found, else the slot stays 0). Glass reflections, 3 float4 per pixel, when
- * refraction and specular are both planned: (point, weight.x), (normal,
- * weight.y), (mirror direction, weight.z), the weight 0 where there is none. */
+ * surface was found, else the slot stays 0). Glass reflections, 3 float4
+ * per pixel, when refraction and specular are both planned: (point,
+ * weight.x), (normal, weight.y), (mirror direction, weight.z), the weight 0
+ * where there is none. */
 #include "bsdf.h"
 #include "camera.h"
 #include "cone_trace.h"
@@ -239,9 +243,9 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
     pixel_add(image, aov, pixel, 0u, g.throughput * direct_shade(&g.m, sum, e));
 }
 
-/* What a pixel's diffuse cones gathered: the cosine-weighted radiance (or,
- * for occlusion alone, nothing), the open fraction within the AO distance,
- * and the mean level sampled. */
+/* What a pixel's diffuse cones gathered: the cosine-weighted radiance
+ * (which only indirect light uses), the open fraction within the AO
+ * distance, and the mean level sampled. */
 typedef struct diffuse_light {
     float3 radiance;
     float open, level;
