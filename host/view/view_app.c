@@ -160,6 +160,7 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
         vo.height = app->height;
         vo.diffuse_cones = (uint32_t)app->opt.diffuse_cones;
         vo.cones = app->opt.cones;
+        vo.sparse_diffuse = app->opt.sparse_diffuse;
         return vct_render_vct(app->ctx, s, app->grid, app->voxels, &app->plan, &vo, image, NULL,
                               err);
     }
