@@ -493,6 +493,20 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
     free(keys);
 }
 
+/* One bounce on c's voxels, checked against the reference pyramid of
+ * `reads` (the radiance the bounce gathers): the result lands in `after`. */
+static void bounce_against_reference(const char *what, brick_case *c, const vct_scene *scene,
+                                     const vct_cone_settings *s, const float *reads,
+                                     const float *direct, float *after) {
+    vct_error err = {0};
+    memmove(c->radiance, reads, 16ull * c->info.voxels);
+    ref_pyramid p = pyramid_of(c, 1);
+    REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c->voxels, s, 6, &err), err);
+    REQUIRE_OK(vct_voxels_read_radiance(ctx, c->voxels, after, &err), err);
+    check_bounce(what, c, &p, direct, after);
+    pyramid_free(&p);
+}
+
 /* Bounces (vct_voxels_inject_bounce): the second bounce gathers the direct
  * light's bricks; the third gathers the bricks of the second's radiance and
  * still adds to the direct light alone, so that the light of the second
@@ -513,26 +527,12 @@ static void bounces(void) {
     memcpy(direct, c.radiance, 16ull * nv);
     vct_error err = {0};
     const vct_cone_settings s = vct_cone_settings_default();
-    ref_pyramid p = pyramid_of(&c, 1);
-    REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c.voxels, &s, 6, &err), err);
-    REQUIRE_OK(vct_voxels_read_radiance(ctx, c.voxels, after, &err), err);
-    check_bounce("second bounce", &c, &p, direct, after);
-    pyramid_free(&p);
-    /* The reference pyramid of what the third bounce reads. */
-    memcpy(c.radiance, after, 16ull * nv);
-    p = pyramid_of(&c, 1);
-    REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c.voxels, &s, 6, &err), err);
-    REQUIRE_OK(vct_voxels_read_radiance(ctx, c.voxels, after, &err), err);
-    check_bounce("third bounce", &c, &p, direct, after);
-    pyramid_free(&p);
+    bounce_against_reference("second bounce", &c, scene, &s, direct, direct, after);
+    /* The third bounce reads the second's radiance. */
+    bounce_against_reference("third bounce", &c, scene, &s, after, direct, after);
     /* Light injection starts over: one bounce after it is the second again. */
     REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
-    memcpy(c.radiance, direct, 16ull * nv);
-    p = pyramid_of(&c, 1);
-    REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c.voxels, &s, 6, &err), err);
-    REQUIRE_OK(vct_voxels_read_radiance(ctx, c.voxels, after, &err), err);
-    check_bounce("second bounce again", &c, &p, direct, after);
-    pyramid_free(&p);
+    bounce_against_reference("second bounce again", &c, scene, &s, direct, direct, after);
     free(direct);
     free(after);
     case_free(&c);
