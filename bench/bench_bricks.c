@@ -163,9 +163,9 @@ int main(void) {
     printf("\n| bricks / voxels |");
     for (int r = 0; r < RESOLUTIONS; ++r)
         printf(" %u / %u |", best[r].bricks.bricks, best[r].voxels.voxels);
-    printf("\n| brick neighbourhoods, kept for light updates |");
+    printf("\n| brick windows (4^3 child cells), kept for light updates |");
     for (int r = 0; r < RESOLUTIONS; ++r)
-        printf(" %.1f [–] |", mib(best[r].bricks.around_bytes));
+        printf(" %.1f [–] |", mib(best[r].bricks.window_bytes));
     printf("\n| peak device memory, all stages |");
     for (int r = 0; r < RESOLUTIONS; ++r)
         printf(" %.1f |", best[r].peak);

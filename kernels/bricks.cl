@@ -8,6 +8,9 @@
  *
  *   brick_around     per brick, top-down: the 27 same-level nodes around
  *                    its node, from the parent's 27 (no links, no descent).
+ *                    The build's leaf and filter passes turn them into each
+ *                    brick's window (brick_window) and keep it: a light
+ *                    update reads 64 words in a row per brick.
  *   brick_leaf       level L-1: a sample is the mean of the up to 8 voxels
  *                    around its corner (those with geometry; none gives 0),
  *                    for channels channel_from .. channel_to - 1 (0 albedo,
@@ -81,8 +84,29 @@ inline void gather_children(__global const uint *around, uint b, uint *cells) {
             }
 }
 
-__kernel void brick_leaf(__global const uint *child, __global const uint *around, uint first_brick,
-                         uint count, __global const float4 *albedo, __global const float4 *normal,
+/* What brick b's 4^3 child cells hold: voxels for a leaf brick, child bricks
+ * above (OCT_NULL = BRICK_NULL where nothing). Without window_ready, found
+ * through the neighbourhoods and kept in `window` (64 words per brick);
+ * with it, read back from there. */
+inline void brick_window(__global const uint *child, __global const uint *around,
+                         __global uint *window, uint window_ready, uint b, int leaf, uint *cells) {
+    __global uint *kept = window + 64u * b;
+    if (window_ready) {
+        for (uint c = 0; c < 64u; ++c)
+            cells[c] = kept[c];
+        return;
+    }
+    gather_children(around, b, cells);
+    for (uint c = 0; c < 64u; ++c) {
+        const uint node = cells[c];
+        cells[c] = node == OCT_NULL ? OCT_NULL : leaf ? child[node] : brick_of(child, node);
+        kept[c] = cells[c];
+    }
+}
+
+__kernel void brick_leaf(__global const uint *child, __global const uint *around,
+                         __global uint *window, uint window_ready, uint first_brick, uint count,
+                         __global const float4 *albedo, __global const float4 *normal,
                          __global const float4 *radiance, uint has_radiance, uint channel_from,
                          uint channel_to, uint2 pool, __global half *albedo_pool,
                          __global half *normal_pool, __global half *radiance_pool) {
@@ -91,9 +115,7 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
         return;
     const uint b = first_brick + i;
     uint voxel[64];
-    gather_children(around, b, voxel);
-    for (uint c = 0; c < 64u; ++c)
-        voxel[c] = voxel[c] == OCT_NULL ? OCT_NULL : child[voxel[c]];
+    brick_window(child, around, window, window_ready, b, 1, voxel);
 
     /* each sample: the mean over the voxels present among its 8 */
     float inv_found[27];
@@ -159,14 +181,15 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
 #define LATTICE_STRIDE_Z (LATTICE_SIDE * LATTICE_SIDE)
 #define LATTICE(x, y, z) (((z) + 1u) * LATTICE_STRIDE_Z + ((y) + 1u) * LATTICE_STRIDE_Y + (x) + 1u)
 
-inline void lattice_texels(__global const uint *child, __global const uint *around, uint b,
-                           uint2 pool, uint *texel) {
+inline void lattice_texels(__global const uint *child, __global const uint *around,
+                           __global uint *window, uint window_ready, uint b, uint2 pool,
+                           uint *texel) {
     uint cell[64];
-    gather_children(around, b, cell);
+    brick_window(child, around, window, window_ready, b, 0, cell);
     for (uint e = 0; e < LATTICE_ENTRIES; ++e)
         texel[e] = BRICK_NULL;
     for (uint c = 0; c < 64u; ++c) {
-        const uint cb = cell[c] == OCT_NULL ? BRICK_NULL : brick_of(child, cell[c]);
+        const uint cb = cell[c];
         if (cb == BRICK_NULL)
             continue;
         const uint base = brick_base(pool, cb);
@@ -193,14 +216,20 @@ inline float4 texel_load(__global const half *src, uint texel) {
 inline void filter_channel(const uint *texel, uint2 pool, uint b, __global half *channel) {
     const float w[3] = {0.25f, 0.5f, 0.25f};
     const uint base = brick_base(pool, b);
+    float4 shared[49]; /* lattice plane 2k: the last plane of layer k - 1, loaded once */
     for (uint k = 0; k < 3u; ++k) {
         float4 plane[49];
         for (uint y = 0; y < 7u; ++y)
             for (uint x = 0; x < 7u; ++x) {
+                const uint i = y * 7u + x;
+                const float4 first = k ? shared[i] : texel_load(channel, texel[LATTICE(x, y, 0u)]);
+                const float4 last = texel_load(channel, texel[LATTICE(x, y, 2u * k + 2u)]);
                 float4 s = (float4)(0.0f);
-                for (uint d = 0; d < 3u; ++d)
-                    s += w[d] * texel_load(channel, texel[LATTICE(x, y, 2u * k + d)]);
-                plane[y * 7u + x] = s;
+                s += w[0] * first;
+                s += w[1] * texel_load(channel, texel[LATTICE(x, y, 2u * k + 1u)]);
+                s += w[2] * last;
+                plane[i] = s;
+                shared[i] = last;
             }
         for (uint j = 0; j < 3u; ++j) {
             float4 row[7];
@@ -217,14 +246,15 @@ inline void filter_channel(const uint *texel, uint2 pool, uint b, __global half 
 
 /* Channels c0, c1, c2 (`channels` of them, 1..3) of the level's bricks. */
 __kernel void brick_filter(__global const uint *child, __global const uint *around,
-                           uint first_brick, uint count, uint2 pool, uint channels,
-                           __global half *c0, __global half *c1, __global half *c2) {
+                           __global uint *window, uint window_ready, uint first_brick, uint count,
+                           uint2 pool, uint channels, __global half *c0, __global half *c1,
+                           __global half *c2) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
     const uint b = first_brick + i;
     uint texel[LATTICE_ENTRIES];
-    lattice_texels(child, around, b, pool, texel);
+    lattice_texels(child, around, window, window_ready, b, pool, texel);
     filter_channel(texel, pool, b, c0);
     if (channels > 1u)
         filter_channel(texel, pool, b, c1);
@@ -308,7 +338,8 @@ inline void filter_axis(const uint *texel, uint2 pool, uint b, uint axis,
  * axis composited front to back (the end ones half as thick), the nine
  * columns averaged with the Gaussian weights. */
 __kernel void brick_filter_dir(__global const uint *child, __global const uint *around,
-                               uint first_brick, uint count, uint2 pool, __global const half *s0,
+                               __global uint *window, uint window_ready, uint first_brick,
+                               uint count, uint2 pool, __global const half *s0,
                                __global const half *s1, __global const half *s2,
                                __global const half *s3, __global const half *s4,
                                __global const half *s5, __global half *d0, __global half *d1,
@@ -319,7 +350,7 @@ __kernel void brick_filter_dir(__global const uint *child, __global const uint *
         return;
     const uint b = first_brick + i;
     uint texel[LATTICE_ENTRIES];
-    lattice_texels(child, around, b, pool, texel);
+    lattice_texels(child, around, window, window_ready, b, pool, texel);
     filter_axis(texel, pool, b, 0u, s0, s3, one_source, d0, d3);
     filter_axis(texel, pool, b, 1u, s1, s4, one_source, d1, d4);
     filter_axis(texel, pool, b, 2u, s2, s5, one_source, d2, d5);

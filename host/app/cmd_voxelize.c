@@ -39,7 +39,7 @@ static void print_bricks(const vct_brick_info *b, uint32_t levels) {
            mib(b->channel_bytes));
     if (b->staging_bytes)
         printf(", plus %.2f MiB of radiance buffers kept for re-filtering", mib(b->staging_bytes));
-    printf(", plus %.2f MiB of brick neighbourhoods kept for re-filtering\n", mib(b->around_bytes));
+    printf(", plus %.2f MiB of brick windows kept for re-filtering\n", mib(b->window_bytes));
 }
 
 int cmd_voxelize(const cli_options *opt) {

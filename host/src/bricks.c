@@ -163,17 +163,25 @@ typedef struct level_run {
     cl_program program;
     const char *stage;
     cl_uint pool[2];
-    cl_mem around; /* the child tiles of the 27 nodes around each brick's node */
+    /* The build finds each brick's window through the child tiles of the 27
+     * nodes around its node (`around`, transient) and keeps it in
+     * v->brick_window; later passes read the window (window_ready). */
+    cl_mem around;
+    cl_uint window_ready;
 } level_run;
 
-/* Every brick's neighbourhood, top-down: level l's from level l-1's. */
+/* Every brick's neighbourhood, top-down: level l's from level l-1's; and
+ * room for the windows found from them. */
 static int run_around(level_run *r, vct_error *err) {
     vct_voxels *v = r->v;
     vct_brick_info *b = &v->brick_info;
-    b->around_bytes = 27ull * 4 * b->bricks;
-    r->around = v->brick_around = vct_buffer_create(r->ctx, r->stage, "brick neighbourhoods",
-                                                    b->around_bytes, CL_MEM_READ_WRITE, NULL, err);
-    int rc = r->around ? VCT_OK : (int)err->status;
+    r->around = vct_buffer_create(r->ctx, r->stage, "brick neighbourhoods", 27ull * 4 * b->bricks,
+                                  CL_MEM_READ_WRITE, NULL, err);
+    b->window_bytes = 64ull * 4 * b->bricks;
+    v->brick_window = r->around ? vct_buffer_create(r->ctx, r->stage, "brick windows",
+                                                    b->window_bytes, CL_MEM_READ_WRITE, NULL, err)
+                                : NULL;
+    int rc = v->brick_window ? VCT_OK : (int)err->status;
     for (cl_uint l = 0; l < v->info.levels && rc == VCT_OK; ++l)
         rc = vct_run_kernel(r->ctx, r->program, "brick_around", r->stage, b->level_bricks[l], err,
                             6, VCT_ARG_OF(v->child), VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(l),
@@ -200,11 +208,12 @@ static int run_leaf(const level_run *r, int geometry, int radiance_too, vct_erro
     cl_mem albedo_pool = geometry ? pool[VCT_BRICK_ALBEDO] : pool[VCT_BRICK_RADIANCE];
     cl_mem normal_pool = geometry ? pool[VCT_BRICK_NORMAL] : pool[VCT_BRICK_RADIANCE];
     return vct_run_kernel_grouped(
-        r->ctx, r->program, "brick_leaf", r->stage, count, BRICK_GROUP, err, 14,
-        VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count),
-        VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance),
-        VCT_ARG_OF(has_radiance), VCT_ARG_OF(from), VCT_ARG_OF(to), VCT_ARG_OF(r->pool),
-        VCT_ARG_OF(albedo_pool), VCT_ARG_OF(normal_pool), VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
+        r->ctx, r->program, "brick_leaf", r->stage, count, BRICK_GROUP, err, 16,
+        VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
+        VCT_ARG_OF(r->window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(v->albedo),
+        VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance), VCT_ARG_OF(from),
+        VCT_ARG_OF(to), VCT_ARG_OF(r->pool), VCT_ARG_OF(albedo_pool), VCT_ARG_OF(normal_pool),
+        VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
 }
 
 /* Levels L-2 .. 0, each from the level below: albedo and normal when
@@ -230,11 +239,12 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
             list[channels++] = pool[VCT_BRICK_RADIANCE];
         cl_mem c0 = list[0], c1 = list[channels > 1 ? 1 : 0], c2 = list[channels > 2 ? 2 : 0];
         if (channels)
-            rc = vct_run_kernel_grouped(r->ctx, r->program, "brick_filter", r->stage, count,
-                                        BRICK_GROUP, err, 9, VCT_ARG_OF(v->child),
-                                        VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count),
-                                        VCT_ARG_OF(r->pool), VCT_ARG_OF(channels), VCT_ARG_OF(c0),
-                                        VCT_ARG_OF(c1), VCT_ARG_OF(c2));
+            rc = vct_run_kernel_grouped(
+                r->ctx, r->program, "brick_filter", r->stage, count, BRICK_GROUP, err, 11,
+                VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
+                VCT_ARG_OF(r->window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count),
+                VCT_ARG_OF(r->pool), VCT_ARG_OF(channels), VCT_ARG_OF(c0), VCT_ARG_OF(c1),
+                VCT_ARG_OF(c2));
         if (rc != VCT_OK || !b->anisotropic || !radiance_too)
             continue;
         /* children at level L-1 have one isotropic value for every direction */
@@ -243,13 +253,16 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
         cl_mem src[6];
         for (int d = 0; d < 6; ++d)
             src[d] = from_leaf ? pool[VCT_BRICK_RADIANCE] : dir[d];
+        /* the geometry's brick_filter above found this level's windows */
+        const cl_uint window_ready = 1;
         rc = vct_run_kernel_grouped(
-            r->ctx, r->program, "brick_filter_dir", r->stage, count, BRICK_GROUP, err, 18,
-            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(first), VCT_ARG_OF(count),
-            VCT_ARG_OF(r->pool), VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]),
-            VCT_ARG_OF(src[3]), VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]),
-            VCT_ARG_OF(dir[1]), VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]),
-            VCT_ARG_OF(dir[5]), VCT_ARG_OF(one_source));
+            r->ctx, r->program, "brick_filter_dir", r->stage, count, BRICK_GROUP, err, 20,
+            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
+            VCT_ARG_OF(window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
+            VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
+            VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]), VCT_ARG_OF(dir[1]),
+            VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]),
+            VCT_ARG_OF(one_source));
     }
     return rc;
 }
@@ -293,7 +306,9 @@ static int level_run_init(vct_context *ctx, vct_voxels *v, const char *stage, le
     r->stage = stage;
     r->pool[0] = v->brick_info.pool[0];
     r->pool[1] = v->brick_info.pool[1];
-    r->around = v->brick_around;
+    /* kernels that read only windows take them in place of the neighbourhoods */
+    r->around = v->brick_window;
+    r->window_ready = v->brick_window != NULL;
     return vct_program_get(ctx, "bricks.cl", "", &r->program, err);
 }
 
@@ -341,6 +356,8 @@ int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *o
     if (rc == VCT_OK)
         rc = vct_finish(ctx, FILTER_STAGE, err);
     vct_stage_end(ctx);
+    if (r.around != v->brick_window) /* the windows replace the neighbourhoods */
+        vct_buffer_release(ctx, r.around);
     if (rc != VCT_OK) {
         vct_bricks_release(v);
     } else {
@@ -370,7 +387,7 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
     level_run r = {0};
     int rc = level_run_init(ctx, v, REFRESH_STAGE, &r, err);
     const int channels = channel_count(&v->brick_info);
-    if (rc == VCT_OK) /* r.around: the neighbourhoods kept from the build */
+    if (rc == VCT_OK) /* r.window_ready: the windows found by the build */
         rc = run_leaf(&r, 0, 1, err);
     if (rc == VCT_OK)
         rc = run_filters(&r, 0, 1, err);
@@ -390,8 +407,8 @@ void vct_bricks_release(vct_voxels *v) {
         vct_buffer_release(v->ctx, v->brick_image[c]);
         v->brick_buffer[c] = v->brick_image[c] = NULL;
     }
-    vct_buffer_release(v->ctx, v->brick_around);
-    v->brick_around = NULL;
+    vct_buffer_release(v->ctx, v->brick_window);
+    v->brick_window = NULL;
     v->has_bricks = 0;
 }
 

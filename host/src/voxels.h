@@ -26,10 +26,11 @@ struct vct_voxels {
     int radiance_ready; /* 0 while radiance_later waits for light injection */
     vct_brick_info brick_info;
     cl_mem brick_buffer[VCT_BRICK_CHANNELS], brick_image[VCT_BRICK_CHANNELS];
-    /* The child tiles of the 27 nodes around each brick's node, from the
-     * build, kept so that a light update re-filters without finding them
-     * again. */
-    cl_mem brick_around;
+    /* Per brick, what the 4^3 child cells around its node (-1 .. 2 per axis,
+     * x fastest) hold: child bricks above the leaves, voxels at the leaves,
+     * OCT_NULL where nothing. Found once by the build, so that a light update
+     * reads 64 words in a row instead of following the octree. */
+    cl_mem brick_window;
 };
 
 /* Volume description for kernels (vct_volume_desc in kernels/vct_types.h). */

@@ -372,7 +372,7 @@ typedef struct vct_brick_info {
     uint64_t channel_bytes;     /* one channel of all bricks */
     uint64_t pool_bytes;        /* every channel, as allocated */
     uint64_t staging_bytes;     /* image pools: buffers kept for re-filtering */
-    uint64_t around_bytes;      /* each brick's 27 neighbour nodes, kept for re-filtering */
+    uint64_t window_bytes;      /* each brick's 4^3 child cells, kept for re-filtering */
     uint64_t dense_rgba8_bytes; /* a dense RGBA8 3D texture at the voxel resolution */
 } vct_brick_info;
 
