@@ -268,13 +268,10 @@ inline float4 half_thickness(float4 v) {
     return v / (1.0f + sqrt(fmax(1.0f - v.w, 0.0f)));
 }
 
-/* Front-to-back composite of three samples met in this order. */
+/* Front-to-back composite of three samples met in this order, nested from
+ * the back: a + (1 - a.w) (b + (1 - b.w) c) is two dependent steps. */
 inline float4 composite3(float4 a, float4 b, float4 c) {
-    float4 acc = (float4)(0.0f);
-    acc += (1.0f - acc.w) * a;
-    acc += (1.0f - acc.w) * b;
-    acc += (1.0f - acc.w) * c;
-    return acc;
+    return a + (1.0f - a.w) * (b + (1.0f - b.w) * c);
 }
 
 /* Output layer g along `axis` from its 7x7 composited columns ([q][p],
@@ -317,6 +314,13 @@ inline void filter_axis(const uint *texel, uint2 pool, uint b, uint axis,
             for (uint p = 0; p < 7u; ++p) {
                 const uint at = LATTICE(0u, 0u, 0u) + 2u * g * step + p * u_step + q * v_step;
                 const uint t0 = texel[at], t1 = texel[at + step], t2 = texel[at + 2u * step];
+                /* All three empty (a present texel has a zero bit): both
+                 * composites are 0. Most columns of a surface's lattice are
+                 * empty, so this branch, unlike one per texel, pays. */
+                if ((t0 & t1 & t2) == BRICK_NULL) {
+                    column_up[q][p] = column_down[q][p] = (float4)(0.0f);
+                    continue;
+                }
                 const float4 a0 = half_thickness(texel_load(src_up, t0));
                 const float4 a1 = texel_load(src_up, t1);
                 const float4 a2 = half_thickness(texel_load(src_up, t2));
