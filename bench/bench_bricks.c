@@ -12,11 +12,26 @@
 #include "voxels.h"
 
 #define RESOLUTIONS 3
+#define UPDATE_PARTS 4
+
+static const char *update_part_names[UPDATE_PARTS] = {
+    "light bins and transfers", "shadow rays (inject_direct)", "leaf bricks (brick_leaf)",
+    "filtering up (brick_filter*)"};
+
+/* Which part of a light update kernel `name` belongs to. */
+static int update_part(const char *name) {
+    if (!strcmp(name, "inject_direct"))
+        return 1;
+    if (!strcmp(name, "brick_leaf"))
+        return 2;
+    return strncmp(name, "brick_filter", 12) ? 0 : 3;
+}
 
 typedef struct spine_run {
     vct_voxel_info voxels;
     vct_brick_info bricks;
     double voxelize, octree, create, filter, inject, update, peak;
+    double update_parts[UPDATE_PARTS]; /* the update by kernel, from the same run */
 } spine_run;
 
 static void keep_best(spine_run *best, const spine_run *r) {
@@ -25,6 +40,8 @@ static void keep_best(spine_run *best, const spine_run *r) {
     best->create = fmin(best->create, r->create);
     best->filter = fmin(best->filter, r->filter);
     best->inject = fmin(best->inject, r->inject);
+    if (r->update < best->update)
+        memcpy(best->update_parts, r->update_parts, sizeof r->update_parts);
     best->update = fmin(best->update, r->update);
     best->peak = fmax(best->peak, r->peak);
     best->voxels = r->voxels;
@@ -68,6 +85,10 @@ static spine_run run_once(vct_context *ctx, vct_scene *s, vct_grid *grid, uint32
         bench_die(&err);
     s->lights[0].position[0] -= 40.0f;
     r.update = stage_device_ms(ctx, "light injection") + stage_device_ms(ctx, "radiance filtering");
+    const vct_kernel_stat *k;
+    const int kernels = vct_kernel_stats(ctx, &k);
+    for (int i = 0; i < kernels; ++i)
+        r.update_parts[update_part(k[i].name)] += k[i].device_ms;
     vct_voxels_free(v);
     return r;
 }
@@ -205,6 +226,15 @@ int main(void) {
            "%.0f ms; bricks %.1f MiB (isotropic %.1f MiB)\n",
            aniso.create, aniso.filter, aniso.inject, aniso.update, mib(aniso.bricks.pool_bytes),
            mib(best[1].bricks.pool_bytes));
+    const spine_run *by_kernel[2] = {&best[1], &aniso};
+    for (int a = 0; a < 2; ++a) {
+        printf("light update at 256^3, %s, by kernel (the fastest update):",
+               a ? "anisotropic" : "isotropic");
+        for (int p = 0; p < UPDATE_PARTS; ++p)
+            printf("%s %s %.0f ms", p ? "," : "", update_part_names[p],
+                   by_kernel[a]->update_parts[p]);
+        printf("\n");
+    }
     printf("brick pool kind: %s\n", best[1].bricks.storage_reason);
     bins_against_grid(ctx, s, grid, runs);
     vct_grid_free(grid);
