@@ -100,6 +100,8 @@ VCT_MAX_ALLOC_MIB=1 expect_failure "fragments beyond the allocation limit" "voxe
     voxelize ok.obj --voxel-res 1024 -o out.png
 VCT_MAX_ALLOC_MIB=30 expect_failure "octree beyond the allocation limit" "neighbour links.*voxel-res 512 would fit" \
     voxelize ok.obj --voxel-res 1024 -o out.png
+VCT_MAX_ALLOC_MIB=20 expect_failure "brick windows beyond the allocation limit" "brick windows.*voxel-res 256 would fit" \
+    voxelize ok.obj --voxel-res 512 -o out.png
 expect_failure "unknown brick pool kind" "auto, buffer or image" voxelize ok.obj --bricks texture -o out.png
 if "$VCT" voxelize ok.obj --voxel-res 32 --size 24 24 --anisotropic -o vox.png >stdout.txt 2>stderr.txt &&
     grep -q "^fragments [0-9]*, voxels [0-9]*" stdout.txt && grep -q "level  5" stdout.txt &&

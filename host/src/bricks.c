@@ -175,13 +175,17 @@ typedef struct level_run {
 static int run_around(level_run *r, vct_error *err) {
     vct_voxels *v = r->v;
     vct_brick_info *b = &v->brick_info;
+    b->window_bytes = 64ull * 4 * b->bricks;
+    int rc = vct_voxel_buffer_fits(r->ctx, &v->info, "bricks", "brick windows",
+                                   (double)b->window_bytes, err);
+    if (rc != VCT_OK)
+        return rc;
     r->around = vct_buffer_create(r->ctx, r->stage, "brick neighbourhoods", 27ull * 4 * b->bricks,
                                   CL_MEM_READ_WRITE, NULL, err);
-    b->window_bytes = 64ull * 4 * b->bricks;
     v->brick_window = r->around ? vct_buffer_create(r->ctx, r->stage, "brick windows",
                                                     b->window_bytes, CL_MEM_READ_WRITE, NULL, err)
                                 : NULL;
-    int rc = v->brick_window ? VCT_OK : (int)err->status;
+    rc = v->brick_window ? VCT_OK : (int)err->status;
     for (cl_uint l = 0; l < v->info.levels && rc == VCT_OK; ++l)
         rc = vct_run_kernel(r->ctx, r->program, "brick_around", r->stage, b->level_bricks[l], err,
                             6, VCT_ARG_OF(v->child), VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(l),
