@@ -9,7 +9,7 @@
 
 #include "bench_util.h"
 #include "heavy_scene.h"
-#include "voxels.h"
+#include "voxel/voxels.h"
 
 #define RESOLUTIONS 3
 #define UPDATE_PARTS 4

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <pthread.h>
 
+#include "accel/grid.h"
 #include "bench_util.h"
 #include "heavy_scene.h"
 

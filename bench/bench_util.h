@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "runtime/runtime.h"
 
 /* The statistics of stage `name`, or NULL if it has not run. */
 static inline const vct_stage_stat *stage_stat(const vct_context *ctx, const char *name) {

@@ -55,7 +55,7 @@ expect_failure "degenerate camera" "do not define a view" render ok.obj --camera
 expect_failure "grid beyond the device's memory" "lower" render ok.obj --grid-res 1024 -o out.png
 # A kernel that does not compile: the build log names the file and line.
 cp -r "$(dirname "$VCT")/kernels" broken-kernels
-printf 'this is not OpenCL C;\n' >> broken-kernels/raycast.cl
+printf 'this is not OpenCL C;\n' >> broken-kernels/render/raycast.cl
 VCT_KERNEL_DIR="$DIR/broken-kernels" VCT_CACHE_DIR="$DIR/cache" \
     expect_failure "kernel build failure" "raycast.cl:[0-9]" render ok.obj --method raycast -o out.png
 expect_failure "unwritable output" "could not write\|cannot create" render ok.obj -o /proc/out.png

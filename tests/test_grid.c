@@ -9,8 +9,8 @@
 
 #include "check.h"
 #include "mesh_gen.h"
-#include "internal.h"
-#include "tri_box.h"
+#include "accel/grid.h"
+#include "accel/tri_box.h"
 
 /* Möller-Trumbore in double: the independent reference. Returns t or -1, and
  * the distance of the hit to the triangle's border in barycentric units. */

@@ -1,4 +1,4 @@
-/* Light-space triangle bins (kernels/light_bins.cl) against a plain-C
+/* Light-space triangle bins (kernels/light/light_bins.cl) against a plain-C
  * reference: every triangle that a ray from a binned light hits, found in
  * double precision over all triangles, must sit in the cell of the ray's
  * direction, with a distance quantum no farther than the hit. Then light
@@ -11,11 +11,11 @@
 #include <string.h>
 
 #include "check.h"
-#include "internal.h"
-#include "light_bins.h"
+#include "runtime/runtime.h"
+#include "light/light_bins_host.h"
 #include "mesh_gen.h"
 #include "vct_types.h"
-#include "voxels.h"
+#include "voxel/voxels.h"
 
 static vct_context *ctx;
 

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "internal.h"
+#include "runtime/runtime.h"
 
 static const uint32_t all_sizes[] = {0, 1, 2, 255, 256, 257, (1u << 20) + 3, 1u << 24};
 static uint32_t sizes[8];

@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "check.h"
-#include "internal.h"
+#include "runtime/runtime.h"
 
 static vct_image render(vct_context *ctx, const vct_scene *s) {
     vct_error err = {0};

@@ -395,7 +395,7 @@ static void empty_volume(void) {
     vct_scene_free(s);
 }
 
-/* How sparse diffuse fills a pixel (kernels/vct_render.cl): from the traced
+/* How sparse diffuse fills a pixel (kernels/render/vct_render.cl): from the traced
  * pixels (2i, 2j) around it whose surface agrees with its own, else by its
  * own cones. Written here in double from the position and normal AOVs. */
 typedef enum sparse_kind {

@@ -1,0 +1,76 @@
+/* vct: devices, contexts and their statistics.
+ *
+ * A context is one OpenCL device with its queue, program cache and stage
+ * statistics: one the engine opens (vct_context_create), or the caller's own
+ * (vct_context_wrap). Independent contexts are independent and may be used
+ * from different threads at once; calls on one context must be serialised
+ * by the caller. */
+#ifndef VCT_API_DEVICE_H
+#define VCT_API_DEVICE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "vct/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct vct_device_info {
+    int index; /* global index over all platforms, as used by --device N */
+    char platform[128];
+    char name[256];
+    char version[128];
+    char driver[128];
+    int is_gpu;
+    unsigned compute_units;
+    uint64_t global_mem;
+    uint64_t max_alloc;
+    size_t max_work_group;
+    int image_support;
+    int fp64;
+    int gl_sharing;
+    char extensions[4096];
+} vct_device_info;
+
+/* Lists every device of every platform. Returns the count (at most max). */
+int vct_list_devices(vct_device_info *out, int max, vct_error *err);
+
+typedef struct vct_context vct_context;
+
+/* selector: NULL or "" = $VCT_DEVICE, else first GPU, else first CPU;
+ * a number = global device index; otherwise a case-insensitive substring of
+ * the device or platform name. */
+vct_context *vct_context_create(const char *selector, vct_error *err);
+void vct_context_destroy(vct_context *ctx);
+const vct_device_info *vct_context_device(const vct_context *ctx);
+
+/* ---- statistics ----------------------------------------------------------- */
+
+typedef struct vct_stage_stat {
+    char name[48];
+    double device_ms; /* sum of kernel/copy event durations */
+    double host_ms;   /* wall time the host spent in the stage */
+    double mib;       /* peak device memory allocated through vct while the stage ran */
+    int launches;
+} vct_stage_stat;
+
+int vct_stats(const vct_context *ctx, const vct_stage_stat **stages);
+void vct_stats_reset(vct_context *ctx);
+/* Kernels launched so far by name (for plan tests): count of launches. */
+int vct_kernel_launches(const vct_context *ctx, const char *kernel_name);
+
+typedef struct vct_kernel_stat {
+    char name[64];
+    int launches;
+    double device_ms; /* summed over the launches made inside a stage */
+} vct_kernel_stat;
+
+/* Per-kernel launches and device time since the last reset. */
+int vct_kernel_stats(const vct_context *ctx, const vct_kernel_stat **kernels);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,217 @@
+/* vct: renderers, the effect plan and the frame they write.
+ *
+ * Every method is reached the same way: vct_render with one job (the
+ * method, its inputs and its options struct) and one frame out. The
+ * per-method calls below it remain for callers that want them. */
+#ifndef VCT_API_RENDER_H
+#define VCT_API_RENDER_H
+
+#include <stdint.h>
+
+#include "vct/accel.h"
+#include "vct/device.h"
+#include "vct/image.h"
+#include "vct/scene.h"
+#include "vct/voxels.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct vct_render_options {
+    int width, height;
+    uint32_t grid_res[3]; /* 0 = automatic */
+} vct_render_options;
+
+/* Direct illumination with hard shadows by ray casting. */
+int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                       const vct_render_options *options, vct_image *image, vct_error *err);
+typedef struct vct_pathtrace_options {
+    int width, height;
+    uint32_t spp;              /* samples per pixel; 0: run for time_limit_s */
+    double time_limit_s;       /* used when spp is 0 */
+    uint32_t max_depth;        /* surface interactions per path; 1 = direct light only */
+    uint32_t seed;             /* same seed and spp: same image, bit for bit */
+    uint32_t samples_per_pass; /* samples per launch (0: 1) */
+    int progress;              /* progress bar on a terminal's stderr */
+    /* 1: add to the running sums of the previous call on this context (same
+     * scene, camera and size), continuing its sample sequence: n calls of k
+     * samples give the image of one call of n * k. 0: start over. */
+    int resume;
+} vct_pathtrace_options;
+
+typedef struct vct_pathtrace_result {
+    uint32_t spp;       /* samples per pixel in the image (all resumed calls) */
+    uint32_t discarded; /* samples dropped because they were not finite */
+    double seconds;
+} vct_pathtrace_result;
+
+/* Unbiased path tracing: next-event estimation with MIS, Lambert, glossy,
+ * mirror and dielectric materials, Russian roulette. result may be NULL. */
+int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                         const vct_pathtrace_options *options, vct_image *image,
+                         vct_pathtrace_result *result, vct_error *err);
+
+/* The voxels as the scene camera sees them, ray marched through the octree:
+ * their injected radiance once light is injected, else albedo under a headlight. */
+int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels, int width,
+                      int height, vct_image *image, vct_error *err);
+/* The same at octree level `level` (0 = root .. levels = voxels): below the
+ * leaf level every node with geometry in it shows as a grey cube. */
+int vct_render_voxels_level(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels,
+                            uint32_t level, int width, int height, vct_image *image,
+                            vct_error *err);
+/* The effect plan: which effects a scene calls for, and why. The renderer
+ * enqueues no work for an effect that is off. */
+typedef enum vct_effect {
+    VCT_EFFECT_DIRECT,       /* light from the scene's lights */
+    VCT_EFFECT_SHADOWS,      /* hard shadows by shadow rays */
+    VCT_EFFECT_INDIRECT,     /* indirect diffuse light by cones */
+    VCT_EFFECT_SPECULAR,     /* glossy highlights and a specular cone */
+    VCT_EFFECT_REFRACTION,   /* rays followed through transmissive materials */
+    VCT_EFFECT_EMISSION,     /* emissive surfaces */
+    VCT_EFFECT_AO,           /* ambient occlusion of the ambient light */
+    VCT_EFFECT_SOFT_SHADOWS, /* shadows of lights with a radius, by cones */
+    VCT_EFFECTS
+} vct_effect;
+
+typedef enum vct_effect_force { VCT_FORCE_AUTO, VCT_FORCE_ON, VCT_FORCE_OFF } vct_effect_force;
+
+typedef struct vct_plan {
+    int on[VCT_EFFECTS];
+    int forced[VCT_EFFECTS]; /* 1 where a flag decided, not the scene */
+    char why[VCT_EFFECTS][160];
+} vct_plan;
+
+const char *vct_effect_name(vct_effect effect);
+/* -1 for an unknown name. */
+int vct_effect_from_name(const char *name);
+/* force: VCT_EFFECTS entries, or NULL to follow the scene. */
+void vct_plan_make(const vct_scene *scene, const vct_effect_force *force, vct_plan *plan);
+/* Whether the plan reads the voxel hierarchy, and whether it needs its light. */
+int vct_plan_needs_voxels(const vct_plan *plan);
+int vct_plan_needs_voxel_light(const vct_plan *plan);
+
+typedef struct vct_vct_options {
+    int width, height;
+    uint32_t diffuse_cones; /* preset: 1, 5, 6, 9 or 16 */
+    vct_cone_settings cones;
+    /* 1: trace the diffuse cones at every other pixel per axis and give the
+     * others the mean of the traced neighbours on the same surface (a pixel
+     * with none traces its own); 0: at every pixel */
+    int sparse_diffuse;
+    int aovs; /* also fill the AOV images */
+} vct_vct_options;
+
+/* 512 x 512, 6 diffuse cones, default cone settings, no AOVs. */
+vct_vct_options vct_vct_options_default(void);
+
+typedef struct vct_aovs {
+    vct_image direct;   /* direct light and emission */
+    vct_image indirect; /* indirect diffuse (or ambient light times AO) */
+    vct_image specular; /* the specular cone */
+    vct_image ao;       /* fraction of the hemisphere open within the AO distance */
+    vct_image level;    /* mean octree level the diffuse cones sampled */
+    vct_image position; /* the surface the camera ray found, w 1 (all 0 where none) */
+    vct_image normal;   /* its shading normal, facing the viewer, w 1 (all 0 where none) */
+} vct_aovs;
+void vct_aovs_free(vct_aovs *aovs);
+
+/* Builds what the plan's cones read: voxels, octree and bricks, then light
+ * (when indirect diffuse or specular is on) with `bounces` - 1 extra
+ * diffuse bounces gathered at the voxels by the 6-cone preset. *voxels is
+ * NULL when the plan needs none. */
+int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                    const vct_plan *plan, const vct_voxel_options *voxel_options,
+                    const vct_brick_options *brick_options, uint32_t bounces,
+                    const vct_cone_settings *cones, vct_voxels **voxels, vct_error *err);
+
+/* Renders by voxel cone tracing: stages "vct primary", "vct diffuse cones"
+ * and "vct specular cone", each only when the plan calls for it. voxels may
+ * be NULL when the plan needs none. aovs may be NULL. */
+int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+                   const vct_voxels *voxels, const vct_plan *plan, const vct_vct_options *options,
+                   vct_image *image, vct_aovs *aovs, vct_error *err);
+
+/* ---- one way to every method -------------------------------------------------- */
+
+typedef enum vct_method {
+    VCT_METHOD_VCT,       /* voxel cone tracing (needs voxels when the plan reads them) */
+    VCT_METHOD_RAYCAST,   /* direct light with hard or soft shadows */
+    VCT_METHOD_PATHTRACE, /* unbiased path tracing */
+    VCT_METHOD_VOXELS,    /* the voxels themselves, ray marched (needs voxels) */
+    VCT_METHODS
+} vct_method;
+
+/* The ray caster's options are the historical vct_render_options. */
+typedef vct_render_options vct_raycast_options;
+
+typedef struct vct_voxel_view_options {
+    int width, height;
+    /* octree level to show (0 = root); VCT_VOXEL_VIEW_LEAVES shows the voxels */
+    uint32_t level;
+} vct_voxel_view_options;
+#define VCT_VOXEL_VIEW_LEAVES 0xffffffffu
+
+/* One render: the method, what it reads and its options. Only the options
+ * of `method` are read. */
+typedef struct vct_render_job {
+    vct_method method;
+    const vct_scene *scene;
+    const vct_grid *grid;     /* every method but VCT_METHOD_VOXELS */
+    const vct_voxels *voxels; /* VCT_METHOD_VCT (may be NULL when the plan reads none), VOXELS */
+    const vct_plan *plan;     /* VCT_METHOD_VCT; NULL: the scene's own plan */
+    vct_aovs *aovs;           /* VCT_METHOD_VCT; NULL: none */
+    vct_raycast_options raycast;
+    vct_pathtrace_options pathtrace;
+    vct_vct_options vct;
+    vct_voxel_view_options voxel_view;
+} vct_render_job;
+
+typedef struct vct_render_result {
+    vct_method method;
+    int width, height;
+    double seconds;     /* host wall time of the call */
+    uint32_t spp;       /* path tracing: samples per pixel in the frame */
+    uint32_t discarded; /* path tracing: non-finite samples dropped */
+} vct_render_result;
+
+/* A job with every method's defaults (vct_vct_options_default, 64 spp,
+ * depth 16) at width x height, for `method`. */
+vct_render_job vct_render_job_default(vct_method method, int width, int height);
+/* Its image size, whichever method it names. */
+void vct_render_job_size(const vct_render_job *job, int *width, int *height);
+const char *vct_method_name(vct_method method);
+/* -1 for an unknown name ("vct", "raycast", "pt", "voxels"). */
+int vct_method_from_name(const char *name);
+/* Renders `job` into the context's frame and returns it in `image` (as every
+ * renderer does; see vct_frame_host_copy). result may be NULL. */
+int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
+               vct_render_result *result, vct_error *err);
+/* Every renderer writes its image into the context's frame, a device buffer
+ * of width * height float4 (linear radiance, rows top to bottom) kept between
+ * calls, and copies it into the vct_image it returns. With host copies off
+ * the returned image carries its size and rgba NULL: for displays that take
+ * the frame on the device. On by default. */
+void vct_frame_host_copy(vct_context *ctx, int on);
+/* The last frame's size (0 x 0 before any), and a copy of it into `rgba`,
+ * which holds `floats` floats (at least width * height * 4). */
+void vct_frame_size(const vct_context *ctx, int *width, int *height);
+int vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err);
+
+/* A context that shares objects with an OpenGL context (cl_khr_gl_sharing on
+ * GLX): glx_context is the GLXContext, x_display the X Display it belongs to.
+ * Fails with the reason when the device has no such sharing or cannot share
+ * with that context; plain contexts then display through the host. */
+vct_context *vct_context_create_gl(const char *selector, void *glx_context, void *x_display,
+                                   vct_error *err);
+int vct_context_shares_gl(const vct_context *ctx);
+/* Copies the frame into an OpenGL buffer object of at least width * height
+ * * 16 bytes, on the device: acquire, copy, release, finish. Call glFinish()
+ * first so that GL is done with the buffer; it is complete on return. */
+int vct_frame_to_gl_buffer(vct_context *ctx, unsigned gl_buffer, vct_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

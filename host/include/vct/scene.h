@@ -1,0 +1,90 @@
+/* vct: the host scene: flat arrays of positions, triangles, materials,
+ * lights and a camera, loaded from a file or built from arrays. */
+#ifndef VCT_API_SCENE_H
+#define VCT_API_SCENE_H
+
+#include <stdint.h>
+
+#include "vct/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct vct_material {
+    char name[64];
+    float albedo[3];   /* diffuse reflectance */
+    float emission[3]; /* emitted radiance Le */
+    float specular[3]; /* specular reflectance (or metallic tint) */
+    float metallic;
+    float roughness;    /* 0 = mirror, 1 = diffuse-like */
+    float transmission; /* 0..1 */
+    float ior;
+} vct_material;
+
+typedef enum vct_light_type {
+    VCT_LIGHT_POINT = 0,
+    VCT_LIGHT_SPOT = 1,
+    VCT_LIGHT_DIRECTIONAL = 2,
+} vct_light_type;
+
+typedef struct vct_light {
+    vct_light_type type;
+    float position[3];
+    float direction[3]; /* direction the light travels (spot, directional) */
+    float color[3];     /* point/spot: radiant intensity W/sr; directional: irradiance */
+    float inner_cone;   /* spot: radians, full intensity inside */
+    float outer_cone;   /* spot: radians, zero outside */
+    /* Size for soft shadows (0: a point, hard shadows): point and spot, the
+     * radius of the disk facing the lit point, in world units; directional,
+     * the angular radius in radians (below 1). The light is shaded as from
+     * its centre, times the fraction of it that the point sees. */
+    float radius;
+} vct_light;
+
+typedef struct vct_camera {
+    float position[3];
+    float look_at[3];
+    float up[3];
+    float fov_y_deg;
+} vct_camera;
+
+typedef struct vct_scene {
+    char source[512];
+    uint32_t vertex_count;
+    uint32_t triangle_count;
+    uint32_t material_count;
+    uint32_t light_count;
+    float *positions;    /* 3 * vertex_count */
+    uint32_t *triangles; /* 3 * triangle_count */
+    uint32_t *triangle_material;
+    vct_material *materials;
+    vct_light *lights;
+    vct_camera camera;
+    int has_camera;
+    /* Radiance arriving from every direction where nothing is hit (a
+     * constant environment, 0 by default): lights what is open to the sky. */
+    float ambient[3];
+    uint32_t degenerate_triangles; /* zero-area triangles, kept but never hit */
+    float bounds_min[3], bounds_max[3];
+} vct_scene;
+
+/* Loads OBJ+MTL, glTF 2.0 or anything assimp reads; flattens the node tree. */
+vct_scene *vct_scene_load(const char *path, vct_error *err);
+/* Builds a scene from arrays (copied); validates like a loaded file. */
+vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
+                                 const uint32_t *triangles, uint32_t triangle_count,
+                                 const uint32_t *triangle_material, const vct_material *materials,
+                                 uint32_t material_count, vct_error *err);
+int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_error *err);
+/* Checks indices, finite values, non-empty; counts degenerates; sets bounds. */
+int vct_scene_validate(vct_scene *scene, vct_error *err);
+/* A default camera framing the scene's bounds, looking down -z. */
+void vct_scene_default_camera(const vct_scene *scene, vct_camera *camera);
+void vct_scene_free(vct_scene *scene);
+vct_material vct_material_default(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

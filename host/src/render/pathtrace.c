@@ -1,0 +1,220 @@
+/* Progressive path tracing: passes of a few samples per pixel accumulate on
+ * the device until the requested sample count or time is reached. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "runtime/runtime.h"
+#include "accel/grid.h"
+#include "render/frame.h"
+#include "scene/scene_device.h"
+
+#define STAGE "path trace"
+
+/* Emissive triangles with their area CDF, for next-event estimation. */
+typedef struct emitter_buffers {
+    cl_mem tris, cdf;
+    cl_uint count;
+    float inv_area;
+} emitter_buffers;
+
+static int emitters_make(vct_context *ctx, const vct_scene *s, emitter_buffers *e, vct_error *err) {
+    memset(e, 0, sizeof *e);
+    uint32_t *tris = malloc(4ull * s->triangle_count + 4);
+    double *area = malloc(8ull * s->triangle_count + 8);
+    float *cdf = malloc(4ull * s->triangle_count + 4);
+    if (!tris || !area || !cdf) {
+        free(tris);
+        free(area);
+        free(cdf);
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    }
+    double total = 0.0;
+    for (uint32_t t = 0; t < s->triangle_count; ++t) {
+        const float *le = s->materials[s->triangle_material[t]].emission;
+        if (!(le[0] > 0.0f || le[1] > 0.0f || le[2] > 0.0f))
+            continue;
+        const float *a = &s->positions[3 * s->triangles[3 * t]];
+        const float *b = &s->positions[3 * s->triangles[3 * t + 1]];
+        const float *c = &s->positions[3 * s->triangles[3 * t + 2]];
+        double e1[3], e2[3];
+        for (int k = 0; k < 3; ++k) {
+            e1[k] = (double)b[k] - a[k];
+            e2[k] = (double)c[k] - a[k];
+        }
+        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+               cz = e1[0] * e2[1] - e1[1] * e2[0];
+        double ar = 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
+        if (!(ar > 0.0))
+            continue; /* a degenerate emitter cannot be sampled or hit */
+        tris[e->count] = t;
+        area[e->count] = ar;
+        total += ar;
+        e->count++;
+    }
+    double run = 0.0;
+    for (uint32_t i = 0; i < e->count; ++i) {
+        run += area[i];
+        cdf[i] = i + 1 == e->count ? 1.0f : (float)(run / total);
+    }
+    e->inv_area = total > 0.0 ? (float)(1.0 / total) : 0.0f;
+    e->tris = vct_buffer_create(ctx, STAGE, "emissive triangles", 4ull * e->count, CL_MEM_READ_ONLY,
+                                e->count ? tris : NULL, err);
+    e->cdf = e->tris ? vct_buffer_create(ctx, STAGE, "emitter CDF", 4ull * e->count,
+                                         CL_MEM_READ_ONLY, e->count ? cdf : NULL, err)
+                     : NULL;
+    free(tris);
+    free(area);
+    free(cdf);
+    return e->cdf ? VCT_OK : (int)err->status;
+}
+
+static void progress_line(uint32_t done, uint32_t total, double elapsed_s, double limit_s) {
+    const int width = 30;
+    double frac = total ? (double)done / total : 0.0;
+    if (limit_s > 0.0)
+        frac = fmax(frac, fmin(elapsed_s / limit_s, 1.0));
+    int filled = (int)(frac * width + 0.5);
+    double rate = elapsed_s > 0.0 ? done / elapsed_s : 0.0;
+    double left = frac > 0.0 ? elapsed_s * (1.0 - frac) / frac : 0.0;
+    fprintf(stderr, "\r[%.*s%*s] %u spp, %.1f spp/s, %.0f s left ", filled,
+            "##############################", width - filled, "", done, rate, left);
+    fflush(stderr);
+}
+
+static void pathtrace_release(vct_context *ctx) {
+    vct_buffer_release(ctx, ctx->pt_accum);
+    vct_buffer_release(ctx, ctx->pt_discarded);
+    ctx->pt_accum = ctx->pt_discarded = NULL;
+    ctx->pt_size[0] = ctx->pt_size[1] = 0;
+    ctx->pt_done = 0;
+}
+
+/* The running sums: kept when resuming at the same size, else zeroed. */
+static int accumulation_get(vct_context *ctx, const vct_pathtrace_options *opt, vct_error *err) {
+    if (opt->resume && ctx->pt_accum && ctx->pt_size[0] == opt->width &&
+        ctx->pt_size[1] == opt->height)
+        return VCT_OK;
+    pathtrace_release(ctx);
+    vct_context_on_release(ctx, pathtrace_release);
+    const size_t pixels = (size_t)opt->width * opt->height;
+    ctx->pt_accum =
+        vct_buffer_create(ctx, STAGE, "accumulation", 16 * pixels, CL_MEM_READ_WRITE, NULL, err);
+    ctx->pt_discarded = ctx->pt_accum ? vct_buffer_create(ctx, STAGE, "discarded count", 4,
+                                                          CL_MEM_READ_WRITE, NULL, err)
+                                      : NULL;
+    int rc = ctx->pt_discarded ? VCT_OK : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_buffer_fill_u32(ctx, STAGE, ctx->pt_accum, 0, 4 * pixels, err);
+    if (rc == VCT_OK)
+        rc = vct_buffer_fill_u32(ctx, STAGE, ctx->pt_discarded, 0, 1, err);
+    if (rc != VCT_OK)
+        pathtrace_release(ctx);
+    else {
+        ctx->pt_size[0] = opt->width;
+        ctx->pt_size[1] = opt->height;
+    }
+    return rc;
+}
+
+int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                         const vct_pathtrace_options *opt, vct_image *image,
+                         vct_pathtrace_result *result, vct_error *err) {
+    vct_pathtrace_result unused;
+    if (!result)
+        result = &unused;
+    memset(image, 0, sizeof *image);
+    memset(result, 0, sizeof *result);
+    if (opt->spp == 0 && !(opt->time_limit_s > 0.0))
+        return vct_fail(err, VCT_ERR_INPUT, "%s: give a sample count (--spp) or a time (--time)",
+                        STAGE);
+    if (opt->max_depth == 0)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: the path depth must be at least 1", STAGE);
+    vct_camera_desc cam;
+    int rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &cam, err);
+    if (rc)
+        return rc;
+    vct_stage_begin(ctx, STAGE);
+    cl_program p;
+    rc = vct_program_get(ctx, "render/pathtrace.cl", "", &p, err);
+    vct_scene_buffers sb = {0};
+    emitter_buffers eb = {0};
+    if (rc == VCT_OK)
+        rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
+    if (rc == VCT_OK)
+        rc = emitters_make(ctx, s, &eb, err);
+    const size_t pixels = (size_t)opt->width * opt->height;
+    if (rc == VCT_OK)
+        rc = accumulation_get(ctx, opt, err);
+    cl_mem accum = ctx->pt_accum, discarded = ctx->pt_discarded;
+    cl_kernel k = rc == VCT_OK ? vct_kernel_create(ctx, p, "pathtrace", err) : NULL;
+    if (rc == VCT_OK && !k)
+        rc = err->status;
+    if (rc == VCT_OK)
+        rc = vct_grid_set_args(k, g, STAGE, err);
+    cl_uint max_depth = opt->max_depth, seed = opt->seed;
+    const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 5, 9, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
+                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(eb.tris), VCT_ARG_OF(eb.cdf),
+                          VCT_ARG_OF(eb.count), VCT_ARG_OF(eb.inv_area));
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 16, 5, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
+                          VCT_ARG_OF(accum), VCT_ARG_OF(discarded), VCT_ARG_OF(ambient));
+    const size_t global[2] = {(size_t)opt->width, (size_t)opt->height}, local[2] = {8, 8};
+    const int show = opt->progress && isatty(2);
+    const cl_uint per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;
+    const double t0 = vct_now_ms();
+    cl_uint done = 0, sample = ctx->pt_done;
+    while (rc == VCT_OK) {
+        const double elapsed = (vct_now_ms() - t0) * 1e-3;
+        if (opt->spp ? done >= opt->spp : elapsed >= opt->time_limit_s)
+            break;
+        cl_uint n = per_pass;
+        if (opt->spp && done + n > opt->spp)
+            n = opt->spp - done;
+        rc = vct_set_args(err, STAGE, k, 14, 2, VCT_ARG_OF(sample), VCT_ARG_OF(n));
+        if (rc == VCT_OK)
+            rc = vct_launch_2d(ctx, k, global, local, err);
+        /* Waiting per pass only serves the clock and the progress bar; a fixed
+         * sample count is queued whole and awaited by the final read. */
+        if (rc == VCT_OK && (show || !opt->spp))
+            rc = vct_finish(ctx, STAGE, err);
+        done += n;
+        sample += n;
+        if (show)
+            progress_line(done, opt->spp, (vct_now_ms() - t0) * 1e-3, opt->time_limit_s);
+    }
+    if (show)
+        fputc('\n', stderr);
+    ctx->pt_done = sample;
+    result->spp = sample;
+    result->seconds = (vct_now_ms() - t0) * 1e-3;
+    cl_mem frame = rc == VCT_OK ? vct_frame_get(ctx, STAGE, opt->width, opt->height, err) : NULL;
+    if (rc == VCT_OK && !frame)
+        rc = err->status;
+    const cl_uint pixel_count = (cl_uint)pixels;
+    if (rc == VCT_OK)
+        rc = vct_run_kernel(ctx, p, "pathtrace_resolve", STAGE, pixels, err, 3, VCT_ARG_OF(accum),
+                            VCT_ARG_OF(pixel_count), VCT_ARG_OF(frame));
+    cl_uint dropped = 0;
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, STAGE, discarded, 0, 4, &dropped, err);
+    result->discarded = dropped;
+    if (rc == VCT_OK)
+        rc = vct_frame_deliver(ctx, STAGE, image, err);
+    if (rc != VCT_OK) {
+        vct_image_free(image);
+        pathtrace_release(ctx); /* the running sums are no longer whole */
+    }
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, eb.tris);
+    vct_buffer_release(ctx, eb.cdf);
+    vct_scene_buffers_release(ctx, &sb);
+    vct_stage_end(ctx);
+    return rc;
+}

@@ -1,0 +1,370 @@
+/* Voxel cone tracing: the voxel hierarchy the plan needs, and the image
+ * (kernels/render/vct_render.cl), one stage per effect. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/grid.h"
+#include "render/frame.h"
+#include "voxel/cones.h"
+#include "scene/scene_device.h"
+#include "vct_types.h"
+#include "voxel/voxels.h"
+
+#define PRIMARY_STAGE "vct primary"
+#define DIFFUSE_STAGE "vct diffuse cones"
+#define SPECULAR_STAGE "vct specular cone"
+#define SOFT_STAGE "vct soft shadows"
+#define GLASS_STAGE "vct glass reflection"
+#define BOUNCE_STAGE "light bounce"
+
+vct_vct_options vct_vct_options_default(void) {
+    vct_vct_options o;
+    memset(&o, 0, sizeof o);
+    o.width = 512;
+    o.height = 512;
+    o.diffuse_cones = 6;
+    o.cones = vct_cone_settings_default();
+    return o;
+}
+
+void vct_aovs_free(vct_aovs *a) {
+    vct_image_free(&a->direct);
+    vct_image_free(&a->indirect);
+    vct_image_free(&a->specular);
+    vct_image_free(&a->ao);
+    vct_image_free(&a->level);
+    vct_image_free(&a->position);
+    vct_image_free(&a->normal);
+}
+
+/* The preset on the device: vct_cone_dir per cone. */
+static cl_mem cone_buffer(vct_context *ctx, uint32_t count, const char *stage, vct_error *err) {
+    float dirs[64], tan_half[16];
+    if (vct_cone_preset(count, dirs, tan_half, err))
+        return NULL;
+    vct_cone_dir cones[16];
+    memset(cones, 0, sizeof cones);
+    for (uint32_t i = 0; i < count; ++i) {
+        memcpy(cones[i].dir.s, &dirs[4 * i], 16);
+        cones[i].aperture.s[0] = tan_half[i];
+    }
+    return vct_buffer_create(ctx, stage, "cone preset", sizeof cones[0] * count, CL_MEM_READ_ONLY,
+                             cones, err);
+}
+
+int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v,
+                             const vct_cone_settings *cs, uint32_t diffuse_cones, vct_error *err) {
+    if (!v->radiance || !v->has_bricks)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: inject light into built bricks first (vct_bricks_build, "
+                        "vct_voxels_inject_light)",
+                        BOUNCE_STAGE);
+    int rc = vct_cone_settings_check(cs, err);
+    const uint32_t n = v->info.voxels;
+    if (rc || n == 0)
+        return rc;
+    vct_stage_begin(ctx, BOUNCE_STAGE);
+    if (v->bounces == 0) { /* keep the direct light that every bounce adds to */
+        if (!v->direct_radiance)
+            v->direct_radiance = vct_buffer_create(ctx, BOUNCE_STAGE, "direct voxel radiance",
+                                                   16ull * n, CL_MEM_READ_WRITE, NULL, err);
+        rc = v->direct_radiance ? VCT_OK : (int)err->status;
+        if (rc == VCT_OK)
+            rc = vct_cl_check(err,
+                              clEnqueueCopyBuffer(ctx->queue, v->radiance, v->direct_radiance, 0, 0,
+                                                  16ull * n, 0, NULL, NULL),
+                              BOUNCE_STAGE, "clEnqueueCopyBuffer");
+    }
+    cl_program p;
+    char options[128];
+    vct_cone_options(v, cs, options, sizeof options);
+    if (rc == VCT_OK)
+        rc = vct_program_get(ctx, "voxel/inject_bounce.cl", options, &p, err);
+    cl_mem cones = rc == VCT_OK ? cone_buffer(ctx, diffuse_cones, BOUNCE_STAGE, err) : NULL;
+    cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
+    vct_cone_desc desc;
+    vct_cone_desc_make(v, cs, s->ambient, &desc);
+    int next = 0;
+    rc = k ? vct_cone_set_args(k, v, &desc, BOUNCE_STAGE, &next, err) : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, BOUNCE_STAGE, k, next, 8, VCT_ARG_OF(cones),
+                          VCT_ARG_OF(diffuse_cones), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
+                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
+                          VCT_ARG_OF(v->direct_radiance), VCT_ARG_OF(v->radiance));
+    if (rc == VCT_OK)
+        rc = vct_launch(ctx, k, n, 64, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, BOUNCE_STAGE, err);
+    if (rc == VCT_OK)
+        ++v->bounces;
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, cones);
+    vct_stage_end(ctx);
+    return rc == VCT_OK ? vct_bricks_refresh_radiance(ctx, v, err) : rc;
+}
+
+int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_grid *g, const vct_plan *plan,
+                    const vct_voxel_options *vo, const vct_brick_options *bo, uint32_t bounces,
+                    const vct_cone_settings *cs, vct_voxels **out, vct_error *err) {
+    *out = NULL;
+    if (!vct_plan_needs_voxels(plan))
+        return VCT_OK;
+    if (bounces < 1 || bounces > 4)
+        return vct_fail(err, VCT_ERR_INPUT, "%u bounces: give 1 (direct light in the voxels) to 4",
+                        bounces);
+    vct_voxels *v = vct_voxelize(ctx, s, vo, err);
+    int rc = v ? vct_octree_build(ctx, v, err) : (int)err->status;
+    /* Light first, into the voxels: the bricks then build and filter every
+     * channel in one pass (1.2x faster than re-filtering radiance after). */
+    const int lit = vct_plan_needs_voxel_light(plan);
+    if (rc == VCT_OK && lit)
+        rc = vct_voxels_inject_light(ctx, s, g, v, err);
+    vct_brick_options bricks = {VCT_BRICKS_AUTO, 0, 0};
+    if (bo)
+        bricks = *bo;
+    bricks.radiance_later = 0;
+    if (rc == VCT_OK)
+        rc = vct_bricks_build(ctx, v, &bricks, err);
+    for (uint32_t b = 1; rc == VCT_OK && lit && b < bounces; ++b)
+        rc = vct_voxels_inject_bounce(ctx, s, v, cs, 6, err);
+    if (rc != VCT_OK) {
+        vct_voxels_free(v);
+        return rc;
+    }
+    *out = v;
+    return VCT_OK;
+}
+
+/* -D options: the planned effects, then the cones' (pool kind, levels). */
+static void program_options(const vct_plan *plan, const vct_voxels *v,
+                            const vct_cone_settings *cones, char *out, size_t size) {
+    static const char *defines[VCT_EFFECTS] = {
+        "-DVCT_DIRECT",     "-DVCT_SHADOWS",  "-DVCT_INDIRECT", "-DVCT_SPECULAR",
+        "-DVCT_REFRACTION", "-DVCT_EMISSION", "-DVCT_AO",       "-DVCT_SOFT_SHADOWS"};
+    size_t len = 0;
+    out[0] = '\0';
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        if (plan->on[e])
+            len += (size_t)snprintf(out + len, size - len, "%s%s", len ? " " : "", defines[e]);
+    if (v && len < size)
+        vct_cone_options(v, cones, out + len, size - len);
+}
+
+typedef struct frame {
+    vct_context *ctx;
+    const vct_voxels *v;
+    cl_program program;
+    cl_mem gbuf, image, aov;
+    cl_mem reflection;       /* glass reflections, when refraction and specular are planned */
+    vct_scene_buffers scene; /* materials and lights, uploaded once per frame */
+    vct_cone_desc desc;
+    cl_uint size[2];
+} frame;
+
+/* Over every pixel, or with `every` 2 over every other pixel per axis. */
+static int launch_frame_kernel(frame *f, cl_kernel k, cl_uint every, vct_error *err) {
+    const size_t global[2] = {(f->size[0] + every - 1) / every, (f->size[1] + every - 1) / every};
+    const size_t local[2] = {8, 8};
+    return vct_launch_2d(f->ctx, k, global, local, err);
+}
+
+static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_camera_desc *cam,
+                   vct_error *err) {
+    const vct_scene_buffers sb = f->scene;
+    cl_kernel k = vct_kernel_create(f->ctx, f->program, "vct_primary", err);
+    int rc = k ? vct_grid_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
+    const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 10, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
+                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
+                          VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov), VCT_ARG_OF(f->reflection));
+    if (rc == VCT_OK)
+        rc = launch_frame_kernel(f, k, 1, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(f->ctx, PRIMARY_STAGE, err);
+    if (k)
+        clReleaseKernel(k);
+    return rc;
+}
+
+/* One cone kernel over the G-buffer: CONE_POOLS, child, desc, then, if
+ * given, a buffer and a count (cones, lights, or glass reflections and
+ * float4 per pixel), then gbuf, materials, size, image, aov, and the sparse
+ * diffuse cells if given (which the kernel runs over, one per 2x2 pixels,
+ * when `over_cells`). */
+static int cone_pass_with(frame *f, const char *stage, const char *name, cl_mem list,
+                          cl_uint list_count, cl_mem sparse, int over_cells, vct_error *err) {
+    cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
+    int next = 0;
+    int rc = k ? vct_cone_set_args(k, f->v, &f->desc, stage, &next, err) : (int)err->status;
+    if (rc == VCT_OK && list) {
+        rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_OF(list), VCT_ARG_OF(list_count));
+        next += 2;
+    }
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, next, 5, VCT_ARG_OF(f->gbuf),
+                          VCT_ARG_OF(f->scene.materials), VCT_ARG_OF(f->size), VCT_ARG_OF(f->image),
+                          VCT_ARG_OF(f->aov));
+    if (rc == VCT_OK && sparse)
+        rc = vct_set_args(err, stage, k, next + 5, 1, VCT_ARG_OF(sparse));
+    if (rc == VCT_OK)
+        rc = launch_frame_kernel(f, k, over_cells ? 2 : 1, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(f->ctx, stage, err);
+    if (k)
+        clReleaseKernel(k);
+    return rc;
+}
+
+static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list, cl_uint list_count,
+                     vct_error *err) {
+    return cone_pass_with(f, stage, name, list, list_count, NULL, 0, err);
+}
+
+/* Indirect diffuse light (or AO): every pixel's cones, or with sparse
+ * diffuse, those of every other pixel per axis and the rest filled in. */
+static int diffuse_pass(frame *f, cl_mem cones, cl_uint count, int sparse, vct_error *err) {
+    if (!sparse)
+        return cone_pass(f, DIFFUSE_STAGE, "vct_diffuse_cones", cones, count, err);
+    const size_t cells = (size_t)((f->size[0] + 1) / 2) * ((f->size[1] + 1) / 2);
+    cl_mem buffer = vct_buffer_create(f->ctx, DIFFUSE_STAGE, "sparse diffuse cells", 32 * cells,
+                                      CL_MEM_READ_WRITE, NULL, err);
+    int rc = buffer ? cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_sparse", cones, count, buffer,
+                                     1, err)
+                    : (int)err->status;
+    if (rc == VCT_OK)
+        rc = cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_fill", cones, count, buffer, 0, err);
+    vct_buffer_release(f->ctx, buffer);
+    return rc;
+}
+
+/* The AOV buffer (AOV_SLOTS float4 per pixel, kernels/render/vct_render.cl) split
+ * into images: a slot's float4 as it is, or one of its components as grey. */
+#define AOV_SLOTS 6
+static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
+    const struct {
+        vct_image *image;
+        int slot, component; /* component -1: the whole float4 */
+    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1}, {&a->specular, 2, -1}, {&a->ao, 3, 0},
+                {&a->level, 3, 1},   {&a->position, 4, -1}, {&a->normal, 5, -1}};
+    const size_t pixels = (size_t)f->size[0] * f->size[1], bytes = 16 * AOV_SLOTS * pixels;
+    float *raw = malloc(bytes);
+    int rc = raw ? vct_buffer_read(f->ctx, "vct AOVs", f->aov, 0, bytes, raw, err)
+                 : vct_fail(err, VCT_ERR_MEMORY, "vct AOVs: out of host memory");
+    for (size_t i = 0; i < sizeof outs / sizeof outs[0] && rc == VCT_OK; ++i) {
+        vct_image *im = outs[i].image;
+        im->width = (int)f->size[0];
+        im->height = (int)f->size[1];
+        im->rgba = malloc(16 * pixels);
+        if (!im->rgba) {
+            rc = vct_fail(err, VCT_ERR_MEMORY, "vct AOVs: out of host memory");
+            break;
+        }
+        for (size_t p = 0; p < pixels; ++p) {
+            const float *src = &raw[4 * (AOV_SLOTS * p + (size_t)outs[i].slot)];
+            float *dst = &im->rgba[4 * p];
+            if (outs[i].component < 0)
+                memcpy(dst, src, 16);
+            else
+                dst[0] = dst[1] = dst[2] = src[outs[i].component], dst[3] = 1.0f;
+        }
+    }
+    free(raw);
+    return rc;
+}
+
+int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, const vct_voxels *v,
+                   const vct_plan *plan, const vct_vct_options *opt, vct_image *image,
+                   vct_aovs *aovs, vct_error *err) {
+    memset(image, 0, sizeof *image);
+    if (aovs)
+        memset(aovs, 0, sizeof *aovs);
+    const int cones_on = vct_plan_needs_voxels(plan);
+    if (cones_on && (!v || !v->has_bricks))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "vct: the plan traces cones: build the voxels first (vct_vct_prepare)");
+    int rc = vct_cone_settings_check(&opt->cones, err);
+    vct_camera_desc cam;
+    if (rc == VCT_OK)
+        rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &cam, err);
+    if (rc)
+        return rc;
+    frame f;
+    memset(&f, 0, sizeof f);
+    f.ctx = ctx;
+    f.v = cones_on ? v : NULL;
+    f.size[0] = (cl_uint)opt->width;
+    f.size[1] = (cl_uint)opt->height;
+    if (f.v)
+        vct_cone_desc_make(f.v, &opt->cones, s->ambient, &f.desc);
+    char options[256];
+    program_options(plan, f.v, &opt->cones, options, sizeof options);
+    const size_t pixels = (size_t)opt->width * opt->height;
+
+    vct_stage_begin(ctx, PRIMARY_STAGE);
+    rc = vct_program_get(ctx, "render/vct_render.cl", options, &f.program, err);
+    f.gbuf = rc == VCT_OK ? vct_buffer_create(ctx, PRIMARY_STAGE, "G-buffer", 64 * pixels,
+                                              CL_MEM_READ_WRITE, NULL, err)
+                          : NULL;
+    f.image = f.gbuf ? vct_frame_get(ctx, PRIMARY_STAGE, opt->width, opt->height, err) : NULL;
+    rc = f.image ? VCT_OK : (int)err->status;
+    if (rc == VCT_OK && aovs) {
+        f.aov = vct_buffer_create(ctx, PRIMARY_STAGE, "AOVs", 16 * AOV_SLOTS * pixels,
+                                  CL_MEM_READ_WRITE, NULL, err);
+        rc = f.aov ? vct_buffer_fill_u32(ctx, PRIMARY_STAGE, f.aov, 0, 4 * AOV_SLOTS * pixels, err)
+                   : (int)err->status;
+    }
+    const int glass = plan->on[VCT_EFFECT_REFRACTION] && plan->on[VCT_EFFECT_SPECULAR];
+    if (rc == VCT_OK && glass) {
+        f.reflection = vct_buffer_create(ctx, PRIMARY_STAGE, "glass reflections", 48 * pixels,
+                                         CL_MEM_READ_WRITE, NULL, err);
+        rc = f.reflection ? VCT_OK : (int)err->status;
+    }
+    if (rc == VCT_OK)
+        rc = vct_scene_buffers_make(ctx, s, PRIMARY_STAGE, &f.scene, err);
+    if (rc == VCT_OK)
+        rc = primary(&f, s, g, &cam, err);
+    vct_stage_end(ctx);
+
+    if (rc == VCT_OK && plan->on[VCT_EFFECT_SOFT_SHADOWS]) {
+        vct_stage_begin(ctx, SOFT_STAGE);
+        rc =
+            cone_pass(&f, SOFT_STAGE, "vct_soft_shadows", f.scene.lights, f.scene.light_count, err);
+        vct_stage_end(ctx);
+    }
+    if (rc == VCT_OK && (plan->on[VCT_EFFECT_INDIRECT] || plan->on[VCT_EFFECT_AO])) {
+        vct_stage_begin(ctx, DIFFUSE_STAGE);
+        cl_mem cones = cone_buffer(ctx, opt->diffuse_cones, DIFFUSE_STAGE, err);
+        const cl_uint count = opt->diffuse_cones;
+        rc = cones ? diffuse_pass(&f, cones, count, opt->sparse_diffuse, err) : (int)err->status;
+        vct_buffer_release(ctx, cones);
+        vct_stage_end(ctx);
+    }
+    if (rc == VCT_OK && plan->on[VCT_EFFECT_SPECULAR]) {
+        vct_stage_begin(ctx, SPECULAR_STAGE);
+        rc = cone_pass(&f, SPECULAR_STAGE, "vct_specular_cone", NULL, 0, err);
+        vct_stage_end(ctx);
+    }
+    if (rc == VCT_OK && glass) {
+        vct_stage_begin(ctx, GLASS_STAGE);
+        rc = cone_pass(&f, GLASS_STAGE, "vct_glass_reflection", f.reflection, 3, err);
+        vct_stage_end(ctx);
+    }
+    if (rc == VCT_OK)
+        rc = vct_frame_deliver(ctx, "vct image", image, err);
+    if (rc == VCT_OK && aovs)
+        rc = read_aovs(&f, aovs, err);
+    vct_scene_buffers_release(ctx, &f.scene);
+    vct_buffer_release(ctx, f.aov);
+    vct_buffer_release(ctx, f.gbuf);
+    vct_buffer_release(ctx, f.reflection);
+    if (rc != VCT_OK) {
+        vct_image_free(image);
+        if (aovs)
+            vct_aovs_free(aovs);
+    }
+    return rc;
+}

@@ -1,0 +1,348 @@
+/* Scene files through assimp: the node tree is flattened with its transforms
+ * into flat arrays; materials, cameras and punctual lights are converted to
+ * the engine's conventions (linear radiance, W/sr, irradiance). */
+#include <assimp/cimport.h>
+#include <assimp/light.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+#include "runtime/runtime.h"
+
+typedef struct builder {
+    vct_scene *s;
+    uint32_t vertex_cap, triangle_cap;
+    const char *path;
+    vct_error *err;
+} builder;
+
+static int grow(void **p, uint32_t *cap, uint32_t need, size_t elem) {
+    if (need <= *cap)
+        return 1;
+    uint32_t c = *cap ? *cap : 1024;
+    while (c < need)
+        c = c > UINT32_MAX / 2 ? need : c * 2;
+    void *q = realloc(*p, (size_t)c * elem);
+    if (!q)
+        return 0;
+    *p = q;
+    *cap = c;
+    return 1;
+}
+
+static int add_mesh(builder *b, const struct aiMesh *mesh, const struct aiMatrix4x4 *m) {
+    vct_scene *s = b->s;
+    uint64_t verts = (uint64_t)s->vertex_count + mesh->mNumVertices;
+    if (verts > UINT32_MAX / 2)
+        return vct_fail(b->err, VCT_ERR_INPUT, "scene %s: more vertices than vct indexes", b->path);
+    uint32_t vcap = b->vertex_cap;
+    if (!grow((void **)&s->positions, &vcap, (uint32_t)verts, 3 * sizeof(float)))
+        return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
+    b->vertex_cap = vcap;
+    const uint32_t base = s->vertex_count;
+    for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+        struct aiVector3D v = mesh->mVertices[i];
+        float *out = &s->positions[3 * (base + i)];
+        /* Row-major affine transform, in double so large offsets stay exact. */
+        out[0] = (float)((double)m->a1 * v.x + (double)m->a2 * v.y + (double)m->a3 * v.z + m->a4);
+        out[1] = (float)((double)m->b1 * v.x + (double)m->b2 * v.y + (double)m->b3 * v.z + m->b4);
+        out[2] = (float)((double)m->c1 * v.x + (double)m->c2 * v.y + (double)m->c3 * v.z + m->c4);
+        if (!isfinite(v.x) || !isfinite(v.y) || !isfinite(v.z) || !isfinite(out[0]) ||
+            !isfinite(out[1]) || !isfinite(out[2]))
+            return vct_fail(b->err, VCT_ERR_INPUT,
+                            "scene %s: mesh \"%s\" vertex %u is not finite (%g, %g, %g)", b->path,
+                            mesh->mName.data, i, v.x, v.y, v.z);
+    }
+    s->vertex_count = (uint32_t)verts;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+        const struct aiFace *face = &mesh->mFaces[f];
+        if (face->mNumIndices != 3)
+            continue; /* points and lines carry no surface */
+        uint32_t tcap = b->triangle_cap, tcap2 = b->triangle_cap;
+        if (!grow((void **)&s->triangles, &tcap, s->triangle_count + 1, 3 * sizeof(uint32_t)) ||
+            !grow((void **)&s->triangle_material, &tcap2, s->triangle_count + 1, sizeof(uint32_t)))
+            return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
+        b->triangle_cap = tcap;
+        for (int k = 0; k < 3; ++k) {
+            if (face->mIndices[k] >= mesh->mNumVertices)
+                return vct_fail(b->err, VCT_ERR_INPUT,
+                                "scene %s: mesh \"%s\" face %u uses vertex %u of %u", b->path,
+                                mesh->mName.data, f, face->mIndices[k], mesh->mNumVertices);
+            s->triangles[3 * s->triangle_count + k] = base + face->mIndices[k];
+        }
+        s->triangle_material[s->triangle_count] = mesh->mMaterialIndex;
+        s->triangle_count++;
+    }
+    return VCT_OK;
+}
+
+static void mat_mul(const struct aiMatrix4x4 *a, const struct aiMatrix4x4 *b,
+                    struct aiMatrix4x4 *out) {
+    const float *x = &a->a1, *y = &b->a1;
+    float r[16];
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            r[4 * i + j] = x[4 * i] * y[j] + x[4 * i + 1] * y[4 + j] + x[4 * i + 2] * y[8 + j] +
+                           x[4 * i + 3] * y[12 + j];
+    memcpy(&out->a1, r, sizeof r);
+}
+
+static int walk(builder *b, const struct aiScene *sc, const struct aiNode *node,
+                const struct aiMatrix4x4 *parent) {
+    struct aiMatrix4x4 world;
+    mat_mul(parent, &node->mTransformation, &world);
+    for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+        unsigned mi = node->mMeshes[i];
+        if (mi >= sc->mNumMeshes)
+            return vct_fail(b->err, VCT_ERR_INPUT, "scene %s: node \"%s\" names mesh %u of %u",
+                            b->path, node->mName.data, mi, sc->mNumMeshes);
+        int rc = add_mesh(b, sc->mMeshes[mi], &world);
+        if (rc)
+            return rc;
+    }
+    for (unsigned c = 0; c < node->mNumChildren; ++c) {
+        int rc = walk(b, sc, node->mChildren[c], &world);
+        if (rc)
+            return rc;
+    }
+    return VCT_OK;
+}
+
+static const struct aiNode *find_node(const struct aiNode *n, const char *name,
+                                      const struct aiMatrix4x4 *parent, struct aiMatrix4x4 *out) {
+    struct aiMatrix4x4 world;
+    mat_mul(parent, &n->mTransformation, &world);
+    if (strcmp(n->mName.data, name) == 0) {
+        *out = world;
+        return n;
+    }
+    for (unsigned c = 0; c < n->mNumChildren; ++c) {
+        const struct aiNode *r = find_node(n->mChildren[c], name, &world, out);
+        if (r)
+            return r;
+    }
+    return NULL;
+}
+
+static void xform_point(const struct aiMatrix4x4 *m, const struct aiVector3D *v, float *out) {
+    out[0] = m->a1 * v->x + m->a2 * v->y + m->a3 * v->z + m->a4;
+    out[1] = m->b1 * v->x + m->b2 * v->y + m->b3 * v->z + m->b4;
+    out[2] = m->c1 * v->x + m->c2 * v->y + m->c3 * v->z + m->c4;
+}
+
+static void xform_dir(const struct aiMatrix4x4 *m, const struct aiVector3D *v, float *out) {
+    out[0] = m->a1 * v->x + m->a2 * v->y + m->a3 * v->z;
+    out[1] = m->b1 * v->x + m->b2 * v->y + m->b3 * v->z;
+    out[2] = m->c1 * v->x + m->c2 * v->y + m->c3 * v->z;
+    float len = sqrtf(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+    if (len > 0.0f)
+        for (int k = 0; k < 3; ++k)
+            out[k] /= len;
+}
+
+static int is_gltf(const char *path) {
+    const char *dot = strrchr(path, '.');
+    return dot && (strcasecmp(dot, ".gltf") == 0 || strcasecmp(dot, ".glb") == 0);
+}
+
+static void read_camera(const struct aiScene *sc, const char *path, vct_scene *s) {
+    if (sc->mNumCameras == 0)
+        return;
+    const struct aiCamera *cam = sc->mCameras[0];
+    struct aiMatrix4x4 identity, world;
+    aiIdentityMatrix4(&identity);
+    if (!find_node(sc->mRootNode, cam->mName.data, &identity, &world))
+        world = identity;
+    /* glTF cameras sit at their node's origin by definition; assimp 5.2 also
+     * copies the node's translation into mPosition, which would count it twice. */
+    struct aiVector3D pos = cam->mPosition;
+    if (is_gltf(path))
+        pos.x = pos.y = pos.z = 0.0f;
+    struct aiVector3D target = {pos.x + cam->mLookAt.x, pos.y + cam->mLookAt.y,
+                                pos.z + cam->mLookAt.z};
+    xform_point(&world, &pos, s->camera.position);
+    xform_point(&world, &target, s->camera.look_at);
+    xform_dir(&world, &cam->mUp, s->camera.up);
+    float aspect = cam->mAspect > 0.0f ? cam->mAspect : 1.0f;
+    float fov_y;
+    if (is_gltf(path))
+        fov_y = cam->mHorizontalFOV / aspect; /* assimp stores yfov * aspect for glTF */
+    else
+        fov_y = 2.0f * atanf(tanf(cam->mHorizontalFOV) / aspect); /* half horizontal angle */
+    s->camera.fov_y_deg = fov_y * 180.0f / VCT_PI_F;
+    s->has_camera = s->camera.fov_y_deg > 0.0f && s->camera.fov_y_deg < 180.0f;
+}
+
+static int read_lights(const struct aiScene *sc, const char *path, vct_scene *s, vct_error *err) {
+    for (unsigned i = 0; i < sc->mNumLights; ++i) {
+        const struct aiLight *al = sc->mLights[i];
+        vct_light l;
+        memset(&l, 0, sizeof l);
+        switch (al->mType) {
+        case aiLightSource_POINT:
+            l.type = VCT_LIGHT_POINT;
+            break;
+        case aiLightSource_SPOT:
+            l.type = VCT_LIGHT_SPOT;
+            break;
+        case aiLightSource_DIRECTIONAL:
+            l.type = VCT_LIGHT_DIRECTIONAL;
+            break;
+        default:
+            fprintf(stderr, "vct: %s: light \"%s\" of an unsupported type is ignored\n", path,
+                    al->mName.data);
+            continue;
+        }
+        struct aiMatrix4x4 identity, world;
+        aiIdentityMatrix4(&identity);
+        if (!find_node(sc->mRootNode, al->mName.data, &identity, &world))
+            world = identity;
+        xform_point(&world, &al->mPosition, l.position);
+        xform_dir(&world, &al->mDirection, l.direction);
+        l.color[0] = al->mColorDiffuse.r;
+        l.color[1] = al->mColorDiffuse.g;
+        l.color[2] = al->mColorDiffuse.b;
+        l.inner_cone = al->mAngleInnerCone;
+        l.outer_cone = al->mAngleOuterCone;
+        int rc = vct_scene_add_light(s, &l, err);
+        if (rc)
+            return rc;
+    }
+    return VCT_OK;
+}
+
+static int file_exists_near(const char *model, const char *rel) {
+    if (rel[0] == '*')
+        return 1; /* embedded texture */
+    if (strncmp(rel, "data:", 5) == 0)
+        return 1;
+    char path[2048];
+    if (rel[0] == '/') {
+        snprintf(path, sizeof path, "%s", rel);
+    } else {
+        const char *slash = strrchr(model, '/');
+        int dir_len = slash ? (int)(slash - model + 1) : 0;
+        snprintf(path, sizeof path, "%.*s%s", dir_len, model, rel);
+    }
+    return access(path, R_OK) == 0;
+}
+
+static int read_materials(const struct aiScene *sc, const char *path, vct_scene *s,
+                          vct_error *err) {
+    s->material_count = sc->mNumMaterials ? sc->mNumMaterials : 1;
+    s->materials = calloc(s->material_count, sizeof *s->materials);
+    if (!s->materials)
+        return vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", path);
+    for (unsigned i = 0; i < s->material_count; ++i) {
+        vct_material *m = &s->materials[i];
+        *m = vct_material_default();
+        if (i >= sc->mNumMaterials)
+            break;
+        const struct aiMaterial *am = sc->mMaterials[i];
+        struct aiString name;
+        if (aiGetMaterialString(am, AI_MATKEY_NAME, &name) == aiReturn_SUCCESS)
+            snprintf(m->name, sizeof m->name, "%.63s", name.data);
+        struct aiColor4D c;
+        if (aiGetMaterialColor(am, AI_MATKEY_BASE_COLOR, &c) == aiReturn_SUCCESS ||
+            aiGetMaterialColor(am, AI_MATKEY_COLOR_DIFFUSE, &c) == aiReturn_SUCCESS) {
+            m->albedo[0] = c.r;
+            m->albedo[1] = c.g;
+            m->albedo[2] = c.b;
+        }
+        float scale = 1.0f;
+        aiGetMaterialFloatArray(am, AI_MATKEY_EMISSIVE_INTENSITY, &scale, NULL);
+        if (aiGetMaterialColor(am, AI_MATKEY_COLOR_EMISSIVE, &c) == aiReturn_SUCCESS) {
+            m->emission[0] = c.r * scale;
+            m->emission[1] = c.g * scale;
+            m->emission[2] = c.b * scale;
+        }
+        if (aiGetMaterialColor(am, AI_MATKEY_COLOR_SPECULAR, &c) == aiReturn_SUCCESS) {
+            m->specular[0] = c.r;
+            m->specular[1] = c.g;
+            m->specular[2] = c.b;
+        }
+        float f;
+        if (aiGetMaterialFloatArray(am, AI_MATKEY_SHININESS, &f, NULL) == aiReturn_SUCCESS &&
+            f > 0.0f)
+            m->roughness = sqrtf(2.0f / (f + 2.0f)); /* Phong exponent -> roughness */
+        if (aiGetMaterialFloatArray(am, AI_MATKEY_ROUGHNESS_FACTOR, &f, NULL) == aiReturn_SUCCESS)
+            m->roughness = f;
+        if (aiGetMaterialFloatArray(am, AI_MATKEY_METALLIC_FACTOR, &f, NULL) == aiReturn_SUCCESS)
+            m->metallic = f;
+        if (aiGetMaterialFloatArray(am, AI_MATKEY_REFRACTI, &f, NULL) == aiReturn_SUCCESS &&
+            f >= 1.0f)
+            m->ior = f;
+        if (aiGetMaterialFloatArray(am, AI_MATKEY_TRANSMISSION_FACTOR, &f, NULL) ==
+            aiReturn_SUCCESS)
+            m->transmission = f;
+        else if (aiGetMaterialFloatArray(am, AI_MATKEY_OPACITY, &f, NULL) == aiReturn_SUCCESS &&
+                 f < 1.0f)
+            m->transmission = 1.0f - f;
+        /* Textures are not sampled yet, but a missing one is a broken scene. */
+        for (int type = aiTextureType_DIFFUSE; type <= aiTextureType_TRANSMISSION; ++type) {
+            unsigned count = aiGetMaterialTextureCount(am, (enum aiTextureType)type);
+            for (unsigned t = 0; t < count; ++t) {
+                struct aiString tex;
+                if (aiGetMaterialTexture(am, (enum aiTextureType)type, t, &tex, NULL, NULL, NULL,
+                                         NULL, NULL, NULL) == aiReturn_SUCCESS &&
+                    !file_exists_near(path, tex.data))
+                    return vct_fail(err, VCT_ERR_INPUT,
+                                    "scene %s: material \"%s\" names texture \"%s\", which does "
+                                    "not exist",
+                                    path, m->name, tex.data);
+            }
+        }
+    }
+    return VCT_OK;
+}
+
+vct_scene *vct_scene_load(const char *path, vct_error *err) {
+    if (access(path, R_OK) != 0) {
+        vct_fail(err, VCT_ERR_IO, "scene %s: cannot read the file", path);
+        return NULL;
+    }
+    const struct aiScene *sc = aiImportFile(path, aiProcess_Triangulate);
+    if (!sc || !sc->mRootNode) {
+        vct_fail(err, VCT_ERR_INPUT, "scene %s: assimp could not load it: %s", path,
+                 aiGetErrorString());
+        if (sc)
+            aiReleaseImport(sc);
+        return NULL;
+    }
+    vct_scene *s = calloc(1, sizeof *s);
+    if (!s) {
+        aiReleaseImport(sc);
+        vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", path);
+        return NULL;
+    }
+    snprintf(s->source, sizeof s->source, "%s", path);
+    builder b = {s, 0, 0, path, err};
+    struct aiMatrix4x4 identity;
+    aiIdentityMatrix4(&identity);
+    int rc = read_materials(sc, path, s, err);
+    if (rc == VCT_OK)
+        rc = walk(&b, sc, sc->mRootNode, &identity);
+    if (rc == VCT_OK)
+        rc = read_lights(sc, path, s, err);
+    if (rc == VCT_OK && s->triangle_count == 0)
+        rc = vct_fail(err, VCT_ERR_INPUT, "scene %s: no triangles to render (%u meshes)", path,
+                      sc->mNumMeshes);
+    if (rc == VCT_OK)
+        rc = vct_scene_validate(s, err);
+    if (rc == VCT_OK) {
+        vct_scene_default_camera(s, &s->camera);
+        read_camera(sc, path, s);
+    }
+    aiReleaseImport(sc);
+    if (rc != VCT_OK) {
+        vct_scene_free(s);
+        return NULL;
+    }
+    return s;
+}

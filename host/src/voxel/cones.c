@@ -1,0 +1,195 @@
+/* Cones: diffuse presets, march settings, and the arguments every cone
+ * kernel takes (kernels/voxel/cone_trace.h). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "voxel/cones.h"
+#include "vct_types.h"
+#include "voxel/voxels.h"
+
+vct_cone_settings vct_cone_settings_default(void) {
+    const vct_cone_settings s = {1.0f, 4.0f, 0.125f, 0.99f, 0};
+    return s;
+}
+
+int vct_cone_settings_check(const vct_cone_settings *s, vct_error *err) {
+    if (!(s->step > 0.0f && s->step <= 4.0f))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "cone step %g: give a fraction of the diameter in (0, 4]", s->step);
+    if (!(s->offset >= 0.0f && s->offset <= 64.0f))
+        return vct_fail(err, VCT_ERR_INPUT, "cone offset %g: give 0 to 64 voxels", s->offset);
+    if (!(s->ao_distance > 0.0f && s->ao_distance <= 2.0f))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "AO distance %g: give a fraction of the volume's side in (0, 2]",
+                        s->ao_distance);
+    if (!(s->stop_alpha > 0.0f && s->stop_alpha <= 1.0f))
+        return vct_fail(err, VCT_ERR_INPUT, "cone stop opacity %g: give a value in (0, 1]",
+                        s->stop_alpha);
+    if (s->nearest_level != 0 && s->nearest_level != 1)
+        return vct_fail(err, VCT_ERR_INPUT, "cone levels %d: give 0 (blend) or 1 (nearest)",
+                        s->nearest_level);
+    return VCT_OK;
+}
+
+/* Rings of cones around the normal: how many on each, from the pole out. */
+typedef struct preset_rings {
+    uint32_t count;
+    uint32_t ring[3];
+} preset_rings;
+
+static const preset_rings presets[] = {
+    {1, {1, 0, 0}}, {5, {1, 4, 0}}, {6, {1, 5, 0}}, {9, {1, 8, 0}}, {16, {1, 5, 10}}};
+
+#define PI 3.14159265358979323846
+/* Wider cones read levels coarse enough to hold the surface they start
+ * from and light themselves (measured on the Cornell box: 60 degrees gave
+ * twice the error of 20); a cone narrower than its cell still stands for
+ * the whole cell through its weight. */
+#define MAX_HALF_ANGLE (20.0 * PI / 180.0)
+
+int vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err) {
+    const preset_rings *p = NULL;
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; ++i)
+        if (presets[i].count == count)
+            p = &presets[i];
+    if (!p)
+        return vct_fail(err, VCT_ERR_INPUT, "%u diffuse cones: the presets are 1, 5, 6, 9 and 16",
+                        count);
+    /* Directions: each ring sits in the middle (in cosine-weighted measure,
+     * sin^2 of the tilt) of the band its share of cones would cover. */
+    double d[16][3];
+    uint32_t n = 0, before = 0;
+    for (int r = 0; r < 3 && p->ring[r]; ++r) {
+        const uint32_t k = p->ring[r];
+        const double mid = (before + 0.5 * k) / count;
+        const double tilt = k == 1 ? 0.0 : asin(sqrt(mid));
+        for (uint32_t j = 0; j < k; ++j, ++n) {
+            const double phi = 2.0 * PI * (j + 0.5 * (r % 2 == 0)) / k;
+            d[n][0] = sin(tilt) * cos(phi);
+            d[n][1] = sin(tilt) * sin(phi);
+            d[n][2] = cos(tilt);
+        }
+        before += k;
+    }
+    /* Weights and solid angles of each cone's cell (the directions nearest
+     * it), on a grid uniform in cosine-weighted measure: u = sin^2 tilt. */
+    enum { NU = 256, NPHI = 512 };
+    double weight[16] = {0}, solid[16] = {0};
+    for (int i = 0; i < NU; ++i) {
+        const double u = (i + 0.5) / NU, s = sqrt(u), c = sqrt(1.0 - u);
+        for (int j = 0; j < NPHI; ++j) {
+            const double phi = 2.0 * PI * (j + 0.5) / NPHI;
+            const double w[3] = {s * cos(phi), s * sin(phi), c};
+            uint32_t best = 0;
+            double best_dot = -2.0;
+            for (uint32_t k = 0; k < n; ++k) {
+                const double dot = w[0] * d[k][0] + w[1] * d[k][1] + w[2] * d[k][2];
+                if (dot > best_dot) {
+                    best_dot = dot;
+                    best = k;
+                }
+            }
+            weight[best] += 1.0;
+            solid[best] += (1.0 / NU) * (2.0 * PI / NPHI) / (2.0 * c);
+        }
+    }
+    double total = 0.0;
+    for (uint32_t k = 0; k < n; ++k)
+        total += weight[k];
+    for (uint32_t k = 0; k < n; ++k) {
+        for (int a = 0; a < 3; ++a)
+            dirs[4 * k + a] = (float)d[k][a];
+        dirs[4 * k + 3] = (float)(weight[k] / total);
+        /* a cone of the same solid angle as its cell */
+        const double half = fmin(acos(fmax(1.0 - solid[k] / (2.0 * PI), -1.0)), MAX_HALF_ANGLE);
+        tan_half[k] = (float)tan(half);
+    }
+    return VCT_OK;
+}
+
+void vct_cone_desc_make(const vct_voxels *v, const vct_cone_settings *s, const float *ambient,
+                        void *out) {
+    vct_cone_desc *d = out;
+    memset(d, 0, sizeof *d);
+    for (int k = 0; k < 3; ++k) {
+        d->volume.s[k] = (float)v->info.origin[k];
+        d->ambient.s[k] = ambient ? ambient[k] : 0.0f;
+    }
+    d->volume.s[3] = (float)v->info.side;
+    d->ambient.s[3] = (float)(1.0 / v->info.side);
+    d->res.s[0] = v->info.resolution;
+    d->res.s[1] = v->info.levels;
+    d->res.s[2] = v->brick_info.pool[0];
+    d->res.s[3] = v->brick_info.pool[1];
+    d->march.s[0] = s->step;
+    d->march.s[1] = s->offset;
+    d->march.s[2] = (float)(s->ao_distance * v->info.side);
+    d->march.s[3] = s->stop_alpha;
+}
+
+void vct_cone_options(const vct_voxels *v, const vct_cone_settings *s, char *out, size_t size) {
+    const vct_brick_info *b = &v->brick_info;
+    snprintf(out, size, "%s%s%s", b->image ? " -DVCT_BRICK_IMAGE" : "",
+             b->anisotropic ? " -DVCT_ANISOTROPIC" : "",
+             s->nearest_level ? " -DVCT_CONE_NEAREST_LEVEL" : "");
+}
+
+int vct_cone_set_args(cl_kernel k, const vct_voxels *v, const void *desc, const char *stage,
+                      int *next, vct_error *err) {
+    const vct_brick_info *b = &v->brick_info;
+    if (vct_bricks_radiance_check(v, stage, err))
+        return err->status;
+    const int pools = b->anisotropic ? 7 : 1;
+    for (int i = 0; i < pools; ++i) {
+        const int c = VCT_BRICK_RADIANCE + i;
+        cl_mem m = b->image ? v->brick_image[c] : v->brick_buffer[c];
+        int rc = vct_set_args(err, stage, k, i, 1, VCT_ARG_OF(m));
+        if (rc)
+            return rc;
+    }
+    int rc =
+        vct_set_args(err, stage, k, pools, 2, VCT_ARG_OF(v->child), sizeof(vct_cone_desc), desc);
+    *next = pools + 2;
+    return rc;
+}
+
+int vct_cone_trace(vct_context *ctx, const vct_voxels *v, const vct_cone_settings *s,
+                   const float *ambient, const float *cones, uint32_t n, float *out,
+                   vct_error *err) {
+    const char *stage = "cone trace";
+    if (!v->has_bricks)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: build the bricks first (vct_bricks_build)", stage);
+    int rc = vct_cone_settings_check(s, err);
+    if (rc || n == 0)
+        return rc;
+    cl_program p;
+    char options[128];
+    vct_cone_options(v, s, options, sizeof options);
+    rc = vct_program_get(ctx, "render/vct_render.cl", options, &p, err);
+    cl_mem in = rc == VCT_OK ? vct_buffer_create(ctx, stage, "cones", 32ull * n, CL_MEM_READ_ONLY,
+                                                 (void *)cones, err)
+                             : NULL;
+    cl_mem dst =
+        in ? vct_buffer_create(ctx, stage, "cone results", 32ull * n, CL_MEM_WRITE_ONLY, NULL, err)
+           : NULL;
+    cl_kernel k = dst ? vct_kernel_create(ctx, p, "cone_probe", err) : NULL;
+    vct_cone_desc desc;
+    vct_cone_desc_make(v, s, ambient, &desc);
+    int next = 0;
+    rc = k ? vct_cone_set_args(k, v, &desc, stage, &next, err) : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, next, 3, VCT_ARG_OF(in), VCT_ARG_OF(n), VCT_ARG_OF(dst));
+    if (rc == VCT_OK) {
+        vct_stage_begin(ctx, stage);
+        rc = vct_launch(ctx, k, n, 64, err);
+        vct_stage_end(ctx);
+    }
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, stage, dst, 0, 32ull * n, out, err);
+    if (k)
+        clReleaseKernel(k);
+    vct_buffer_release(ctx, dst);
+    vct_buffer_release(ctx, in);
+    return rc;
+}

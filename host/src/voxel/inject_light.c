@@ -1,0 +1,70 @@
+/* Direct light into the voxels (kernels/voxel/inject_light.cl). */
+#include "runtime/runtime.h"
+#include "accel/grid.h"
+#include "light/light_bins_host.h"
+#include "scene/scene_device.h"
+#include "vct_types.h"
+#include "voxel/voxels.h"
+
+#define STAGE "light injection"
+
+int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid *g, vct_voxels *v,
+                            vct_error *err) {
+    return vct_voxels_inject_light_with(ctx, s, g, v, NULL, err);
+}
+
+int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                                 vct_voxels *v, const vct_light_bins_options *bins_options,
+                                 vct_error *err) {
+    const uint32_t n = v->info.voxels;
+    vct_stage_begin(ctx, STAGE);
+    cl_program p;
+    int rc = vct_program_get(ctx, "voxel/inject_light.cl", "", &p, err);
+    if (rc == VCT_OK && !v->radiance) {
+        v->radiance = vct_buffer_create(ctx, STAGE, "voxel radiance", 16ull * n, CL_MEM_READ_WRITE,
+                                        NULL, err);
+        rc = v->radiance ? VCT_OK : (int)err->status;
+    }
+    vct_scene_buffers sb = {0};
+    if (rc == VCT_OK)
+        rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
+    vct_light_bins bins = {0};
+    if (rc == VCT_OK && n)
+        rc = vct_light_bins_build(ctx, s, g, bins_options, STAGE, &bins, err);
+    vct_volume_desc vol;
+    vct_voxels_volume_desc(v, &vol);
+    cl_kernel k = rc == VCT_OK && n ? vct_kernel_create(ctx, p, "inject_direct", err) : NULL;
+    if (rc == VCT_OK && n && !k)
+        rc = err->status;
+    if (k)
+        rc = vct_grid_set_args(k, g, STAGE, err);
+    if (k && rc == VCT_OK)
+        rc = vct_light_bins_set_args(k, 5, &bins, STAGE, err);
+    if (k && rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 9, 9, VCT_ARG_OF(vol), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
+                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission),
+                          VCT_ARG_OF(sb.lights), VCT_ARG_OF(sb.light_count),
+                          VCT_ARG_OF(v->radiance));
+    if (k && rc == VCT_OK)
+        rc = vct_launch(ctx, k, n, 64, err);
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, STAGE, err);
+    if (k)
+        clReleaseKernel(k);
+    vct_light_bins_release(ctx, &bins);
+    vct_scene_buffers_release(ctx, &sb);
+    vct_stage_end(ctx);
+    v->bounces = 0; /* the radiance is direct light again */
+    if (rc == VCT_OK)
+        rc = vct_bricks_refresh_radiance(ctx, v, err);
+    return rc;
+}
+
+int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *v, float *radiance,
+                             vct_error *err) {
+    if (!v->radiance)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "voxel radiance: inject light first (vct_voxels_inject_light)");
+    return vct_buffer_read(ctx, "voxel read", v->radiance, 0, 16ull * v->info.voxels, radiance,
+                           err);
+}

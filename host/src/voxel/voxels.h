@@ -1,0 +1,60 @@
+/* The voxel list and its sparse voxel octree, shared by the host files
+ * that build, read and render them. */
+#ifndef VCT_VOXELS_H
+#define VCT_VOXELS_H
+
+#include "runtime/runtime.h"
+#include "light/light_bins_host.h"
+
+struct vct_voxels {
+    vct_context *ctx;
+    vct_voxel_info info;
+    /* Per voxel, sorted by Morton key. */
+    cl_mem keys, albedo, normal, emission;
+    cl_mem radiance; /* outgoing radiance, after vct_voxels_inject_light */
+    /* The direct part of radiance, copied by the first bounce so that each
+     * bounce adds to it, not to the bounces before. Valid while bounces > 0;
+     * light injection sets bounces back to 0. */
+    cl_mem direct_radiance;
+    uint32_t bounces;
+    /* Octree: built by vct_octree_build (child is NULL before). */
+    cl_mem child, neighbours, tile_parent;
+    /* Bricks: built by vct_bricks_build (has_bricks 0 before). Buffers are
+     * the build storage; an image pool also has images, and keeps only the
+     * radiance buffers for re-filtering. */
+    int has_bricks;
+    int radiance_ready; /* 0 while radiance_later waits for light injection */
+    vct_brick_info brick_info;
+    cl_mem brick_buffer[VCT_BRICK_CHANNELS], brick_image[VCT_BRICK_CHANNELS];
+    /* Per brick, what the 4^3 child cells around its node (-1 .. 2 per axis,
+     * x fastest) hold: child bricks above the leaves, voxels at the leaves,
+     * OCT_NULL where nothing. Found once by the build, so that a light update
+     * reads 64 words in a row instead of following the octree. */
+    cl_mem brick_window;
+};
+
+/* Volume description for kernels (vct_volume_desc in kernels/vct_types.h). */
+void vct_voxels_volume_desc(const vct_voxels *voxels, void *out_desc);
+/* The largest power-of-two resolution below `res` at which `bytes`, growing
+ * with the square of the resolution like a surface does, stays within `limit`. */
+uint32_t vct_voxel_res_that_fits(uint32_t res, double bytes, double limit);
+/* Fails with a message naming the resolution that would fit when one
+ * buffer of `bytes` exceeds the device's allocation limit. */
+int vct_voxel_buffer_fits(vct_context *ctx, const vct_voxel_info *info, const char *stage,
+                          const char *what, double bytes, vct_error *err);
+
+/* vct_voxels_inject_light, with the shadow rays of hard point and spot
+ * lights through light-space triangle bins as `bins_options` says (NULL:
+ * the defaults), or through the grid: the same radiance. */
+int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+                                 vct_voxels *v, const vct_light_bins_options *bins_options,
+                                 vct_error *err);
+/* Fails, naming the stage, while the radiance bricks wait for light
+ * injection (vct_brick_options.radiance_later). */
+int vct_bricks_radiance_check(const vct_voxels *voxels, const char *stage, vct_error *err);
+/* Re-creates the radiance bricks from the voxels' radiance and filters
+ * them up (after light injection); nothing when no bricks are built. */
+int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *voxels, vct_error *err);
+void vct_bricks_release(vct_voxels *voxels);
+
+#endif

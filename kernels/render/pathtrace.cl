@@ -1,0 +1,199 @@
+/* Unbiased path tracing on the shared grid: next-event estimation to every
+ * punctual light and to emissive triangles (chosen by area, combined with BSDF
+ * sampling by the power heuristic), Russian roulette after RR_DEPTH bounces.
+ * Each launch adds `samples` samples per pixel to `accum` (sum of radiance,
+ * w = sample count); a sample that is not finite is dropped and counted.
+ *
+ * max_depth: surface interactions per path (1 = direct light only). */
+#include "scene/bsdf.h"
+#include "scene/camera.h"
+#include "light/direct_light.h"
+#include "accel/grid_traverse.h"
+#include "render/rng.h"
+#include "vct_types.h"
+
+#define RR_DEPTH 3
+
+typedef struct emitters {
+    __global const uint *tris; /* emissive triangles */
+    __global const float *cdf; /* cumulative area, normalised to 1 */
+    uint count;
+    float inv_area; /* 1 / total emissive area */
+} emitters;
+
+inline float power_heuristic(float a, float b) {
+    const float a2 = a * a, b2 = b * b;
+    return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+}
+
+inline uint pick_emitter(const emitters *e, float u) {
+    uint lo = 0, hi = e->count - 1;
+    while (lo < hi) {
+        const uint mid = (lo + hi) / 2;
+        if (e->cdf[mid] <= u)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Radiance from the punctual lights, for any BSDF (delta lobes excluded).
+ * A light with a radius is shaded from its centre; its shadow ray goes to a
+ * random point of its extent. */
+inline float3 nee_punctual(const grid_view *g, __global const vct_light_desc *lights,
+                           uint light_count, const vct_material_desc *m, float3 p, float3 n,
+                           float3 wo, uint *rng) {
+    float3 sum = (float3)(0.0f);
+    const float eps = surface_epsilon(g, p);
+    for (uint i = 0; i < light_count; ++i) {
+        float3 wi, radiant;
+        float dist, pdf;
+        if (!light_incident(lights, i, p, &wi, &dist, &radiant))
+            continue;
+        const float3 fc = bsdf_eval(m, n, wo, wi, &pdf);
+        if (all(fc == 0.0f) || all(radiant == 0.0f))
+            continue;
+        float3 towards = wi;
+        float reach = dist;
+        if (light_is_soft(lights, i)) {
+            const float u1 = rng_next(rng), u2 = rng_next(rng);
+            towards = light_extent_sample(lights, i, wi, dist, u1, u2, &reach);
+        }
+        if (light_visible(g, p, n, eps, towards, reach))
+            sum += radiant * fc;
+    }
+    return sum;
+}
+
+/* One emissive-triangle sample, MIS-weighted against BSDF sampling. */
+inline float3 nee_emitters(const grid_view *g, const emitters *e,
+                           __global const vct_material_desc *materials,
+                           __global const uint *tri_material, const vct_material_desc *m, float3 p,
+                           float3 n, float3 wo, uint *rng) {
+    if (e->count == 0)
+        return (float3)(0.0f);
+    const uint tri = e->tris[pick_emitter(e, rng_next(rng))];
+    float u = rng_next(rng), v = rng_next(rng);
+    if (u + v > 1.0f) {
+        u = 1.0f - u;
+        v = 1.0f - v;
+    }
+    const float3 a = g->tri_vertices[3 * tri].xyz, b = g->tri_vertices[3 * tri + 1].xyz,
+                 c = g->tri_vertices[3 * tri + 2].xyz;
+    const float3 q = a + u * (b - a) + v * (c - a);
+    const float3 nl = normalize(cross(b - a, c - a));
+    const float3 to = q - p;
+    const float d2 = dot(to, to);
+    if (!(d2 > 0.0f))
+        return (float3)(0.0f);
+    const float dist = sqrt(d2);
+    const float3 wi = to / dist;
+    const float cos_l = fabs(dot(nl, wi));
+    if (!(cos_l > 0.0f))
+        return (float3)(0.0f);
+    float pdf_bsdf;
+    const float3 fc = bsdf_eval(m, n, wo, wi, &pdf_bsdf);
+    if (all(fc == 0.0f))
+        return (float3)(0.0f);
+    const float eps = surface_epsilon(g, p);
+    const float leps = surface_epsilon(g, q);
+    hit_record h;
+    if (grid_trace(g, p + n * eps, wi, 0.0f, dist - eps - 2.0f * leps, 1, &h))
+        return (float3)(0.0f);
+    const float pdf_light = e->inv_area * d2 / cos_l; /* solid angle */
+    const float3 Le = materials[tri_material[tri]].emission.xyz;
+    return Le * fc * (power_heuristic(pdf_light, pdf_bsdf) / pdf_light);
+}
+
+__kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,
+                        __global const uint *tri_material, __global const vct_light_desc *lights,
+                        uint light_count, __global const uint *emitter_tris,
+                        __global const float *emitter_cdf, uint emitter_count,
+                        float emitter_inv_area, uint sample_begin, uint samples, uint max_depth,
+                        uint seed, __global float4 *accum, __global uint *discarded,
+                        float4 ambient) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= cam.size.x || y >= cam.size.y)
+        return;
+    const grid_view g = GRID_VIEW();
+    emitters em = {emitter_tris, emitter_cdf, emitter_count, emitter_inv_area};
+    const uint pixel = y * cam.size.x + x;
+    float3 sum = (float3)(0.0f);
+    uint dropped = 0;
+    for (uint s = 0; s < samples; ++s) {
+        uint rng = rng_start(seed, pixel, sample_begin + s);
+        const float jx = rng_next(&rng), jy = rng_next(&rng);
+        float3 org = cam.position.xyz;
+        float3 dir = camera_ray_dir(&cam, (float)x + jx, (float)y + jy);
+        float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
+        float prev_pdf = 0.0f; /* 0: camera ray or delta bounce, emission counts fully */
+        float3 prev_p = org;
+        for (uint depth = 0; depth < max_depth; ++depth) {
+            hit_record h;
+            if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
+                radiance += throughput * ambient.xyz; /* the environment */
+                break;
+            }
+            float3 p, ng, n;
+            int front;
+            if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
+                break;
+            const float3 wo = -dir;
+            const vct_material_desc m = materials[tri_material[h.tri]];
+            if (any(m.emission.xyz > 0.0f)) {
+                float w = 1.0f;
+                if (prev_pdf > 0.0f && emitter_count > 0) {
+                    const float3 d = p - prev_p;
+                    const float pdf_light = emitter_inv_area * dot(d, d) / fabs(dot(ng, dir));
+                    w = power_heuristic(prev_pdf, pdf_light);
+                }
+                radiance += throughput * m.emission.xyz * w;
+            }
+            /* Next-event estimation (delta lobes cannot be lit this way). */
+            if (!is_dielectric(&m) && !(is_mirror(&m) && glossy_probability(&m) >= 1.0f)) {
+                radiance += throughput * nee_punctual(&g, lights, light_count, &m, p, n, wo, &rng);
+                radiance +=
+                    throughput * nee_emitters(&g, &em, materials, tri_material, &m, p, n, wo, &rng);
+            }
+            if (depth + 1 == max_depth)
+                break;
+            bsdf_sample bs;
+            const float u0 = rng_next(&rng), u1 = rng_next(&rng), u2 = rng_next(&rng);
+            if (!bsdf_sample_dir(&m, n, wo, front, u0, u1, u2, &bs))
+                break;
+            throughput *= bs.weight;
+            prev_pdf = bs.delta ? 0.0f : bs.pdf;
+            prev_p = p;
+            /* Leave the surface on the side the new direction points to. */
+            const float eps = surface_epsilon(&g, p);
+            org = p + (dot(bs.wi, n) > 0.0f ? n : -n) * eps;
+            dir = bs.wi;
+            if (depth + 1 >= RR_DEPTH) {
+                const float q = fmin(fmax(throughput.x, fmax(throughput.y, throughput.z)), 0.95f);
+                if (!(rng_next(&rng) < q))
+                    break;
+                throughput /= q;
+            }
+        }
+        if (all(isfinite(radiance)))
+            sum += radiance;
+        else
+            ++dropped;
+    }
+    float4 acc = accum[pixel];
+    acc.xyz += sum;
+    acc.w += (float)(samples - dropped);
+    accum[pixel] = acc;
+    if (dropped)
+        atomic_add(discarded, dropped);
+}
+
+/* The frame: each pixel's mean sample (black where every sample was dropped). */
+__kernel void pathtrace_resolve(__global const float4 *accum, uint pixels, __global float4 *frame) {
+    const uint i = get_global_id(0);
+    if (i >= pixels)
+        return;
+    const float4 a = accum[i];
+    frame[i] = a.w > 0.0f ? (float4)(a.xyz / a.w, 1.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+}

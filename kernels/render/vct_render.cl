@@ -1,0 +1,456 @@
+/* Voxel cone tracing into the image buffer, one kernel per effect so that
+ * an effect the plan leaves out enqueues nothing:
+ *   vct_primary        camera rays through the triangle grid, direct light
+ *                      exactly as the ray caster computes it, emission, and
+ *                      refraction through dielectrics; writes the G-buffer
+ *   vct_soft_shadows   direct light of the lights with a radius, through one
+ *                      cone per light as wide as the light
+ *   vct_diffuse_cones  indirect diffuse light and ambient occlusion
+ *   vct_diffuse_sparse, vct_diffuse_fill  the same, traced at every other
+ *                      pixel per axis (over (w + 1) / 2 x (h + 1) / 2
+ *                      work-items) and filled in at every pixel
+ *   vct_specular_cone  one cone along the mirror direction
+ *   vct_glass_reflection  the Fresnel reflection off the first dielectric
+ *                      the camera ray enters, one mirror cone
+ * Effects are chosen with -D: VCT_DIRECT, VCT_SHADOWS, VCT_SOFT_SHADOWS,
+ * VCT_EMISSION, VCT_REFRACTION, VCT_SPECULAR, VCT_INDIRECT, VCT_AO (and the
+ * pool's VCT_BRICK_IMAGE, VCT_ANISOTROPIC).
+ *
+ * G-buffer, 4 float4 per pixel: position and material id (as bits); normal
+ * facing the viewer and 1 where a surface was found; direction towards the
+ * viewer; the throughput of the refractions on the way. AOVs, AOV_SLOTS
+ * float4 per pixel when given: direct, indirect diffuse, specular, (open
+ * fraction, mean level sampled, 0, 1), position and normal (w 1 where a
+ * surface was found, else the slot stays 0). Glass reflections, 3 float4
+ * per pixel, when refraction and specular are both planned: (point,
+ * weight.x), (normal, weight.y), (mirror direction, weight.z), the weight 0
+ * where there is none. */
+#include "scene/bsdf.h"
+#include "scene/camera.h"
+#include "voxel/cone_trace.h"
+#include "light/direct_light.h"
+#include "accel/grid_traverse.h"
+#include "vct_types.h"
+
+#define VCT_MAX_INTERFACES 8u
+#define AOV_SLOTS 6u
+/* Shadow cones step an eighth as far as the setting says, 1/8 of the
+ * diameter at the default step: a thin occluder then falls between samples
+ * less often (measured: no leak into the umbra at 1/8 of the diameter, up
+ * to 12% at 1/2). */
+#define SOFT_STEP_SCALE 0.125f
+
+#ifdef VCT_SHADOWS
+#define SHADOWS 1
+#else
+#define SHADOWS 0
+#endif
+
+#ifdef VCT_SOFT_SHADOWS
+#define SOFT_SHADOWS 1
+#else
+#define SOFT_SHADOWS 0
+#endif
+
+/* The Phong exponent of m's glossy lobe and its mirror direction *r, or -1
+ * where direct light has no glossy term. */
+inline float direct_lobe(const vct_material_desc *m, float3 wo, float3 n, float3 *r) {
+    *r = (float3)(0.0f);
+#ifdef VCT_SPECULAR
+    if (glossy_probability(m) > 0.0f && !is_mirror(m) && !is_dielectric(m)) {
+        *r = reflect_dir(wo, n);
+        return phong_exponent(m->emission.w);
+    }
+#endif
+    return -1.0f;
+}
+
+/* Radiance the direct terms reflect off m. */
+inline float3 direct_shade(const vct_material_desc *m, direct_terms d, float e) {
+    float3 out = diffuse_color(m) * VCT_INV_PI * d.irradiance;
+    if (e >= 0.0f)
+        out += glossy_color(m) * d.lobe;
+    return out;
+}
+
+__kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
+                          __global const vct_material_desc *materials,
+                          __global const uint *tri_material, __global const vct_light_desc *lights,
+                          uint light_count, float4 ambient, __global float4 *gbuf,
+                          __global float4 *image, __global float4 *aov,
+                          __global float4 *reflection) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= cam.size.x || y >= cam.size.y)
+        return;
+    const grid_view g = GRID_VIEW();
+    const uint pixel = y * cam.size.x + x;
+    float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
+    float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
+    float4 gpos = (float4)(0.0f), gnormal = (float4)(0.0f), gview = (float4)(0.0f);
+    float4 rpos = (float4)(0.0f), rnormal = (float4)(0.0f), rdir = (float4)(0.0f);
+    int reflected = 0;
+    for (uint depth = 0; depth < VCT_MAX_INTERFACES; ++depth) {
+        hit_record h;
+        if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
+            radiance += throughput * ambient.xyz;
+            break;
+        }
+        float3 p, ng, n;
+        int front;
+        if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
+            break;
+        const uint mat = tri_material[h.tri];
+        const vct_material_desc m = materials[mat];
+        const float3 wo = -dir;
+#ifdef VCT_REFRACTION
+        if (is_dielectric(&m)) {
+            /* Follow the transmitted ray exactly (total internal reflection
+             * where there is none). The reflected part of the first surface
+             * entered goes to vct_glass_reflection; later ones are left out. */
+            const float ior = fmax(m.extra.x, 1.0001f);
+            const float eta = front ? 1.0f / ior : ior;
+            const float cos_i = fmin(dot(n, wo), 1.0f);
+            const float F = fresnel_dielectric(cos_i, eta);
+            const float eps = surface_epsilon(&g, p);
+            if (F >= 1.0f) {
+                dir = reflect_dir(wo, n);
+                org = p + n * eps;
+            } else {
+                const float sin2_t = eta * eta * fmax(0.0f, 1.0f - cos_i * cos_i);
+                const float cos_t = sqrt(fmax(0.0f, 1.0f - sin2_t));
+                dir = normalize(-eta * wo + (eta * cos_i - cos_t) * n);
+#ifdef VCT_SPECULAR
+                if (front && !reflected) {
+                    reflected = 1;
+                    const float3 w = throughput * F;
+                    rpos = (float4)(p, w.x);
+                    rnormal = (float4)(n, w.y);
+                    rdir = (float4)(reflect_dir(wo, n), w.z);
+                }
+#endif
+                throughput *= (1.0f - F) * m.albedo.xyz;
+                org = p - n * eps;
+            }
+            continue;
+        }
+#endif
+#ifdef VCT_EMISSION
+        radiance += throughput * m.emission.xyz;
+#endif
+#ifdef VCT_DIRECT
+        float3 r;
+        const float e = direct_lobe(&m, wo, n, &r);
+        const direct_terms d =
+            direct_gather(&g, lights, light_count, p, n, SHADOWS, r, e, SOFT_SHADOWS);
+        radiance += throughput * direct_shade(&m, d, e);
+#endif
+        gpos = (float4)(p, as_float(mat));
+        gnormal = (float4)(n, 1.0f);
+        gview = (float4)(wo, 0.0f);
+        break;
+    }
+    gbuf[4u * pixel] = gpos;
+    gbuf[4u * pixel + 1u] = gnormal;
+    gbuf[4u * pixel + 2u] = gview;
+    gbuf[4u * pixel + 3u] = (float4)(throughput, 0.0f);
+    image[pixel] = (float4)(radiance, 1.0f);
+    if (aov) {
+        aov[AOV_SLOTS * pixel] = (float4)(radiance, 1.0f);
+        aov[AOV_SLOTS * pixel + 4u] = (float4)(gpos.xyz, gnormal.w);
+        aov[AOV_SLOTS * pixel + 5u] = gnormal;
+    }
+    if (reflection) {
+        reflection[3u * pixel] = rpos;
+        reflection[3u * pixel + 1u] = rnormal;
+        reflection[3u * pixel + 2u] = rdir;
+    }
+}
+
+/* The surface a pixel's camera ray found, from the G-buffer; 0 where it
+ * found none (or the pixel lies outside the image). */
+typedef struct gbuffer_surface {
+    float3 p, n, wo, throughput;
+    vct_material_desc m;
+} gbuffer_surface;
+
+inline int gbuffer_at(__global const float4 *gbuf, __global const vct_material_desc *materials,
+                      uint2 size, uint x, uint y, uint *pixel, gbuffer_surface *s) {
+    if (x >= size.x || y >= size.y)
+        return 0;
+    *pixel = y * size.x + x;
+    const float4 gnormal = gbuf[4u * *pixel + 1u];
+    if (gnormal.w == 0.0f)
+        return 0;
+    const float4 gpos = gbuf[4u * *pixel];
+    s->p = gpos.xyz;
+    s->n = gnormal.xyz;
+    s->wo = gbuf[4u * *pixel + 2u].xyz;
+    s->throughput = gbuf[4u * *pixel + 3u].xyz;
+    s->m = materials[as_uint(gpos.w)];
+    return 1;
+}
+
+/* The G-buffer at this work-item's pixel. */
+inline int gbuffer_read(__global const float4 *gbuf, __global const vct_material_desc *materials,
+                        uint2 size, uint *pixel, gbuffer_surface *s) {
+    return gbuffer_at(gbuf, materials, size, get_global_id(0), get_global_id(1), pixel, s);
+}
+
+/* Adds a cone pass's radiance to the pixel, and to AOV `slot` when AOVs are
+ * kept (the buffer starts at 0). */
+inline void pixel_add(__global float4 *image, __global float4 *aov, uint pixel, uint slot,
+                      float3 add) {
+    image[pixel] = (float4)(image[pixel].xyz + add, 1.0f);
+    if (aov)
+        aov[AOV_SLOTS * pixel + slot] = (float4)(aov[AOV_SLOTS * pixel + slot].xyz + add, 1.0f);
+}
+
+/* Lights with a radius: the cone from the surface towards the light's
+ * centre, as wide as the light (tan = radius / distance, or the angular
+ * radius) and reaching to it, sees opacity alpha; the light is shaded as a
+ * point times the fraction 1 - alpha / stop that gets through (0 once the
+ * cone counts as opaque). */
+__kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                               __global const vct_light_desc *lights, uint light_count,
+                               __global const float4 *gbuf,
+                               __global const vct_material_desc *materials, uint2 size,
+                               __global float4 *image, __global float4 *aov) {
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
+        return;
+    float3 r;
+    const float e = direct_lobe(&g.m, g.wo, g.n, &r);
+    const float3 origin = cone_origin(&cd, g.p, g.n);
+    direct_terms sum = {(float3)(0.0f), (float3)(0.0f)};
+    vct_cone_desc sd = cd;
+    sd.march.x *= SOFT_STEP_SCALE;
+    for (uint i = 0; i < light_count; ++i) {
+        if (!light_is_soft(lights, i))
+            continue;
+        float3 wi, radiant;
+        float dist, cos_theta;
+        if (!light_reaches(lights, i, g.p, g.n, &wi, &dist, &radiant, &cos_theta))
+            continue;
+        const float size_of = lights[i].shape.x;
+        const int far = isinf(dist);
+        const float tan_half = far ? size_of : fmin(size_of / dist, 1e3f);
+        const cone_result c = cone_trace(CONE_POOLS_PASS, child, &sd, origin, wi, tan_half,
+                                         far ? INFINITY : dist - size_of);
+        direct_add(&sum, radiant, cos_theta, wi, r, e,
+                   clamp(1.0f - c.alpha / cd.march.w, 0.0f, 1.0f));
+    }
+    pixel_add(image, aov, pixel, 0u, g.throughput * direct_shade(&g.m, sum, e));
+}
+
+/* What a pixel's diffuse cones gathered: the cosine-weighted radiance
+ * (which only indirect light uses), the open fraction within the AO
+ * distance, and the mean level sampled. */
+typedef struct diffuse_light {
+    float3 radiance;
+    float open, level;
+} diffuse_light;
+
+inline diffuse_light diffuse_trace(CONE_POOLS, __global const uint *child, const vct_cone_desc *cd,
+                                   __global const vct_cone_dir *cones, uint cone_count,
+                                   const gbuffer_surface *g) {
+    const float3 n = g->n;
+    float3 t, b;
+    basis_of(n, &t, &b);
+    const float3 origin = cone_origin(cd, g->p, n);
+#ifdef VCT_INDIRECT
+    const float reach = INFINITY;
+#else
+    const float reach = cd->march.z; /* occlusion only: no further than the AO distance */
+#endif
+    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
+    float level_sum = 0.0f;
+    uint samples = 0;
+    for (uint i = 0; i < cone_count; ++i) {
+        const vct_cone_dir c = cones[i];
+        const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
+        const cone_result r =
+            cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
+        l.radiance += c.dir.w * r.radiance;
+        l.open += c.dir.w * (1.0f - r.ao_alpha);
+        level_sum += r.level_sum;
+        samples += r.samples;
+    }
+    l.level = samples ? level_sum / (float)samples : 0.0f;
+    return l;
+}
+
+/* Adds what the diffuse cones gathered, reflected by the pixel's surface. */
+inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pixel,
+                          const gbuffer_surface *g, diffuse_light l, float3 ambient) {
+    float3 add = (float3)(0.0f);
+#if defined(VCT_INDIRECT)
+    add = diffuse_color(&g->m) * g->throughput * l.radiance;
+#elif defined(VCT_AO)
+    add = diffuse_color(&g->m) * g->throughput * ambient * l.open;
+#endif
+    pixel_add(image, aov, pixel, 1u, add);
+    if (aov)
+        aov[AOV_SLOTS * pixel + 3u] = (float4)(l.open, l.level, 0.0f, 1.0f);
+}
+
+__kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                                __global const vct_cone_dir *cones, uint cone_count,
+                                __global const float4 *gbuf,
+                                __global const vct_material_desc *materials, uint2 size,
+                                __global float4 *image, __global float4 *aov) {
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
+        return;
+    const diffuse_light l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+    diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
+}
+
+/* Diffuse light traced sparsely: vct_diffuse_sparse traces the cones of
+ * every other pixel per axis, pixel (2i, 2j) into cell (i, j) of `sparse`
+ * (2 float4 each: radiance and open fraction, mean level), and
+ * vct_diffuse_fill gives every pixel the mean of the cells around it (itself
+ * at (2i, 2j), else the 2 or 4 nearest) whose surface agrees with its own:
+ * normals within SPARSE_NORMAL_COS, the cell's point within
+ * SPARSE_PLANE_VOXELS of the pixel's tangent plane, and no further from the
+ * pixel than the cones start off the surface (the cone offset, at least
+ * SPARSE_MIN_REACH voxels): from that height two such points see nearly the
+ * same hemisphere. Where none agrees (edges, corners, thin parts), the pixel
+ * traces its own cones. vct_diffuse_sparse takes image and aov only to share
+ * every cone pass's signature. */
+#define SPARSE_NORMAL_COS 0.9f
+#define SPARSE_PLANE_VOXELS 0.25f
+#define SPARSE_MIN_REACH 2.0f
+
+__kernel void vct_diffuse_sparse(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                                 __global const vct_cone_dir *cones, uint cone_count,
+                                 __global const float4 *gbuf,
+                                 __global const vct_material_desc *materials, uint2 size,
+                                 __global float4 *image, __global float4 *aov,
+                                 __global float4 *sparse) {
+    const uint i = get_global_id(0), j = get_global_id(1);
+    const uint2 cells = (size + 1u) / 2u;
+    if (i >= cells.x || j >= cells.y)
+        return;
+    uint pixel;
+    gbuffer_surface g;
+    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
+    if (gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &pixel, &g))
+        l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+    const uint cell = j * cells.x + i;
+    sparse[2u * cell] = (float4)(l.radiance, l.open);
+    sparse[2u * cell + 1u] = (float4)(l.level, 0.0f, 0.0f, 0.0f);
+}
+
+inline int sparse_agrees(const vct_cone_desc *cd, const gbuffer_surface *g,
+                         const gbuffer_surface *cell) {
+    const float voxel = cd->volume.w / (float)cd->res.x;
+    const float3 off = cell->p - g->p;
+    const float reach = fmax(cd->march.y, SPARSE_MIN_REACH) * voxel;
+    return dot(g->n, cell->n) >= SPARSE_NORMAL_COS &&
+           fabs(dot(g->n, off)) <= SPARSE_PLANE_VOXELS * voxel && dot(off, off) <= reach * reach;
+}
+
+__kernel void vct_diffuse_fill(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                               __global const vct_cone_dir *cones, uint cone_count,
+                               __global const float4 *gbuf,
+                               __global const vct_material_desc *materials, uint2 size,
+                               __global float4 *image, __global float4 *aov,
+                               __global const float4 *sparse) {
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
+        return;
+    const uint x = get_global_id(0), y = get_global_id(1), columns = (size.x + 1u) / 2u;
+    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
+    float agree = 0.0f;
+    for (uint dy = 0; dy <= (y & 1u); ++dy)
+        for (uint dx = 0; dx <= (x & 1u); ++dx) {
+            const uint i = x / 2u + dx, j = y / 2u + dy;
+            uint at;
+            gbuffer_surface q;
+            if (!gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &at, &q) ||
+                !sparse_agrees(&cd, &g, &q))
+                continue;
+            const float4 a = sparse[2u * (j * columns + i)];
+            l.radiance += a.xyz;
+            l.open += a.w;
+            l.level += sparse[2u * (j * columns + i) + 1u].x;
+            agree += 1.0f;
+        }
+    if (agree > 0.0f) {
+        l.radiance /= agree;
+        l.open /= agree;
+        l.level /= agree;
+    } else {
+        l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+    }
+    diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
+}
+
+/* Half-angle of a Phong lobe cos^e: the cone that holds half its energy. */
+inline float specular_tan_half(float e) {
+    const float c = pow(0.5f, 1.0f / (e + 1.0f));
+    return sqrt(fmax(1.0f - c * c, 0.0f)) / c;
+}
+
+__kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                                __global const float4 *gbuf,
+                                __global const vct_material_desc *materials, uint2 size,
+                                __global float4 *image, __global float4 *aov) {
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
+        return;
+    const vct_material_desc m = g.m;
+    if (!(glossy_probability(&m) > 0.0f) || is_dielectric(&m))
+        return; /* nothing glossy here: the pixel is left as it is */
+    const float3 n = g.n;
+    const float3 r = reflect_dir(g.wo, n);
+    const int mirror = is_mirror(&m);
+    const float e = phong_exponent(m.emission.w);
+    const float3 origin = cone_origin(&cd, g.p, n);
+    const cone_result c = cone_trace(CONE_POOLS_PASS, child, &cd, origin, r,
+                                     mirror ? 0.0f : specular_tan_half(e), INFINITY);
+    float3 weight = glossy_color(&m) * g.throughput;
+    if (!mirror)
+        weight *= (e + 2.0f) / (e + 1.0f) * fmax(dot(n, r), 0.0f);
+    pixel_add(image, aov, pixel, 2u, weight * c.radiance);
+}
+
+/* The Fresnel reflection vct_primary recorded, through a mirror cone.
+ * gbuf and materials are unused: the signature is every cone pass's. */
+__kernel void vct_glass_reflection(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                                   __global const float4 *reflection, uint per_pixel,
+                                   __global const float4 *gbuf,
+                                   __global const vct_material_desc *materials, uint2 size,
+                                   __global float4 *image, __global float4 *aov) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= size.x || y >= size.y)
+        return;
+    const uint pixel = y * size.x + x;
+    const float4 rpos = reflection[per_pixel * pixel];
+    const float4 rnormal = reflection[per_pixel * pixel + 1u];
+    const float4 rdir = reflection[per_pixel * pixel + 2u];
+    const float3 weight = (float3)(rpos.w, rnormal.w, rdir.w);
+    if (!(weight.x > 0.0f || weight.y > 0.0f || weight.z > 0.0f))
+        return;
+    const float3 origin = cone_origin(&cd, rpos.xyz, rnormal.xyz);
+    const cone_result c = cone_trace(CONE_POOLS_PASS, child, &cd, origin, rdir.xyz, 0.0f, INFINITY);
+    pixel_add(image, aov, pixel, 2u, weight * c.radiance);
+}
+
+/* Cones given one by one (for tests and tools): 2 float4 in, origin and
+ * tan(half-angle), direction and reach; 2 float4 out, radiance and opacity,
+ * then AO opacity, level sum, samples and 1 if it left the volume. */
+__kernel void cone_probe(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+                         __global const float4 *cones, uint n, __global float4 *out) {
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const float4 a = cones[2u * i], b = cones[2u * i + 1u];
+    const cone_result r = cone_trace(CONE_POOLS_PASS, child, &cd, a.xyz, b.xyz, a.w, b.w);
+    out[2u * i] = (float4)(r.radiance, r.alpha);
+    out[2u * i + 1u] = (float4)(r.ao_alpha, r.level_sum, (float)r.samples, (float)r.left);
+}

@@ -1,0 +1,240 @@
+/* Cone marching through the filtered brick hierarchy.
+ *
+ * A cone of half-angle theta from origin o along unit d is sampled at
+ * distances t, starting one voxel out. Its diameter there is
+ * D = max(2 t tan(theta), 2 voxels); it reads the level whose samples are D / 2
+ * apart (level L-1 samples are one voxel apart, each level up doubles that),
+ * interpolating between the two nearest levels, and steps on by
+ * step * D. A sample's opacity stands for a thickness of its spacing; for a
+ * different step it is corrected to 1 - (1 - a)^(step / spacing), its colour
+ * scaled alike. Samples composite front to back:
+ *     C += (1 - A) c,  A += (1 - A) a
+ * (c is premultiplied, as the pool stores it). The march stops when A
+ * reaches the stop opacity, or when the cone leaves the volume, after one
+ * last sample just inside it for the way from the previous sample's step to
+ * the boundary: then what it still sees, (1 - A), is the environment's
+ * radiance.
+ *
+ * Build with -DVCT_ANISOTROPIC to read the six directional radiance pools
+ * (weighted by the squared direction components) at levels 0 .. L-2, and
+ * with -DVCT_CONE_NEAREST_LEVEL to read, instead of the two levels around
+ * the diameter, the nearest one alone, its opacity corrected for that
+ * level's own spacing. */
+#ifndef VCT_CONE_TRACE_H
+#define VCT_CONE_TRACE_H
+
+#include "voxel/brick_pool.h"
+#include "voxel/octree.h"
+#include "vct_types.h"
+
+#define CONE_MAX_STEPS 4096u
+
+#ifdef VCT_ANISOTROPIC
+#define CONE_POOLS                                                                                 \
+    BRICK_POOL radiance, BRICK_POOL dir0, BRICK_POOL dir1, BRICK_POOL dir2, BRICK_POOL dir3,       \
+        BRICK_POOL dir4, BRICK_POOL dir5
+#define CONE_POOLS_PASS radiance, dir0, dir1, dir2, dir3, dir4, dir5
+#else
+#define CONE_POOLS BRICK_POOL radiance
+#define CONE_POOLS_PASS radiance
+#endif
+
+typedef struct cone_result {
+    float3 radiance; /* what the cone sees, the environment included */
+    float alpha;     /* opacity accumulated along it */
+    float ao_alpha;  /* opacity accumulated within the AO distance */
+    float level_sum; /* sum of the (fractional) levels sampled */
+    uint samples;
+    int left; /* 1: it left the volume */
+} cone_result;
+
+/* Brick b's trilinear sample at `at` ([0, 2]^3 texel units) of a level-`level`
+ * node, seen by a cone travelling along d. */
+VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint level,
+                                    uint levels, float3 d) {
+#ifdef VCT_ANISOTROPIC
+    if (level + 1u < levels) {
+        const float3 w = d * d;
+#ifdef VCT_BRICK_IMAGE
+        const float4 sx =
+            d.x >= 0.0f ? brick_sample(dir0, pool, b, at) : brick_sample(dir3, pool, b, at);
+        const float4 sy =
+            d.y >= 0.0f ? brick_sample(dir1, pool, b, at) : brick_sample(dir4, pool, b, at);
+        const float4 sz =
+            d.z >= 0.0f ? brick_sample(dir2, pool, b, at) : brick_sample(dir5, pool, b, at);
+#else
+        const brick_lerp l = brick_lerp_at(pool, b, at); /* shared by the three pools */
+        const float4 sx = brick_lerp_read(d.x >= 0.0f ? dir0 : dir3, l);
+        const float4 sy = brick_lerp_read(d.y >= 0.0f ? dir1 : dir4, l);
+        const float4 sz = brick_lerp_read(d.z >= 0.0f ? dir2 : dir5, l);
+#endif
+        return (w.x * sx + w.y * sy + w.z * sz) / (w.x + w.y + w.z);
+    }
+#endif
+    (void)level;
+    (void)levels;
+    (void)d;
+    return brick_sample(radiance, pool, b, at);
+}
+
+/* The octree nodes, from the root down to level `depth`, that hold the
+ * previous sample's cell (`cell`, in cells of the finest brick level). A
+ * cone's samples lie close together, so the next descent starts at the
+ * deepest node the two cells share instead of at the root. */
+typedef struct cone_path {
+    uint node[VCT_VOXEL_MAX_LEVELS];
+    uint3 cell;
+    uint depth;
+} cone_path;
+
+inline cone_path cone_path_root(void) {
+    cone_path p;
+    p.node[0] = 0u;
+    p.cell = (uint3)(0u);
+    p.depth = 0u;
+    return p;
+}
+
+/* The pool at `at` (volume units, [0, 1)^3) and fractional level `level`:
+ * one descent reads both neighbouring levels. Empty nodes read 0. */
+VCT_INLINE float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels,
+                              float3 at, float level, float3 d, cone_path *path) {
+    const uint coarse = (uint)level, finest = levels - 1u;
+    const float f = level - (float)coarse;
+    const uint fine = f > 0.0f ? min(coarse + 1u, finest) : coarse; /* a whole level: one */
+    float4 value[2] = {(float4)(0.0f), (float4)(0.0f)};
+    /* Scaling by a power of two is exact: a coarser level's cell is the
+     * finest one's shifted right. */
+    const uint3 cell = min(convert_uint3(at * (float)(1u << finest)), (uint3)((1u << finest) - 1u));
+    /* the levels whose cells agree lie above the highest differing bit */
+    const uint3 diff = cell ^ path->cell;
+    const uint differ = diff.x | diff.y | diff.z;
+    const uint shared = differ == 0u ? finest : finest - 1u - (31u - clz(differ));
+    uint depth = min(shared, path->depth);
+    for (uint l = min(depth, coarse); l <= fine; ++l) {
+        if (l > depth) {
+            const uint first = child[path->node[l - 1u]];
+            if (first == OCT_NULL)
+                break; /* empty here and below */
+            path->node[l] = first + octant_of_cell(cell, finest - l);
+            depth = l;
+        }
+        if (l >= coarse) {
+            const uint b = brick_of(child, path->node[l]);
+            if (b == BRICK_NULL)
+                break;
+            const float3 in_cell = at * (float)(1u << l) - convert_float3(cell >> (finest - l));
+            value[l - coarse] =
+                cone_brick_sample(CONE_POOLS_PASS, pool, b, 2.0f * in_cell, l, levels, d);
+        }
+    }
+    path->cell = cell;
+    path->depth = depth;
+    return fine == coarse ? value[0] : value[0] + f * (value[1] - value[0]);
+}
+
+/* Where a cone from surface point p with normal n starts: lifted off the
+ * surface by the offset (in voxels), so that it does not see its own voxel. */
+inline float3 cone_origin(const vct_cone_desc *c, float3 p, float3 n) {
+    return p + n * (c->march.y * (c->volume.w / (float)c->res.x));
+}
+
+/* 1 - (1 - a)^ratio: opacity a of one thickness over `ratio` of it. pow is
+ * slow on CPU devices (on PoCL, one pow per cone, for the last sample at the
+ * volume's boundary, cost the diffuse cones about 10%), and the common
+ * ratios (2, 1, 1/2, 1/4) need no power at all. */
+inline float opacity_over(float a, float ratio) {
+    const float clear = 1.0f - a;
+    if (ratio == 1.0f)
+        return a;
+    if (ratio == 2.0f)
+        return a * (2.0f - a);
+    if (ratio == 0.5f)
+        return 1.0f - sqrt(clear);
+    if (ratio == 0.25f)
+        return 1.0f - sqrt(sqrt(clear));
+    return clear > 0.0f ? 1.0f - native_exp2(ratio * native_log2(clear)) : 1.0f;
+}
+
+/* Distance along unit d from origin to where it leaves the volume's cube,
+ * if it is inside. */
+inline float cone_volume_exit(const vct_cone_desc *c, float3 origin, float3 d) {
+    const float3 from = (origin - c->volume.xyz) * c->ambient.w, along = d * c->ambient.w;
+    const float3 face = select((float3)(0.0f), (float3)(1.0f), along > 0.0f);
+    const float3 t = select((face - from) / along, (float3)(INFINITY), along == 0.0f);
+    return fmin(fmin(t.x, t.y), t.z);
+}
+
+/* Composites sample s, whose opacity stands for one spacing, over `ratio`
+ * spacings, behind what r has gathered. */
+inline void cone_composite(cone_result *r, float4 s, float ratio) {
+    const float a_in = clamp(s.w, 0.0f, 1.0f);
+    const float a = a_in > 0.0f ? opacity_over(a_in, ratio) : 0.0f;
+    const float3 colour = a_in > 0.0f ? s.xyz * (a / a_in) : (float3)(0.0f);
+    r->radiance += (1.0f - r->alpha) * colour;
+    r->alpha += (1.0f - r->alpha) * a;
+}
+
+/* Marches one cone up to distance max_t; origin is already lifted off its
+ * surface. Each sample stands for the step around it. Where the next sample
+ * would lie outside the volume, one last sample just inside the boundary
+ * stands for the rest of the way, so that a wall on the volume's face is not
+ * stepped over (the Cornell box's walls are). */
+VCT_INLINE cone_result cone_trace(CONE_POOLS, __global const uint *child, const vct_cone_desc *c,
+                                  float3 origin, float3 d, float tan_half, float max_t) {
+    cone_result r = {(float3)(0.0f), 0.0f, 0.0f, 0.0f, 0u, 0};
+    const uint levels = c->res.y;
+    const float voxel = c->volume.w / (float)c->res.x, min_diameter = 2.0f * voxel;
+    const float finest = (float)(levels - 1u), root_spacing = voxel * exp2(finest);
+    const float exit = cone_volume_exit(c, origin, d);
+    float t = voxel, last = 0.0f; /* last: the boundary sample's thickness */
+    cone_path path = cone_path_root();
+    for (uint i = 0; i < CONE_MAX_STEPS && t <= max_t; ++i) {
+        const float3 at = (origin + t * d - c->volume.xyz) * c->ambient.w;
+        if (any(at < 0.0f) || any(at >= 1.0f)) {
+            r.left = 1;
+            break;
+        }
+        const float diameter = fmax(2.0f * t * tan_half, min_diameter);
+#ifdef VCT_CONE_NEAREST_LEVEL
+        const float level =
+            rint(clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest));
+        const float spacing = voxel * exp2(finest - level);
+        const int follows = 0; /* the spacing is the level's own */
+#else
+        const float level = clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest);
+        const float spacing = level > 0.0f ? 0.5f * diameter : root_spacing;
+        const int follows = level > 0.0f;
+#endif
+        const float4 s =
+            cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, &path);
+        const float step = c->march.x * diameter;
+        /* Where the level follows the diameter, the samples are D / 2 apart
+         * and step / spacing is 2 * step fraction; otherwise (a whole level,
+         * the root, the last sample's thickness) it is divided out. */
+        const float thickness_ratio = last > 0.0f ? last / spacing
+                                      : follows   ? 2.0f * c->march.x
+                                                  : step / spacing;
+        cone_composite(&r, s, thickness_ratio);
+        if (t <= c->march.z)
+            r.ao_alpha = r.alpha;
+        r.level_sum += level;
+        ++r.samples;
+        if (r.alpha >= c->march.w || last > 0.0f)
+            break;
+        const float rest = exit - (t + 0.5f * step);
+        if (t + step >= exit && rest > 0.0f && exit <= max_t) {
+            last = rest;
+            t = exit * 0.99999f;
+        } else {
+            t += step;
+        }
+    }
+    if (last > 0.0f)
+        r.left = 1;
+    if (r.left)
+        r.radiance += (1.0f - r.alpha) * c->ambient.xyz;
+    return r;
+}
+
+#endif

@@ -1,0 +1,211 @@
+/* Triangle-parallel voxelization: chunks -> scan -> count -> scan -> write,
+ * then (on the host) a stable sort by Morton key and a per-voxel reduction.
+ *
+ * Each triangle is projected along its dominant normal axis; its work is the
+ * set of voxel columns over its bounding rectangle there, cut into chunks of
+ * VOX_COLUMNS_PER_CHUNK columns so that a huge triangle spreads over many
+ * work-items. In each column the plane's exact range of z leaves at most
+ * three voxels; the exact integer tests (voxel_overlap.h) decide. Counting and
+ * writing share one walk, so they cannot disagree, and fragments come out in
+ * (triangle, column, voxel) order whatever the schedule. */
+#include "voxel/octree.h"
+#include "vct_types.h"
+#include "voxel/voxel_overlap.h"
+
+#define VOX_COLUMNS_PER_CHUNK 32u
+
+/* A triangle rotated so that its dominant normal axis is z. */
+typedef struct vox_setup {
+    vox_triangle tri;
+    int3 lo, hi; /* voxel range of the bounding box, clamped to the volume */
+    uint axis;   /* the dominant axis in the original frame */
+} vox_setup;
+
+inline long3 vox_rotate(long3 v, uint axis) {
+    return axis == 0u ? v.yzx : (axis == 1u ? v.zxy : v);
+}
+
+inline int3 vox_unrotate(int3 v, uint axis) {
+    return axis == 0u ? v.zxy : (axis == 1u ? v.yzx : v);
+}
+
+inline long3 vox_vertex(__global const int4 *tris, uint i) {
+    return convert_long3(tris[i].xyz);
+}
+
+/* 0 for a zero-area triangle or one that misses the volume. */
+inline int vox_setup_make(__global const int4 *tris, uint t, vct_volume_desc vol, vox_setup *s) {
+    long3 a = vox_vertex(tris, 3 * t), b = vox_vertex(tris, 3 * t + 1),
+          c = vox_vertex(tris, 3 * t + 2);
+    const long3 n = vox_cross(b - a, c - b);
+    if (n.x == 0 && n.y == 0 && n.z == 0)
+        return 0;
+    const long ax = vox_abs(n.x), ay = vox_abs(n.y), az = vox_abs(n.z);
+    s->axis = (ax >= ay && ax >= az) ? 0u : (ay >= az ? 1u : 2u);
+    a = vox_rotate(a, s->axis);
+    b = vox_rotate(b, s->axis);
+    c = vox_rotate(c, s->axis);
+    s->tri = vox_triangle_make(a, b, c);
+    const long q = vol.res.z, last = (long)vol.res.x - 1;
+    const long3 mn = min(a, min(b, c)), mx = max(a, max(b, c));
+    /* Voxel i's closed box [iq, (i+1)q] meets [mn, mx] iff (mn-1) div q <= i <= mx div q. */
+    const long3 lo =
+        (long3)(vox_floor_div(mn.x - 1, q), vox_floor_div(mn.y - 1, q), vox_floor_div(mn.z - 1, q));
+    const long3 hi =
+        (long3)(vox_floor_div(mx.x, q), vox_floor_div(mx.y, q), vox_floor_div(mx.z, q));
+    if (any(hi < 0) || any(lo > last))
+        return 0;
+    s->lo = convert_int3(clamp(lo, 0L, last));
+    s->hi = convert_int3(clamp(hi, 0L, last));
+    return 1;
+}
+
+inline uint vox_columns(const vox_setup *s) {
+    return (uint)(s->hi.x - s->lo.x + 1) * (uint)(s->hi.y - s->lo.y + 1);
+}
+
+/* Walks the voxels of chunk `first / VOX_COLUMNS_PER_CHUNK` of triangle t;
+ * with `write` stores (Morton key, t) from keys[out]. Returns the count.
+ * Per column: the projection test along z (the same for every voxel of the
+ * column), then the plane's exact range of z; columns wholly inside the
+ * projection need no more tests, the others test each voxel's remaining axes. */
+inline uint vox_visit(__global const int4 *tris, uint t, uint first, vct_volume_desc vol, int thin,
+                      int write, __global uint *keys, __global uint *ids, uint out) {
+    vox_setup s;
+    if (!vox_setup_make(tris, t, vol, &s))
+        return 0;
+    vox_sat sat;
+    if (!thin)
+        vox_sat_init(&s.tri, &sat);
+    const long q = vol.res.z;
+    const uint width = (uint)(s.hi.x - s.lo.x + 1);
+    const uint end = min(first + VOX_COLUMNS_PER_CHUNK, vox_columns(&s));
+    uint n = 0;
+    for (uint col = first; col < end; ++col) {
+        const int u = s.lo.x + (int)(col % width), v = s.lo.y + (int)(col / width);
+        const long uq = (long)u * q, vq = (long)v * q;
+        int column;
+        long2 z;
+        if (thin) {
+            column = vox_thin_column(&s.tri, uq, vq, q) ? VOX_COLUMN_CROSSES : VOX_COLUMN_MISSES;
+            z = vox_thin_z_range(&s.tri, uq, vq, q);
+        } else {
+            column = vox_column_test(&sat, uq, vq, q);
+            z = vox_plane_z_range(&s.tri, uq, vq, q);
+        }
+        const int z_lo = (int)max(z.x, (long)s.lo.z), z_hi = (int)min(z.y, (long)s.hi.z);
+        if (column == VOX_COLUMN_MISSES || z_lo > z_hi)
+            continue;
+        for (int zi = z_lo; zi <= z_hi; ++zi) {
+            const long3 corner = (long3)(uq, vq, (long)zi * q);
+            if (column != VOX_COLUMN_INSIDE &&
+                !(thin ? vox_thin_sides(&s.tri, corner, q) : vox_edges_overlap(&sat, corner, q)))
+                continue;
+            if (write) {
+                keys[out + n] =
+                    morton_encode(convert_uint3(vox_unrotate((int3)(u, v, zi), s.axis)));
+                ids[out + n] = t;
+            }
+            ++n;
+        }
+    }
+    return n;
+}
+
+/* Chunks per triangle, and its unit normal with the material index in w
+ * (as a float: exact below 2^24, and not a denormal that could be flushed). */
+__kernel void vox_chunks(__global const int4 *tris, vct_volume_desc vol, __global uint *chunks,
+                         __global float4 *tri_normals) {
+    const uint t = get_global_id(0);
+    if (t >= vol.res.w)
+        return;
+    vox_setup s;
+    chunks[t] = vox_setup_make(tris, t, vol, &s)
+                    ? (vox_columns(&s) + VOX_COLUMNS_PER_CHUNK - 1) / VOX_COLUMNS_PER_CHUNK
+                    : 0u;
+    const long3 a = vox_vertex(tris, 3 * t), b = vox_vertex(tris, 3 * t + 1),
+                c = vox_vertex(tris, 3 * t + 2);
+    const float3 n = convert_float3(vox_cross(b - a, c - b));
+    const float scale = fmax(fabs(n.x), fmax(fabs(n.y), fabs(n.z)));
+    tri_normals[t] =
+        (float4)(scale > 0.0f ? normalize(n / scale) : (float3)(0.0f), (float)tris[3 * t].w);
+}
+
+/* The triangle owning chunk c: the last t with chunk_start[t] <= c. */
+inline uint vox_chunk_owner(__global const uint *chunk_start, uint triangles, uint c) {
+    uint lo = 0, hi = triangles;
+    while (hi - lo > 1) {
+        const uint mid = (lo + hi) / 2;
+        if (chunk_start[mid] <= c)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+__kernel void vox_count(__global const int4 *tris, vct_volume_desc vol, int thin,
+                        __global const uint *chunk_start, uint chunks, __global uint *counts) {
+    const uint c = get_global_id(0);
+    if (c >= chunks)
+        return;
+    const uint t = vox_chunk_owner(chunk_start, vol.res.w, c);
+    const uint first = (c - chunk_start[t]) * VOX_COLUMNS_PER_CHUNK;
+    counts[c] = vox_visit(tris, t, first, vol, thin, 0, counts, counts, 0);
+}
+
+__kernel void vox_write(__global const int4 *tris, vct_volume_desc vol, int thin,
+                        __global const uint *chunk_start, uint chunks, __global const uint *offsets,
+                        __global uint *keys, __global uint *ids) {
+    const uint c = get_global_id(0);
+    if (c >= chunks)
+        return;
+    const uint t = vox_chunk_owner(chunk_start, vol.res.w, c);
+    const uint first = (c - chunk_start[t]) * VOX_COLUMNS_PER_CHUNK;
+    vox_visit(tris, t, first, vol, thin, 1, keys, ids, offsets[c]);
+}
+
+/* 1 where a sorted key starts a new voxel. */
+__kernel void vox_heads(__global const uint *keys, uint n, __global uint *heads) {
+    const uint i = get_global_id(0);
+    if (i < n)
+        heads[i] = i == 0 || keys[i] != keys[i - 1];
+}
+
+/* index: exclusive scan of the heads. Records each voxel's key and first fragment. */
+__kernel void vox_starts(__global const uint *keys, uint n, __global const uint *index,
+                         __global uint *voxel_keys, __global uint *voxel_start) {
+    const uint i = get_global_id(0);
+    if (i < n && (i == 0 || keys[i] != keys[i - 1])) {
+        voxel_keys[index[i]] = keys[i];
+        voxel_start[index[i]] = i;
+    }
+}
+
+/* Averages each voxel's fragments in sorted order (deterministic): albedo
+ * and opacity (1 - transmission), emission, and the mean unit normal, whose
+ * length (1 = all fragments agree) is kept in normal.w before normalising.
+ * emission.w holds the fragment count. */
+__kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_start, uint voxels,
+                         uint fragments, __global const float4 *tri_normals,
+                         __global const vct_material_desc *materials, __global float4 *albedo_out,
+                         __global float4 *normal_out, __global float4 *emission_out) {
+    const uint v = get_global_id(0);
+    if (v >= voxels)
+        return;
+    const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
+    float4 albedo = 0.0f;
+    float3 emission = 0.0f, normal = 0.0f;
+    for (uint f = begin; f < end; ++f) {
+        const float4 tn = tri_normals[ids[f]];
+        const vct_material_desc m = materials[(uint)tn.w];
+        albedo += (float4)(m.albedo.xyz, 1.0f - m.specular.w);
+        emission += m.emission.xyz;
+        normal += tn.xyz;
+    }
+    const float inv = 1.0f / (float)(end - begin);
+    const float coherence = length(normal) * inv;
+    albedo_out[v] = albedo * inv;
+    normal_out[v] = (float4)(coherence > 1e-6f ? normalize(normal) : (float3)(0.0f), coherence);
+    emission_out[v] = (float4)(emission * inv, (float)(end - begin));
+}
