@@ -1,7 +1,12 @@
-/* Types shared by host C and OpenCL C. Every struct is made of 16-byte
- * float4/uint4 members so that its layout is identical on both sides. */
+/* Types shared by host C and OpenCL C: the kernel interface's buffer
+ * layouts (kernels/README.md). Every struct is made of 16-byte float4/uint4
+ * members so that its layout is identical on both sides. */
 #ifndef VCT_TYPES_H
 #define VCT_TYPES_H
+
+/* The kernel interface's version: bumped whenever an entry point's
+ * arguments, a buffer layout or the meaning of a -D option changes. */
+#define VCT_KERNEL_ABI_VERSION 1
 
 #ifdef __OPENCL_VERSION__
 typedef float4 vct_f4;
@@ -101,5 +106,49 @@ typedef struct vct_cone_dir {
     vct_f4 dir;      /* xyz; w = weight (the preset's weights sum to 1) */
     vct_f4 aperture; /* x = tan(half-angle) */
 } vct_cone_dir;
+
+/* Every struct above with its size, and every field with its offset, in
+ * bytes: checked at compile time on the host (runtime/abi.c) and against
+ * the device's own layout by tests/runtime/test_abi.c. S(type, size),
+ * F(type, field, offset). */
+#define VCT_ABI_LAYOUT(S, F)                                                                       \
+    S(vct_grid_desc, 64)                                                                           \
+    F(vct_grid_desc, origin, 0)                                                                    \
+    F(vct_grid_desc, cell_size, 16)                                                                \
+    F(vct_grid_desc, inv_cell, 32)                                                                 \
+    F(vct_grid_desc, res, 48)                                                                      \
+    S(vct_camera_desc, 80)                                                                         \
+    F(vct_camera_desc, position, 0)                                                                \
+    F(vct_camera_desc, forward, 16)                                                                \
+    F(vct_camera_desc, right, 32)                                                                  \
+    F(vct_camera_desc, up, 48)                                                                     \
+    F(vct_camera_desc, size, 64)                                                                   \
+    S(vct_light_desc, 64)                                                                          \
+    F(vct_light_desc, position, 0)                                                                 \
+    F(vct_light_desc, direction, 16)                                                               \
+    F(vct_light_desc, color, 32)                                                                   \
+    F(vct_light_desc, shape, 48)                                                                   \
+    S(vct_light_bins_desc, 32)                                                                     \
+    F(vct_light_bins_desc, light, 0)                                                               \
+    F(vct_light_bins_desc, info, 16)                                                               \
+    S(vct_material_desc, 64)                                                                       \
+    F(vct_material_desc, albedo, 0)                                                                \
+    F(vct_material_desc, emission, 16)                                                             \
+    F(vct_material_desc, specular, 32)                                                             \
+    F(vct_material_desc, extra, 48)                                                                \
+    S(vct_ray_desc, 32)                                                                            \
+    F(vct_ray_desc, origin, 0)                                                                     \
+    F(vct_ray_desc, direction, 16)                                                                 \
+    S(vct_volume_desc, 32)                                                                         \
+    F(vct_volume_desc, origin, 0)                                                                  \
+    F(vct_volume_desc, res, 16)                                                                    \
+    S(vct_cone_desc, 64)                                                                           \
+    F(vct_cone_desc, volume, 0)                                                                    \
+    F(vct_cone_desc, res, 16)                                                                      \
+    F(vct_cone_desc, march, 32)                                                                    \
+    F(vct_cone_desc, ambient, 48)                                                                  \
+    S(vct_cone_dir, 32)                                                                            \
+    F(vct_cone_dir, dir, 0)                                                                        \
+    F(vct_cone_dir, aperture, 16)
 
 #endif

@@ -3,24 +3,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "commands.h"
-
-void cli_voxel_options(const cli_options *opt, uint32_t default_res, vct_voxel_options *vo) {
-    memset(vo, 0, sizeof *vo);
-    vo->resolution = opt->voxel_res ? (uint32_t)opt->voxel_res : default_res;
-    vo->thin = opt->thin_voxels;
-    vo->has_bounds = opt->has_voxel_bounds;
-    for (int k = 0; k < 3; ++k)
-        vo->bounds_min[k] = opt->voxel_bounds[k];
-    vo->bounds_size = opt->voxel_bounds[3];
-}
-
-void cli_print_plan(const vct_plan *plan, FILE *out) {
-    fprintf(out, "effect plan:\n");
-    for (int e = 0; e < VCT_EFFECTS; ++e)
-        fprintf(out, "  %-12s %-3s  %s\n", vct_effect_name((vct_effect)e),
-                plan->on[e] ? "on" : "off", plan->why[e]);
-}
+#include "cli_common.h"
+#include "cmd_render_vct.h"
 
 static int write_aovs(const vct_aovs *a, const char *prefix, float exposure, vct_error *err) {
     const struct {
@@ -42,27 +26,25 @@ static int write_aovs(const vct_aovs *a, const char *prefix, float exposure, vct
     return VCT_OK;
 }
 
-int cli_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *grid,
-                   const cli_options *opt, vct_image *image, vct_error *err) {
+int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt, vct_image *image,
+                   vct_error *err) {
     vct_plan plan;
-    vct_plan_make(s, opt->force, &plan);
+    vct_plan_make(job->scene, opt->force, &plan);
     if (opt->print_plan)
         cli_print_plan(&plan, stdout);
-    vct_vct_options vo = vct_vct_options_default();
-    vo.width = opt->width;
-    vo.height = opt->height;
-    vo.diffuse_cones = (uint32_t)opt->diffuse_cones;
-    vo.cones = opt->cones;
-    vo.sparse_diffuse = opt->sparse_diffuse;
-    vo.aovs = opt->aov_prefix != NULL;
+    vct_vct_options *vo = &job->vct;
+    vo->diffuse_cones = (uint32_t)opt->diffuse_cones;
+    vo->cones = opt->cones;
+    vo->sparse_diffuse = opt->sparse_diffuse;
+    vo->aovs = opt->aov_prefix != NULL;
     vct_voxel_options voxel;
     /* 128^3 by default: within 1 % of the best error measured on the Cornell
      * box (64^3) and on the heavy scene (256^3) (README, accuracy). */
     cli_voxel_options(opt, 128, &voxel);
     const vct_brick_options bricks = {opt->bricks, opt->anisotropic != 0, 0};
     vct_voxels *v = NULL;
-    int rc = vct_vct_prepare(ctx, s, grid, &plan, &voxel, &bricks, (uint32_t)opt->bounces,
-                             &opt->cones, &v, err);
+    int rc = vct_vct_prepare(ctx, job->scene, job->grid, &plan, &voxel, &bricks,
+                             (uint32_t)opt->bounces, &opt->cones, &v, err);
     if (rc == VCT_OK && v) {
         vct_brick_info b;
         vct_bricks_info_get(v, &b);
@@ -70,13 +52,18 @@ int cli_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *grid,
                 b.storage_reason);
     }
     vct_aovs aovs;
+    job->voxels = v;
+    job->plan = &plan;
+    job->aovs = opt->aov_prefix ? &aovs : NULL;
     if (rc == VCT_OK)
-        rc =
-            vct_render_vct(ctx, s, grid, v, &plan, &vo, image, opt->aov_prefix ? &aovs : NULL, err);
+        rc = vct_render(ctx, job, image, NULL, err);
     if (rc == VCT_OK && opt->aov_prefix) {
         rc = write_aovs(&aovs, opt->aov_prefix, opt->exposure, err);
         vct_aovs_free(&aovs);
     }
+    job->voxels = NULL;
+    job->plan = NULL;
+    job->aovs = NULL;
     vct_voxels_free(v);
     return rc;
 }

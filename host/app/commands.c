@@ -1,27 +1,13 @@
-/* vct devices | info | render | compare, and helpers shared by the commands. */
+/* vct devices | info | render | compare. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
+#include "cli_common.h"
+#include "cmd_render_vct.h"
 #include "commands.h"
-
-#include <stdarg.h>
-
-int cli_fail_input(vct_error *err, const char *fmt, ...) {
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err->message, sizeof err->message, fmt, ap);
-    va_end(ap);
-    err->status = VCT_ERR_INPUT;
-    return VCT_ERR_INPUT;
-}
-
-int cli_fail(const vct_error *err) {
-    fprintf(stderr, "vct: %s\n", err->message);
-    return 1;
-}
 
 int cmd_devices(const cli_options *opt) {
     (void)opt;
@@ -45,27 +31,6 @@ int cmd_devices(const cli_options *opt) {
     if (n == 0)
         printf("no OpenCL devices\n");
     return 0;
-}
-
-vct_scene *cli_load_scene(const cli_options *opt, vct_error *err) {
-    if (opt->input_count < 1) {
-        cli_fail_input(err, "%s needs a scene file", opt->command);
-        return NULL;
-    }
-    vct_scene *s = vct_scene_load(opt->inputs[0], err);
-    if (s && cli_apply_scene_overrides(opt, s, err) != VCT_OK) {
-        vct_scene_free(s);
-        return NULL;
-    }
-    return s;
-}
-
-void cli_print_scene(const vct_scene *s, FILE *out) {
-    fprintf(out,
-            "scene %s: %u triangles (%u degenerate, never hit), %u vertices, %u materials, "
-            "%u lights\n",
-            s->source, s->triangle_count, s->degenerate_triangles, s->vertex_count,
-            s->material_count, s->light_count);
 }
 
 int cmd_info(const cli_options *opt) {
@@ -99,48 +64,6 @@ int cmd_info(const cli_options *opt) {
     return 0;
 }
 
-void cli_print_stats(const vct_context *ctx) {
-    const vct_stage_stat *st;
-    int n = vct_stats(ctx, &st);
-    printf("%-20s %10s %10s %10s %9s\n", "stage", "device ms", "host ms", "peak MiB", "launches");
-    for (int i = 0; i < n; ++i)
-        printf("%-20s %10.2f %10.2f %10.2f %9d\n", st[i].name, st[i].device_ms, st[i].host_ms,
-               st[i].mib, st[i].launches);
-    const vct_kernel_stat *k;
-    n = vct_kernel_stats(ctx, &k);
-    printf("%-31s %10s %9s\n", "kernel or transfer", "device ms", "launches");
-    for (int i = 0; i < n; ++i)
-        printf("%-31s %10.2f %9d\n", k[i].name, k[i].device_ms, k[i].launches);
-}
-
-vct_context *cli_open_context(const cli_options *opt, vct_error *err) {
-    vct_context *ctx = vct_context_create(opt->device, err);
-    if (ctx)
-        fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
-                vct_context_device(ctx)->platform);
-    return ctx;
-}
-
-/* Creates the output's parent directory, so `-o out/x.png` works from a clean tree. */
-int cli_make_parent_dir(const char *path, vct_error *err) {
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (!slash || slash == dir)
-        return VCT_OK;
-    *slash = '\0';
-    for (char *p = dir + 1; *p; ++p) {
-        if (*p == '/') {
-            *p = '\0';
-            mkdir(dir, 0755);
-            *p = '/';
-        }
-    }
-    if (mkdir(dir, 0755) != 0 && errno != EEXIST)
-        return cli_fail_input(err, "cannot create directory %s for the output", dir);
-    return VCT_OK;
-}
-
 int cmd_render(const cli_options *opt) {
     vct_error err = {0};
     const char *out = opt->output ? opt->output : "render.png";
@@ -149,11 +72,12 @@ int cmd_render(const cli_options *opt) {
         fprintf(stderr, "vct: output %s must end in .png or .pfm\n", out);
         return 1;
     }
-    const int pt = strcmp(opt->method, "pt") == 0, cones = strcmp(opt->method, "vct") == 0;
-    if (!pt && !cones && strcmp(opt->method, "raycast") != 0) {
+    const int method = vct_method_from_name(opt->method);
+    if (method < 0 || method == VCT_METHOD_VOXELS) {
         fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt)\n", opt->method);
         return 1;
     }
+    const int pt = method == VCT_METHOD_PATHTRACE;
     vct_scene *s = cli_load_scene(opt, &err);
     if (!s)
         return cli_fail(&err);
@@ -168,26 +92,24 @@ int cmd_render(const cli_options *opt) {
     }
     vct_image image = {0};
     vct_grid *grid = vct_grid_build(ctx, s, opt->grid_res, &err);
-    vct_render_options ro = {opt->width, opt->height, {0, 0, 0}};
-    vct_pathtrace_options po = {opt->width,
-                                opt->height,
-                                (uint32_t)(opt->spp ? opt->spp : (opt->time_limit > 0 ? 0 : 64)),
-                                opt->time_limit,
-                                (uint32_t)opt->max_depth,
-                                (uint32_t)opt->seed,
-                                1,
-                                1,
-                                0};
-    vct_pathtrace_result pr = {0};
-    int rc = !grid   ? (int)err.status
-             : pt    ? vct_render_pathtrace(ctx, s, grid, &po, &image, &pr, &err)
-             : cones ? cli_render_vct(ctx, s, grid, opt, &image, &err)
-                     : vct_render_raycast(ctx, s, grid, &ro, &image, &err);
+    vct_render_job job = vct_render_job_default((vct_method)method, opt->width, opt->height);
+    job.scene = s;
+    job.grid = grid;
+    job.pathtrace.spp = (uint32_t)(opt->spp ? opt->spp : (opt->time_limit > 0 ? 0 : 64));
+    job.pathtrace.time_limit_s = opt->time_limit;
+    job.pathtrace.max_depth = (uint32_t)opt->max_depth;
+    job.pathtrace.seed = (uint32_t)opt->seed;
+    job.pathtrace.progress = 1;
+    vct_render_result result = {0};
+    int rc = !grid                        ? (int)err.status
+             : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &err)
+                                        : vct_render(ctx, &job, &image, &result, &err);
     if (rc == VCT_OK && pt)
         fprintf(stderr,
                 "path tracing: %u spp in %.2f s (%.1f spp/s), %u samples discarded as "
                 "not finite\n",
-                pr.spp, pr.seconds, pr.seconds > 0 ? pr.spp / pr.seconds : 0.0, pr.discarded);
+                result.spp, result.seconds, result.seconds > 0 ? result.spp / result.seconds : 0.0,
+                result.discarded);
     if (rc == VCT_OK)
         rc = cli_make_parent_dir(out, &err);
     if (rc == VCT_OK)

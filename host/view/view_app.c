@@ -4,7 +4,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "commands.h"
+#include "cli_common.h"
 #include "view_app.h"
 
 /* Bounce gathering uses the 6-cone preset, as vct_vct_prepare does. */
@@ -148,41 +148,29 @@ static void summarise_stages(view_app *app) {
 }
 
 static int render_method(view_app *app, vct_image *image, vct_error *err) {
-    const vct_scene *s = app->scene;
-    switch (app->method) {
-    case VIEW_RAYCAST: {
-        const vct_render_options ro = {app->width, app->height, {0, 0, 0}};
-        return vct_render_raycast(app->ctx, s, app->grid, &ro, image, err);
-    }
-    case VIEW_VCT: {
-        vct_vct_options vo = vct_vct_options_default();
-        vo.width = app->width;
-        vo.height = app->height;
-        vo.diffuse_cones = (uint32_t)app->opt.diffuse_cones;
-        vo.cones = app->opt.cones;
-        vo.sparse_diffuse = app->opt.sparse_diffuse;
-        return vct_render_vct(app->ctx, s, app->grid, app->voxels, &app->plan, &vo, image, NULL,
-                              err);
-    }
-    case VIEW_PATHTRACE: {
-        const vct_pathtrace_options po = {app->width,
-                                          app->height,
-                                          1,
-                                          0.0,
-                                          (uint32_t)app->opt.max_depth,
-                                          (uint32_t)app->opt.seed,
-                                          1,
-                                          0,
-                                          app->pt_spp > 0};
-        vct_pathtrace_result pr;
-        int rc = vct_render_pathtrace(app->ctx, s, app->grid, &po, image, &pr, err);
-        app->pt_spp = rc == VCT_OK ? pr.spp : 0;
-        return rc;
-    }
-    default:
-        return vct_render_voxels_level(app->ctx, s, app->voxels, app->voxel_level, app->width,
-                                       app->height, image, err);
-    }
+    static const vct_method methods[] = {[VIEW_RAYCAST] = VCT_METHOD_RAYCAST,
+                                         [VIEW_VCT] = VCT_METHOD_VCT,
+                                         [VIEW_PATHTRACE] = VCT_METHOD_PATHTRACE,
+                                         [VIEW_VOXELS] = VCT_METHOD_VOXELS};
+    vct_render_job job = vct_render_job_default(methods[app->method], app->width, app->height);
+    job.scene = app->scene;
+    job.grid = app->grid;
+    job.voxels = app->voxels;
+    job.plan = &app->plan;
+    job.vct.diffuse_cones = (uint32_t)app->opt.diffuse_cones;
+    job.vct.cones = app->opt.cones;
+    job.vct.sparse_diffuse = app->opt.sparse_diffuse;
+    /* The path tracer adds one sample per frame to the previous ones. */
+    job.pathtrace.spp = 1;
+    job.pathtrace.max_depth = (uint32_t)app->opt.max_depth;
+    job.pathtrace.seed = (uint32_t)app->opt.seed;
+    job.pathtrace.resume = app->pt_spp > 0;
+    job.voxel_view.level = app->voxel_level;
+    vct_render_result result;
+    const int rc = vct_render(app->ctx, &job, image, &result, err);
+    if (app->method == VIEW_PATHTRACE)
+        app->pt_spp = rc == VCT_OK ? result.spp : 0;
+    return rc;
 }
 
 int view_app_wants_frame(const view_app *app) {

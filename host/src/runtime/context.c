@@ -213,3 +213,15 @@ void vct_context_destroy(vct_context *ctx) {
 const vct_device_info *vct_context_device(const vct_context *ctx) {
     return &ctx->info;
 }
+
+cl_context vct_context_cl_context(const vct_context *ctx) {
+    return ctx->context;
+}
+
+cl_device_id vct_context_cl_device(const vct_context *ctx) {
+    return ctx->device;
+}
+
+cl_command_queue vct_context_cl_queue(const vct_context *ctx) {
+    return ctx->queue;
+}

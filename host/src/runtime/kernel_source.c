@@ -1,7 +1,10 @@
 /* Kernel sources: found on disk (next to the binary, installed, or in the
  * source tree) or in the copies embedded at build time. #include "x" lines are
  * expanded here with #line markers, so a build log names the original file. */
+#define _GNU_SOURCE /* dladdr */
+#include <dlfcn.h>
 #include <limits.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -67,37 +70,61 @@ static int dir_has_kernels(const char *dir) {
     return access(probe, R_OK) == 0;
 }
 
-/* The first directory that holds the kernels, or "" to use the embedded copies. */
-static const char *kernel_dir(void) {
-    static char dir[PATH_MAX + 32];
-    static int resolved;
-    if (resolved)
-        return dir;
-    resolved = 1;
+/* The first directory that holds the kernels, or "" to use the embedded
+ * copies: resolved once per process. */
+static char kernel_dir_path[PATH_MAX + 32];
+
+static void resolve_kernel_dir(void) {
+    char *dir = kernel_dir_path;
     const char *env = getenv("VCT_KERNEL_DIR");
     if (env && *env && dir_has_kernels(env)) {
-        snprintf(dir, sizeof dir, "%s", env);
-        return dir;
+        snprintf(dir, sizeof kernel_dir_path, "%s", env);
+        return;
     }
-    char exe[PATH_MAX];
-    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    /* Beside the library (an installed libvct.so finds ../share/vct/kernels),
+     * then beside the program, then where the library was installed. */
+    char bases[2][PATH_MAX];
+    int base_count = 0;
+    Dl_info self;
+    if (dladdr((void *)&resolve_kernel_dir, &self) && self.dli_fname &&
+        realpath(self.dli_fname, bases[base_count]))
+        ++base_count;
+    ssize_t n = readlink("/proc/self/exe", bases[base_count], sizeof bases[0] - 1);
     if (n > 0) {
-        exe[n] = '\0';
-        char *slash = strrchr(exe, '/');
+        bases[base_count][n] = '\0';
+        ++base_count;
+    }
+    const char *rel[] = {"kernels", "../kernels", "../share/vct/kernels"};
+    for (int b = 0; b < base_count; ++b) {
+        char *slash = strrchr(bases[b], '/');
         if (slash)
             *slash = '\0';
-        const char *rel[] = {"kernels", "../kernels", "../share/vct/kernels"};
         for (size_t i = 0; i < sizeof rel / sizeof rel[0]; ++i) {
             char cand[PATH_MAX + 32];
-            snprintf(cand, sizeof cand, "%s/%s", exe, rel[i]);
+            snprintf(cand, sizeof cand, "%s/%s", bases[b], rel[i]);
             if (dir_has_kernels(cand)) {
-                snprintf(dir, sizeof dir, "%s", cand);
-                return dir;
+                snprintf(dir, sizeof kernel_dir_path, "%s", cand);
+                return;
             }
         }
     }
+#ifdef VCT_INSTALL_KERNEL_DIR
+    if (dir_has_kernels(VCT_INSTALL_KERNEL_DIR)) {
+        snprintf(dir, sizeof kernel_dir_path, "%s", VCT_INSTALL_KERNEL_DIR);
+        return;
+    }
+#endif
     dir[0] = '\0';
-    return dir;
+}
+
+static const char *kernel_dir(void) {
+    static pthread_once_t once = PTHREAD_ONCE_INIT;
+    pthread_once(&once, resolve_kernel_dir);
+    return kernel_dir_path;
+}
+
+const char *vct_kernel_source_dir(void) {
+    return *kernel_dir() ? kernel_dir() : "(embedded)";
 }
 
 static char *load_one(const char *name, vct_error *err) {

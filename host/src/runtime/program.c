@@ -1,6 +1,7 @@
 /* Program builds: compiled once per (source, device, driver, options) and
  * kept in an on-disk binary cache so that a warm start never recompiles. */
 #include <errno.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,22 +23,31 @@ static uint64_t hash_str(uint64_t h, const char *s) {
     return fnv1a(h, s, strlen(s) + 1);
 }
 
-const char *vct_cache_dir(void) {
-    static char dir[1024];
+/* Resolved once per process (the environment is read then), so that
+ * contexts on several threads share one answer. */
+static char cache_dir[1024];
+
+static void resolve_cache_dir(void) {
+    char *dir = cache_dir;
     const char *env = getenv("VCT_CACHE_DIR");
     if (env && *env) {
-        snprintf(dir, sizeof dir, "%s", env);
+        snprintf(dir, sizeof cache_dir, "%s", env);
     } else {
         const char *xdg = getenv("XDG_CACHE_HOME");
         const char *home = getenv("HOME");
         if (xdg && *xdg)
-            snprintf(dir, sizeof dir, "%s/vct", xdg);
+            snprintf(dir, sizeof cache_dir, "%s/vct", xdg);
         else if (home && *home)
-            snprintf(dir, sizeof dir, "%s/.cache/vct", home);
+            snprintf(dir, sizeof cache_dir, "%s/.cache/vct", home);
         else
-            snprintf(dir, sizeof dir, "/tmp/vct-cache");
+            snprintf(dir, sizeof cache_dir, "/tmp/vct-cache");
     }
-    return dir;
+}
+
+const char *vct_cache_dir(void) {
+    static pthread_once_t once = PTHREAD_ONCE_INIT;
+    pthread_once(&once, resolve_cache_dir);
+    return cache_dir;
 }
 
 static void mkdirs(const char *path) {

@@ -405,17 +405,6 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
     return rc;
 }
 
-void vct_bricks_release(vct_voxels *v) {
-    for (int c = 0; c < VCT_BRICK_CHANNELS; ++c) {
-        vct_buffer_release(v->ctx, v->brick_buffer[c]);
-        vct_buffer_release(v->ctx, v->brick_image[c]);
-        v->brick_buffer[c] = v->brick_image[c] = NULL;
-    }
-    vct_buffer_release(v->ctx, v->brick_window);
-    v->brick_window = NULL;
-    v->has_bricks = 0;
-}
-
 int vct_bricks_info_get(const vct_voxels *v, vct_brick_info *info) {
     if (!v->has_bricks)
         return 0;

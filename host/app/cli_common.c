@@ -1,0 +1,104 @@
+/* Helpers shared by the commands: messages, scene loading and printing,
+ * the context, output directories, voxel options and the plan. */
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli_common.h"
+
+int cli_fail_input(vct_error *err, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err->message, sizeof err->message, fmt, ap);
+    va_end(ap);
+    err->status = VCT_ERR_INPUT;
+    return VCT_ERR_INPUT;
+}
+
+int cli_fail(const vct_error *err) {
+    fprintf(stderr, "vct: %s\n", err->message);
+    return 1;
+}
+
+vct_scene *cli_load_scene(const cli_options *opt, vct_error *err) {
+    if (opt->input_count < 1) {
+        cli_fail_input(err, "%s needs a scene file", opt->command);
+        return NULL;
+    }
+    vct_scene *s = vct_scene_load(opt->inputs[0], err);
+    if (s && cli_apply_scene_overrides(opt, s, err) != VCT_OK) {
+        vct_scene_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+void cli_print_scene(const vct_scene *s, FILE *out) {
+    fprintf(out,
+            "scene %s: %u triangles (%u degenerate, never hit), %u vertices, %u materials, "
+            "%u lights\n",
+            s->source, s->triangle_count, s->degenerate_triangles, s->vertex_count,
+            s->material_count, s->light_count);
+}
+
+void cli_print_stats(const vct_context *ctx) {
+    const vct_stage_stat *st;
+    int n = vct_stats(ctx, &st);
+    printf("%-20s %10s %10s %10s %9s\n", "stage", "device ms", "host ms", "peak MiB", "launches");
+    for (int i = 0; i < n; ++i)
+        printf("%-20s %10.2f %10.2f %10.2f %9d\n", st[i].name, st[i].device_ms, st[i].host_ms,
+               st[i].mib, st[i].launches);
+    const vct_kernel_stat *k;
+    n = vct_kernel_stats(ctx, &k);
+    printf("%-31s %10s %9s\n", "kernel or transfer", "device ms", "launches");
+    for (int i = 0; i < n; ++i)
+        printf("%-31s %10.2f %9d\n", k[i].name, k[i].device_ms, k[i].launches);
+}
+
+vct_context *cli_open_context(const cli_options *opt, vct_error *err) {
+    vct_context *ctx = vct_context_create(opt->device, err);
+    if (ctx)
+        fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
+                vct_context_device(ctx)->platform);
+    return ctx;
+}
+
+/* Creates the output's parent directory, so `-o out/x.png` works from a clean tree. */
+int cli_make_parent_dir(const char *path, vct_error *err) {
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (!slash || slash == dir)
+        return VCT_OK;
+    *slash = '\0';
+    for (char *p = dir + 1; *p; ++p) {
+        if (*p == '/') {
+            *p = '\0';
+            mkdir(dir, 0755);
+            *p = '/';
+        }
+    }
+    if (mkdir(dir, 0755) != 0 && errno != EEXIST)
+        return cli_fail_input(err, "cannot create directory %s for the output", dir);
+    return VCT_OK;
+}
+
+void cli_voxel_options(const cli_options *opt, uint32_t default_res, vct_voxel_options *vo) {
+    memset(vo, 0, sizeof *vo);
+    vo->resolution = opt->voxel_res ? (uint32_t)opt->voxel_res : default_res;
+    vo->thin = opt->thin_voxels;
+    vo->has_bounds = opt->has_voxel_bounds;
+    for (int k = 0; k < 3; ++k)
+        vo->bounds_min[k] = opt->voxel_bounds[k];
+    vo->bounds_size = opt->voxel_bounds[3];
+}
+
+void cli_print_plan(const vct_plan *plan, FILE *out) {
+    fprintf(out, "effect plan:\n");
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        fprintf(out, "  %-12s %-3s  %s\n", vct_effect_name((vct_effect)e),
+                plan->on[e] ? "on" : "off", plan->why[e]);
+}

@@ -1,0 +1,20 @@
+/* Helpers shared by the commands of vct and vct-view. */
+#ifndef VCT_APP_CLI_COMMON_H
+#define VCT_APP_CLI_COMMON_H
+
+#include <stdio.h>
+
+#include "options.h"
+
+int cli_fail(const vct_error *err); /* prints the message; returns 1 */
+int cli_fail_input(vct_error *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+vct_scene *cli_load_scene(const cli_options *opt, vct_error *err);
+void cli_print_scene(const vct_scene *s, FILE *out);
+void cli_print_stats(const vct_context *ctx);
+/* The context for --device (or the default), its name printed on stderr. */
+vct_context *cli_open_context(const cli_options *opt, vct_error *err);
+int cli_make_parent_dir(const char *path, vct_error *err);
+void cli_voxel_options(const cli_options *opt, uint32_t default_res, vct_voxel_options *options);
+void cli_print_plan(const vct_plan *plan, FILE *out);
+
+#endif

@@ -1,0 +1,128 @@
+/* One way to every method: a job (method, inputs, that method's options)
+ * in, the frame out. Callers such as the command line, the viewer and a
+ * multi-device splitter need no case per method. */
+#include <string.h>
+
+#include "runtime/runtime.h"
+
+static const char *const method_names[VCT_METHODS] = {"vct", "raycast", "pt", "voxels"};
+
+const char *vct_method_name(vct_method method) {
+    return method >= 0 && method < VCT_METHODS ? method_names[method] : "?";
+}
+
+int vct_method_from_name(const char *name) {
+    for (int m = 0; name && m < VCT_METHODS; ++m)
+        if (strcmp(name, method_names[m]) == 0)
+            return m;
+    return -1;
+}
+
+vct_render_job vct_render_job_default(vct_method method, int width, int height) {
+    vct_render_job job;
+    memset(&job, 0, sizeof job);
+    job.method = method;
+    job.raycast.width = width;
+    job.raycast.height = height;
+    job.pathtrace.width = width;
+    job.pathtrace.height = height;
+    job.pathtrace.spp = 64;
+    job.pathtrace.max_depth = 16;
+    job.pathtrace.samples_per_pass = 1;
+    job.vct = vct_vct_options_default();
+    job.vct.width = width;
+    job.vct.height = height;
+    job.voxel_view.width = width;
+    job.voxel_view.height = height;
+    job.voxel_view.level = VCT_VOXEL_VIEW_LEAVES;
+    return job;
+}
+
+void vct_render_job_size(const vct_render_job *job, int *width, int *height) {
+    switch (job->method) {
+    case VCT_METHOD_RAYCAST:
+        *width = job->raycast.width, *height = job->raycast.height;
+        break;
+    case VCT_METHOD_PATHTRACE:
+        *width = job->pathtrace.width, *height = job->pathtrace.height;
+        break;
+    case VCT_METHOD_VOXELS:
+        *width = job->voxel_view.width, *height = job->voxel_view.height;
+        break;
+    default:
+        *width = job->vct.width, *height = job->vct.height;
+        break;
+    }
+}
+
+/* What the job's method reads, present. */
+static int job_check(const vct_render_job *job, vct_error *err) {
+    const char *name = vct_method_name(job->method);
+    if (job->method < 0 || job->method >= VCT_METHODS)
+        return vct_fail(err, VCT_ERR_INPUT, "render: unknown method %d", (int)job->method);
+    if (!job->scene)
+        return vct_fail(err, VCT_ERR_INPUT, "render (%s): the job has no scene", name);
+    if (job->method != VCT_METHOD_VOXELS && !job->grid)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "render (%s): the job has no grid: build one with vct_grid_build", name);
+    if (job->method == VCT_METHOD_VOXELS && !job->voxels)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "render (voxels): the job has no voxels: build them with vct_voxelize "
+                        "and vct_octree_build");
+    return VCT_OK;
+}
+
+static int render_vct_job(vct_context *ctx, const vct_render_job *job, vct_image *image,
+                          vct_error *err) {
+    vct_plan own;
+    const vct_plan *plan = job->plan;
+    if (!plan) {
+        vct_plan_make(job->scene, NULL, &own);
+        plan = &own;
+    }
+    return vct_render_vct(ctx, job->scene, job->grid, job->voxels, plan, &job->vct, image,
+                          job->aovs, err);
+}
+
+int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
+               vct_render_result *result, vct_error *err) {
+    const double start = vct_now_ms();
+    memset(image, 0, sizeof *image);
+    int rc = job_check(job, err);
+    vct_pathtrace_result pt = {0};
+    if (rc == VCT_OK) {
+        switch (job->method) {
+        case VCT_METHOD_RAYCAST:
+            rc = vct_render_raycast(ctx, job->scene, job->grid, &job->raycast, image, err);
+            break;
+        case VCT_METHOD_PATHTRACE:
+            rc = vct_render_pathtrace(ctx, job->scene, job->grid, &job->pathtrace, image, &pt,
+                                      err);
+            break;
+        case VCT_METHOD_VOXELS: {
+            vct_voxel_info info;
+            vct_voxels_info_get(job->voxels, &info);
+            const uint32_t level = job->voxel_view.level == VCT_VOXEL_VIEW_LEAVES
+                                       ? info.levels
+                                       : job->voxel_view.level;
+            rc = vct_render_voxels_level(ctx, job->scene, job->voxels, level,
+                                         job->voxel_view.width, job->voxel_view.height, image,
+                                         err);
+            break;
+        }
+        default:
+            rc = render_vct_job(ctx, job, image, err);
+            break;
+        }
+    }
+    if (result) {
+        memset(result, 0, sizeof *result);
+        result->method = job->method;
+        result->width = image->width;
+        result->height = image->height;
+        result->seconds = (vct_now_ms() - start) * 1e-3;
+        result->spp = pt.spp;
+        result->discarded = pt.discarded;
+    }
+    return rc;
+}
