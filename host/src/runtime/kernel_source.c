@@ -103,7 +103,8 @@ static void resolve_kernel_dir(void) {
             char cand[PATH_MAX + 32];
             snprintf(cand, sizeof cand, "%s/%s", bases[b], rel[i]);
             if (dir_has_kernels(cand)) {
-                snprintf(dir, sizeof kernel_dir_path, "%s", cand);
+                if (!realpath(cand, dir))
+                    snprintf(dir, sizeof kernel_dir_path, "%s", cand);
                 return;
             }
         }
