@@ -4,7 +4,7 @@
 set -eu
 PACKAGES="build-essential cmake pkg-config ocl-icd-opencl-dev opencl-c-headers pocl-opencl-icd
 clinfo libcglm-dev libassimp-dev libstb-dev libembree-dev python3 gnuplot-nox
-python3-openvdb python3-numpy libglfw3-dev libxrandr-dev libepoxy-dev xvfb xauth libgl1-mesa-dri"
+python3-openvdb python3-numpy python3-pyopencl libglfw3-dev libxrandr-dev libepoxy-dev xvfb xauth libgl1-mesa-dri"
 missing=""
 for p in $PACKAGES; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
