@@ -25,7 +25,7 @@ BELOW["render"] |= {"image"}
 
 
 def objects(build):
-    root = os.path.join(build, "CMakeFiles", "vct.dir", "host", "src")
+    root = os.path.join(build, "CMakeFiles", "vct-objects.dir", "host", "src")
     for stage in STAGES:
         d = os.path.join(root, stage)
         if os.path.isdir(d):

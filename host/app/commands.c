@@ -101,7 +101,7 @@ int cmd_render(const cli_options *opt) {
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
     vct_render_result result = {0};
-    int rc = !grid                        ? (int)err.status
+    int rc = !grid                      ? (int)err.status
              : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &err)
                                         : vct_render(ctx, &job, &image, &result, &err);
     if (rc == VCT_OK && pt)

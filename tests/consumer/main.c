@@ -11,8 +11,8 @@ static int fail(const vct_error *err) {
     return 1;
 }
 
-static int render(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
-                  vct_method method, const char *prefix, vct_error *err) {
+static int render(vct_context *ctx, const vct_scene *scene, const vct_grid *grid, vct_method method,
+                  const char *prefix, vct_error *err) {
     vct_render_job job = vct_render_job_default(method, 128, 128);
     job.scene = scene;
     job.grid = grid;

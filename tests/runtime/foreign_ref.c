@@ -93,7 +93,8 @@ int main(int argc, char **argv) {
     put("volume.desc", &vol, sizeof vol);
     const uint32_t nv = v->info.voxels;
     uint32_t *keys = malloc(4ull * nv);
-    float *albedo = malloc(16ull * nv), *normal = malloc(16ull * nv), *emission = malloc(16ull * nv);
+    float *albedo = malloc(16ull * nv), *normal = malloc(16ull * nv),
+          *emission = malloc(16ull * nv);
     REQUIRE_OK(vct_voxels_read(ctx, v, keys, albedo, normal, emission, &err), err);
     put("voxel_keys.u32", keys, 4ull * nv);
     put("voxel_albedo.f32", albedo, 16ull * nv);
@@ -105,7 +106,8 @@ int main(int argc, char **argv) {
     vct_cone_desc cd;
     vct_cone_desc_make(v, &cs, NULL, &cd);
     put("cone.desc", &cd, sizeof cd);
-    void *radiance = device_copy(ctx, v->brick_buffer[VCT_BRICK_RADIANCE], v->brick_info.channel_bytes);
+    void *radiance =
+        device_copy(ctx, v->brick_buffer[VCT_BRICK_RADIANCE], v->brick_info.channel_bytes);
     put("bricks_radiance.f16", radiance, v->brick_info.channel_bytes);
     void *child = device_copy(ctx, v->child, 4ull * v->info.nodes);
     put("octree_child.u32", child, 4ull * v->info.nodes);
@@ -116,7 +118,9 @@ int main(int argc, char **argv) {
         float *c = cones + 8 * i;
         const float u = (i % 32 + 0.5f) / 32.0f, w = (i / 32 + 0.5f) / 16.0f;
         for (int k = 0; k < 3; ++k)
-            c[k] = s->bounds_min[k] + (0.2f + 0.6f * (k == 0 ? u : k == 1 ? w : 0.5f)) *
+            c[k] = s->bounds_min[k] + (0.2f + 0.6f * (k == 0   ? u
+                                                      : k == 1 ? w
+                                                               : 0.5f)) *
                                           (s->bounds_max[k] - s->bounds_min[k]);
         c[3] = 0.1f + 0.5f * w;
         const float phi = 6.2831853f * u, z = 2.0f * w - 1.0f, r = sqrtf(1.0f - z * z);

@@ -51,8 +51,7 @@ int main(void) {
     cl_int rc = CL_SUCCESS;
     cl_context context = clCreateContext(NULL, 1, &device, NULL, NULL, &rc);
     CHECK(rc == CL_SUCCESS, "clCreateContext: %d", rc);
-    cl_command_queue queue =
-        clCreateCommandQueue(context, device, CL_QUEUE_PROFILING_ENABLE, &rc);
+    cl_command_queue queue = clCreateCommandQueue(context, device, CL_QUEUE_PROFILING_ENABLE, &rc);
     CHECK(rc == CL_SUCCESS, "clCreateCommandQueue: %d", rc);
     const cl_uint queue_refs = ref_count_queue(queue), context_refs = ref_count_context(context);
 
@@ -103,8 +102,8 @@ int main(void) {
     err = (vct_error){0};
     expect_refused(vct_context_wrap(other, device, queue, &err), &err, "another OpenCL context",
                    "a queue of another context");
-    cl_command_queue ooo = clCreateCommandQueue(
-        context, device, CL_QUEUE_OUT_OF_ORDER_EXEC_MODE_ENABLE, &rc);
+    cl_command_queue ooo =
+        clCreateCommandQueue(context, device, CL_QUEUE_OUT_OF_ORDER_EXEC_MODE_ENABLE, &rc);
     if (rc == CL_SUCCESS) {
         err = (vct_error){0};
         expect_refused(vct_context_wrap(context, device, ooo, &err), &err, "out of order",

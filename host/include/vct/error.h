@@ -2,7 +2,6 @@
 #ifndef VCT_API_ERROR_H
 #define VCT_API_ERROR_H
 
-
 #ifdef __cplusplus
 extern "C" {
 #endif

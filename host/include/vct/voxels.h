@@ -76,7 +76,6 @@ int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *voxels, float *
                              vct_error *err);
 void vct_voxels_free(vct_voxels *voxels);
 
-
 /* Every octree node with geometry below it (levels 0 .. L-1) owns a brick of
  * 3x3x3 corner-centred samples: texel (i, j, k) at node_min + (i, j, k) *
  * node_size / 2. Each channel holds (value * opacity, opacity) as half

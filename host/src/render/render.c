@@ -96,8 +96,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
             rc = vct_render_raycast(ctx, job->scene, job->grid, &job->raycast, image, err);
             break;
         case VCT_METHOD_PATHTRACE:
-            rc = vct_render_pathtrace(ctx, job->scene, job->grid, &job->pathtrace, image, &pt,
-                                      err);
+            rc = vct_render_pathtrace(ctx, job->scene, job->grid, &job->pathtrace, image, &pt, err);
             break;
         case VCT_METHOD_VOXELS: {
             vct_voxel_info info;
@@ -105,9 +104,8 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
             const uint32_t level = job->voxel_view.level == VCT_VOXEL_VIEW_LEAVES
                                        ? info.levels
                                        : job->voxel_view.level;
-            rc = vct_render_voxels_level(ctx, job->scene, job->voxels, level,
-                                         job->voxel_view.width, job->voxel_view.height, image,
-                                         err);
+            rc = vct_render_voxels_level(ctx, job->scene, job->voxels, level, job->voxel_view.width,
+                                         job->voxel_view.height, image, err);
             break;
         }
         default:

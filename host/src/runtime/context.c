@@ -133,12 +133,11 @@ static int queue_matches(cl_command_queue queue, cl_context context, cl_device_i
     cl_context queue_context = NULL;
     cl_device_id queue_device = NULL;
     cl_command_queue_properties props = 0;
+    VCT_CL(
+        err, "context wrap",
+        clGetCommandQueueInfo(queue, CL_QUEUE_CONTEXT, sizeof queue_context, &queue_context, NULL));
     VCT_CL(err, "context wrap",
-           clGetCommandQueueInfo(queue, CL_QUEUE_CONTEXT, sizeof queue_context, &queue_context,
-                                 NULL));
-    VCT_CL(err, "context wrap",
-           clGetCommandQueueInfo(queue, CL_QUEUE_DEVICE, sizeof queue_device, &queue_device,
-                                 NULL));
+           clGetCommandQueueInfo(queue, CL_QUEUE_DEVICE, sizeof queue_device, &queue_device, NULL));
     VCT_CL(err, "context wrap",
            clGetCommandQueueInfo(queue, CL_QUEUE_PROPERTIES, sizeof props, &props, NULL));
     if (queue_context != context)
@@ -163,7 +162,9 @@ vct_context *vct_context_wrap(cl_context context, cl_device_id device, cl_comman
         vct_fail(err, VCT_ERR_INPUT,
                  "context wrap: a NULL %s: pass the cl_context, the cl_device_id and the "
                  "cl_command_queue to run on",
-                 !context ? "context" : !device ? "device" : "queue");
+                 !context  ? "context"
+                 : !device ? "device"
+                           : "queue");
         return NULL;
     }
     cl_platform_id platform = NULL;

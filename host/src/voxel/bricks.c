@@ -433,7 +433,8 @@ int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t
     if (count == 0)
         return VCT_OK;
     cl_program p;
-    int rc = vct_program_get(ctx, "voxel/brick_gather.cl", b->image ? "-DVCT_BRICK_IMAGE" : "", &p, err);
+    int rc =
+        vct_program_get(ctx, "voxel/brick_gather.cl", b->image ? "-DVCT_BRICK_IMAGE" : "", &p, err);
     cl_mem dst = rc == VCT_OK ? vct_buffer_create(ctx, stage, "texels", 27ull * 16 * count,
                                                   CL_MEM_WRITE_ONLY, NULL, err)
                               : NULL;
@@ -472,7 +473,8 @@ int vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32
         return VCT_OK;
     }
     cl_program p;
-    int rc = vct_program_get(ctx, "voxel/brick_gather.cl", b->image ? "-DVCT_BRICK_IMAGE" : "", &p, err);
+    int rc =
+        vct_program_get(ctx, "voxel/brick_gather.cl", b->image ? "-DVCT_BRICK_IMAGE" : "", &p, err);
     cl_mem q = rc == VCT_OK ? vct_buffer_create(ctx, stage, "points", 16ull * n, CL_MEM_READ_ONLY,
                                                 (void *)points, err)
                             : NULL;
