@@ -24,13 +24,16 @@ BELOW["image"] = {"runtime", "image"}
 BELOW["render"] |= {"image"}
 
 
-def objects(build):
+def objects(src, build):
+    """The library's object files whose sources still exist (a stale build
+    keeps objects of removed files)."""
     root = os.path.join(build, "CMakeFiles", "vct-objects.dir", "host", "src")
     for stage in STAGES:
         d = os.path.join(root, stage)
         if os.path.isdir(d):
             for f in sorted(os.listdir(d)):
-                if f.endswith(".c.o"):
+                if f.endswith(".c.o") and os.path.exists(
+                        os.path.join(src, "host", "src", stage, f[:-2])):
                     yield stage, f[:-4], os.path.join(d, f)
 
 
@@ -39,9 +42,9 @@ def nm(path, flags):
     return out.stdout.splitlines()
 
 
-def call_graph(build):
+def call_graph(src, build):
     defined, used = {}, {}
-    for stage, name, path in objects(build):
+    for stage, name, path in objects(src, build):
         key = f"{stage}/{name}"
         for line in nm(path, ["--defined-only", "-g"]):
             parts = line.split()
@@ -81,7 +84,7 @@ def includes(path):
 def main():
     src, build = sys.argv[1], sys.argv[2]
     problems = []
-    edges = call_graph(build)
+    edges = call_graph(src, build)
     if not edges:
         problems.append(f"no object files under {build}: build the library first")
     for a, targets in sorted(edges.items()):

@@ -1,8 +1,15 @@
 /* Per-stage statistics: launches, device time from profiling events, host time, memory. */
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include "runtime/stats.h"
+
+double vct_now_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
 
 static int drain_events(vct_context *ctx, vct_error *err);
 

@@ -2,8 +2,10 @@
 #ifndef VCT_RUNTIME_STATS_H
 #define VCT_RUNTIME_STATS_H
 
-#include "runtime/clock.h"
 #include "runtime/context.h"
+
+/* A monotonic clock for host-side timings. */
+double vct_now_ms(void);
 
 void vct_stage_begin(vct_context *ctx, const char *name);
 void vct_stage_end(vct_context *ctx);
