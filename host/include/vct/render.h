@@ -26,6 +26,7 @@ typedef struct vct_render_options {
 /* Direct illumination with hard shadows by ray casting. */
 int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
                        const vct_render_options *options, vct_image *image, vct_error *err);
+
 typedef struct vct_pathtrace_options {
     int width, height;
     uint32_t spp;              /* samples per pixel; 0: run for time_limit_s */
@@ -61,6 +62,7 @@ int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels
 int vct_render_voxels_level(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels,
                             uint32_t level, int width, int height, vct_image *image,
                             vct_error *err);
+
 /* The effect plan: which effects a scene calls for, and why. The renderer
  * enqueues no work for an effect that is off. */
 typedef enum vct_effect {
@@ -188,6 +190,9 @@ int vct_method_from_name(const char *name);
  * renderer does; see vct_frame_host_copy). result may be NULL. */
 int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
                vct_render_result *result, vct_error *err);
+
+/* ---- the frame and OpenGL display ----------------------------------------------- */
+
 /* Every renderer writes its image into the context's frame, a device buffer
  * of width * height float4 (linear radiance, rows top to bottom) kept between
  * calls, and copies it into the vct_image it returns. With host copies off
