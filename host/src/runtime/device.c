@@ -54,33 +54,30 @@ static void describe(const device_ref *ref, int index, vct_device_info *info) {
 
 void vct_device_describe(cl_platform_id platform, cl_device_id device, int index,
                          vct_device_info *info) {
-    const device_ref r = {platform, device};
-    const device_ref *ref = &r;
     memset(info, 0, sizeof *info);
     info->index = index;
-    clGetPlatformInfo(ref->platform, CL_PLATFORM_NAME, sizeof info->platform, info->platform, NULL);
-    clGetDeviceInfo(ref->device, CL_DEVICE_NAME, sizeof info->name, info->name, NULL);
-    clGetDeviceInfo(ref->device, CL_DEVICE_VERSION, sizeof info->version, info->version, NULL);
-    clGetDeviceInfo(ref->device, CL_DRIVER_VERSION, sizeof info->driver, info->driver, NULL);
+    clGetPlatformInfo(platform, CL_PLATFORM_NAME, sizeof info->platform, info->platform, NULL);
+    clGetDeviceInfo(device, CL_DEVICE_NAME, sizeof info->name, info->name, NULL);
+    clGetDeviceInfo(device, CL_DEVICE_VERSION, sizeof info->version, info->version, NULL);
+    clGetDeviceInfo(device, CL_DRIVER_VERSION, sizeof info->driver, info->driver, NULL);
     cl_device_type type = 0;
-    clGetDeviceInfo(ref->device, CL_DEVICE_TYPE, sizeof type, &type, NULL);
+    clGetDeviceInfo(device, CL_DEVICE_TYPE, sizeof type, &type, NULL);
     info->is_gpu = (type & CL_DEVICE_TYPE_GPU) != 0;
     cl_uint cu = 0;
-    clGetDeviceInfo(ref->device, CL_DEVICE_MAX_COMPUTE_UNITS, sizeof cu, &cu, NULL);
+    clGetDeviceInfo(device, CL_DEVICE_MAX_COMPUTE_UNITS, sizeof cu, &cu, NULL);
     info->compute_units = cu;
     cl_ulong mem = 0;
-    clGetDeviceInfo(ref->device, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof mem, &mem, NULL);
+    clGetDeviceInfo(device, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof mem, &mem, NULL);
     info->global_mem = mem;
-    clGetDeviceInfo(ref->device, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof mem, &mem, NULL);
+    clGetDeviceInfo(device, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof mem, &mem, NULL);
     info->max_alloc = mem;
     size_t wg = 0;
-    clGetDeviceInfo(ref->device, CL_DEVICE_MAX_WORK_GROUP_SIZE, sizeof wg, &wg, NULL);
+    clGetDeviceInfo(device, CL_DEVICE_MAX_WORK_GROUP_SIZE, sizeof wg, &wg, NULL);
     info->max_work_group = wg;
     cl_bool images = CL_FALSE;
-    clGetDeviceInfo(ref->device, CL_DEVICE_IMAGE_SUPPORT, sizeof images, &images, NULL);
+    clGetDeviceInfo(device, CL_DEVICE_IMAGE_SUPPORT, sizeof images, &images, NULL);
     info->image_support = images == CL_TRUE;
-    clGetDeviceInfo(ref->device, CL_DEVICE_EXTENSIONS, sizeof info->extensions, info->extensions,
-                    NULL);
+    clGetDeviceInfo(device, CL_DEVICE_EXTENSIONS, sizeof info->extensions, info->extensions, NULL);
     info->extensions[sizeof info->extensions - 1] = '\0';
     info->fp64 = strstr(info->extensions, "cl_khr_fp64") != NULL;
     info->gl_sharing = strstr(info->extensions, "cl_khr_gl_sharing") != NULL;
