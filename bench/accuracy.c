@@ -107,11 +107,10 @@ static double pt_time_for(const run *runs, int n, double error) {
     for (int i = 0; i < n; ++i) {
         if (strncmp(runs[i].name, "path trace", 10) != 0)
             continue;
-        if (runs[i].m.relative_rmse <= error) {
+        if (runs[i].m.nrmse <= error) {
             if (!prev)
                 return runs[i].total_ms;
-            const double f = log(prev->m.relative_rmse / error) /
-                             log(prev->m.relative_rmse / runs[i].m.relative_rmse);
+            const double f = log(prev->m.nrmse / error) / log(prev->m.nrmse / runs[i].m.nrmse);
             return exp(log(prev->total_ms) + f * log(runs[i].total_ms / prev->total_ms));
         }
         prev = &runs[i];
@@ -154,9 +153,8 @@ static void mark_pareto(run *runs, int n) {
         runs[i].pareto = 1;
         for (int j = 0; j < n; ++j)
             if (j != i && runs[j].total_ms <= runs[i].total_ms &&
-                runs[j].m.relative_rmse <= runs[i].m.relative_rmse &&
-                (runs[j].total_ms < runs[i].total_ms ||
-                 runs[j].m.relative_rmse < runs[i].m.relative_rmse))
+                runs[j].m.nrmse <= runs[i].m.nrmse &&
+                (runs[j].total_ms < runs[i].total_ms || runs[j].m.nrmse < runs[i].m.nrmse))
                 runs[i].pareto = 0;
     }
 }
@@ -171,27 +169,30 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
         fprintf(stderr, "accuracy: cannot write into %s\n", cfg->out);
         exit(1);
     }
-    fprintf(csv, "setting,grid_ms,build_ms,render_ms,total_ms,wall_ms,rmse,relative_rmse,"
-                 "relative_mse,mae,psnr_db,pareto\n");
+    fprintf(csv, "setting,grid_ms,build_ms,render_ms,total_ms,wall_ms,nrmse,rmse,relative_rmse,"
+                 "relative_mse,mae,psnr_db,pareto,mean_ratio\n");
     fprintf(md, "Scene `%s`, %dx%d, on %s; error against the reference `%s`.\n\n", cfg->scene,
             cfg->width, cfg->height, device, cfg->reference);
-    fprintf(md, "| setting | grid ms | voxel build ms | render ms | total ms | relative RMSE | "
-                "relative MSE | PSNR dB | Pareto | path tracer's time to this error |\n"
-                "|---|---:|---:|---:|---:|---:|---:|---:|:---:|---:|\n");
+    fprintf(md, "| setting | grid ms | voxel build ms | render ms | total ms | NRMSE | mean / "
+                "reference mean | relative RMSE | PSNR dB | Pareto | path tracer's time to this "
+                "error |\n"
+                "|---|---:|---:|---:|---:|---:|---:|---:|---:|:---:|---:|\n");
     for (int i = 0; i < n; ++i) {
         const run *r = &runs[i];
-        fprintf(csv, "\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.6g,%.4g,%d\n", r->name,
-                r->grid_ms, r->build_ms, r->render_ms, r->total_ms, r->wall_ms, r->m.rmse,
-                r->m.relative_rmse, r->m.relative_mse, r->m.mae, r->m.psnr, r->pareto);
+        const double ratio = r->m.reference_mean > 0.0 ? r->m.test_mean / r->m.reference_mean : 0;
+        fprintf(csv, "\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%d,%.4f\n",
+                r->name, r->grid_ms, r->build_ms, r->render_ms, r->total_ms, r->wall_ms, r->m.nrmse,
+                r->m.rmse, r->m.relative_rmse, r->m.relative_mse, r->m.mae, r->m.psnr, r->pareto,
+                ratio);
         char pt[96] = "";
-        const double pt_ms = pt_time_for(runs, n, r->m.relative_rmse);
+        const double pt_ms = pt_time_for(runs, n, r->m.nrmse);
         if (strncmp(r->name, "vct", 3) == 0)
             snprintf(pt, sizeof pt,
                      pt_ms > 0 ? "%.0f ms: %.2fx total, %.1fx render" : "not reached", pt_ms,
                      pt_ms / r->total_ms, pt_ms / r->render_ms);
-        fprintf(md, "| %s | %.1f | %.1f | %.1f | %.1f | %.4f | %.4g | %.2f | %s | %s |\n", r->name,
-                r->grid_ms, r->build_ms, r->render_ms, r->total_ms, r->m.relative_rmse,
-                r->m.relative_mse, r->m.psnr, r->pareto ? "yes" : "", pt);
+        fprintf(md, "| %s | %.1f | %.1f | %.1f | %.1f | %.4f | %.3f | %.4f | %.2f | %s | %s |\n",
+                r->name, r->grid_ms, r->build_ms, r->render_ms, r->total_ms, r->m.nrmse, ratio,
+                r->m.relative_rmse, r->m.psnr, r->pareto ? "yes" : "", pt);
     }
     fclose(csv);
     fclose(md);
@@ -205,12 +206,12 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
             "set datafile separator ','\n"
             "set logscale xy\nset grid\n"
             "set xlabel 'time (ms, device: grid, voxel hierarchy, render)'\n"
-            "set ylabel 'relative RMSE against the reference'\n"
+            "set ylabel 'NRMSE against the reference (RMSE / reference mean)'\n"
             "set key top right\n"
-            "plot '%s/accuracy.csv' skip 1 using 5:8 with points pt 7 ps 1.2 title 'settings', \\\n"
-            "     '' skip 1 using ($12 == 1 ? $5 : 1/0):8 with linespoints lw 2 pt 6 ps 2 "
+            "plot '%s/accuracy.csv' skip 1 using 5:7 with points pt 7 ps 1.2 title 'settings', \\\n"
+            "     '' skip 1 using ($13 == 1 ? $5 : 1/0):7 with linespoints lw 2 pt 6 ps 2 "
             "title 'Pareto front', \\\n"
-            "     '' skip 1 using 5:8:1 with labels offset 0,1 font ',7' notitle\n",
+            "     '' skip 1 using 5:7:1 with labels offset 0,1 font ',7' notitle\n",
             cfg->out, cfg->out);
     fclose(gp);
     char cmd[1400];
@@ -291,8 +292,8 @@ int main(int argc, char **argv) {
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
             bench_die(&err);
         vct_image_free(&im);
-        fprintf(stderr, "%-24s %9.1f ms  relative RMSE %.4f\n", runs[n].name, runs[n].total_ms,
-                runs[n].m.relative_rmse);
+        fprintf(stderr, "%-24s %9.1f ms  NRMSE %.4f\n", runs[n].name, runs[n].total_ms,
+                runs[n].m.nrmse);
         ++n;
     }
     /* The default (128^3, 6 cones, step 1, anisotropic, 2 bounces) and one
@@ -318,8 +319,8 @@ int main(int argc, char **argv) {
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
             bench_die(&err);
         vct_image_free(&im);
-        fprintf(stderr, "%-48s %9.1f ms  relative RMSE %.4f\n", runs[n].name, runs[n].total_ms,
-                runs[n].m.relative_rmse);
+        fprintf(stderr, "%-48s %9.1f ms  NRMSE %.4f\n", runs[n].name, runs[n].total_ms,
+                runs[n].m.nrmse);
         ++n;
     }
     mark_pareto(runs, n);

@@ -6,7 +6,8 @@
 #include "cli_common.h"
 #include "cmd_render_vct.h"
 
-static int write_aovs(const vct_aovs *a, const char *prefix, float exposure, vct_error *err) {
+/* AOVs are raw linear PFM files. */
+static int write_aovs(const vct_aovs *a, const char *prefix, vct_error *err) {
     const struct {
         const char *name;
         const vct_image *image;
@@ -18,7 +19,7 @@ static int write_aovs(const vct_aovs *a, const char *prefix, float exposure, vct
         snprintf(path, sizeof path, "%s_%s.pfm", prefix, outs[i].name);
         int rc = cli_make_parent_dir(path, err);
         if (rc == VCT_OK)
-            rc = vct_image_write(outs[i].image, path, exposure, err);
+            rc = vct_image_write_pfm(outs[i].image, path, err);
         if (rc)
             return rc;
         printf("wrote %s\n", path);
@@ -58,7 +59,7 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
     if (rc == VCT_OK)
         rc = vct_render(ctx, job, image, NULL, err);
     if (rc == VCT_OK && opt->aov_prefix) {
-        rc = write_aovs(&aovs, opt->aov_prefix, opt->exposure, err);
+        rc = write_aovs(&aovs, opt->aov_prefix, err);
         vct_aovs_free(&aovs);
     }
     job->voxels = NULL;

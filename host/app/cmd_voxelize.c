@@ -83,7 +83,8 @@ int cmd_voxelize(const cli_options *opt) {
     if (rc == VCT_OK && out)
         rc = cli_make_parent_dir(out, &err);
     if (rc == VCT_OK && out)
-        rc = vct_image_write(&image, out, opt->exposure, &err);
+        rc = vct_image_write(&image, out, opt->tone.auto_exposure ? 0.0f : opt->tone.exposure,
+                             &err); /* shaded voxels: no automatic exposure */
     if (rc == VCT_OK) {
         vct_voxel_info info;
         vct_voxels_info_get(v, &info);

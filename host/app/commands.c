@@ -112,8 +112,11 @@ int cmd_render(const cli_options *opt) {
                 result.discarded);
     if (rc == VCT_OK)
         rc = cli_make_parent_dir(out, &err);
+    const int png = strcmp(dot, ".png") == 0;
+    float stops = 0.0f;
     if (rc == VCT_OK)
-        rc = vct_image_write(&image, out, opt->exposure, &err);
+        rc = png ? vct_image_write_png_tone(&image, out, &opt->tone, &stops, &err)
+                 : vct_image_write_pfm(&image, out, &err);
     if (rc == VCT_OK) {
         vct_grid_info gi;
         vct_grid_info_get(grid, &gi);
@@ -121,8 +124,12 @@ int cmd_render(const cli_options *opt) {
                 gi.references);
         if (opt->stats)
             cli_print_stats(ctx);
-        printf("wrote %s (%dx%d, %s)\n", out, image.width, image.height,
-               strcmp(dot, ".pfm") == 0 ? "linear radiance" : "exposed and sRGB encoded");
+        if (png)
+            printf("wrote %s (%dx%d, exposure %+.2f stops%s, %s curve, sRGB)\n", out, image.width,
+                   image.height, stops, opt->tone.auto_exposure ? " from the image" : "",
+                   vct_tone_curve_name(opt->tone.curve));
+        else
+            printf("wrote %s (%dx%d, linear radiance)\n", out, image.width, image.height);
     }
     vct_image_free(&image);
     vct_grid_free(grid);
@@ -152,8 +159,10 @@ int cmd_compare(const cli_options *opt) {
             rc = vct_image_write_png(&map, opt->error_image, 0.0f, &err);
     }
     if (rc == VCT_OK) {
-        printf("rmse %.6g\nrelative_rmse %.6g\nrelative_mse %.6g\nmae %.6g\npsnr_db %.4g\n", m.rmse,
-               m.relative_rmse, m.relative_mse, m.mae, m.psnr);
+        printf("nrmse %.6g\nrmse %.6g\nrelative_rmse %.6g\nrelative_mse %.6g\nmae %.6g\n"
+               "psnr_db %.4g\nmean_ratio %.6g\n",
+               m.nrmse, m.rmse, m.relative_rmse, m.relative_mse, m.mae, m.psnr,
+               m.reference_mean > 0.0 ? m.test_mean / m.reference_mean : 0.0);
         if (m.nonfinite)
             printf("nonfinite %zu\n", m.nonfinite);
         if (opt->error_image)

@@ -8,60 +8,64 @@
 #include "options.h"
 
 void cli_usage(void) {
-    fputs("usage:\n"
-          "  vct devices                      list OpenCL devices and their limits\n"
-          "  vct info SCENE                   load and validate a scene, print what it holds\n"
-          "  vct render SCENE [-o OUT.png|OUT.pfm] [options]\n"
-          "  vct voxelize SCENE [-o VOXELS.png] [--voxel-res N] [--thin] [--voxel-bounds X Y Z S]\n"
-          "               [--bricks auto|buffer|image] [--anisotropic]\n"
-          "                                   voxelize, build the sparse voxel octree and its\n"
-          "                                   filtered bricks, inject light, report counts,\n"
-          "                                   memory and time; -o renders the voxels\n"
-          "  vct compare TEST.pfm REFERENCE.pfm [--error-image ERR.png] [--error-scale E]\n"
-          "                                   RMSE, relative MSE, PSNR and mean absolute error\n"
-          "\n"
-          "render options:\n"
-          "  --method vct                     voxel cone tracing (default): --plan prints the\n"
-          "                                   effect plan; --effect NAME=on|off forces one\n"
-          "                                   (direct, shadows, indirect, specular, refraction,\n"
-          "                                   emission, ao, soft_shadows); --cones 1|5|6|9|16\n"
-          "                                   diffuse cones (default 6); --cone-step F\n"
-          "                                   (fraction of the diameter, 1); --cone-offset V\n"
-          "                                   (voxels, 4); --cone-levels blend|nearest (a\n"
-          "                                   sample blends two octree levels, or reads one);\n"
-          "                                   --sparse-diffuse: diffuse cones at every other\n"
-          "                                   pixel per axis, the rest filled in from the\n"
-          "                                   traced neighbours on the same surface;\n"
-          "                                   --ao-distance F (of the volume, 0.125);\n"
-          "                                   --bounces 1..4 light bounces in the voxels (2);\n"
-          "                                   --isotropic: one radiance per brick sample\n"
-          "                                   (default: six directional values);\n"
-          "                                   --aov PREFIX writes PREFIX_direct.pfm, _indirect,\n"
-          "                                   _specular, _ao, _level, _position, _normal;\n"
-          "                                   --voxel-res, --bricks,\n"
-          "                                   --anisotropic as for voxelize\n"
-          "  --method raycast                 direct light with hard shadows\n"
-          "  --method pt                      path tracing (the reference): --spp N or --time S,\n"
-          "                                   --max-depth D (default 16), --seed N\n"
-          "  --size W H                       image size in pixels (default 512 512)\n"
-          "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
-          "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
-          "  --dir-light DX DY DZ R G B       irradiance, travelling along D (repeatable)\n"
-          "  --light-radius R                 every light's size for soft shadows: world units\n"
-          "                                   (point, spot), radians (directional); 0 = hard\n"
-          "  --ambient R G B                  radiance arriving where nothing is hit\n"
-          "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
-          "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default\n"
-          "                                   128 for render, 256 for voxelize)\n"
-          "  --thin                           6-separating voxels (default: conservative)\n"
-          "  --voxel-bounds X Y Z SIZE        voxel cube by hand (default: around the scene)\n"
-          "  --bricks auto|buffer|image       brick pool kind (default auto: image3d on GPUs)\n"
-          "  --anisotropic                    6 directional radiance values per brick sample\n"
-          "  --exposure STOPS                 PNG only: scale by 2^STOPS before sRGB (default 0)\n"
-          "  --stats                          per-stage device time and memory\n"
-          "  --device N|NAME                  OpenCL device (default $VCT_DEVICE, else first GPU,\n"
-          "                                   else first CPU)\n",
-          stderr);
+    fputs(
+        "usage:\n"
+        "  vct devices                      list OpenCL devices and their limits\n"
+        "  vct info SCENE                   load and validate a scene, print what it holds\n"
+        "  vct render SCENE [-o OUT.png|OUT.pfm] [options]\n"
+        "  vct voxelize SCENE [-o VOXELS.png] [--voxel-res N] [--thin] [--voxel-bounds X Y Z S]\n"
+        "               [--bricks auto|buffer|image] [--anisotropic]\n"
+        "                                   voxelize, build the sparse voxel octree and its\n"
+        "                                   filtered bricks, inject light, report counts,\n"
+        "                                   memory and time; -o renders the voxels\n"
+        "  vct compare TEST.pfm REFERENCE.pfm [--error-image ERR.png] [--error-scale E]\n"
+        "                                   RMSE, relative MSE, PSNR and mean absolute error\n"
+        "\n"
+        "render options:\n"
+        "  --method vct                     voxel cone tracing (default): --plan prints the\n"
+        "                                   effect plan; --effect NAME=on|off forces one\n"
+        "                                   (direct, shadows, indirect, specular, refraction,\n"
+        "                                   emission, ao, soft_shadows); --cones 1|5|6|9|16\n"
+        "                                   diffuse cones (default 6); --cone-step F\n"
+        "                                   (fraction of the diameter, 1); --cone-offset V\n"
+        "                                   (voxels, 4); --cone-levels blend|nearest (a\n"
+        "                                   sample blends two octree levels, or reads one);\n"
+        "                                   --sparse-diffuse: diffuse cones at every other\n"
+        "                                   pixel per axis, the rest filled in from the\n"
+        "                                   traced neighbours on the same surface;\n"
+        "                                   --ao-distance F (of the volume, 0.125);\n"
+        "                                   --bounces 1..4 light bounces in the voxels (2);\n"
+        "                                   --isotropic: one radiance per brick sample\n"
+        "                                   (default: six directional values);\n"
+        "                                   --aov PREFIX writes PREFIX_direct.pfm, _indirect,\n"
+        "                                   _specular, _ao, _level, _position, _normal;\n"
+        "                                   --voxel-res, --bricks,\n"
+        "                                   --anisotropic as for voxelize\n"
+        "  --method raycast                 direct light with hard shadows\n"
+        "  --method pt                      path tracing (the reference): --spp N or --time S,\n"
+        "                                   --max-depth D (default 16), --seed N\n"
+        "  --size W H                       image size in pixels (default 512 512)\n"
+        "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
+        "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
+        "  --dir-light DX DY DZ R G B       irradiance, travelling along D (repeatable)\n"
+        "  --light-radius R                 every light's size for soft shadows: world units\n"
+        "                                   (point, spot), radians (directional); 0 = hard\n"
+        "  --ambient R G B                  radiance arriving where nothing is hit\n"
+        "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
+        "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default\n"
+        "                                   128 for render, 256 for voxelize)\n"
+        "  --thin                           6-separating voxels (default: conservative)\n"
+        "  --voxel-bounds X Y Z SIZE        voxel cube by hand (default: around the scene)\n"
+        "  --bricks auto|buffer|image       brick pool kind (default auto: image3d on GPUs)\n"
+        "  --anisotropic                    6 directional radiance values per brick sample\n"
+        "  --exposure STOPS                 PNG only: scale by 2^STOPS (default: from the image,\n"
+        "                                   its log-average luminance to middle grey)\n"
+        "  --tone filmic|clip               PNG only: tone curve after the exposure (default\n"
+        "                                   filmic, an ACES fit; clip: 1 and above is white)\n"
+        "  --stats                          per-stage device time and memory\n"
+        "  --device N|NAME                  OpenCL device (default $VCT_DEVICE, else first GPU,\n"
+        "                                   else first CPU)\n",
+        stderr);
 }
 
 static int parse_floats(int argc, char **argv, int *i, int count, float *out) {
@@ -151,6 +155,7 @@ static int parse_effect(int argc, char **argv, int *i, cli_options *opt) {
 int cli_parse(int argc, char **argv, cli_options *opt) {
     memset(opt, 0, sizeof *opt);
     opt->width = opt->height = 512;
+    opt->tone = vct_tone_default();
     opt->method = "vct";
     opt->max_depth = 16;
     opt->voxel_res = 0; /* each command's own default */
@@ -331,8 +336,19 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
             }
             opt->aov_prefix = argv[++i];
         } else if (strcmp(a, "--exposure") == 0) {
-            if (parse_floats(argc, argv, &i, 1, &opt->exposure))
+            if (parse_floats(argc, argv, &i, 1, &opt->tone.exposure))
                 return 1;
+            opt->tone.auto_exposure = 0;
+        } else if (strcmp(a, "--tone") == 0) {
+            const char *v = i + 1 < argc ? argv[++i] : "";
+            if (strcmp(v, "filmic") == 0)
+                opt->tone.curve = VCT_TONE_FILMIC;
+            else if (strcmp(v, "clip") == 0)
+                opt->tone.curve = VCT_TONE_CLIP;
+            else {
+                fprintf(stderr, "vct: --tone takes filmic or clip, not '%s'\n", v);
+                return 1;
+            }
         } else if (strcmp(a, "--stats") == 0) {
             opt->stats = 1;
         } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {

@@ -19,7 +19,7 @@ typedef struct cli_options {
     int spp, max_depth, seed;
     float time_limit;
     int stats;
-    float exposure;
+    vct_tone tone; /* PNG: exposure and curve */
     uint32_t grid_res[3];
     int has_camera_pos, has_look_at, has_up, has_fov;
     float camera_pos[3], look_at[3], up[3], fov;

@@ -20,15 +20,18 @@ static const char *const VERTEX_SHADER =
     "}\n";
 
 /* The frame's pixel under each fragment (rows stored top to bottom), scaled
- * by 2^exposure and sRGB encoded exactly as the PNG writer does. */
+ * by 2^exposure, through the tone curve and sRGB encoded exactly as the PNG
+ * writer does (image/tone.c). */
 static const char *const FRAGMENT_SHADER =
     "#version 330 core\n"
     "uniform sampler2D frame;\n"
     "uniform vec2 to_texel;\n"
     "uniform float scale;\n"
+    "uniform int filmic;\n"
     "out vec4 colour;\n"
     "float encode(float l) {\n"
     "    if (!(l > 0.0)) return 0.0;\n"
+    "    if (filmic != 0) l = l * (2.51 * l + 0.03) / (l * (2.43 * l + 0.59) + 0.14);\n"
     "    if (l >= 1.0) return 1.0;\n"
     "    return l <= 0.0031308 ? 12.92 * l : 1.055 * pow(l, 1.0 / 2.4) - 0.055;\n"
     "}\n"
@@ -195,6 +198,17 @@ int display_upload(display *d, vct_context *ctx, int width, int height, vct_erro
             glUnmapBuffer(GL_PIXEL_UNPACK_BUFFER);
         }
     }
+    d->applied_stops = d->tone.exposure;
+    if (rc == VCT_OK && d->tone.auto_exposure) {
+        /* from the frame itself, as the PNG writer takes it */
+        float *frame = malloc(4 * floats);
+        rc = frame ? vct_frame_read(ctx, frame, floats, err) : VCT_ERR_MEMORY;
+        if (rc == VCT_OK)
+            d->applied_stops = vct_tone_exposure(&d->tone, frame, floats / 4);
+        else if (!frame)
+            snprintf(err->message, sizeof err->message, "display: out of host memory");
+        free(frame);
+    }
     if (rc == VCT_OK) {
         glBindTexture(GL_TEXTURE_2D, d->texture);
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, NULL);
@@ -216,7 +230,8 @@ int display_draw(display *d, vct_error *err) {
     glUniform1i(glGetUniformLocation(d->program, "frame"), 0);
     glUniform2f(glGetUniformLocation(d->program, "to_texel"), (float)d->texture_size[0] / fw,
                 (float)d->texture_size[1] / fh);
-    glUniform1f(glGetUniformLocation(d->program, "scale"), exp2f(d->exposure));
+    glUniform1f(glGetUniformLocation(d->program, "scale"), exp2f(d->applied_stops));
+    glUniform1i(glGetUniformLocation(d->program, "filmic"), d->tone.curve == VCT_TONE_FILMIC);
     glBindVertexArray(d->vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -20,9 +20,10 @@ typedef struct display {
     GLFWwindow *window;
     unsigned program, vao, texture, pbo;
     int texture_size[2];
-    int interop;    /* 1: the frame reaches GL on the device */
-    char path[200]; /* the path in use, and why */
-    float exposure;
+    int interop;         /* 1: the frame reaches GL on the device */
+    char path[200];      /* the path in use, and why */
+    vct_tone tone;       /* as the PNG writer's: exposure (automatic or given), curve */
+    float applied_stops; /* the exposure the last frame was shown at */
 } display;
 
 /* Opens the window and GL context. On failure (no display, no GL 3.3)
@@ -32,7 +33,8 @@ void display_close(display *d);
 /* The OpenCL context for this window: sharing with its GL context where
  * `mode` allows and the device can, else a plain one; d->path says which. */
 vct_context *display_context(display *d, display_mode mode, const char *device, vct_error *err);
-/* Takes the context's frame (width x height) into the texture. */
+/* Takes the context's frame (width x height) into the texture, and its
+ * exposure from it when the tone is automatic. */
 int display_upload(display *d, vct_context *ctx, int width, int height, vct_error *err);
 /* Draws the texture over the framebuffer (the caller swaps). */
 int display_draw(display *d, vct_error *err);

@@ -53,7 +53,7 @@ static void print_plan(const vct_plan *plan) {
     fflush(stdout);
 }
 
-/* PNG of the frame in linear radiance, exposed like `vct render` does. */
+/* PNG of the frame, tone mapped as the window shows it. */
 static void screenshot(viewer *v) {
     vct_error err = {0};
     vct_image im = {0};
@@ -63,8 +63,10 @@ static void screenshot(viewer *v) {
     char path[64];
     snprintf(path, sizeof path, "vct-view-%03d.png", v->screenshots++);
     int rc = im.rgba ? vct_frame_read(v->app.ctx, im.rgba, floats, &err) : VCT_ERR_MEMORY;
+    /* at the stops the window shows, so that the file shows the same */
+    const vct_tone shown = {0, v->display.applied_stops, v->display.tone.curve};
     if (rc == VCT_OK)
-        rc = vct_image_write_png(&im, path, v->display.exposure, &err);
+        rc = vct_image_write_png_tone(&im, path, &shown, NULL, &err);
     if (rc == VCT_OK)
         printf("wrote %s\n", path);
     else
@@ -96,7 +98,8 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
             fprintf(stderr, "vct-view: the scene has no light to move\n");
     } else if (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD || key == GLFW_KEY_MINUS ||
                key == GLFW_KEY_KP_SUBTRACT) {
-        v->display.exposure += key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT ? -0.5f : 0.5f;
+        v->display.tone.exposure +=
+            key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT ? -0.5f : 0.5f;
     } else if (key == GLFW_KEY_P && action == GLFW_PRESS) {
         screenshot(v);
     } else if (key == GLFW_KEY_H && action == GLFW_PRESS) {
@@ -388,6 +391,7 @@ int main(int argc, char **argv) {
         view_app_free(&v.app);
         return EXIT_NO_DISPLAY;
     }
+    v.display.tone = opt.tone; /* as `vct render` writes PNG files */
     vct_context *ctx = display_context(&v.display, va.mode, opt.device, &err);
     int status = 1;
     if (ctx && view_app_attach(&v.app, ctx, &err) == VCT_OK) {

@@ -3,17 +3,21 @@
  * hard shadows from any-hit rays through the triangle grid) plus emission.
  * The same conventions as the ray caster and the path tracer.
  *
- * A voxel is lit at its centre, with its mean normal; a voxel whose
- * fragments face every way (zero mean normal) takes light from all sides.
- * The centre can lie up to half a voxel diagonal behind the voxel's own
- * surface, so shadow rays start that far along the mean normal, in front of
- * it (along the light direction for a voxel without one). Shadow edges move
- * by less than a voxel; no voxel shadows itself at grazing light. The rays
- * of hard point and spot lights test the light's own triangle bins
- * (light_bins.h) when it has them, the grid otherwise, with the same answer;
- * they end two lifts short of the light. A light
- * with a radius is seen through INJECT_EXTENT_SAMPLES fixed points of its
- * extent (a spiral), so that its penumbrae reach the voxels too. */
+ * Surfaces are two-sided, whatever their winding: each fragment of a voxel
+ * (one triangle crossing it) is lit from the side its light is on, and the
+ * voxel sends out the mean of what its fragments reflect. A fragment is
+ * shaded at the voxel's centre with its triangle's normal, and seen from the
+ * light at the point of its triangle nearest that centre, lifted by a
+ * relative epsilon off the triangle on the light's side and towards the
+ * light. So a wall lit on one
+ * face leaves its other face dark, however thin the wall and whichever way
+ * it is wound (the dark face's ray starts inside the wall and meets the lit
+ * face), and a closed object shadows its own far side. Shadow edges move by
+ * less than a voxel. The rays of hard point and spot lights test the light's
+ * own triangle bins (light_bins.h) when it has them, the grid otherwise, with
+ * the same answer; they end two lifts short of the light. A light with a
+ * radius is seen through INJECT_EXTENT_SAMPLES fixed points of its extent
+ * (a spiral), so that its penumbrae reach the voxels too. */
 #include "light/direct_light.h"
 #include "light/light_bins.h"
 #include "voxel/octree.h"
@@ -44,11 +48,68 @@ inline float inject_visibility(const grid_view *g, const light_bins_view *bins,
     return (float)seen / (float)INJECT_EXTENT_SAMPLES;
 }
 
+/* The point of triangle (a, b, c) nearest p: by the region of the
+ * triangle's plane that p projects into (a vertex, an edge, or inside). */
+inline float3 triangle_nearest(float3 p, float3 a, float3 b, float3 c) {
+    const float3 ab = b - a, ac = c - a;
+    const float a_ab = dot(ab, p - a), a_ac = dot(ac, p - a);
+    if (a_ab <= 0.0f && a_ac <= 0.0f)
+        return a;
+    const float b_ab = dot(ab, p - b), b_ac = dot(ac, p - b);
+    if (b_ab >= 0.0f && b_ac <= b_ab)
+        return b;
+    const float c_ab = dot(ab, p - c), c_ac = dot(ac, p - c);
+    if (c_ac >= 0.0f && c_ab <= c_ac)
+        return c;
+    const float w_c = a_ab * b_ac - b_ab * a_ac; /* p's weight of c, unnormalised */
+    if (w_c <= 0.0f && a_ab >= 0.0f && b_ab <= 0.0f)
+        return a + ab * (a_ab / (a_ab - b_ab));
+    const float w_b = c_ab * a_ac - a_ab * c_ac;
+    if (w_b <= 0.0f && a_ac >= 0.0f && c_ac <= 0.0f)
+        return a + ac * (a_ac / (a_ac - c_ac));
+    const float w_a = b_ab * c_ac - c_ab * b_ac;
+    if (w_a <= 0.0f && b_ac - b_ab >= 0.0f && c_ab - c_ac >= 0.0f)
+        return b + (c - b) * ((b_ac - b_ab) / ((b_ac - b_ab) + (c_ab - c_ac)));
+    const float inv = 1.0f / (w_a + w_b + w_c);
+    const float3 q = a + ab * (w_b * inv) + ac * (w_c * inv);
+    return all(isfinite(q)) ? q : a;
+}
+
+/* Irradiance at centre p from every light onto one fragment: triangle t,
+ * unit normal n (either sign), seen from its point q nearest p. */
+inline float3 fragment_irradiance(const grid_view *g, const light_bins_view *bins,
+                                  __global const vct_light_desc *lights, uint light_count, float3 p,
+                                  float3 q, float3 n) {
+    const float lift = surface_epsilon(g, q);
+    float3 irradiance = (float3)(0.0f);
+    for (uint i = 0; i < light_count; ++i) {
+        float3 wi, radiant;
+        float dist;
+        if (!light_incident(lights, i, p, &wi, &dist, &radiant))
+            continue;
+        const float cos_theta = fabs(dot(n, wi));
+        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
+            continue;
+        float3 wq, unused;
+        float dq;
+        if (!light_incident(lights, i, q, &wq, &dq, &unused))
+            continue;
+        /* Off the triangle on the light's side, and towards the light, so
+         * that a ray from an edge shared with a wall does not start on it. */
+        const float3 up = normalize((dot(n, wq) < 0.0f ? -n : n) + wq);
+        irradiance +=
+            radiant * cos_theta * inject_visibility(g, bins, lights, i, q, up, lift, wq, dq);
+    }
+    return irradiance;
+}
+
 __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
-                            __global const uint *keys, uint voxels, __global const float4 *albedo,
-                            __global const float4 *normal, __global const float4 *emission,
-                            __global const vct_light_desc *lights, uint light_count,
-                            __global float4 *radiance) {
+                            __global const uint *keys, uint voxels,
+                            __global const uint *voxel_start, __global const uint *fragment_tri,
+                            uint fragments, __global const vct_material_desc *materials,
+                            __global const uint *tri_material, __global const float4 *albedo,
+                            __global const float4 *emission, __global const vct_light_desc *lights,
+                            uint light_count, __global float4 *radiance) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
@@ -56,22 +117,24 @@ __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
     const light_bins_view bins = LIGHT_BINS_VIEW();
     const float size = vol.origin.w / (float)vol.res.x;
     const float3 p = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * size;
-    const float3 n = normal[v].xyz;
-    const int oriented = any(n != 0.0f);
-    const float lift = 0.8660254f * size + surface_epsilon(&g, p);
-    float3 irradiance = (float3)(0.0f);
-    for (uint i = 0; i < light_count; ++i) {
-        float3 wi, radiant;
-        float dist;
-        if (!light_incident(lights, i, p, &wi, &dist, &radiant))
-            continue;
-        const float cos_theta = oriented ? dot(n, wi) : 1.0f;
-        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
-            continue;
-        irradiance += radiant * cos_theta *
-                      inject_visibility(&g, &bins, lights, i, p, oriented ? n : wi, lift, wi, dist);
+    const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
+    float3 reflected = (float3)(0.0f);
+    uint surfaces = 0;
+    for (uint f = begin; f < end && light_count > 0; ++f) {
+        const uint t = fragment_tri[f];
+        const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
+                     c = tri_vertices[3u * t + 2u].xyz;
+        const float3 cr = cross(b - a, c - a);
+        const float len = length(cr);
+        if (!(len > 0.0f))
+            continue; /* zero area: never hit, never lit */
+        ++surfaces;
+        const float3 q = triangle_nearest(p, a, b, c);
+        reflected += materials[tri_material[t]].albedo.xyz *
+                     fragment_irradiance(&g, &bins, lights, light_count, p, q, cr / len);
     }
+    if (surfaces > 0u)
+        reflected *= VCT_INV_PI / (float)surfaces;
     /* w: the opacity, so that re-filtering reads one array */
-    const float4 a = albedo[v];
-    radiance[v] = (float4)(a.xyz * VCT_INV_PI * irradiance + emission[v].xyz, a.w);
+    radiance[v] = (float4)(reflected + emission[v].xyz, albedo[v].w);
 }

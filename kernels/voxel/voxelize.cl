@@ -182,10 +182,64 @@ __kernel void vox_starts(__global const uint *keys, uint n, __global const uint 
     }
 }
 
+/* A surface's normal as an axis: the sign that makes its largest component
+ * positive (the first such component on ties). */
+inline float3 axis_canonical(float3 n) {
+    const float3 a = fabs(n);
+    const float lead = a.x >= a.y && a.x >= a.z ? n.x : a.y >= a.z ? n.y : n.z;
+    return lead < 0.0f ? -n : n;
+}
+
+/* The sum of n n^T over a voxel's fragment normals, symmetric: xx yy zz in
+ * d, xy yz zx in o. A normal and its negation add the same bits to it. */
+typedef struct normal_tensor {
+    float3 d, o;
+} normal_tensor;
+
+inline float3 tensor_apply(normal_tensor m, float3 v) {
+    return (float3)(m.d.x * v.x + m.o.x * v.y + m.o.z * v.z,
+                    m.o.x * v.x + m.d.y * v.y + m.o.y * v.z,
+                    m.o.z * v.x + m.o.y * v.y + m.d.z * v.z);
+}
+
+/* m^2 over its trace (which keeps it bounded; the eigenvectors stay). */
+inline normal_tensor tensor_square(normal_tensor m) {
+    const float3 cx = (float3)(m.d.x, m.o.x, m.o.z), cy = (float3)(m.o.x, m.d.y, m.o.y),
+                 cz = (float3)(m.o.z, m.o.y, m.d.z);
+    normal_tensor r;
+    r.d = (float3)(dot(cx, cx), dot(cy, cy), dot(cz, cz));
+    r.o = (float3)(dot(cx, cy), dot(cy, cz), dot(cz, cx));
+    const float trace = r.d.x + r.d.y + r.d.z;
+    r.d /= trace;
+    r.o /= trace;
+    return r;
+}
+
+/* The axis that fits the normals best: the principal eigenvector of their
+ * tensor, found as m^256 times m's column of largest diagonal (power
+ * iteration by squaring), canonical in sign. Where two eigenvalues tie (two
+ * perpendicular walls), a fixed vector of their plane. 0 without normals. */
+inline float3 tensor_axis(normal_tensor m) {
+    if (!(m.d.x + m.d.y + m.d.z > 0.0f))
+        return (float3)(0.0f);
+    normal_tensor p = m;
+    for (int i = 0; i < 8; ++i)
+        p = tensor_square(p);
+    const float3 e = p.d.x >= p.d.y && p.d.x >= p.d.z ? (float3)(1.0f, 0.0f, 0.0f)
+                     : p.d.y >= p.d.z                 ? (float3)(0.0f, 1.0f, 0.0f)
+                                                      : (float3)(0.0f, 0.0f, 1.0f);
+    const float3 v = tensor_apply(p, e);
+    const float len = length(v);
+    return len > 0.0f ? axis_canonical(v / len) : e;
+}
+
 /* Averages each voxel's fragments in sorted order (deterministic): albedo
- * and opacity (1 - transmission), emission, and the mean unit normal, whose
- * length (1 = all fragments agree) is kept in normal.w before normalising.
- * emission.w holds the fragment count. */
+ * and opacity (1 - transmission), emission, and the normal axis. Surfaces
+ * are two-sided, so a fragment's normal counts for its line, not its sign:
+ * the voxel's normal is the axis that fits its fragments' normals best
+ * (tensor_axis), and a surface wound either way, or a mix, gives it bit for
+ * bit. normal.w: how well it fits, sqrt(mean of (n . axis)^2), 1 when all
+ * fragments lie along it. emission.w holds the fragment count. */
 __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_start, uint voxels,
                          uint fragments, __global const float4 *tri_normals,
                          __global const vct_material_desc *materials, __global float4 *albedo_out,
@@ -195,17 +249,19 @@ __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_st
         return;
     const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
     float4 albedo = 0.0f;
-    float3 emission = 0.0f, normal = 0.0f;
+    float3 emission = 0.0f;
+    normal_tensor m = {(float3)(0.0f), (float3)(0.0f)};
     for (uint f = begin; f < end; ++f) {
         const float4 tn = tri_normals[ids[f]];
-        const vct_material_desc m = materials[(uint)tn.w];
-        albedo += (float4)(m.albedo.xyz, 1.0f - m.specular.w);
-        emission += m.emission.xyz;
-        normal += tn.xyz;
+        const vct_material_desc mat = materials[(uint)tn.w];
+        albedo += (float4)(mat.albedo.xyz, 1.0f - mat.specular.w);
+        emission += mat.emission.xyz;
+        m.d += tn.xyz * tn.xyz;
+        m.o += tn.xyz * tn.yzx;
     }
     const float inv = 1.0f / (float)(end - begin);
-    const float coherence = length(normal) * inv;
+    const float3 axis = tensor_axis(m);
     albedo_out[v] = albedo * inv;
-    normal_out[v] = (float4)(coherence > 1e-6f ? normalize(normal) : (float3)(0.0f), coherence);
+    normal_out[v] = (float4)(axis, sqrt(fmax(dot(axis, tensor_apply(m, axis)), 0.0f) * inv));
     emission_out[v] = (float4)(emission * inv, (float)(end - begin));
 }

@@ -25,16 +25,21 @@ int main(void) {
     vct_image ref = make(6, 4, 1.0f), test = make(6, 4, 1.5f);
     vct_image_metrics m;
     REQUIRE_OK(vct_image_compare(&test, &ref, &m, &err), err);
-    double sum_r2 = 0.0, rel = 0.0;
+    double sum_r2 = 0.0, rel = 0.0, sum_r = 0.0;
     for (int i = 0; i < 24; ++i)
         for (int c = 0; c < 3; ++c) {
             double r = ref.rgba[4 * i + c];
             sum_r2 += r * r;
+            sum_r += r;
             rel += 0.25 / (r * r + 0.01);
         }
     CHECK(near(m.rmse, 0.5) && near(m.mae, 0.5) && near(m.mse, 0.25), "rmse %g mae %g", m.rmse,
           m.mae);
     CHECK(near(m.relative_rmse, sqrt(0.25 * 72 / sum_r2)), "relative rmse %g", m.relative_rmse);
+    /* NRMSE: the RMSE (0.5) over the reference's mean. */
+    CHECK(near(m.nrmse, 0.5 / (sum_r / 72)), "nrmse %g", m.nrmse);
+    CHECK(near(m.reference_mean, sum_r / 72) && near(m.test_mean, sum_r / 72 + 0.5), "means %g %g",
+          m.reference_mean, m.test_mean);
     CHECK(near(m.relative_mse, rel / 72), "relative mse %g", m.relative_mse);
     CHECK(near(m.psnr, 10 * log10(1.75 * 1.75 / 0.25)), "psnr %g", m.psnr);
     CHECK(m.nonfinite == 0, "nonfinite %zu", m.nonfinite);

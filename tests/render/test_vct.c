@@ -576,6 +576,35 @@ static void sparse_diffuse(void) {
     vct_scene_free(s);
 }
 
+/* The default tone (automatic exposure, filmic) leaves no large area of the
+ * Cornell box clipped to white, as `vct render` writes its PNG. */
+static void default_tone_clips_little(void) {
+    vct_scene *box = check_cornell_box();
+    vct_plan plan;
+    vct_plan_make(box, NULL, &plan);
+    vct_image im = vct_case_render(ctx, box, &plan, 64, 96, 96, 2, NULL);
+    const size_t pixels = (size_t)im.width * im.height;
+    const vct_tone filmic = vct_tone_default(), clip = {1, 0.0f, VCT_TONE_CLIP};
+    size_t clipped[2] = {0, 0};
+    const vct_tone *tones[2] = {&filmic, &clip};
+    for (int t = 0; t < 2; ++t) {
+        const float scale = exp2f(vct_tone_exposure(tones[t], im.rgba, pixels));
+        for (size_t i = 0; i < pixels; ++i) {
+            int white = 0;
+            for (int c = 0; c < 3; ++c) /* 254.5 / 255 in sRGB is 0.9922 linear */
+                white |=
+                    vct_tone_curve_apply(tones[t]->curve, im.rgba[4 * i + c] * scale) > 0.9922f;
+            clipped[t] += white;
+        }
+    }
+    CHECK(clipped[0] < pixels / 100, "Cornell box, default tone: %zu of %zu pixels clipped",
+          clipped[0], pixels);
+    printf("Cornell box, default tone: %.2f%% of pixels clipped (%.2f%% with the clip curve)\n",
+           100.0 * clipped[0] / pixels, 100.0 * clipped[1] / pixels);
+    vct_image_free(&im);
+    vct_scene_free(box);
+}
+
 int main(void) {
     ctx = check_context();
     plans();
@@ -586,6 +615,7 @@ int main(void) {
     glass_pane();
     cornell_against_path_tracer();
     glossy_cornell_against_path_tracer();
+    default_tone_clips_little();
     vct_context_destroy(ctx);
     return check_exit("test_vct");
 }

@@ -436,10 +436,40 @@ static void hard_cases(void) {
     (void)err;
 }
 
+/* The preset's weighted cones from voxel `cell`'s centre on the side of
+ * unit n, through pyramid p. */
+static void gather_side(const brick_case *c, const ref_pyramid *p, const vct_cone_settings *s,
+                        const uint32_t cell[3], const double n[3], const float *dirs,
+                        const float *tan_half, double gathered[3]) {
+    const double voxel = c->info.side / c->info.resolution, none[3] = {0, 0, 0};
+    /* the frame of bsdf.h's basis_of (Duff et al. 2017) */
+    const double sg = n[2] >= 0 ? 1.0 : -1.0, a = -1.0 / (sg + n[2]), bb = n[0] * n[1] * a;
+    const double t[3] = {1.0 + sg * n[0] * n[0] * a, sg * bb, -sg * n[0]};
+    const double b[3] = {bb, sg + n[1] * n[1] * a, -n[1]};
+    double origin[3];
+    for (int k = 0; k < 3; ++k) {
+        origin[k] = c->info.origin[k] + (cell[k] + 0.5) * voxel + n[k] * s->offset * voxel;
+        gathered[k] = 0.0;
+    }
+    for (int i = 0; i < 6; ++i) {
+        double d[3], dl = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            d[k] = dirs[4 * i] * t[k] + dirs[4 * i + 1] * b[k] + dirs[4 * i + 2] * n[k];
+            dl += d[k] * d[k];
+        }
+        for (int k = 0; k < 3; ++k)
+            d[k] /= sqrt(dl);
+        const ref_cone r = ref_march(c, p, 1, s, none, origin, d, tan_half[i], INFINITY);
+        for (int k = 0; k < 3; ++k)
+            gathered[k] += dirs[4 * i + 3] * r.radiance[k];
+    }
+}
+
 /* Checks one bounce: every checked voxel's radiance `after` must be
  * `direct` plus albedo times the preset's weighted cones, marched from its
- * centre along its mean normal through pyramid p (the radiance the bounce
- * read), and a quarter of them at least must gain light over `direct`. */
+ * centre on each side of its mean normal axis through pyramid p (the
+ * radiance the bounce read), the brighter side kept, and a quarter of them at least must gain light
+ * over `direct`. */
 static void check_bounce(const char *what, const brick_case *c, const ref_pyramid *p,
                          const float *direct, const float *after) {
     const uint32_t nv = c->info.voxels;
@@ -449,7 +479,6 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
     const vct_cone_settings s = vct_cone_settings_default();
     REQUIRE_OK(vct_voxels_read(ctx, c->voxels, keys, NULL, NULL, NULL, &err), err);
     REQUIRE_OK(vct_cone_preset(6, dirs, tan_half, &err), err);
-    const double voxel = c->info.side / c->info.resolution, none[3] = {0, 0, 0};
     uint32_t off = 0, checked = 0, brighter = 0;
     for (uint32_t v = 0; v < nv; v += 7, ++checked) {
         uint32_t cell[3];
@@ -458,25 +487,15 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
         const double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         for (int k = 0; k < 3; ++k)
             n[k] = len > 1e-3 ? n[k] / len : (k == 2);
-        /* the frame of bsdf.h's basis_of (Duff et al. 2017) */
-        const double sg = n[2] >= 0 ? 1.0 : -1.0, a = -1.0 / (sg + n[2]), bb = n[0] * n[1] * a;
-        const double t[3] = {1.0 + sg * n[0] * n[0] * a, sg * bb, -sg * n[0]};
-        const double b[3] = {bb, sg + n[1] * n[1] * a, -n[1]};
-        double origin[3], gathered[3] = {0, 0, 0};
+        double front[3], back[3], gathered[3];
+        gather_side(c, p, &s, cell, n, dirs, tan_half, front);
         for (int k = 0; k < 3; ++k)
-            origin[k] = c->info.origin[k] + (cell[k] + 0.5) * voxel + n[k] * s.offset * voxel;
-        for (int i = 0; i < 6; ++i) {
-            double d[3], dl = 0.0;
-            for (int k = 0; k < 3; ++k) {
-                d[k] = dirs[4 * i] * t[k] + dirs[4 * i + 1] * b[k] + dirs[4 * i + 2] * n[k];
-                dl += d[k] * d[k];
-            }
-            for (int k = 0; k < 3; ++k)
-                d[k] /= sqrt(dl);
-            const ref_cone r = ref_march(c, p, 1, &s, none, origin, d, tan_half[i], INFINITY);
-            for (int k = 0; k < 3; ++k)
-                gathered[k] += dirs[4 * i + 3] * r.radiance[k];
-        }
+            n[k] = -n[k];
+        gather_side(c, p, &s, cell, n, dirs, tan_half, back);
+        /* two-sided: the brighter side's light */
+        const int use_front = front[0] + front[1] + front[2] >= back[0] + back[1] + back[2];
+        for (int k = 0; k < 3; ++k)
+            gathered[k] = use_front ? front[k] : back[k];
         double e = 0.0;
         for (int k = 0; k < 3; ++k) {
             const double want = direct[4 * v + k] + c->albedo[4 * v + k] * gathered[k];

@@ -105,7 +105,7 @@ static void check_point_light(const char *name, inject_case *c, const double lig
         const double p[3] = {cell[0] + 0.5, cell[1] + 0.5, PLANE_Z};
         const double d[3] = {light[0] - p[0], light[1] - p[1], light[2] - p[2]};
         const double dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        double expected = albedo / CHECK_PI * intensity * (d[2] / dist) / (dist * dist);
+        double expected = albedo / CHECK_PI * intensity * (fabs(d[2]) / dist) / (dist * dist);
         if (occluder) {
             /* Shadow rays start up to a voxel off the centre: edges are
              * only known to a voxel. */
@@ -139,6 +139,123 @@ static void check_point_light(const char *name, inject_case *c, const double lig
            name, checked, dark, partial, worst);
 }
 
+/* A floor at z = 4.5 under a slab over [2, 14]^2 whose two faces lie at
+ * z = bottom and z = top, each wound up (+z) or down as `winding` bits 0 and
+ * 1 say, and the light above it. Voxels holding only the dark face, and the
+ * floor in the slab's shadow, get nothing; voxels holding the lit face get
+ * the analytic light at their centres, or half of it when they hold both
+ * faces (the mean of a lit and a dark surface). Returns the radiance. */
+static float *thin_slab(const char *name, float bottom, float top, unsigned winding,
+                        uint32_t *voxels) {
+    const float pos[] = {0, 0, 4.5f,   16, 0, 4.5f,   16, 16, 4.5f,   0, 16, 4.5f,
+                         2, 2, bottom, 14, 2, bottom, 14, 14, bottom, 2, 14, bottom,
+                         2, 2, top,    14, 2, top,    14, 14, top,    2, 14, top};
+    const uint32_t up[] = {0, 1, 2, 0, 2, 3}, down[] = {0, 2, 1, 0, 3, 2};
+    uint32_t tri[18], mat[6] = {0};
+    for (int i = 0; i < 6; ++i) {
+        tri[i] = up[i];
+        tri[6 + i] = 4 + ((winding & 1u) ? down[i] : up[i]);
+        tri[12 + i] = 8 + ((winding & 2u) ? down[i] : up[i]);
+    }
+    vct_material white = vct_material_default();
+    vct_error err = {0};
+    inject_case c = {0};
+    c.scene = vct_scene_from_arrays(pos, 12, tri, 6, mat, &white, 1, &err);
+    REQUIRE_OK(c.scene ? VCT_OK : err.status, err);
+    const double light[3] = {8.3, 7.7, 14.5}, intensity = 100.0;
+    vct_light l = {VCT_LIGHT_POINT, {8.3f, 7.7f, 14.5f}, {0}, {100, 100, 100}, 0, 0, 0};
+    REQUIRE_OK(vct_scene_add_light(c.scene, &l, &err), err);
+    c.grid = vct_grid_build(ctx, c.scene, NULL, &err);
+    REQUIRE_OK(c.grid ? VCT_OK : err.status, err);
+    vct_voxel_options o = {0};
+    o.resolution = RES;
+    o.has_bounds = 1;
+    o.bounds_size = RES;
+    c.voxels = vct_voxelize(ctx, c.scene, &o, &err);
+    REQUIRE_OK(c.voxels ? VCT_OK : err.status, err);
+    vct_voxels_info_get(c.voxels, &c.info);
+    c.keys = malloc(4ull * c.info.voxels);
+    c.radiance = malloc(16ull * c.info.voxels);
+    REQUIRE_OK(vct_voxels_read(ctx, c.voxels, c.keys, NULL, NULL, NULL, &err), err);
+    inject(&c);
+    const uint32_t lit_layer = (uint32_t)top, dark_layer = (uint32_t)bottom;
+    const double share = lit_layer == dark_layer ? 0.5 : 1.0;
+    int lit = 0, dark = 0, floor_dark = 0, bad = 0;
+    for (uint32_t v = 0; v < c.info.voxels; ++v) {
+        uint32_t cell[3];
+        decode(c.keys[v], cell);
+        const double p[3] = {cell[0] + 0.5, cell[1] + 0.5, cell[2] + 0.5};
+        const int inner = cell[0] >= 3 && cell[0] <= 12 && cell[1] >= 3 && cell[1] <= 12;
+        const double got = c.radiance[4 * v];
+        double expected = -1.0; /* not known exactly: left out */
+        if (cell[2] == 4) {
+            /* where the segment to the light crosses z = 9 */
+            const double t = (9.0 - p[2]) / (light[2] - p[2]);
+            const double x = p[0] + t * (light[0] - p[0]), y = p[1] + t * (light[1] - p[1]);
+            if (fmin(fmin(x - 2, 14 - x), fmin(y - 2, 14 - y)) > 1.0) {
+                expected = 0.0;
+                ++floor_dark;
+            }
+        } else if (inner && cell[2] == lit_layer) {
+            const double d[3] = {light[0] - p[0], light[1] - p[1], light[2] - p[2]};
+            const double dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            expected = share * 0.8 / CHECK_PI * intensity * (d[2] / dist) / (dist * dist);
+            ++lit;
+        } else if (inner && cell[2] == dark_layer) {
+            expected = 0.0;
+            ++dark;
+        }
+        if (expected < 0.0)
+            continue;
+        const int ok = expected > 0.0 ? fabs(got - expected) < 1e-4 * expected : got == 0.0;
+        if (!ok && bad++ < 3)
+            CHECK(0, "%s: voxel (%u %u %u) radiance %g, expected %g", name, cell[0], cell[1],
+                  cell[2], got, expected);
+    }
+    CHECK(bad == 0 && lit >= 100 && floor_dark >= 60 && (share < 1.0 || dark >= 100),
+          "%s: %d wrong (%d lit, %d dark, %d floor voxels in shadow)", name, bad, lit, dark,
+          floor_dark);
+    printf("%-34s %d lit%s, %d dark, %d floor voxels in shadow\n", name, lit,
+           share < 1.0 ? " at half (both faces)" : "", dark, floor_dark);
+    float *out = c.radiance;
+    c.radiance = NULL;
+    *voxels = c.info.voxels;
+    case_free(&c);
+    return out;
+}
+
+/* Thin walls lit from one side stay dark on the other, for every winding
+ * of their faces, and every winding gives the same radiance. */
+static void thin_walls(void) {
+    const struct {
+        const char *name;
+        float bottom, top;
+    } walls[] = {{"slab across two voxel layers", 8.8f, 9.2f},
+                 {"slab inside one voxel layer", 8.3f, 8.7f}};
+    for (int w = 0; w < 2; ++w) {
+        float *first = NULL;
+        uint32_t count = 0;
+        for (unsigned winding = 0; winding < 4; ++winding) {
+            char name[96];
+            snprintf(name, sizeof name, "%s, winding %u", walls[w].name, winding);
+            uint32_t voxels = 0;
+            float *r = thin_slab(name, walls[w].bottom, walls[w].top, winding, &voxels);
+            if (!first) {
+                first = r;
+                count = voxels;
+                continue;
+            }
+            double diff = voxels == count ? 0.0 : INFINITY;
+            for (size_t i = 0; i < 4ull * count && voxels == count; ++i)
+                if (r[i] != first[i])
+                    diff = fmax(diff, fabs(r[i] - first[i]));
+            CHECK(diff == 0.0, "%s: differs from winding 0 by %g", name, diff);
+            free(r);
+        }
+        free(first);
+    }
+}
+
 int main(void) {
     ctx = check_context();
     vct_material white = vct_material_default();
@@ -147,8 +264,37 @@ int main(void) {
     inject_case c = make_case(0, &white);
     CHECK(c.info.voxels == RES * RES, "the plane makes one layer: %u voxels", c.info.voxels);
     check_point_light("point light", &c, light, 100.0, 0, 0.0f);
+    float *wound_up = malloc(16ull * c.info.voxels);
+    memcpy(wound_up, c.radiance, 16ull * c.info.voxels);
     /* A moved light: re-injected, nothing re-voxelized. */
     check_point_light("point light, moved", &c, moved, 250.0, 0, 0.0f);
+    case_free(&c);
+    /* The same plane wound the other way sends out the same light. */
+    c = make_case(0, &white);
+    for (uint32_t t = 0; t < c.scene->triangle_count; ++t) {
+        const uint32_t keep = c.scene->triangles[3 * t + 1];
+        c.scene->triangles[3 * t + 1] = c.scene->triangles[3 * t + 2];
+        c.scene->triangles[3 * t + 2] = keep;
+    }
+    vct_grid_free(c.grid);
+    vct_voxels_free(c.voxels);
+    {
+        vct_error e = {0};
+        vct_voxel_options o = {0};
+        o.resolution = RES;
+        o.has_bounds = 1;
+        o.bounds_size = RES;
+        c.grid = vct_grid_build(ctx, c.scene, NULL, &e);
+        REQUIRE_OK(c.grid ? VCT_OK : e.status, e);
+        c.voxels = vct_voxelize(ctx, c.scene, &o, &e);
+        REQUIRE_OK(c.voxels ? VCT_OK : e.status, e);
+    }
+    check_point_light("point light, winding reversed", &c, light, 100.0, 0, 0.0f);
+    double winding_diff = 0.0;
+    for (uint32_t i = 0; i < 4 * c.info.voxels; ++i)
+        winding_diff = fmax(winding_diff, fabs(c.radiance[i] - wound_up[i]));
+    CHECK(winding_diff == 0.0, "winding reversed: radiance differs by up to %g", winding_diff);
+    free(wound_up);
     /* A directional light at 60 degrees from the normal: E cos / pi * albedo everywhere. */
     vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0}, {0.0f, -0.8660254f, -0.5f}, {2, 2, 2}, 0, 0, 0};
     c.scene->light_count = 0;
@@ -160,17 +306,10 @@ int main(void) {
     for (uint32_t v = 0; v < c.info.voxels; ++v)
         worst = fmax(worst, fabs(c.radiance[4 * v] - expected) / expected);
     CHECK(worst < 1e-5, "directional light: worst relative error %g", worst);
-    /* No light from behind: a light under the plane leaves it dark. */
-    const double below[3] = {8, 8, 3};
-    vct_light under = {VCT_LIGHT_POINT, {8, 8, 3}, {0}, {100, 100, 100}, 0, 0, 0};
-    (void)below;
-    c.scene->light_count = 0;
-    REQUIRE_OK(vct_scene_add_light(c.scene, &under, &err), err);
-    inject(&c);
-    double brightest = 0.0;
-    for (uint32_t v = 0; v < c.info.voxels; ++v)
-        brightest = fmax(brightest, c.radiance[4 * v]);
-    CHECK(brightest == 0.0, "a light behind the plane leaves it dark (%g)", brightest);
+    /* Two-sided: a light under the plane lights it as its mirror image
+     * above does. */
+    const double mirrored[3] = {light[0], light[1], 2.0 * PLANE_Z - 3.0};
+    check_point_light("point light, mirrored below", &c, mirrored, 100.0, 0, 0.0f);
     case_free(&c);
 
     c = make_case(1, &white);
@@ -192,6 +331,7 @@ int main(void) {
                  c.radiance[4 * v + 2] != 1.0f;
     CHECK(wrong == 0, "emissive voxels send out their emission (%d wrong)", wrong);
     case_free(&c);
+    thin_walls();
     vct_context_destroy(ctx);
     return check_exit("test_inject");
 }

@@ -17,7 +17,40 @@ typedef struct vct_image {
 
 void vct_image_free(vct_image *image);
 
-/* PFM: raw linear radiance. PNG: radiance * 2^exposure, clamped, sRGB encoded.
+/* How linear radiance becomes a displayed image (PNG files, the viewer):
+ * times 2^stops, through a tone curve, sRGB encoded. */
+typedef enum vct_tone_curve {
+    VCT_TONE_CLIP = 0,  /* values above 1 clip to white */
+    VCT_TONE_FILMIC = 1 /* an ACES fit: highlights roll off towards white */
+} vct_tone_curve;
+
+typedef struct vct_tone {
+    /* 1: the exposure is taken from the image, its log-average luminance
+     * (pixels that hold light) mapped to middle grey, 0.18, plus `exposure`;
+     * 0: `exposure` alone. */
+    int auto_exposure;
+    float exposure; /* stops */
+    vct_tone_curve curve;
+} vct_tone;
+
+/* Automatic exposure, filmic curve: what `vct render` writes by default. */
+vct_tone vct_tone_default(void);
+/* The stops that map the log-average luminance of `pixels` rgba pixels to
+ * 0.18 (0 when no pixel holds light). */
+double vct_image_auto_exposure(const float *rgba, size_t pixels);
+/* The stops `tone` applies to an image. */
+float vct_tone_exposure(const vct_tone *tone, const float *rgba, size_t pixels);
+/* The curve on one exposed linear value, into [0, 1] (before sRGB). */
+float vct_tone_curve_apply(vct_tone_curve curve, float x);
+const char *vct_tone_curve_name(vct_tone_curve curve);
+/* PNG tone mapped as `tone` says; *applied (may be NULL) gets the stops. */
+int vct_image_write_png_tone(const vct_image *image, const char *path, const vct_tone *tone,
+                             float *applied, vct_error *err);
+/* .png through `tone`, .pfm raw. */
+int vct_image_write_tone(const vct_image *image, const char *path, const vct_tone *tone,
+                         vct_error *err);
+
+/* PFM: raw linear radiance. PNG: radiance * 2^exposure, clipped, sRGB encoded.
  * Written to a temporary file and renamed, so a failure leaves nothing. */
 int vct_image_write_pfm(const vct_image *image, const char *path, vct_error *err);
 int vct_image_write_png(const vct_image *image, const char *path, float exposure, vct_error *err);
@@ -26,11 +59,15 @@ int vct_image_read_pfm(const char *path, vct_image *image, vct_error *err);
 
 typedef struct vct_image_metrics {
     double mse, rmse;
-    double relative_rmse; /* sqrt(sum (t - r)^2 / sum r^2) */
-    double relative_mse;  /* mean of (t - r)^2 / (r^2 + 0.01) */
-    double mae;           /* mean absolute error */
-    double psnr;          /* dB, peak = the reference's largest value */
-    size_t nonfinite;     /* channel values that are NaN or infinite, left out */
+    /* NRMSE: the RMSE over all pixels and channels divided by the
+     * reference's mean (the error every accuracy goal is stated in). */
+    double nrmse;
+    double reference_mean, test_mean; /* over all pixels and channels */
+    double relative_rmse;             /* sqrt(sum (t - r)^2 / sum r^2) */
+    double relative_mse;              /* mean of (t - r)^2 / (r^2 + 0.01) */
+    double mae;                       /* mean absolute error */
+    double psnr;                      /* dB, peak = the reference's largest value */
+    size_t nonfinite;                 /* channel values that are NaN or infinite, left out */
 } vct_image_metrics;
 
 /* Errors of `test` against `ref` over the rgb channels of every pixel. */

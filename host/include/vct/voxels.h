@@ -36,7 +36,7 @@ typedef struct vct_voxel_info {
     uint32_t triangles, fragments, voxels;
     /* Octree (after vct_octree_build): nodes per level, level 0 = root. */
     uint32_t nodes, level_nodes[11], level_start[11];
-    uint64_t voxel_bytes;     /* per-voxel keys and attributes */
+    uint64_t voxel_bytes;     /* per-voxel keys and attributes, and their fragment lists */
     uint64_t node_bytes;      /* child pointers and tile parents */
     uint64_t neighbour_bytes; /* 6 links per node */
     uint64_t fragment_bytes;  /* transient: fragments and their sort */

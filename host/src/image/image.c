@@ -1,4 +1,5 @@
-/* Image files: PFM (raw linear radiance) and PNG (exposed, sRGB encoded).
+/* Image files: PFM (raw linear radiance) and PNG (tone mapped, tone.c, and
+ * sRGB encoded).
  * Both are written to a temporary name and renamed, so a failure leaves
  * nothing half-written. */
 #include <math.h>
@@ -45,12 +46,13 @@ int vct_image_write_pfm(const vct_image *im, const char *path, vct_error *err) {
     return finish_file(f, tmp, path, err);
 }
 
-static unsigned char srgb8(float linear) {
-    if (!(linear > 0.0f))
+static unsigned char srgb8(float display) {
+    if (!(display > 0.0f))
         return 0;
-    if (linear >= 1.0f)
+    if (display >= 1.0f)
         return 255;
-    float s = linear <= 0.0031308f ? 12.92f * linear : 1.055f * powf(linear, 1.0f / 2.4f) - 0.055f;
+    float s =
+        display <= 0.0031308f ? 12.92f * display : 1.055f * powf(display, 1.0f / 2.4f) - 0.055f;
     return (unsigned char)lrintf(s * 255.0f);
 }
 
@@ -58,15 +60,19 @@ static void write_to_file(void *context, void *data, int size) {
     fwrite(data, 1, (size_t)size, (FILE *)context);
 }
 
-int vct_image_write_png(const vct_image *im, const char *path, float exposure, vct_error *err) {
+int vct_image_write_png_tone(const vct_image *im, const char *path, const vct_tone *tone,
+                             float *applied, vct_error *err) {
     size_t pixels = (size_t)im->width * im->height;
     unsigned char *rgb = malloc(3 * pixels);
     if (!rgb)
         return vct_fail(err, VCT_ERR_MEMORY, "image: out of host memory");
-    const float scale = exp2f(exposure);
+    const float stops = vct_tone_exposure(tone, im->rgba, pixels);
+    if (applied)
+        *applied = stops;
+    const float scale = exp2f(stops);
     for (size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < 3; ++c)
-            rgb[3 * i + c] = srgb8(im->rgba[4 * i + c] * scale);
+            rgb[3 * i + c] = srgb8(vct_tone_curve_apply(tone->curve, im->rgba[4 * i + c] * scale));
     char tmp[4096];
     snprintf(tmp, sizeof tmp, "%s.tmp%d", path, (int)getpid());
     FILE *f = fopen(tmp, "wb");
@@ -84,13 +90,24 @@ int vct_image_write_png(const vct_image *im, const char *path, float exposure, v
     return finish_file(f, tmp, path, err);
 }
 
-int vct_image_write(const vct_image *im, const char *path, float exposure, vct_error *err) {
+int vct_image_write_png(const vct_image *im, const char *path, float exposure, vct_error *err) {
+    const vct_tone tone = {0, exposure, VCT_TONE_CLIP};
+    return vct_image_write_png_tone(im, path, &tone, NULL, err);
+}
+
+int vct_image_write_tone(const vct_image *im, const char *path, const vct_tone *tone,
+                         vct_error *err) {
     const char *dot = strrchr(path, '.');
     if (dot && strcasecmp(dot, ".pfm") == 0)
         return vct_image_write_pfm(im, path, err);
     if (dot && strcasecmp(dot, ".png") == 0)
-        return vct_image_write_png(im, path, exposure, err);
+        return vct_image_write_png_tone(im, path, tone, NULL, err);
     return vct_fail(err, VCT_ERR_INPUT, "image: %s: the name must end in .png or .pfm", path);
+}
+
+int vct_image_write(const vct_image *im, const char *path, float exposure, vct_error *err) {
+    const vct_tone tone = {0, exposure, VCT_TONE_CLIP};
+    return vct_image_write_tone(im, path, &tone, err);
 }
 
 int vct_image_read_pfm(const char *path, vct_image *im, vct_error *err) {

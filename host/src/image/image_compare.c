@@ -16,7 +16,7 @@ int vct_image_compare(const vct_image *test, const vct_image *ref, vct_image_met
         return vct_fail(err, VCT_ERR_INPUT, "compare: image sizes differ (%dx%d vs %dx%d)",
                         test->width, test->height, ref->width, ref->height);
     const size_t pixels = (size_t)ref->width * ref->height;
-    double se = 0.0, rel = 0.0, ae = 0.0, peak = 0.0, ref_sq = 0.0;
+    double se = 0.0, rel = 0.0, ae = 0.0, peak = 0.0, ref_sq = 0.0, ref_sum = 0.0, test_sum = 0.0;
     size_t nonfinite = 0;
     for (size_t i = 0; i < pixels; ++i) {
         for (int c = 0; c < 3; ++c) {
@@ -30,6 +30,8 @@ int vct_image_compare(const vct_image *test, const vct_image *ref, vct_image_met
             ae += fabs(d);
             rel += d * d / (r * r + REL_MSE_EPS);
             ref_sq += r * r;
+            ref_sum += r;
+            test_sum += t;
             peak = fmax(peak, r);
         }
     }
@@ -37,6 +39,9 @@ int vct_image_compare(const vct_image *test, const vct_image *ref, vct_image_met
     m->mse = se / n;
     m->rmse = sqrt(m->mse);
     m->relative_rmse = ref_sq > 0.0 ? sqrt(se / ref_sq) : 0.0;
+    m->reference_mean = ref_sum / n;
+    m->test_mean = test_sum / n;
+    m->nrmse = ref_sum > 0.0 ? m->rmse / m->reference_mean : 0.0;
     m->relative_mse = rel / n;
     m->mae = ae / n;
     m->psnr = m->mse > 0.0 && peak > 0.0 ? 10.0 * log10(peak * peak / m->mse) : INFINITY;

@@ -167,7 +167,7 @@ static int reduce_fragments(voxelize_state *st, vct_error *err) {
         rc = vct_scan_u32(ctx, index, index, f, 0, &voxels, err);
     const uint32_t nv = (uint32_t)voxels;
     v->info.voxels = nv;
-    v->info.voxel_bytes = nv * (4ull + 3 * 16ull);
+    v->info.voxel_bytes = nv * (8ull + 3 * 16ull) + 4ull * f;
     if (rc == VCT_OK)
         rc = vct_voxel_buffer_fits(ctx, &v->info, STAGE, "voxel attributes", 16.0 * nv, err);
     cl_mem start = NULL;
@@ -198,7 +198,10 @@ static int reduce_fragments(voxelize_state *st, vct_error *err) {
                             VCT_ARG_OF(st->frag_ids), VCT_ARG_OF(start), VCT_ARG_OF(nv),
                             VCT_ARG_OF(f), VCT_ARG_OF(st->tri_normals), VCT_ARG_OF(st->materials),
                             VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission));
-    vct_buffer_release(ctx, start);
+    /* kept: light injection reads each voxel's fragments */
+    v->fragment_start = start;
+    v->fragment_tri = st->frag_ids;
+    st->frag_ids = NULL;
     return rc;
 }
 

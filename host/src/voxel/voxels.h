@@ -11,6 +11,9 @@ struct vct_voxels {
     vct_voxel_info info;
     /* Per voxel, sorted by Morton key. */
     cl_mem keys, albedo, normal, emission;
+    /* Per voxel, its first fragment; per fragment (sorted by voxel), its
+     * triangle: light injection lights each surface in a voxel on its own. */
+    cl_mem fragment_start, fragment_tri;
     cl_mem radiance; /* outgoing radiance, after vct_voxels_inject_light */
     /* The direct part of radiance, copied by the first bounce so that each
      * bounce adds to it, not to the bounces before. Valid while bounces > 0;
