@@ -3,7 +3,7 @@
 # Run as root; does nothing for packages already installed.
 set -eu
 PACKAGES="build-essential cmake pkg-config ocl-icd-opencl-dev opencl-c-headers pocl-opencl-icd
-clinfo libcglm-dev libassimp-dev libstb-dev libembree-dev python3 gnuplot-nox
+clinfo libcglm-dev libassimp-dev libcjson-dev libstb-dev libembree-dev python3 gnuplot-nox
 python3-openvdb python3-numpy python3-pyopencl libglfw3-dev libxrandr-dev libepoxy-dev xvfb xauth libgl1-mesa-dri"
 missing=""
 for p in $PACKAGES; do

@@ -82,9 +82,13 @@ int cmd_render(const cli_options *opt) {
     if (!s)
         return cli_fail(&err);
     cli_print_scene(s, stderr);
-    if (s->light_count == 0)
-        fprintf(stderr, "vct: the scene has no lights: only emissive surfaces will show (add "
-                        "--point-light or --dir-light)\n");
+    int emissive = 0;
+    for (uint32_t m = 0; m < s->material_count; ++m)
+        for (int c = 0; c < 3; ++c)
+            emissive |= s->materials[m].emission[c] > 0.0f;
+    if (s->light_count == 0 && !emissive)
+        fprintf(stderr, "vct: the scene has no lights and nothing emits: only ambient light will "
+                        "show (add --point-light, --dir-light or --ambient)\n");
     vct_context *ctx = cli_open_context(opt, &err);
     if (!ctx) {
         vct_scene_free(s);

@@ -8,34 +8,22 @@
 #include "scene/bsdf.h"
 #include "scene/camera.h"
 #include "light/direct_light.h"
+#include "light/emitters.h"
 #include "accel/grid_traverse.h"
-#include "render/rng.h"
+#include "scene/rng.h"
 #include "vct_types.h"
 
 #define RR_DEPTH 3
 
+/* The emitters, picked by area (light/emitters.h's view, one sample a hit). */
 typedef struct emitters {
-    __global const uint *tris; /* emissive triangles */
-    __global const float *cdf; /* cumulative area, normalised to 1 */
-    uint count;
+    emitter_view view;
     float inv_area; /* 1 / total emissive area */
 } emitters;
 
 inline float power_heuristic(float a, float b) {
     const float a2 = a * a, b2 = b * b;
     return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
-}
-
-inline uint pick_emitter(const emitters *e, float u) {
-    uint lo = 0, hi = e->count - 1;
-    while (lo < hi) {
-        const uint mid = (lo + hi) / 2;
-        if (e->cdf[mid] <= u)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
 }
 
 /* Radiance from the punctual lights, for any BSDF (delta lobes excluded).
@@ -71,16 +59,16 @@ inline float3 nee_emitters(const grid_view *g, const emitters *e,
                            __global const vct_material_desc *materials,
                            __global const uint *tri_material, const vct_material_desc *m, float3 p,
                            float3 n, float3 wo, uint *rng) {
-    if (e->count == 0)
+    if (e->view.count == 0)
         return (float3)(0.0f);
-    const uint tri = e->tris[pick_emitter(e, rng_next(rng))];
+    const uint tri = e->view.tris[emitter_pick(&e->view, rng_next(rng))];
     float u = rng_next(rng), v = rng_next(rng);
     if (u + v > 1.0f) {
         u = 1.0f - u;
         v = 1.0f - v;
     }
-    const float3 a = g->tri_vertices[3 * tri].xyz, b = g->tri_vertices[3 * tri + 1].xyz,
-                 c = g->tri_vertices[3 * tri + 2].xyz;
+    float3 a, b, c;
+    emitter_vertices(g, tri, &a, &b, &c); /* the same point for either winding */
     const float3 q = a + u * (b - a) + v * (c - a);
     const float3 nl = normalize(cross(b - a, c - a));
     const float3 to = q - p;
@@ -117,7 +105,7 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
     if (x >= cam.size.x || y >= cam.size.y)
         return;
     const grid_view g = GRID_VIEW();
-    emitters em = {emitter_tris, emitter_cdf, emitter_count, emitter_inv_area};
+    const emitters em = {{emitter_tris, emitter_cdf, 0, emitter_count, 1u}, emitter_inv_area};
     const uint pixel = y * cam.size.x + x;
     float3 sum = (float3)(0.0f);
     uint dropped = 0;

@@ -1,14 +1,17 @@
 /* Ray casting: primary visibility through the triangle grid, direct light
- * from every punctual light with hard shadows, emission, Lambert shading. */
+ * from every punctual light with hard shadows and from emissive triangles
+ * (light/emitters.h, emitter_samples shadow rays per pixel), emission,
+ * Lambert shading. */
 #include "scene/camera.h"
 #include "light/direct_light.h"
+#include "light/emitters.h"
 #include "accel/grid_traverse.h"
 #include "vct_types.h"
 
 __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
                             __global const vct_material_desc *materials,
                             __global const uint *tri_material,
-                            __global const vct_light_desc *lights, uint light_count,
+                            __global const vct_light_desc *lights, uint light_count, EMITTER_ARGS,
                             __global float4 *image) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
@@ -22,7 +25,11 @@ __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
         int front;
         surface_hit(&g, &h, dir, &p, &ng, &n, &front);
         const vct_material_desc m = materials[tri_material[h.tri]];
-        radiance = m.emission.xyz + direct_lambert(&g, lights, light_count, p, n, m.albedo.xyz);
+        direct_terms d = direct_gather(&g, lights, light_count, p, n, 1, (float3)(0.0f), -1.0f, 0);
+        const emitter_view e = EMITTER_VIEW();
+        direct_emitters(&g, &e, materials, tri_material, p, n, (float3)(0.0f), -1.0f,
+                        y * cam.size.x + x, &d);
+        radiance = m.emission.xyz + m.albedo.xyz * VCT_INV_PI * d.irradiance;
     }
     image[y * cam.size.x + x] = (float4)(radiance, 1.0f);
 }

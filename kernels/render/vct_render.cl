@@ -14,7 +14,8 @@
  *                      the camera ray enters, one mirror cone
  * Effects are chosen with -D: VCT_DIRECT, VCT_SHADOWS, VCT_SOFT_SHADOWS,
  * VCT_EMISSION, VCT_REFRACTION, VCT_SPECULAR, VCT_INDIRECT, VCT_AO (and the
- * pool's VCT_BRICK_IMAGE, VCT_ANISOTROPIC).
+ * pool's VCT_BRICK_IMAGE, VCT_ANISOTROPIC); VCT_EMITTERS adds the emissive
+ * triangles to the direct light, sampled with shadow rays (light/emitters.h).
  *
  * G-buffer, 4 float4 per pixel: position and material id (as bits); normal
  * facing the viewer and 1 where a surface was found; direction towards the
@@ -29,6 +30,7 @@
 #include "scene/camera.h"
 #include "voxel/cone_trace.h"
 #include "light/direct_light.h"
+#include "light/emitters.h"
 #include "accel/grid_traverse.h"
 #include "vct_types.h"
 
@@ -76,7 +78,7 @@ inline float3 direct_shade(const vct_material_desc *m, direct_terms d, float e) 
 __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
                           __global const vct_material_desc *materials,
                           __global const uint *tri_material, __global const vct_light_desc *lights,
-                          uint light_count, float4 ambient, __global float4 *gbuf,
+                          uint light_count, EMITTER_ARGS, float4 ambient, __global float4 *gbuf,
                           __global float4 *image, __global float4 *aov,
                           __global float4 *reflection) {
     const uint x = get_global_id(0), y = get_global_id(1);
@@ -140,8 +142,11 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
 #ifdef VCT_DIRECT
         float3 r;
         const float e = direct_lobe(&m, wo, n, &r);
-        const direct_terms d =
-            direct_gather(&g, lights, light_count, p, n, SHADOWS, r, e, SOFT_SHADOWS);
+        direct_terms d = direct_gather(&g, lights, light_count, p, n, SHADOWS, r, e, SOFT_SHADOWS);
+#ifdef VCT_EMITTERS
+        const emitter_view ev = EMITTER_VIEW();
+        direct_emitters(&g, &ev, materials, tri_material, p, n, r, e, pixel, &d);
+#endif
         radiance += throughput * direct_shade(&m, d, e);
 #endif
         gpos = (float4)(p, as_float(mat));

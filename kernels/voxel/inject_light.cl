@@ -19,6 +19,7 @@
  * radius is seen through INJECT_EXTENT_SAMPLES fixed points of its extent
  * (a spiral), so that its penumbrae reach the voxels too. */
 #include "light/direct_light.h"
+#include "light/emitters.h"
 #include "light/light_bins.h"
 #include "voxel/octree.h"
 #include "vct_types.h"
@@ -103,24 +104,50 @@ inline float3 fragment_irradiance(const grid_view *g, const light_bins_view *bin
     return irradiance;
 }
 
+/* Irradiance at centre p onto one fragment (triangle normal n, nearest
+ * point q) from the emitters: e->samples samples of stream `seed`, each seen
+ * from q, lifted off the triangle on the sample's side and towards it. */
+inline float3 fragment_emitters(const grid_view *g, const emitter_view *e,
+                                __global const vct_material_desc *materials,
+                                __global const uint *tri_material, float3 p, float3 q, float3 n,
+                                uint seed) {
+    float3 irradiance = (float3)(0.0f);
+    const float lift = surface_epsilon(g, q);
+    for (uint s = 0; s < e->samples; ++s) {
+        float3 target;
+        uint tri;
+        const float3 radiant =
+            emitter_sample(e, g, materials, tri_material, p, seed, s, &target, &tri);
+        const float cos_theta = fabs(dot(n, normalize(target - p)));
+        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
+            continue;
+        const float3 wq = normalize(target - q);
+        const float3 up = normalize((dot(n, wq) < 0.0f ? -n : n) + wq);
+        if (emitter_visible(g, q + up * lift, target))
+            irradiance += radiant * cos_theta;
+    }
+    return irradiance / (float)e->samples;
+}
+
 __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                             __global const uint *keys, uint voxels,
                             __global const uint *voxel_start, __global const uint *fragment_tri,
                             uint fragments, __global const vct_material_desc *materials,
                             __global const uint *tri_material, __global const float4 *albedo,
                             __global const float4 *emission, __global const vct_light_desc *lights,
-                            uint light_count, __global float4 *radiance) {
+                            uint light_count, EMITTER_ARGS, __global float4 *radiance) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
     const grid_view g = GRID_VIEW();
     const light_bins_view bins = LIGHT_BINS_VIEW();
+    const emitter_view ev = EMITTER_VIEW();
     const float size = vol.origin.w / (float)vol.res.x;
     const float3 p = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * size;
     const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
     float3 reflected = (float3)(0.0f);
     uint surfaces = 0;
-    for (uint f = begin; f < end && light_count > 0; ++f) {
+    for (uint f = begin; f < end && (light_count > 0 || emitter_count > 0); ++f) {
         const uint t = fragment_tri[f];
         const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
                      c = tri_vertices[3u * t + 2u].xyz;
@@ -130,11 +157,16 @@ __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
             continue; /* zero area: never hit, never lit */
         ++surfaces;
         const float3 q = triangle_nearest(p, a, b, c);
-        reflected += materials[tri_material[t]].albedo.xyz *
-                     fragment_irradiance(&g, &bins, lights, light_count, p, q, cr / len);
+        float3 e = fragment_irradiance(&g, &bins, lights, light_count, p, q, cr / len);
+        if (emitter_count > 0u)
+            e += fragment_emitters(&g, &ev, materials, tri_material, p, q, cr / len, f);
+        reflected += materials[tri_material[t]].albedo.xyz * e;
     }
     if (surfaces > 0u)
         reflected *= VCT_INV_PI / (float)surfaces;
-    /* w: the opacity, so that re-filtering reads one array */
-    radiance[v] = (float4)(reflected + emission[v].xyz, albedo[v].w);
+    /* Emitters sampled as lights light the voxels (and the camera's hits)
+     * directly, so the voxels leave their emission out: cones would count
+     * it a second time. w: the opacity, so that re-filtering reads one array. */
+    radiance[v] =
+        (float4)(reflected + (emitter_count > 0u ? (float3)(0.0f) : emission[v].xyz), albedo[v].w);
 }

@@ -81,7 +81,10 @@ case_compare pathtracer "--size 64 64 --keys 3" "--size 64 64 --method pt --spp 
 case_compare indirect-off "--size 64 64 --keys F1" "--size 64 64 --effect indirect=off"
 case_compare shadows-off "--size 64 64 --keys 1,F4" "--size 64 64 --method raycast --effect shadows=off"
 case_compare resized "--size 64 64 --keys size=72x40" "--size 72 40"
-case_compare exposure "--size 48 48 --keys +,+" "--size 48 48 --exposure 1"
+case_compare exposure "--size 48 48 --exposure 0 --keys +,+" "--size 48 48 --exposure 1"
+# the default tone: automatic exposure and the filmic curve, in both
+case_compare auto-tone "--size 48 48 --method raycast" "--size 48 48 --method raycast"
+case_compare clip-tone "--size 48 48 --tone clip" "--size 48 48 --tone clip"
 case_compare soft-shadows "--size 48 48 --light-radius 60" "--size 48 48 --light-radius 60"
 case_compare soft-off "--size 48 48 --light-radius 60 --keys F5" "--size 48 48 --light-radius 60 --effect soft_shadows=off"
 

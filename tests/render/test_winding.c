@@ -1,5 +1,6 @@
-/* Lighting never depends on which way a triangle is wound: three scenes (the
- * Cornell box, an open room under a sun and sky, thin fins over a floor),
+/* Lighting never depends on which way a triangle is wound: four scenes (the
+ * Cornell box, an open room under a sun and sky, thin fins over a floor, a
+ * closed room lit by an emissive quad alone),
  * each rendered by every method as it stands, with every triangle's winding
  * reversed, and with every other triangle's reversed (mixed, as real exports
  * are). Each copy must lie within 1% NRMSE of the original, with the same
@@ -164,11 +165,39 @@ static vct_scene *thin_fins(void) {
     return s;
 }
 
+/* A closed room lit by nothing but an emissive quad under its ceiling,
+ * with a block on the floor: area light sampled and injected. */
+static vct_scene *lamp_room(void) {
+    const float q[] = {0, 0,    0, 8, 0,    0, 8, 0,    8, 0, 0,    8, /* floor */
+                       0, 5,    0, 0, 5,    8, 8, 5,    8, 8, 5,    0, /* ceiling */
+                       0, 0,    0, 0, 5,    0, 8, 5,    0, 8, 0,    0, /* back */
+                       0, 0,    8, 8, 0,    8, 8, 5,    8, 0, 5,    8, /* front */
+                       0, 0,    0, 0, 0,    8, 0, 5,    8, 0, 5,    0, /* left */
+                       8, 0,    0, 8, 5,    0, 8, 5,    8, 8, 0,    8, /* right */
+                       3, 4.9f, 3, 5, 4.9f, 3, 5, 4.9f, 5, 3, 4.9f, 5, /* lamp */
+                       2, 1.5f, 2, 4, 1.5f, 2, 4, 1.5f, 4, 2, 1.5f, 4, /* block top */
+                       2, 0,    4, 4, 0,    4, 4, 1.5f, 4, 2, 1.5f, 4, /* block front */
+                       4, 0,    2, 4, 1.5f, 2, 4, 1.5f, 4, 4, 0,    4 /* block side */};
+    const uint32_t qm[] = {0, 0, 0, 0, 1, 2, 3, 0, 0, 0};
+    vct_material m[4] = {vct_material_default(), vct_material_default(), vct_material_default(),
+                         vct_material_default()};
+    m[1].albedo[1] = m[1].albedo[2] = 0.2f;
+    m[2].albedo[0] = m[2].albedo[1] = 0.25f;
+    for (int c = 0; c < 3; ++c) {
+        m[3].albedo[c] = 0.0f;
+        m[3].emission[c] = 12.0f;
+    }
+    vct_scene *s = quads_scene(q, 10, qm, m, 4);
+    set_camera(s, 4, 2.5f, 7.9f, 4, 2, 0);
+    return s;
+}
+
 int main(void) {
     ctx = check_context();
     check_scene("Cornell box", check_cornell_box());
     check_scene("open room", open_room());
     check_scene("thin fins", thin_fins());
+    check_scene("lamp room", lamp_room());
     vct_context_destroy(ctx);
     return check_exit("test_winding");
 }

@@ -111,9 +111,73 @@ static void check_hierarchy(void) {
     vct_scene_free(s);
 }
 
+/* glTF materials as authored: emissiveFactor times
+ * KHR_materials_emissive_strength (which assimp 5.2 leaves out), and
+ * transmission with its ior, metallic and roughness factors. */
+static const char *gltf_materials =
+    "{\"asset\":{\"version\":\"2.0\"},"
+    "\"extensionsUsed\":[\"KHR_materials_emissive_strength\",\"KHR_materials_transmission\","
+    "\"KHR_materials_ior\"],"
+    "\"materials\":["
+    "{\"name\":\"lamp\",\"emissiveFactor\":[1,0.5,0.25],"
+    "\"extensions\":{\"KHR_materials_emissive_strength\":{\"emissiveStrength\":8}}},"
+    "{\"name\":\"glass\",\"pbrMetallicRoughness\":{\"metallicFactor\":0,\"roughnessFactor\":0.1},"
+    "\"extensions\":{\"KHR_materials_transmission\":{\"transmissionFactor\":1},"
+    "\"KHR_materials_ior\":{\"ior\":1.33}}},"
+    "{\"name\":\"gold\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[1,0.8,0.3,1],"
+    "\"metallicFactor\":1,\"roughnessFactor\":0.35}}],"
+    "\"scene\":0,\"scenes\":[{\"nodes\":[0,1,2]}],"
+    "\"nodes\":[{\"mesh\":0},{\"mesh\":1},{\"mesh\":2}],"
+    "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":0}]},"
+    "{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":1}]},"
+    "{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":2}]}],"
+    "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
+    "\"min\":[0,0,0],\"max\":[1,1,0]}],"
+    "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
+    "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,"
+    "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}]}";
+
+static const vct_material *named(const vct_scene *s, const char *name) {
+    for (uint32_t m = 0; m < s->material_count; ++m)
+        if (strcmp(s->materials[m].name, name) == 0)
+            return &s->materials[m];
+    return NULL;
+}
+
+static void check_materials(void) {
+    char dir[] = "/tmp/vct-scene-XXXXXX", path[64];
+    if (!mkdtemp(dir))
+        exit(1);
+    snprintf(path, sizeof path, "%s/materials.gltf", dir);
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(gltf_materials, f) < 0 || fclose(f) != 0)
+        exit(1);
+    vct_error err = {0};
+    vct_scene *s = vct_scene_load(path, &err);
+    unlink(path);
+    rmdir(dir);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const vct_material *lamp = named(s, "lamp"), *glass = named(s, "glass"),
+                       *gold = named(s, "gold");
+    CHECK(lamp && near(lamp->emission[0], 8.0f, 1e-6f) && near(lamp->emission[1], 4.0f, 1e-6f) &&
+              near(lamp->emission[2], 2.0f, 1e-6f),
+          "emissiveFactor times emissiveStrength: (%g %g %g)", lamp ? lamp->emission[0] : -1,
+          lamp ? lamp->emission[1] : -1, lamp ? lamp->emission[2] : -1);
+    CHECK(glass && near(glass->transmission, 1.0f, 1e-6f) && near(glass->ior, 1.33f, 1e-6f) &&
+              near(glass->roughness, 0.1f, 1e-6f),
+          "glass: transmission %g, ior %g, roughness %g", glass ? glass->transmission : -1,
+          glass ? glass->ior : -1, glass ? glass->roughness : -1);
+    CHECK(gold && near(gold->metallic, 1.0f, 1e-6f) && near(gold->roughness, 0.35f, 1e-6f) &&
+              near(gold->albedo[1], 0.8f, 1e-6f),
+          "gold: metallic %g, roughness %g, base colour g %g", gold ? gold->metallic : -1,
+          gold ? gold->roughness : -1, gold ? gold->albedo[1] : -1);
+    vct_scene_free(s);
+}
+
 int main(void) {
     const char *dir = getenv("VCT_SOURCE_DIR");
     check_cornell(dir ? dir : ".");
     check_hierarchy();
+    check_materials();
     return check_exit("test_scene_load");
 }

@@ -8,68 +8,11 @@
 
 #include "runtime/runtime.h"
 #include "accel/grid.h"
+#include "light/emitters.h"
 #include "render/frame.h"
 #include "scene/scene_device.h"
 
 #define STAGE "path trace"
-
-/* Emissive triangles with their area CDF, for next-event estimation. */
-typedef struct emitter_buffers {
-    cl_mem tris, cdf;
-    cl_uint count;
-    float inv_area;
-} emitter_buffers;
-
-static int emitters_make(vct_context *ctx, const vct_scene *s, emitter_buffers *e, vct_error *err) {
-    memset(e, 0, sizeof *e);
-    uint32_t *tris = malloc(4ull * s->triangle_count + 4);
-    double *area = malloc(8ull * s->triangle_count + 8);
-    float *cdf = malloc(4ull * s->triangle_count + 4);
-    if (!tris || !area || !cdf) {
-        free(tris);
-        free(area);
-        free(cdf);
-        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
-    }
-    double total = 0.0;
-    for (uint32_t t = 0; t < s->triangle_count; ++t) {
-        const float *le = s->materials[s->triangle_material[t]].emission;
-        if (!(le[0] > 0.0f || le[1] > 0.0f || le[2] > 0.0f))
-            continue;
-        const float *a = &s->positions[3 * s->triangles[3 * t]];
-        const float *b = &s->positions[3 * s->triangles[3 * t + 1]];
-        const float *c = &s->positions[3 * s->triangles[3 * t + 2]];
-        double e1[3], e2[3];
-        for (int k = 0; k < 3; ++k) {
-            e1[k] = (double)b[k] - a[k];
-            e2[k] = (double)c[k] - a[k];
-        }
-        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
-               cz = e1[0] * e2[1] - e1[1] * e2[0];
-        double ar = 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
-        if (!(ar > 0.0))
-            continue; /* a degenerate emitter cannot be sampled or hit */
-        tris[e->count] = t;
-        area[e->count] = ar;
-        total += ar;
-        e->count++;
-    }
-    double run = 0.0;
-    for (uint32_t i = 0; i < e->count; ++i) {
-        run += area[i];
-        cdf[i] = i + 1 == e->count ? 1.0f : (float)(run / total);
-    }
-    e->inv_area = total > 0.0 ? (float)(1.0 / total) : 0.0f;
-    e->tris = vct_buffer_create(ctx, STAGE, "emissive triangles", 4ull * e->count, CL_MEM_READ_ONLY,
-                                e->count ? tris : NULL, err);
-    e->cdf = e->tris ? vct_buffer_create(ctx, STAGE, "emitter CDF", 4ull * e->count,
-                                         CL_MEM_READ_ONLY, e->count ? cdf : NULL, err)
-                     : NULL;
-    free(tris);
-    free(area);
-    free(cdf);
-    return e->cdf ? VCT_OK : (int)err->status;
-}
 
 static void progress_line(uint32_t done, uint32_t total, double elapsed_s, double limit_s) {
     const int width = 30;
@@ -140,11 +83,11 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
     cl_program p;
     rc = vct_program_get(ctx, "render/pathtrace.cl", "", &p, err);
     vct_scene_buffers sb = {0};
-    emitter_buffers eb = {0};
+    vct_emitters eb = {0};
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
     if (rc == VCT_OK)
-        rc = emitters_make(ctx, s, &eb, err);
+        rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_AREA, STAGE, &eb, err);
     const size_t pixels = (size_t)opt->width * opt->height;
     if (rc == VCT_OK)
         rc = accumulation_get(ctx, opt, err);
@@ -212,8 +155,7 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
     }
     if (k)
         clReleaseKernel(k);
-    vct_buffer_release(ctx, eb.tris);
-    vct_buffer_release(ctx, eb.cdf);
+    vct_emitters_release(ctx, &eb);
     vct_scene_buffers_release(ctx, &sb);
     vct_stage_end(ctx);
     return rc;

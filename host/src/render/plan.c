@@ -82,14 +82,22 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
     const int emissive = used ? first_used(s, used, is_emissive) : -1;
     const int ambient = positive3(s->ambient);
     free(used);
+    uint32_t emitters = 0; /* emissive triangles: area lights */
+    for (uint32_t t = 0; emissive >= 0 && t < s->triangle_count; ++t)
+        emitters += is_emissive(&s->materials[s->triangle_material[t]]);
+    char sources[96];
+    snprintf(sources, sizeof sources, "%u light%s", lights, lights == 1 ? "" : "s");
+    if (emitters)
+        snprintf(sources, sizeof sources, "%u light%s and %u emissive triangle%s", lights,
+                 lights == 1 ? "" : "s", emitters, emitters == 1 ? "" : "s");
 
-    if (lights)
-        say(p, VCT_EFFECT_DIRECT, 1, "%u light%s", lights, lights == 1 ? "" : "s");
+    if (lights || emitters)
+        say(p, VCT_EFFECT_DIRECT, 1, "%s%s", sources,
+            emitters ? " (the triangles sampled as area lights)" : "");
     else
-        say(p, VCT_EFFECT_DIRECT, 0, "no lights");
-    if (lights)
-        say(p, VCT_EFFECT_SHADOWS, 1, "shadow rays towards %u light%s", lights,
-            lights == 1 ? "" : "s");
+        say(p, VCT_EFFECT_DIRECT, 0, "no lights and no emissive triangles");
+    if (lights || emitters)
+        say(p, VCT_EFFECT_SHADOWS, 1, "shadow rays towards %s", sources);
     else
         say(p, VCT_EFFECT_SHADOWS, 0, "no lights to cast them");
     const int lit = lights || emissive >= 0 || ambient;

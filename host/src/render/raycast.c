@@ -5,6 +5,7 @@
 
 #include "runtime/runtime.h"
 #include "accel/grid.h"
+#include "light/emitters.h"
 #include "render/frame.h"
 #include "scene/scene_device.h"
 
@@ -64,16 +65,23 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     cl_program p;
     rc = vct_program_get(ctx, "render/raycast.cl", "", &p, err);
     vct_scene_buffers sb = {0};
+    vct_emitters em = {0};
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, stage, &sb, err);
+    if (rc == VCT_OK)
+        rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_POWER, stage, &em, err);
     cl_mem img = rc == VCT_OK ? vct_frame_get(ctx, stage, opt->width, opt->height, err) : NULL;
     cl_kernel k = img ? vct_kernel_create(ctx, p, "render_direct", err) : NULL;
     if (rc == VCT_OK)
         rc = k ? vct_grid_set_args(k, g, stage, err) : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, stage, k, 5, 6, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
+        rc = vct_set_args(err, stage, k, 5, 5, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
                           VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
-                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(img));
+                          VCT_ARG_OF(sb.light_count));
+    if (rc == VCT_OK)
+        rc = vct_emitters_set_args(k, 10, &em, VCT_EMITTER_SAMPLES, stage, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, 15, 1, VCT_ARG_OF(img));
     const size_t global[2] = {(size_t)opt->width, (size_t)opt->height};
     const size_t local[2] = {8, 8};
     if (rc == VCT_OK)
@@ -83,6 +91,7 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     if (k)
         clReleaseKernel(k);
     vct_scene_buffers_release(ctx, &sb);
+    vct_emitters_release(ctx, &em);
     vct_stage_end(ctx);
     if (rc != VCT_OK)
         vct_image_free(image);

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "accel/grid.h"
+#include "light/emitters.h"
 #include "render/frame.h"
 #include "voxel/cones.h"
 #include "scene/scene_device.h"
@@ -138,7 +139,7 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_grid *g, con
 }
 
 /* -D options: the planned effects, then the cones' (pool kind, levels). */
-static void program_options(const vct_plan *plan, const vct_voxels *v,
+static void program_options(const vct_plan *plan, int emitters, const vct_voxels *v,
                             const vct_cone_settings *cones, char *out, size_t size) {
     static const char *defines[VCT_EFFECTS] = {
         "-DVCT_DIRECT",     "-DVCT_SHADOWS",  "-DVCT_INDIRECT", "-DVCT_SPECULAR",
@@ -148,6 +149,8 @@ static void program_options(const vct_plan *plan, const vct_voxels *v,
     for (int e = 0; e < VCT_EFFECTS; ++e)
         if (plan->on[e])
             len += (size_t)snprintf(out + len, size - len, "%s%s", len ? " " : "", defines[e]);
+    if (emitters && plan->on[VCT_EFFECT_DIRECT] && len < size)
+        len += (size_t)snprintf(out + len, size - len, " -DVCT_EMITTERS");
     if (v && len < size)
         vct_cone_options(v, cones, out + len, size - len);
 }
@@ -159,6 +162,7 @@ typedef struct frame {
     cl_mem gbuf, image, aov;
     cl_mem reflection;       /* glass reflections, when refraction and specular are planned */
     vct_scene_buffers scene; /* materials and lights, uploaded once per frame */
+    vct_emitters emitters;   /* emissive triangles, sampled as lights */
     vct_cone_desc desc;
     cl_uint size[2];
 } frame;
@@ -177,9 +181,13 @@ static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_ca
     int rc = k ? vct_grid_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)
-        rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 10, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 5, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
                           VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
-                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
+                          VCT_ARG_OF(sb.light_count));
+    if (rc == VCT_OK)
+        rc = vct_emitters_set_args(k, 10, &f->emitters, VCT_EMITTER_SAMPLES, PRIMARY_STAGE, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 15, 5, VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
                           VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov), VCT_ARG_OF(f->reflection));
     if (rc == VCT_OK)
         rc = launch_frame_kernel(f, k, 1, err);
@@ -301,7 +309,8 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
     if (f.v)
         vct_cone_desc_make(f.v, &opt->cones, s->ambient, &f.desc);
     char options[256];
-    program_options(plan, f.v, &opt->cones, options, sizeof options);
+    program_options(plan, vct_scene_emissive_triangles(s) > 0, f.v, &opt->cones, options,
+                    sizeof options);
     const size_t pixels = (size_t)opt->width * opt->height;
 
     vct_stage_begin(ctx, PRIMARY_STAGE);
@@ -325,6 +334,8 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
     }
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, PRIMARY_STAGE, &f.scene, err);
+    if (rc == VCT_OK)
+        rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_POWER, PRIMARY_STAGE, &f.emitters, err);
     if (rc == VCT_OK)
         rc = primary(&f, s, g, &cam, err);
     vct_stage_end(ctx);
@@ -358,6 +369,7 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
     if (rc == VCT_OK && aovs)
         rc = read_aovs(&f, aovs, err);
     vct_scene_buffers_release(ctx, &f.scene);
+    vct_emitters_release(ctx, &f.emitters);
     vct_buffer_release(ctx, f.aov);
     vct_buffer_release(ctx, f.gbuf);
     vct_buffer_release(ctx, f.reflection);

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "runtime/runtime.h"
+#include "scene/gltf_extensions.h"
 
 typedef struct builder {
     vct_scene *s;
@@ -326,6 +327,8 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
     struct aiMatrix4x4 identity;
     aiIdentityMatrix4(&identity);
     int rc = read_materials(sc, path, s, err);
+    if (rc == VCT_OK)
+        rc = vct_gltf_extensions_apply(path, s, err);
     if (rc == VCT_OK)
         rc = walk(&b, sc, sc->mRootNode, &identity);
     if (rc == VCT_OK)

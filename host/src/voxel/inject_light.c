@@ -1,6 +1,7 @@
 /* Direct light into the voxels (kernels/voxel/inject_light.cl). */
 #include "runtime/runtime.h"
 #include "accel/grid.h"
+#include "light/emitters.h"
 #include "light/light_bins_host.h"
 #include "scene/scene_device.h"
 #include "vct_types.h"
@@ -28,6 +29,9 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     vct_scene_buffers sb = {0};
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
+    vct_emitters em = {0};
+    if (rc == VCT_OK)
+        rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_POWER, STAGE, &em, err);
     vct_light_bins bins = {0};
     if (rc == VCT_OK && n)
         rc = vct_light_bins_build(ctx, s, g, bins_options, STAGE, &bins, err);
@@ -41,12 +45,16 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     if (k && rc == VCT_OK)
         rc = vct_light_bins_set_args(k, 5, &bins, STAGE, err);
     if (k && rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 9, 13, VCT_ARG_OF(vol), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
+        rc = vct_set_args(err, STAGE, k, 9, 12, VCT_ARG_OF(vol), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
                           VCT_ARG_OF(v->fragment_start), VCT_ARG_OF(v->fragment_tri),
                           VCT_ARG_OF(v->info.fragments), VCT_ARG_OF(sb.materials),
                           VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(v->albedo),
                           VCT_ARG_OF(v->emission), VCT_ARG_OF(sb.lights),
-                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(v->radiance));
+                          VCT_ARG_OF(sb.light_count));
+    if (k && rc == VCT_OK)
+        rc = vct_emitters_set_args(k, 21, &em, VCT_EMITTER_INJECT_SAMPLES, STAGE, err);
+    if (k && rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 26, 1, VCT_ARG_OF(v->radiance));
     if (k && rc == VCT_OK)
         rc = vct_launch(ctx, k, n, 64, err);
     if (rc == VCT_OK)
@@ -54,6 +62,7 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     if (k)
         clReleaseKernel(k);
     vct_light_bins_release(ctx, &bins);
+    vct_emitters_release(ctx, &em);
     vct_scene_buffers_release(ctx, &sb);
     vct_stage_end(ctx);
     v->bounces = 0; /* the radiance is direct light again */

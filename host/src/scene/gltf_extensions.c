@@ -1,0 +1,94 @@
+/* glTF material extensions that assimp 5.2 leaves out, read from the file's
+ * own JSON with cJSON: KHR_materials_emissive_strength (the factor on
+ * emissiveFactor, which the core format limits to 1). Materials are matched
+ * by index, as assimp imports them in order, and by name where the names
+ * disagree. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include <cjson/cJSON.h>
+
+#include "scene/gltf_extensions.h"
+
+/* The file's JSON: a whole .gltf, or a .glb's first chunk. NULL if neither. */
+static char *read_json(const char *path) {
+    const char *dot = strrchr(path, '.');
+    const int glb = dot && strcasecmp(dot, ".glb") == 0;
+    if (!dot || (!glb && strcasecmp(dot, ".gltf") != 0))
+        return NULL;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    char *text = NULL;
+    long size = 0;
+    if (glb) {
+        unsigned char head[20];
+        if (fread(head, 1, 20, f) == 20 && memcmp(head, "glTF", 4) == 0 &&
+            memcmp(head + 16, "JSON", 4) == 0) {
+            size =
+                (long)(head[12] | head[13] << 8 | head[14] << 16 | (unsigned long)head[15] << 24);
+        }
+    } else if (fseek(f, 0, SEEK_END) == 0) {
+        size = ftell(f);
+        rewind(f);
+    }
+    if (size > 0 && size < (1L << 30) && (text = malloc((size_t)size + 1)) != NULL) {
+        if (fread(text, 1, (size_t)size, f) == (size_t)size)
+            text[size] = '\0';
+        else {
+            free(text);
+            text = NULL;
+        }
+    }
+    fclose(f);
+    return text;
+}
+
+/* The material of `s` that glTF material i became. */
+static vct_material *material_for(vct_scene *s, uint32_t i, const char *name) {
+    if (i < s->material_count && (!name || strcmp(s->materials[i].name, name) == 0))
+        return &s->materials[i];
+    for (uint32_t m = 0; name && m < s->material_count; ++m)
+        if (strcmp(s->materials[m].name, name) == 0)
+            return &s->materials[m];
+    return NULL;
+}
+
+int vct_gltf_extensions_apply(const char *path, vct_scene *s, vct_error *err) {
+    char *text = read_json(path);
+    if (!text)
+        return VCT_OK; /* not glTF: nothing to add */
+    cJSON *root = cJSON_Parse(text);
+    free(text);
+    if (!root)
+        return VCT_OK; /* assimp read it; what it could not, we leave */
+    const cJSON *materials = cJSON_GetObjectItemCaseSensitive(root, "materials");
+    int rc = VCT_OK;
+    uint32_t i = 0;
+    const cJSON *m;
+    cJSON_ArrayForEach(m, materials) {
+        const cJSON *name = cJSON_GetObjectItemCaseSensitive(m, "name");
+        const cJSON *ext = cJSON_GetObjectItemCaseSensitive(m, "extensions");
+        const cJSON *strength = cJSON_GetObjectItemCaseSensitive(
+            cJSON_GetObjectItemCaseSensitive(ext, "KHR_materials_emissive_strength"),
+            "emissiveStrength");
+        vct_material *mat = material_for(s, i, cJSON_IsString(name) ? name->valuestring : NULL);
+        if (cJSON_IsNumber(strength) && mat) {
+            const double k = strength->valuedouble;
+            if (!(k >= 0.0) || k > 1e30) {
+                rc = vct_fail(err, VCT_ERR_INPUT,
+                              "scene %s: material %u \"%s\": emissiveStrength %g is not a "
+                              "finite non-negative number",
+                              path, i, mat->name, k);
+                break;
+            }
+            for (int c = 0; c < 3; ++c)
+                mat->emission[c] *= (float)k;
+        }
+        ++i;
+    }
+    cJSON_Delete(root);
+    return rc;
+}

@@ -1,0 +1,183 @@
+"""A small glTF 2.0 writer for the scene suite: meshes made of quads and
+triangles, one material each (metallic-roughness, emission with
+KHR_materials_emissive_strength, KHR_materials_transmission and
+KHR_materials_ior), a perspective camera and KHR_lights_punctual lights, all
+in one .gltf file with its buffer embedded (base64)."""
+import base64
+import json
+import math
+import struct
+
+
+class Scene:
+    def __init__(self):
+        self.materials = []
+        self.meshes = []  # (material index, positions, indices)
+        self.lights = []
+        self.camera = None
+
+    def material(self, name, color, roughness=1.0, metallic=0.0, emission=None,
+                 strength=1.0, transmission=0.0, ior=1.5):
+        m = {"name": name,
+             "pbrMetallicRoughness": {"baseColorFactor": [*color, 1.0],
+                                      "metallicFactor": metallic,
+                                      "roughnessFactor": roughness},
+             "doubleSided": True}
+        ext = {}
+        if emission:
+            m["emissiveFactor"] = list(emission)
+            if strength != 1.0:
+                ext["KHR_materials_emissive_strength"] = {"emissiveStrength": strength}
+        if transmission > 0.0:
+            ext["KHR_materials_transmission"] = {"transmissionFactor": transmission}
+            ext["KHR_materials_ior"] = {"ior": ior}
+        if ext:
+            m["extensions"] = ext
+        self.materials.append(m)
+        return len(self.materials) - 1
+
+    def mesh(self, material, positions, indices):
+        if indices:
+            self.meshes.append((material, list(positions), list(indices)))
+
+    def quads(self, material, quads):
+        """Each quad: four corners in order around it."""
+        pos, idx = [], []
+        for q in quads:
+            base = len(pos)
+            pos.extend(q)
+            idx.extend([base, base + 1, base + 2, base, base + 2, base + 3])
+        self.mesh(material, pos, idx)
+
+    def box(self, material, lo, hi, skip=()):
+        """An axis-aligned box as six quads (faces named -x +x -y +y -z +z
+        can be left out)."""
+        (x0, y0, z0), (x1, y1, z1) = lo, hi
+        faces = {
+            "-x": [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],
+            "+x": [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
+            "-y": [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],
+            "+y": [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
+            "-z": [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
+            "+z": [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
+        }
+        self.quads(material, [f for k, f in faces.items() if k not in skip])
+
+    def sphere(self, material, centre, radius, rings=24, segments=48):
+        pos, idx = [], []
+        for r in range(rings + 1):
+            theta = math.pi * r / rings
+            for s in range(segments + 1):
+                phi = 2 * math.pi * s / segments
+                pos.append((centre[0] + radius * math.sin(theta) * math.cos(phi),
+                            centre[1] + radius * math.cos(theta),
+                            centre[2] + radius * math.sin(theta) * math.sin(phi)))
+        for r in range(rings):
+            for s in range(segments):
+                a = r * (segments + 1) + s
+                b = a + segments + 1
+                if r > 0:
+                    idx.extend([a, b, a + 1])
+                if r < rings - 1:
+                    idx.extend([a + 1, b, b + 1])
+        self.mesh(material, pos, idx)
+
+    def point_light(self, position, intensity, color=(1, 1, 1)):
+        self.lights.append(({"type": "point", "color": list(color), "intensity": intensity},
+                            position, None))
+
+    def sun(self, direction, irradiance, color=(1, 1, 1)):
+        self.lights.append(({"type": "directional", "color": list(color),
+                             "intensity": irradiance}, None, direction))
+
+    def look(self, position, target, fov_y_deg, aspect=1.0):
+        self.camera = (position, target, fov_y_deg, aspect)
+
+    def write(self, path):
+        blob = bytearray()
+        accessors, views, meshes, nodes = [], [], [], []
+        for material, pos, idx in self.meshes:
+            lo = [min(p[k] for p in pos) for k in range(3)]
+            hi = [max(p[k] for p in pos) for k in range(3)]
+            offset = len(blob)
+            for p in pos:
+                blob += struct.pack("<3f", *p)
+            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
+            accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
+                              "count": len(pos), "type": "VEC3", "min": lo, "max": hi})
+            offset = len(blob)
+            for i in idx:
+                blob += struct.pack("<I", i)
+            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
+            accessors.append({"bufferView": len(views) - 1, "componentType": 5125,
+                              "count": len(idx), "type": "SCALAR"})
+            meshes.append({"primitives": [{"attributes": {"POSITION": len(accessors) - 2},
+                                           "indices": len(accessors) - 1,
+                                           "material": material}]})
+            nodes.append({"mesh": len(meshes) - 1})
+        gltf = {"asset": {"version": "2.0", "generator": "vct scenes/suite"},
+                "scene": 0, "materials": self.materials, "meshes": meshes,
+                "accessors": accessors, "bufferViews": views,
+                "buffers": [{"byteLength": len(blob),
+                             "uri": "data:application/octet-stream;base64,"
+                                    + base64.b64encode(bytes(blob)).decode()}]}
+        used = {"KHR_lights_punctual"} if self.lights else set()
+        for m in self.materials:
+            used |= set(m.get("extensions", {}).keys())
+        if used:
+            gltf["extensionsUsed"] = sorted(used)
+        if self.lights:
+            gltf["extensions"] = {"KHR_lights_punctual": {"lights": [l for l, _, _ in self.lights]}}
+            for i, (_, position, direction) in enumerate(self.lights):
+                node = {"extensions": {"KHR_lights_punctual": {"light": i}}}
+                if position:
+                    node["translation"] = list(position)
+                if direction:
+                    node["rotation"] = _rotation_from_minus_z(direction)
+                nodes.append(node)
+        if self.camera:
+            position, target, fov, aspect = self.camera
+            gltf["cameras"] = [{"type": "perspective",
+                                "perspective": {"yfov": math.radians(fov), "aspectRatio": aspect,
+                                                "znear": 0.01}}]
+            fwd = _normalise([target[k] - position[k] for k in range(3)])
+            nodes.append({"camera": 0, "translation": list(position),
+                          "rotation": _rotation_from_minus_z(fwd)})
+        gltf["nodes"] = nodes
+        gltf["scenes"] = [{"nodes": list(range(len(nodes)))}]
+        with open(path, "w") as f:
+            json.dump(gltf, f, indent=1)
+
+
+def _normalise(v):
+    n = math.sqrt(sum(c * c for c in v))
+    return [c / n for c in v]
+
+
+def _rotation_from_minus_z(d):
+    """The quaternion (x, y, z, w) turning -z to unit d, keeping +y up."""
+    f = _normalise(d)
+    up = [0.0, 1.0, 0.0]
+    if abs(f[1]) > 0.999:
+        up = [0.0, 0.0, -1.0 if f[1] > 0 else 1.0]
+    r = _normalise([f[1] * up[2] - f[2] * up[1], f[2] * up[0] - f[0] * up[2],
+                    f[0] * up[1] - f[1] * up[0]])
+    u = [r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]]
+    b = [-f[0], -f[1], -f[2]]  # the camera's +z
+    m = [[r[0], u[0], b[0]], [r[1], u[1], b[1]], [r[2], u[2], b[2]]]
+    trace = m[0][0] + m[1][1] + m[2][2]
+    if trace > 0:
+        s = math.sqrt(trace + 1.0) * 2
+        return [(m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s,
+                0.25 * s]
+    if m[0][0] > m[1][1] and m[0][0] > m[2][2]:
+        s = math.sqrt(1.0 + m[0][0] - m[1][1] - m[2][2]) * 2
+        return [0.25 * s, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s,
+                (m[2][1] - m[1][2]) / s]
+    if m[1][1] > m[2][2]:
+        s = math.sqrt(1.0 + m[1][1] - m[0][0] - m[2][2]) * 2
+        return [(m[0][1] + m[1][0]) / s, 0.25 * s, (m[1][2] + m[2][1]) / s,
+                (m[0][2] - m[2][0]) / s]
+    s = math.sqrt(1.0 + m[2][2] - m[0][0] - m[1][1]) * 2
+    return [(m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, 0.25 * s,
+            (m[1][0] - m[0][1]) / s]

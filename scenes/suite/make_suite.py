@@ -1,0 +1,210 @@
+#!/usr/bin/env python3
+"""Writes the scene suite: scenes unlike each other, each with its camera and
+its lights, made here from code (nothing is downloaded). suite.txt lists
+them with the options they render with (the sky of the open scenes, which a
+glTF file cannot hold, is given as --ambient).
+
+  atrium            columns and arches around a court open to the sky, sun
+  window_room       a closed room lit through one window by the sun and sky
+  glass_mirror_box  a box lit by its emissive ceiling panel alone, with a glass
+                    sphere, a mirror sphere and a glossy block
+  blinds_fins       a room behind half-open blinds and thin fins, sun-lit
+  dense_hall        a 10^5-triangle bumpy sphere in a large hall, one lamp
+  lamp_room         a living room lit by two emissive lamp shades and a
+                    small point light, single-quad furniture wound either way
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gltf_scene import Scene  # noqa: E402
+
+OUT = os.path.dirname(os.path.abspath(__file__))
+STONE = (0.62, 0.58, 0.5)
+PLASTER = (0.75, 0.74, 0.7)
+
+
+def atrium():
+    s = Scene()
+    stone = s.material("stone", STONE)
+    floor = s.material("floor", (0.45, 0.42, 0.38))
+    red = s.material("banner", (0.6, 0.1, 0.08))
+    s.quads(floor, [[(-12, 0, -8), (-12, 0, 8), (12, 0, 8), (12, 0, -8)]])
+    # the outer walls, two storeys, open roof
+    for x0, x1, z0, z1 in [(-12, 12, -8, -7.6), (-12, 12, 7.6, 8), (-12, -11.6, -7.6, 7.6),
+                           (11.6, 12, -7.6, 7.6)]:
+        s.box(stone, (x0, 0, z0), (x1, 9, z1))
+    # a gallery floor on the first storey around the court
+    for x0, x1, z0, z1 in [(-11.6, 11.6, -7.6, -4.5), (-11.6, 11.6, 4.5, 7.6)]:
+        s.box(stone, (x0, 4.2, z0), (x1, 4.5, z1))
+    # columns and arches along both sides of the court
+    for side in (-4.5, 4.5):
+        for i in range(7):
+            x = -9 + 3 * i
+            s.box(stone, (x - 0.3, 0, side - 0.3), (x + 0.3, 4.2, side + 0.3))
+            if i < 6:  # a round arch to the next column, in 12 segments
+                for k in range(12):
+                    a0, a1 = math.pi * k / 12, math.pi * (k + 1) / 12
+                    xa, xb = x + 1.5 - 1.2 * math.cos(a0), x + 1.5 - 1.2 * math.cos(a1)
+                    ya, yb = 3.0 + 1.2 * math.sin(a0), 3.0 + 1.2 * math.sin(a1)
+                    for z in (side - 0.3, side + 0.3):
+                        s.quads(stone, [[(xa, ya, z), (xb, yb, z), (xb, 4.2, z), (xa, 4.2, z)]])
+                    s.quads(stone, [[(xa, ya, side - 0.3), (xa, ya, side + 0.3),
+                                     (xb, yb, side + 0.3), (xb, yb, side - 0.3)]])
+    # hanging banners: single quads
+    for x in (-6, 0, 6):
+        s.quads(red, [[(x - 0.8, 5.5, -7.5), (x + 0.8, 5.5, -7.5), (x + 0.8, 8.5, -7.5),
+                       (x - 0.8, 8.5, -7.5)]])
+    s.sun((-0.35, -0.8, 0.45), 4.0, (1.0, 0.93, 0.82))
+    s.look((-10.5, 1.7, 6.2), (4, 3.2, -3), 60)
+    s.write(os.path.join(OUT, "atrium.gltf"))
+
+
+def window_room():
+    s = Scene()
+    wall = s.material("plaster", PLASTER)
+    wood = s.material("wood floor", (0.5, 0.32, 0.18))
+    blue = s.material("sofa", (0.15, 0.22, 0.5))
+    s.quads(wood, [[(0, 0, 0), (0, 0, 6), (7, 0, 6), (7, 0, 0)]])
+    s.quads(wall, [[(0, 3, 0), (7, 3, 0), (7, 3, 6), (0, 3, 6)],
+                   [(0, 0, 0), (7, 0, 0), (7, 3, 0), (0, 3, 0)],
+                   [(0, 0, 6), (0, 3, 6), (7, 3, 6), (7, 0, 6)],
+                   [(0, 0, 0), (0, 3, 0), (0, 3, 6), (0, 0, 6)]])
+    # the +x wall with a window over z 2..4.5, y 0.9..2.4
+    x = 7.0
+    s.quads(wall, [[(x, 0, 0), (x, 0.9, 0), (x, 0.9, 6), (x, 0, 6)],
+                   [(x, 2.4, 0), (x, 3, 0), (x, 3, 6), (x, 2.4, 6)],
+                   [(x, 0.9, 0), (x, 2.4, 0), (x, 2.4, 2), (x, 0.9, 2)],
+                   [(x, 0.9, 4.5), (x, 2.4, 4.5), (x, 2.4, 6), (x, 0.9, 6)]])
+    s.box(blue, (1.0, 0, 1.0), (1.9, 0.8, 4.2))
+    s.box(wall, (3.2, 0, 2.5), (4.4, 0.45, 3.7))
+    s.sun((-0.75, -0.45, 0.3), 6.0, (1.0, 0.95, 0.85))
+    s.look((0.4, 1.6, 5.6), (6, 1.0, 1.5), 65)
+    s.write(os.path.join(OUT, "window_room.gltf"))
+
+
+def glass_mirror_box():
+    s = Scene()
+    white = s.material("white", (0.73, 0.71, 0.68))
+    red = s.material("red", (0.63, 0.065, 0.05))
+    green = s.material("green", (0.14, 0.45, 0.091))
+    lamp = s.material("ceiling panel", (0, 0, 0), emission=(1.0, 0.85, 0.6), strength=12.0)
+    glass = s.material("glass", (1, 1, 1), roughness=0.0, transmission=1.0, ior=1.5)
+    mirror = s.material("mirror", (0.9, 0.9, 0.9), roughness=0.0, metallic=1.0)
+    glossy = s.material("glossy block", (0.2, 0.3, 0.6), roughness=0.3, metallic=1.0)
+    w = 4.0
+    s.quads(white, [[(0, 0, 0), (0, 0, w), (w, 0, w), (w, 0, 0)],
+                    [(0, w, 0), (w, w, 0), (w, w, w), (0, w, w)],
+                    [(0, 0, w), (0, w, w), (w, w, w), (w, 0, w)]])
+    s.quads(red, [[(0, 0, 0), (0, w, 0), (0, w, w), (0, 0, w)]])
+    s.quads(green, [[(w, 0, 0), (w, 0, w), (w, w, w), (w, w, 0)]])
+    s.quads(lamp, [[(1.4, w - 0.01, 1.6), (2.6, w - 0.01, 1.6), (2.6, w - 0.01, 2.8),
+                    (1.4, w - 0.01, 2.8)]])
+    s.sphere(glass, (1.2, 0.75, 1.6), 0.75)
+    s.sphere(mirror, (2.9, 0.7, 2.7), 0.7)
+    s.box(glossy, (2.5, 0, 0.6), (3.3, 1.2, 1.4))
+    s.look((2.0, 2.0, -5.0), (2.0, 1.8, 2.0), 42)
+    s.write(os.path.join(OUT, "glass_mirror_box.gltf"))
+
+
+def blinds_fins():
+    s = Scene()
+    wall = s.material("plaster", PLASTER)
+    floor = s.material("floor", (0.4, 0.4, 0.42))
+    slat = s.material("slats", (0.85, 0.83, 0.78))
+    fin = s.material("fins", (0.7, 0.45, 0.2))
+    s.quads(floor, [[(0, 0, 0), (0, 0, 6), (6, 0, 6), (6, 0, 0)]])
+    s.quads(wall, [[(0, 3, 0), (6, 3, 0), (6, 3, 6), (0, 3, 6)],
+                   [(0, 0, 6), (0, 3, 6), (6, 3, 6), (6, 0, 6)],
+                   [(0, 0, 0), (0, 3, 0), (0, 3, 6), (0, 0, 6)],
+                   [(6, 0, 0), (6, 0, 6), (6, 3, 6), (6, 3, 0)]])
+    # the -z wall is a window from y 0.5 to 2.7, behind blinds: slats 3 cm
+    # deep and 2 mm thick every 8 cm, tilted 40 degrees (closed boxes)
+    s.quads(wall, [[(0, 0, 0), (6, 0, 0), (6, 0.5, 0), (0, 0.5, 0)],
+                   [(0, 2.7, 0), (6, 2.7, 0), (6, 3, 0), (0, 3, 0)]])
+    tilt = math.radians(40)
+    y = 0.55
+    while y < 2.68:
+        dy, dz = 0.015 * math.sin(tilt), 0.015 * math.cos(tilt)
+        ty, tz = 0.001 * math.cos(tilt), -0.001 * math.sin(tilt)
+        c = (y, 0.1)
+        corners = [(c[0] - dy - ty, c[1] - dz - tz), (c[0] + dy - ty, c[1] + dz - tz),
+                   (c[0] + dy + ty, c[1] + dz + tz), (c[0] - dy + ty, c[1] - dz + tz)]
+        quads = []
+        for i in range(4):
+            (ya, za), (yb, zb) = corners[i], corners[(i + 1) % 4]
+            quads.append([(0.05, ya, za), (5.95, ya, za), (5.95, yb, zb), (0.05, yb, zb)])
+        s.quads(slat, quads)
+        y += 0.08
+    # thin fins standing on the floor: single quads, every other one wound the other way
+    for i in range(9):
+        x = 1.0 + 0.5 * i
+        q = [(x, 0, 3.0), (x, 1.4, 3.0), (x, 1.4, 4.6), (x, 0, 4.6)]
+        s.quads(fin, [q if i % 2 else q[::-1]])
+    s.sun((0.2, -0.5, 0.84), 7.0, (1.0, 0.95, 0.85))
+    s.look((5.5, 2.2, 5.7), (2.5, 0.8, 1.5), 62)
+    s.write(os.path.join(OUT, "blinds_fins.gltf"))
+
+
+def dense_hall():
+    s = Scene()
+    wall = s.material("hall", (0.6, 0.6, 0.62))
+    floor = s.material("floor", (0.35, 0.3, 0.25))
+    statue = s.material("statue", (0.8, 0.55, 0.35), roughness=0.5)
+    s.quads(floor, [[(-20, 0, -20), (-20, 0, 20), (20, 0, 20), (20, 0, -20)]])
+    s.box(wall, (-20, 0, -20), (20, 14, 20), skip=("-y",))
+    # a bumpy sphere of 105,600 triangles, 1.2 m across, on a plinth
+    s.box(wall, (-0.8, 0, -0.8), (0.8, 0.8, 0.8))
+    rings, segments = 220, 240
+    pos, idx = [], []
+    for r in range(rings + 1):
+        theta = math.pi * r / rings
+        for k in range(segments + 1):
+            phi = 2 * math.pi * k / segments
+            rad = 0.6 * (1 + 0.06 * math.sin(9 * theta) * math.sin(7 * phi))
+            pos.append((rad * math.sin(theta) * math.cos(phi), 1.4 + rad * math.cos(theta),
+                        rad * math.sin(theta) * math.sin(phi)))
+    for r in range(rings):
+        for k in range(segments):
+            a = r * (segments + 1) + k
+            b = a + segments + 1
+            idx.extend([a, b, a + 1, a + 1, b, b + 1])
+    s.mesh(statue, pos, idx)
+    s.point_light((3, 6, 2), 400.0, (1.0, 0.9, 0.8))
+    s.look((0, 1.6, 4.5), (0, 1.3, 0), 45)
+    s.write(os.path.join(OUT, "dense_hall.gltf"))
+
+
+def lamp_room():
+    s = Scene()
+    wall = s.material("walls", (0.7, 0.68, 0.62))
+    floor = s.material("carpet", (0.35, 0.12, 0.1))
+    table = s.material("table", (0.45, 0.3, 0.15))
+    shade = s.material("lamp shade", (0, 0, 0), emission=(1.0, 0.8, 0.55), strength=6.0)
+    s.quads(floor, [[(0, 0, 0), (0, 0, 5), (6, 0, 5), (6, 0, 0)]])
+    s.box(wall, (0, 0, 0), (6, 2.8, 5), skip=("-y",))
+    # a table: a single quad top on four thin legs
+    s.quads(table, [[(2, 0.75, 1.5), (4, 0.75, 1.5), (4, 0.75, 3), (2, 0.75, 3)]])
+    for x, z in [(2.05, 1.55), (3.9, 1.55), (2.05, 2.9), (3.9, 2.9)]:
+        s.box(table, (x, 0, z), (x + 0.05, 0.75, z + 0.05))
+    # two lamp shades: open cylinders of emissive quads, wound inwards
+    for cx, cz, h in [(0.8, 4.2, 1.6), (5.2, 0.8, 1.4)]:
+        quads = []
+        for k in range(16):
+            a0, a1 = 2 * math.pi * k / 16, 2 * math.pi * (k + 1) / 16
+            p0 = (cx + 0.22 * math.cos(a0), cz + 0.22 * math.sin(a0))
+            p1 = (cx + 0.22 * math.cos(a1), cz + 0.22 * math.sin(a1))
+            quads.append([(p0[0], h, p0[1]), (p1[0], h, p1[1]), (p1[0], h + 0.35, p1[1]),
+                          (p0[0], h + 0.35, p0[1])])
+        s.quads(shade, quads)
+        s.box(table, (cx - 0.02, 0, cz - 0.02), (cx + 0.02, h, cz + 0.02))
+    s.point_light((3, 2.6, 2.2), 3.0, (1.0, 0.95, 0.9))
+    s.look((5.6, 1.7, 4.6), (2.5, 0.6, 1.6), 60)
+    s.write(os.path.join(OUT, "lamp_room.gltf"))
+
+
+if __name__ == "__main__":
+    for make in (atrium, window_room, glass_mirror_box, blinds_fins, dense_hall, lamp_room):
+        make()
+        print("wrote", make.__name__)

@@ -1,0 +1,195 @@
+/* Emissive triangles are lights: a floor under an emissive square (no other
+ * light) against the analytic irradiance of a uniform polygon (Lambert's
+ * formula: E = Le / 2 * sum over edges of the edge's angle times the cosine
+ * of its plane), at every pixel cone tracing's primary hit finds, and in the
+ * voxels light injection fills; a blocker under the lamp casts its shadow;
+ * and the plan says the triangles are sampled. */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "vct_case.h"
+
+#define LE 5.0
+#define ALBEDO 0.7
+
+static vct_context *ctx;
+
+/* E at p (normal +y) from the square lamp at height h over [x0, x1] x [z0, z1]. */
+static double lambert_polygon(const double p[3], const double lamp[4][3]) {
+    double sum = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        double a[3], b[3], c[3];
+        for (int k = 0; k < 3; ++k) {
+            a[k] = lamp[i][k] - p[k];
+            b[k] = lamp[(i + 1) % 4][k] - p[k];
+        }
+        const double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        const double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+        const double cosg = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
+        const double angle = acos(fmax(-1.0, fmin(1.0, cosg)));
+        c[0] = a[1] * b[2] - a[2] * b[1];
+        c[1] = a[2] * b[0] - a[0] * b[2];
+        c[2] = a[0] * b[1] - a[1] * b[0];
+        const double lc = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        sum += angle * c[1] / lc; /* the floor's normal is +y */
+    }
+    return LE / 2.0 * fabs(sum);
+}
+
+/* A floor [0, 10]^2 at y = 0; a lamp square [4, 6]^2 at y = 3 (wound down
+ * or up); a blocker square [3.5, 6.5]^2 at y = 1.5 when asked, seen from low
+ * down so that the floor under it shows. */
+static vct_scene *lamp_scene(int blocker, int lamp_up) {
+    const float q[] = {
+        0,    0,    0,    0,    0,    10,   10,   0,    10,   10,   0,    0, /* floor, up */
+        4,    3,    4,    6,    3,    4,    6,    3,    6,    4,    3,    6, /* lamp, down */
+        3.5f, 1.5f, 3.5f, 6.5f, 1.5f, 3.5f, 6.5f, 1.5f, 6.5f, 3.5f, 1.5f, 6.5f};
+    const uint32_t quads = blocker ? 3 : 2;
+    uint32_t tri[18], mat[6];
+    for (uint32_t k = 0; k < quads; ++k) {
+        const uint32_t up[6] = {0, 1, 2, 0, 2, 3}, down[6] = {0, 2, 1, 0, 3, 2};
+        for (int i = 0; i < 6; ++i)
+            tri[6 * k + i] = 4 * k + (k == 1 && lamp_up ? down[i] : up[i]);
+        mat[2 * k] = mat[2 * k + 1] = k == 1 ? 1 : 0;
+    }
+    vct_material m[2] = {vct_material_default(), vct_material_default()};
+    for (int c = 0; c < 3; ++c) {
+        m[0].albedo[c] = (float)ALBEDO;
+        m[1].albedo[c] = 0.0f;
+        m[1].emission[c] = (float)LE;
+    }
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(q, 4 * quads, tri, 2 * quads, mat, m, 2, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const vct_camera above = {{5, 9, 5.01f}, {5, 0, 5}, {0, 0, -1}, 70.0f};
+    const vct_camera low = {{5, 0.8f, -3}, {5, 0, 5}, {0, 1, 0}, 50.0f};
+    s->camera = blocker ? low : above;
+    s->has_camera = 1;
+    return s;
+}
+
+static const double LAMP[4][3] = {{4, 3, 4}, {6, 3, 4}, {6, 3, 6}, {4, 3, 6}};
+
+/* Direct light at every floor pixel against the analytic E * albedo / pi,
+ * outside the blocker's penumbra when there is one. */
+static void pixels_against_analytic(const char *name, int blocker, int lamp_up) {
+    vct_scene *s = lamp_scene(blocker, lamp_up);
+    vct_plan plan;
+    vct_effect_force force[VCT_EFFECTS];
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        force[e] = VCT_FORCE_AUTO;
+    force[VCT_EFFECT_INDIRECT] = VCT_FORCE_OFF;
+    vct_plan_make(s, force, &plan);
+    CHECK(plan.on[VCT_EFFECT_DIRECT] && strstr(plan.why[VCT_EFFECT_DIRECT], "emissive"),
+          "%s: direct light planned for the emitters (%s)", name, plan.why[VCT_EFFECT_DIRECT]);
+    vct_aovs aovs;
+    vct_image im = vct_case_render(ctx, s, &plan, 32, 96, 96, 1, &aovs);
+    double sum_got = 0.0, sum_want = 0.0, sq = 0.0;
+    int floor_pixels = 0, shadowed = 0, lit_in_umbra = 0;
+    for (int i = 0; i < 96 * 96; ++i) {
+        const float *pos = &aovs.position.rgba[4 * i];
+        if (pos[3] == 0.0f || fabsf(pos[1]) > 1e-3f)
+            continue; /* not the floor */
+        const double p[3] = {pos[0], pos[1], pos[2]};
+        const double got = aovs.direct.rgba[4 * i];
+        if (blocker) {
+            /* the blocker's umbra, where it hides the whole lamp: a ray to
+             * lamp point x crosses the blocker's height halfway, so p is in
+             * it while |p + x - 10| / 2 <= 1.5 for x in [4, 6] per axis */
+            const double r = fmax(fabs(p[0] - 5.0), fabs(p[2] - 5.0));
+            if (r < 2.0 - 0.05) {
+                ++shadowed;
+                lit_in_umbra += got > 0.0;
+            }
+            continue;
+        }
+        const double want = ALBEDO / CHECK_PI * lambert_polygon(p, LAMP);
+        sum_got += got;
+        sum_want += want;
+        sq += (got - want) * (got - want);
+        ++floor_pixels;
+    }
+    if (blocker) {
+        CHECK(shadowed > 20 && lit_in_umbra == 0, "%s: %d of %d umbra pixels lit", name,
+              lit_in_umbra, shadowed);
+        printf("%-32s %d umbra pixels, %d lit\n", name, shadowed, lit_in_umbra);
+    } else {
+        const double ratio = sum_got / sum_want;
+        const double nrmse = sqrt(sq / floor_pixels) / (sum_want / floor_pixels);
+        /* 16 stratified samples per pixel: the mean agrees to 1%, pixels
+         * to sampling noise */
+        CHECK(floor_pixels > 5000 && fabs(ratio - 1.0) < 0.01 && nrmse < 0.07,
+              "%s: %d floor pixels, mean ratio %.4f, NRMSE %.4f against Lambert's formula", name,
+              floor_pixels, ratio, nrmse);
+        printf("%-32s %d floor pixels: mean ratio %.4f, NRMSE %.4f\n", name, floor_pixels, ratio,
+               nrmse);
+    }
+    vct_image_free(&im);
+    vct_aovs_free(&aovs);
+    vct_scene_free(s);
+}
+
+/* The floor's voxels: their radiance against albedo / pi * E at their
+ * centres (8 samples per fragment: the mean over the voxels to 2%). */
+static void voxels_against_analytic(void) {
+    vct_scene *s = lamp_scene(0, 0);
+    vct_error err = {0};
+    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_voxel_options o = {0};
+    o.resolution = 32;
+    o.has_bounds = 1;
+    o.bounds_min[0] = o.bounds_min[2] = 0.0f;
+    o.bounds_min[1] = -5.0f + 10.0f / 64.0f; /* the floor through voxel centres */
+    o.bounds_size = 10.0f;
+    vct_voxels *v = vct_voxelize(ctx, s, &o, &err);
+    REQUIRE_OK(v ? VCT_OK : err.status, err);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, s, g, v, &err), err);
+    vct_voxel_info info;
+    vct_voxels_info_get(v, &info);
+    uint32_t *keys = malloc(4ull * info.voxels);
+    float *radiance = malloc(16ull * info.voxels);
+    REQUIRE_OK(vct_voxels_read(ctx, v, keys, NULL, NULL, NULL, &err), err);
+    REQUIRE_OK(vct_voxels_read_radiance(ctx, v, radiance, &err), err);
+    const double voxel = 10.0 / 32.0;
+    double sum_got = 0.0, sum_want = 0.0, lamp = 0.0;
+    int floor_voxels = 0;
+    for (uint32_t i = 0; i < info.voxels; ++i) {
+        uint32_t cell[3] = {0, 0, 0};
+        for (int b = 0; b < 10; ++b)
+            for (int k = 0; k < 3; ++k)
+                cell[k] |= ((keys[i] >> (3 * b + k)) & 1u) << b;
+        const double p[3] = {(cell[0] + 0.5) * voxel, o.bounds_min[1] + (cell[1] + 0.5) * voxel,
+                             (cell[2] + 0.5) * voxel};
+        if (fabs(p[1]) > 1e-3) {
+            lamp = fmax(lamp, radiance[4 * i]); /* the lamp's voxels: black, no emission */
+            continue;
+        }
+        sum_got += radiance[4 * i];
+        sum_want += ALBEDO / CHECK_PI * lambert_polygon(p, LAMP);
+        ++floor_voxels;
+    }
+    const double ratio = sum_got / sum_want;
+    CHECK(floor_voxels == 32 * 32 && fabs(ratio - 1.0) < 0.02,
+          "voxels: %d floor voxels, mean ratio %.4f against Lambert's formula", floor_voxels,
+          ratio);
+    /* The emission stays out of the voxels: cones would count it twice. */
+    CHECK(lamp == 0.0, "the lamp's voxels send out %g (they hold no emission)", lamp);
+    printf("voxels: %d floor voxels, mean ratio %.4f\n", floor_voxels, ratio);
+    free(keys);
+    free(radiance);
+    vct_voxels_free(v);
+    vct_grid_free(g);
+    vct_scene_free(s);
+}
+
+int main(void) {
+    ctx = check_context();
+    pixels_against_analytic("lamp wound down", 0, 0);
+    pixels_against_analytic("lamp wound up", 0, 1);
+    pixels_against_analytic("blocker under the lamp", 1, 0);
+    voxels_against_analytic();
+    vct_context_destroy(ctx);
+    return check_exit("test_area_light");
+}
