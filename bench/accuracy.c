@@ -4,13 +4,16 @@
  * Pareto front marked.
  *
  * usage: accuracy SCENE|heavy [--reference REF.pfm] [--reference-spp N]
- *                 [--size W H] [--max-spp N] [--out DIR] [--no-vct]
+ *                 [--size W H] [--max-spp N] [--out DIR] [--no-vct] [--quick]
+ *                 [--ambient R G B]
  * Without --reference, a path-traced reference of --reference-spp samples
  * (default 2048, a different seed from the runs) is rendered and saved.
  * "heavy" is bench/heavy_scene.h's 102,430-triangle scene. Voxel cone
  * tracing runs over voxel resolutions, cone presets, step sizes, cone start
  * offsets, isotropic against anisotropic bricks and 1, 2 or 3 bounces; its time is split into
- * building the voxel hierarchy (voxels, octree, bricks, light) and tracing. */
+ * building the voxel hierarchy (voxels, octree, bricks, light) and tracing.
+ * --quick runs cone tracing at its default and with sparse diffuse alone
+ * (the scene suite's table); --ambient gives the scene a sky. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -33,6 +36,9 @@ typedef struct settings {
     int width, height;
     uint32_t reference_spp, max_spp;
     int vct;
+    int quick;
+    int has_ambient;
+    float ambient[3];
 } settings;
 
 typedef struct vct_setting {
@@ -221,7 +227,7 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
 }
 
 int main(int argc, char **argv) {
-    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1};
+    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1, 0, 0, {0, 0, 0}};
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--reference") == 0 && i + 1 < argc)
             cfg.reference = argv[++i];
@@ -234,11 +240,20 @@ int main(int argc, char **argv) {
             cfg.height = atoi(argv[++i]);
         } else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc)
             cfg.out = argv[++i];
-        else if (argv[i][0] != '-' && !cfg.scene)
+        else if (strcmp(argv[i], "--quick") == 0)
+            cfg.quick = 1;
+        else if (strcmp(argv[i], "--no-vct") == 0)
+            cfg.vct = 0;
+        else if (strcmp(argv[i], "--ambient") == 0 && i + 3 < argc) {
+            cfg.has_ambient = 1;
+            for (int k = 0; k < 3; ++k)
+                cfg.ambient[k] = (float)atof(argv[++i]);
+        } else if (argv[i][0] != '-' && !cfg.scene)
             cfg.scene = argv[i];
         else {
             fprintf(stderr, "usage: accuracy SCENE [--reference REF.pfm] [--reference-spp N] "
-                            "[--size W H] [--max-spp N] [--out DIR]\n");
+                            "[--size W H] [--max-spp N] [--out DIR] [--no-vct] [--quick] "
+                            "[--ambient R G B]\n");
             return 2;
         }
     }
@@ -252,6 +267,8 @@ int main(int argc, char **argv) {
                                                    : vct_scene_load(cfg.scene, &err);
     if (!s)
         bench_die(&err);
+    if (cfg.has_ambient)
+        memcpy(s->ambient, cfg.ambient, sizeof s->ambient);
     vct_context *ctx = vct_context_create(NULL, &err);
     if (!ctx)
         bench_die(&err);
@@ -314,8 +331,13 @@ int main(int argc, char **argv) {
         {128, 16, 2, 1.0f, 1, 0.0f, 1, 0}, {64, 6, 2, 1.0f, 1, 0.0f, 0, 1},
         {128, 6, 2, 1.0f, 1, 0.0f, 0, 1},  {256, 6, 2, 1.0f, 1, 0.0f, 0, 1},
         {128, 6, 2, 1.0f, 1, 0.0f, 1, 1}};
-    for (size_t i = 0; cfg.vct && i < sizeof vct_runs / sizeof vct_runs[0] && n < MAX_RUNS; ++i) {
-        vct_image im = render_vct(ctx, s, &cfg, &vct_runs[i], &runs[n]);
+    static const vct_setting quick_runs[] = {{128, 6, 2, 1.0f, 1, 0.0f, 0, 0},
+                                             {128, 6, 2, 1.0f, 1, 0.0f, 0, 1}};
+    const vct_setting *list = cfg.quick ? quick_runs : vct_runs;
+    const size_t listed =
+        cfg.quick ? sizeof quick_runs / sizeof quick_runs[0] : sizeof vct_runs / sizeof vct_runs[0];
+    for (size_t i = 0; cfg.vct && i < listed && n < MAX_RUNS; ++i) {
+        vct_image im = render_vct(ctx, s, &cfg, &list[i], &runs[n]);
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
             bench_die(&err);
         vct_image_free(&im);
