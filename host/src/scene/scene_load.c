@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 #include "runtime/runtime.h"
-#include "scene/gltf_extensions.h"
+#include "scene/gltf_json.h"
 
 typedef struct builder {
     vct_scene *s;
@@ -308,6 +308,8 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
         vct_fail(err, VCT_ERR_IO, "scene %s: cannot read the file", path);
         return NULL;
     }
+    if (vct_gltf_precheck(path, err))
+        return NULL;
     const struct aiScene *sc = aiImportFile(path, aiProcess_Triangulate);
     if (!sc || !sc->mRootNode) {
         vct_fail(err, VCT_ERR_INPUT, "scene %s: assimp could not load it: %s", path,

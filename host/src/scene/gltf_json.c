@@ -1,8 +1,8 @@
-/* glTF material extensions that assimp 5.2 leaves out, read from the file's
- * own JSON with cJSON: KHR_materials_emissive_strength (the factor on
- * emissiveFactor, which the core format limits to 1). Materials are matched
- * by index, as assimp imports them in order, and by name where the names
- * disagree. */
+/* What vct reads of a glTF file's own JSON, with cJSON: checks before
+ * assimp parses it, and the material extensions that assimp 5.2 leaves out:
+ * KHR_materials_emissive_strength (the factor on emissiveFactor, which the
+ * core format limits to 1). Materials are matched by index, as assimp
+ * imports them in order, and by name where the names disagree. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,7 +10,7 @@
 
 #include <cjson/cJSON.h>
 
-#include "scene/gltf_extensions.h"
+#include "scene/gltf_json.h"
 
 /* The file's JSON: a whole .gltf, or a .glb's first chunk. NULL if neither. */
 static char *read_json(const char *path) {
@@ -54,6 +54,51 @@ static vct_material *material_for(vct_scene *s, uint32_t i, const char *name) {
         if (strcmp(s->materials[m].name, name) == 0)
             return &s->materials[m];
     return NULL;
+}
+
+/* 1 if every character of the data URI's payload after "base64," is of
+ * the base64 alphabet (padding only at the end). */
+static int base64_payload_ok(const char *uri) {
+    const char *p = strstr(uri, ";base64,");
+    if (!p)
+        return 1; /* not base64: assimp reports it */
+    p += 8;
+    size_t n = 0, pad = 0;
+    for (; *p; ++p, ++n) {
+        const char c = *p;
+        const int alpha = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') ||
+                          (c >= '0' && c <= '9') || c == '+' || c == '/';
+        if (c == '=')
+            ++pad;
+        else if (!alpha || pad)
+            return 0;
+    }
+    return pad <= 2 && n % 4 == 0;
+}
+
+int vct_gltf_precheck(const char *path, vct_error *err) {
+    char *text = read_json(path);
+    if (!text)
+        return VCT_OK; /* not glTF, or unreadable: assimp says which */
+    cJSON *root = cJSON_Parse(text);
+    free(text);
+    if (!root)
+        return vct_fail(err, VCT_ERR_INPUT, "scene %s: its glTF JSON does not parse", path);
+    int rc = VCT_OK;
+    uint32_t i = 0;
+    const cJSON *b;
+    cJSON_ArrayForEach(b, cJSON_GetObjectItemCaseSensitive(root, "buffers")) {
+        const cJSON *uri = cJSON_GetObjectItemCaseSensitive(b, "uri");
+        if (cJSON_IsString(uri) && strncmp(uri->valuestring, "data:", 5) == 0 &&
+            !base64_payload_ok(uri->valuestring)) {
+            rc = vct_fail(err, VCT_ERR_INPUT,
+                          "scene %s: buffer %u: its data URI is not valid base64", path, i);
+            break;
+        }
+        ++i;
+    }
+    cJSON_Delete(root);
+    return rc;
 }
 
 int vct_gltf_extensions_apply(const char *path, vct_scene *s, vct_error *err) {
