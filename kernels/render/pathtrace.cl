@@ -9,6 +9,7 @@
 #include "scene/camera.h"
 #include "light/direct_light.h"
 #include "light/emitters.h"
+#include "scene/texture.h"
 #include "accel/grid_traverse.h"
 #include "scene/rng.h"
 #include "vct_types.h"
@@ -95,16 +96,17 @@ inline float3 nee_emitters(const grid_view *g, const emitters *e,
 }
 
 __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,
-                        __global const uint *tri_material, __global const vct_light_desc *lights,
-                        uint light_count, __global const uint *emitter_tris,
-                        __global const float *emitter_cdf, uint emitter_count,
-                        float emitter_inv_area, uint sample_begin, uint samples, uint max_depth,
-                        uint seed, __global float4 *accum, __global uint *discarded,
+                        __global const uint *tri_material, TEXTURE_ARGS,
+                        __global const vct_light_desc *lights, uint light_count,
+                        __global const uint *emitter_tris, __global const float *emitter_cdf,
+                        uint emitter_count, float emitter_inv_area, uint sample_begin, uint samples,
+                        uint max_depth, uint seed, __global float4 *accum, __global uint *discarded,
                         float4 ambient) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
     const grid_view g = GRID_VIEW();
+    const texture_view tv = TEXTURE_VIEW();
     const emitters em = {{emitter_tris, emitter_cdf, 0, emitter_count, 1u}, emitter_inv_area};
     const uint pixel = y * cam.size.x + x;
     float3 sum = (float3)(0.0f);
@@ -128,7 +130,8 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
             if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
                 break;
             const float3 wo = -dir;
-            const vct_material_desc m = materials[tri_material[h.tri]];
+            vct_material_desc m = materials[tri_material[h.tri]];
+            m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
             if (any(m.emission.xyz > 0.0f)) {
                 float w = 1.0f;
                 if (prev_pdf > 0.0f && emitter_count > 0) {

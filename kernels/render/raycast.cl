@@ -5,12 +5,13 @@
 #include "scene/camera.h"
 #include "light/direct_light.h"
 #include "light/emitters.h"
+#include "scene/texture.h"
 #include "accel/grid_traverse.h"
 #include "vct_types.h"
 
 __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
                             __global const vct_material_desc *materials,
-                            __global const uint *tri_material,
+                            __global const uint *tri_material, TEXTURE_ARGS,
                             __global const vct_light_desc *lights, uint light_count, EMITTER_ARGS,
                             __global float4 *image) {
     const uint x = get_global_id(0), y = get_global_id(1);
@@ -25,11 +26,13 @@ __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
         int front;
         surface_hit(&g, &h, dir, &p, &ng, &n, &front);
         const vct_material_desc m = materials[tri_material[h.tri]];
+        const texture_view tv = TEXTURE_VIEW();
+        const float3 albedo = texture_albedo(&tv, &m, h.tri, h.u, h.v);
         direct_terms d = direct_gather(&g, lights, light_count, p, n, 1, (float3)(0.0f), -1.0f, 0);
         const emitter_view e = EMITTER_VIEW();
         direct_emitters(&g, &e, materials, tri_material, p, n, (float3)(0.0f), -1.0f,
                         y * cam.size.x + x, &d);
-        radiance = m.emission.xyz + m.albedo.xyz * VCT_INV_PI * d.irradiance;
+        radiance = m.emission.xyz + albedo * VCT_INV_PI * d.irradiance;
     }
     image[y * cam.size.x + x] = (float4)(radiance, 1.0f);
 }

@@ -17,9 +17,10 @@
  * pool's VCT_BRICK_IMAGE, VCT_ANISOTROPIC); VCT_EMITTERS adds the emissive
  * triangles to the direct light, sampled with shadow rays (light/emitters.h).
  *
- * G-buffer, 4 float4 per pixel: position and material id (as bits); normal
- * facing the viewer and 1 where a surface was found; direction towards the
- * viewer; the throughput of the refractions on the way. AOVs, AOV_SLOTS
+ * G-buffer, GBUF_SLOTS float4 per pixel: position and material id (as bits);
+ * normal facing the viewer and 1 where a surface was found; direction
+ * towards the viewer; the throughput of the refractions on the way; the
+ * albedo there, the material's times its texture (scene/texture.h). AOVs, AOV_SLOTS
  * float4 per pixel when given: direct, indirect diffuse, specular, (open
  * fraction, mean level sampled, 0, 1), position and normal (w 1 where a
  * surface was found, else the slot stays 0). Glass reflections, 3 float4
@@ -31,11 +32,13 @@
 #include "voxel/cone_trace.h"
 #include "light/direct_light.h"
 #include "light/emitters.h"
+#include "scene/texture.h"
 #include "accel/grid_traverse.h"
 #include "vct_types.h"
 
 #define VCT_MAX_INTERFACES 8u
 #define AOV_SLOTS 6u
+#define GBUF_SLOTS 5u
 /* Shadow cones step an eighth as far as the setting says, 1/8 of the
  * diameter at the default step: a thin occluder then falls between samples
  * less often (measured: no leak into the umbra at 1/8 of the diameter, up
@@ -77,10 +80,10 @@ inline float3 direct_shade(const vct_material_desc *m, direct_terms d, float e) 
 
 __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
                           __global const vct_material_desc *materials,
-                          __global const uint *tri_material, __global const vct_light_desc *lights,
-                          uint light_count, EMITTER_ARGS, float4 ambient, __global float4 *gbuf,
-                          __global float4 *image, __global float4 *aov,
-                          __global float4 *reflection) {
+                          __global const uint *tri_material, TEXTURE_ARGS,
+                          __global const vct_light_desc *lights, uint light_count, EMITTER_ARGS,
+                          float4 ambient, __global float4 *gbuf, __global float4 *image,
+                          __global float4 *aov, __global float4 *reflection) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
@@ -88,7 +91,8 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
     const uint pixel = y * cam.size.x + x;
     float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
     float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
-    float4 gpos = (float4)(0.0f), gnormal = (float4)(0.0f), gview = (float4)(0.0f);
+    float4 gpos = (float4)(0.0f), gnormal = (float4)(0.0f), gview = (float4)(0.0f),
+           galbedo = (float4)(0.0f);
     float4 rpos = (float4)(0.0f), rnormal = (float4)(0.0f), rdir = (float4)(0.0f);
     int reflected = 0;
     for (uint depth = 0; depth < VCT_MAX_INTERFACES; ++depth) {
@@ -102,7 +106,9 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
         if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
             break;
         const uint mat = tri_material[h.tri];
-        const vct_material_desc m = materials[mat];
+        vct_material_desc m = materials[mat];
+        const texture_view tv = TEXTURE_VIEW();
+        m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
         const float3 wo = -dir;
 #ifdef VCT_REFRACTION
         if (is_dielectric(&m)) {
@@ -150,14 +156,16 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
         radiance += throughput * direct_shade(&m, d, e);
 #endif
         gpos = (float4)(p, as_float(mat));
+        galbedo = (float4)(m.albedo.xyz, 0.0f);
         gnormal = (float4)(n, 1.0f);
         gview = (float4)(wo, 0.0f);
         break;
     }
-    gbuf[4u * pixel] = gpos;
-    gbuf[4u * pixel + 1u] = gnormal;
-    gbuf[4u * pixel + 2u] = gview;
-    gbuf[4u * pixel + 3u] = (float4)(throughput, 0.0f);
+    gbuf[GBUF_SLOTS * pixel] = gpos;
+    gbuf[GBUF_SLOTS * pixel + 1u] = gnormal;
+    gbuf[GBUF_SLOTS * pixel + 2u] = gview;
+    gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(throughput, 0.0f);
+    gbuf[GBUF_SLOTS * pixel + 4u] = galbedo;
     image[pixel] = (float4)(radiance, 1.0f);
     if (aov) {
         aov[AOV_SLOTS * pixel] = (float4)(radiance, 1.0f);
@@ -183,15 +191,16 @@ inline int gbuffer_at(__global const float4 *gbuf, __global const vct_material_d
     if (x >= size.x || y >= size.y)
         return 0;
     *pixel = y * size.x + x;
-    const float4 gnormal = gbuf[4u * *pixel + 1u];
+    const float4 gnormal = gbuf[GBUF_SLOTS * *pixel + 1u];
     if (gnormal.w == 0.0f)
         return 0;
-    const float4 gpos = gbuf[4u * *pixel];
+    const float4 gpos = gbuf[GBUF_SLOTS * *pixel];
     s->p = gpos.xyz;
     s->n = gnormal.xyz;
-    s->wo = gbuf[4u * *pixel + 2u].xyz;
-    s->throughput = gbuf[4u * *pixel + 3u].xyz;
+    s->wo = gbuf[GBUF_SLOTS * *pixel + 2u].xyz;
+    s->throughput = gbuf[GBUF_SLOTS * *pixel + 3u].xyz;
     s->m = materials[as_uint(gpos.w)];
+    s->m.albedo.xyz = gbuf[GBUF_SLOTS * *pixel + 4u].xyz; /* textured */
     return 1;
 }
 

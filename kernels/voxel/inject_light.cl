@@ -20,6 +20,8 @@
  * (a spiral), so that its penumbrae reach the voxels too. */
 #include "light/direct_light.h"
 #include "light/emitters.h"
+#include "accel/tri_nearest.h"
+#include "voxel/fragment_albedo.h"
 #include "light/light_bins.h"
 #include "voxel/octree.h"
 #include "vct_types.h"
@@ -47,33 +49,6 @@ inline float inject_visibility(const grid_view *g, const light_bins_view *bins,
         seen += (uint)light_visible(g, p, up, lift, to, reach);
     }
     return (float)seen / (float)INJECT_EXTENT_SAMPLES;
-}
-
-/* The point of triangle (a, b, c) nearest p: by the region of the
- * triangle's plane that p projects into (a vertex, an edge, or inside). */
-inline float3 triangle_nearest(float3 p, float3 a, float3 b, float3 c) {
-    const float3 ab = b - a, ac = c - a;
-    const float a_ab = dot(ab, p - a), a_ac = dot(ac, p - a);
-    if (a_ab <= 0.0f && a_ac <= 0.0f)
-        return a;
-    const float b_ab = dot(ab, p - b), b_ac = dot(ac, p - b);
-    if (b_ab >= 0.0f && b_ac <= b_ab)
-        return b;
-    const float c_ab = dot(ab, p - c), c_ac = dot(ac, p - c);
-    if (c_ac >= 0.0f && c_ab <= c_ac)
-        return c;
-    const float w_c = a_ab * b_ac - b_ab * a_ac; /* p's weight of c, unnormalised */
-    if (w_c <= 0.0f && a_ab >= 0.0f && b_ab <= 0.0f)
-        return a + ab * (a_ab / (a_ab - b_ab));
-    const float w_b = c_ab * a_ac - a_ab * c_ac;
-    if (w_b <= 0.0f && a_ac >= 0.0f && c_ac <= 0.0f)
-        return a + ac * (a_ac / (a_ac - c_ac));
-    const float w_a = b_ab * c_ac - c_ab * b_ac;
-    if (w_a <= 0.0f && b_ac - b_ab >= 0.0f && c_ab - c_ac >= 0.0f)
-        return b + (c - b) * ((b_ac - b_ab) / ((b_ac - b_ab) + (c_ab - c_ac)));
-    const float inv = 1.0f / (w_a + w_b + w_c);
-    const float3 q = a + ab * (w_b * inv) + ac * (w_c * inv);
-    return all(isfinite(q)) ? q : a;
 }
 
 /* Irradiance at centre p from every light onto one fragment: triangle t,
@@ -135,13 +110,15 @@ __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                             uint fragments, __global const vct_material_desc *materials,
                             __global const uint *tri_material, __global const float4 *albedo,
                             __global const float4 *emission, __global const vct_light_desc *lights,
-                            uint light_count, EMITTER_ARGS, __global float4 *radiance) {
+                            uint light_count, EMITTER_ARGS, TEXTURE_ARGS,
+                            __global float4 *radiance) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
     const grid_view g = GRID_VIEW();
     const light_bins_view bins = LIGHT_BINS_VIEW();
     const emitter_view ev = EMITTER_VIEW();
+    const texture_view tv = TEXTURE_VIEW();
     const float size = vol.origin.w / (float)vol.res.x;
     const float3 p = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * size;
     const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
@@ -160,7 +137,8 @@ __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         float3 e = fragment_irradiance(&g, &bins, lights, light_count, p, q, cr / len);
         if (emitter_count > 0u)
             e += fragment_emitters(&g, &ev, materials, tri_material, p, q, cr / len, f);
-        reflected += materials[tri_material[t]].albedo.xyz * e;
+        const vct_material_desc m = materials[tri_material[t]];
+        reflected += fragment_albedo(&tv, &m, t, a, b, c, p, size) * e;
     }
     if (surfaces > 0u)
         reflected *= VCT_INV_PI / (float)surfaces;

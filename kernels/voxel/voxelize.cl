@@ -11,6 +11,7 @@
 #include "voxel/octree.h"
 #include "vct_types.h"
 #include "voxel/voxel_overlap.h"
+#include "voxel/fragment_albedo.h"
 
 #define VOX_COLUMNS_PER_CHUNK 32u
 
@@ -234,31 +235,59 @@ inline float3 tensor_axis(normal_tensor m) {
 }
 
 /* Averages each voxel's fragments in sorted order (deterministic): albedo
- * and opacity (1 - transmission), emission, and the normal axis. Surfaces
- * are two-sided, so a fragment's normal counts for its line, not its sign:
- * the voxel's normal is the axis that fits its fragments' normals best
- * (tensor_axis), and a surface wound either way, or a mix, gives it bit for
- * bit. normal.w: how well it fits, sqrt(mean of (n . axis)^2), 1 when all
- * fragments lie along it. emission.w holds the fragment count. */
+ * (each fragment's mean over its part of the voxel where its material has a
+ * texture, fragment_albedo.h) and opacity (1 - transmission), emission, and the normal axis.
+ * Surfaces are two-sided, so a fragment's normal counts for its line, not its sign: the voxel's
+ * normal is the axis that fits its fragments' normals best (tensor_axis), and a surface wound
+ * either way, or a mix, gives it bit for bit. normal.w: how well it fits, sqrt(mean of (n .
+ * axis)^2), 1 when all fragments lie along it. emission.w holds the fragment count. */
 __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_start, uint voxels,
                          uint fragments, __global const float4 *tri_normals,
-                         __global const vct_material_desc *materials, __global float4 *albedo_out,
-                         __global float4 *normal_out, __global float4 *emission_out) {
+                         __global const vct_material_desc *materials, __global const uint *keys,
+                         __global const int4 *tris, vct_volume_desc vol, TEXTURE_ARGS,
+                         __global float4 *albedo_out, __global float4 *normal_out,
+                         __global float4 *emission_out) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
+    const texture_view tv = TEXTURE_VIEW();
+    const float voxel = vol.origin.w / (float)vol.res.x;
+    const float unit = vol.origin.w / (float)(1u << VCT_VOLUME_UNITS_LOG2);
+    const float3 centre = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * voxel;
     const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
     float4 albedo = 0.0f;
-    float3 emission = 0.0f;
+    float3 emission = 0.0f, textured = 0.0f, touching = 0.0f;
+    uint textured_fragments = 0, covered = 0;
     normal_tensor m = {(float3)(0.0f), (float3)(0.0f)};
     for (uint f = begin; f < end; ++f) {
-        const float4 tn = tri_normals[ids[f]];
+        const uint t = ids[f];
+        const float4 tn = tri_normals[t];
         const vct_material_desc mat = materials[(uint)tn.w];
-        albedo += (float4)(mat.albedo.xyz, 1.0f - mat.specular.w);
+        if ((uint)mat.extra.y != 0u) {
+            uint inside;
+            const float3 sum = fragment_albedo_sum(
+                &tv, &mat, t, vol.origin.xyz + convert_float3(tris[3u * t].xyz) * unit,
+                vol.origin.xyz + convert_float3(tris[3u * t + 1u].xyz) * unit,
+                vol.origin.xyz + convert_float3(tris[3u * t + 2u].xyz) * unit, centre, voxel,
+                &inside);
+            if (inside > 0u)
+                textured += sum;
+            else
+                touching += sum;
+            covered += inside;
+            ++textured_fragments;
+            albedo.w += 1.0f - mat.specular.w;
+        } else {
+            albedo += (float4)(mat.albedo.xyz, 1.0f - mat.specular.w);
+        }
         emission += mat.emission.xyz;
         m.d += tn.xyz * tn.xyz;
         m.o += tn.xyz * tn.yzx;
     }
+    if (textured_fragments > 0u)
+        albedo.xyz +=
+            (float)textured_fragments *
+            (covered > 0u ? textured / (float)covered : touching / (float)textured_fragments);
     const float inv = 1.0f / (float)(end - begin);
     const float3 axis = tensor_axis(m);
     albedo_out[v] = albedo * inv;

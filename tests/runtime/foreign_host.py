@@ -182,9 +182,12 @@ check(np.array_equal(voxel_keys, load("voxel_keys.u32", np.uint32)),
       f"{voxel_keys.size} voxel keys equal the library's")
 nv = voxel_keys.size
 albedo, normal, emission = empty(16 * nv), empty(16 * nv), empty(16 * nv)
+# no textures: one-element texel, table and coordinate buffers (kernels/README.md)
+no_texels, no_table, no_uvs = empty(16), empty(16), empty(32)
 vox.vox_reduce(queue, (nv,), None, buf(frag_ids), buf(voxel_start.astype(np.uint32)),
-               np.uint32(nv), np.uint32(fragments), tri_normals, buf(materials), albedo, normal,
-               emission)
+               np.uint32(nv), np.uint32(fragments), tri_normals, buf(materials),
+               buf(voxel_keys.astype(np.uint32)), tris_buf, vol_desc, no_texels, no_table,
+               no_uvs, albedo, normal, emission)
 check(np.array_equal(read(albedo, np.float32, 4 * nv), load("voxel_albedo.f32", np.float32)),
       "voxel albedo and opacity equal the library's, bit for bit")
 check(np.array_equal(read(normal, np.float32, 4 * nv), load("voxel_normal.f32", np.float32)),

@@ -20,7 +20,22 @@ typedef struct vct_material {
     float roughness;    /* 0 = mirror, 1 = diffuse-like */
     float transmission; /* 0..1 */
     float ior;
+    /* Base-colour texture: 1 + its index in vct_scene.textures, 0 for none
+     * (so that a zeroed material has none). The texture's linear colour
+     * multiplies `albedo` (glTF's baseColorFactor). */
+    uint32_t albedo_texture;
+    uint32_t texture_wrap; /* VCT_WRAP_CLAMP_S | VCT_WRAP_CLAMP_T; else repeat */
 } vct_material;
+
+#define VCT_WRAP_CLAMP_S 1u
+#define VCT_WRAP_CLAMP_T 2u
+
+/* An image texture, decoded: rgb linear (from sRGB), alpha as stored. */
+typedef struct vct_texture {
+    char name[256];
+    int width, height;
+    float *rgba; /* width * height * 4, rows from the image's top */
+} vct_texture;
 
 typedef enum vct_light_type {
     VCT_LIGHT_POINT = 0,
@@ -60,6 +75,9 @@ typedef struct vct_scene {
     uint32_t *triangle_material;
     vct_material *materials;
     vct_light *lights;
+    float *uvs; /* 2 * vertex_count texture coordinates, or NULL (all 0) */
+    uint32_t texture_count;
+    vct_texture *textures;
     vct_camera camera;
     int has_camera;
     /* Radiance arriving from every direction where nothing is hit (a

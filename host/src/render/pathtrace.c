@@ -100,12 +100,16 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
     cl_uint max_depth = opt->max_depth, seed = opt->seed;
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 5, 9, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
-                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
-                          VCT_ARG_OF(sb.light_count), VCT_ARG_OF(eb.tris), VCT_ARG_OF(eb.cdf),
-                          VCT_ARG_OF(eb.count), VCT_ARG_OF(eb.inv_area));
+        rc = vct_set_args(err, STAGE, k, 5, 3, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(sb.tri_material));
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 16, 5, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
+        rc = vct_scene_texture_args(k, 8, &sb, STAGE, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 11, 6, VCT_ARG_OF(sb.lights), VCT_ARG_OF(sb.light_count),
+                          VCT_ARG_OF(eb.tris), VCT_ARG_OF(eb.cdf), VCT_ARG_OF(eb.count),
+                          VCT_ARG_OF(eb.inv_area));
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 19, 5, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
                           VCT_ARG_OF(accum), VCT_ARG_OF(discarded), VCT_ARG_OF(ambient));
     const size_t global[2] = {(size_t)opt->width, (size_t)opt->height}, local[2] = {8, 8};
     const int show = opt->progress && isatty(2);
@@ -119,7 +123,7 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
         cl_uint n = per_pass;
         if (opt->spp && done + n > opt->spp)
             n = opt->spp - done;
-        rc = vct_set_args(err, STAGE, k, 14, 2, VCT_ARG_OF(sample), VCT_ARG_OF(n));
+        rc = vct_set_args(err, STAGE, k, 17, 2, VCT_ARG_OF(sample), VCT_ARG_OF(n));
         if (rc == VCT_OK)
             rc = vct_launch_2d(ctx, k, global, local, err);
         /* Waiting per pass only serves the clock and the progress bar; a fixed

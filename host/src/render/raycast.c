@@ -75,13 +75,16 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     if (rc == VCT_OK)
         rc = k ? vct_grid_set_args(k, g, stage, err) : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, stage, k, 5, 5, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
-                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
-                          VCT_ARG_OF(sb.light_count));
+        rc = vct_set_args(err, stage, k, 5, 3, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(sb.tri_material));
     if (rc == VCT_OK)
-        rc = vct_emitters_set_args(k, 10, &em, VCT_EMITTER_SAMPLES, stage, err);
+        rc = vct_scene_texture_args(k, 8, &sb, stage, err);
     if (rc == VCT_OK)
-        rc = vct_set_args(err, stage, k, 15, 1, VCT_ARG_OF(img));
+        rc = vct_set_args(err, stage, k, 11, 2, VCT_ARG_OF(sb.lights), VCT_ARG_OF(sb.light_count));
+    if (rc == VCT_OK)
+        rc = vct_emitters_set_args(k, 13, &em, VCT_EMITTER_SAMPLES, stage, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, 18, 1, VCT_ARG_OF(img));
     const size_t global[2] = {(size_t)opt->width, (size_t)opt->height};
     const size_t local[2] = {8, 8};
     if (rc == VCT_OK)

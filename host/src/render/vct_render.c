@@ -181,13 +181,17 @@ static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_ca
     int rc = k ? vct_grid_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)
-        rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 5, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
-                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(sb.lights),
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 3, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
+                          VCT_ARG_OF(sb.tri_material));
+    if (rc == VCT_OK)
+        rc = vct_scene_texture_args(k, 8, &sb, PRIMARY_STAGE, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 11, 2, VCT_ARG_OF(sb.lights),
                           VCT_ARG_OF(sb.light_count));
     if (rc == VCT_OK)
-        rc = vct_emitters_set_args(k, 10, &f->emitters, VCT_EMITTER_SAMPLES, PRIMARY_STAGE, err);
+        rc = vct_emitters_set_args(k, 13, &f->emitters, VCT_EMITTER_SAMPLES, PRIMARY_STAGE, err);
     if (rc == VCT_OK)
-        rc = vct_set_args(err, PRIMARY_STAGE, k, 15, 5, VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 18, 5, VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
                           VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov), VCT_ARG_OF(f->reflection));
     if (rc == VCT_OK)
         rc = launch_frame_kernel(f, k, 1, err);
@@ -315,7 +319,7 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
 
     vct_stage_begin(ctx, PRIMARY_STAGE);
     rc = vct_program_get(ctx, "render/vct_render.cl", options, &f.program, err);
-    f.gbuf = rc == VCT_OK ? vct_buffer_create(ctx, PRIMARY_STAGE, "G-buffer", 64 * pixels,
+    f.gbuf = rc == VCT_OK ? vct_buffer_create(ctx, PRIMARY_STAGE, "G-buffer", 80 * pixels,
                                               CL_MEM_READ_WRITE, NULL, err)
                           : NULL;
     f.image = f.gbuf ? vct_frame_get(ctx, PRIMARY_STAGE, opt->width, opt->height, err) : NULL;

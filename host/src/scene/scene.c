@@ -25,6 +25,10 @@ void vct_scene_free(vct_scene *scene) {
     free(scene->triangle_material);
     free(scene->materials);
     free(scene->lights);
+    free(scene->uvs);
+    for (uint32_t t = 0; t < scene->texture_count; ++t)
+        free(scene->textures[t].rgba);
+    free(scene->textures);
     free(scene);
 }
 
@@ -93,7 +97,15 @@ int vct_scene_validate(vct_scene *s, vct_error *err) {
             !isfinite(mat->roughness) || !isfinite(mat->ior))
             return vct_fail(err, VCT_ERR_INPUT, "scene %s: material %u (%s) has a non-finite value",
                             src, m, mat->name);
+        if (mat->albedo_texture > s->texture_count)
+            return vct_fail(err, VCT_ERR_INPUT,
+                            "scene %s: material %u (%s) uses texture %u but there are only %u", src,
+                            m, mat->name, mat->albedo_texture - 1, s->texture_count);
     }
+    for (uint32_t i = 0; s->uvs && i < 2 * s->vertex_count; ++i)
+        if (!isfinite(s->uvs[i]))
+            return vct_fail(err, VCT_ERR_INPUT,
+                            "scene %s: vertex %u has a non-finite texture coordinate", src, i / 2);
     for (uint32_t l = 0; l < s->light_count; ++l) {
         int rc = check_light(src, l, &s->lights[l], err);
         if (rc)

@@ -67,12 +67,68 @@ void vct_material_desc_make(const vct_material *m, vct_material_desc *d) {
     d->emission.s[3] = m->roughness;
     d->specular.s[3] = m->transmission;
     d->extra.s[0] = m->ior;
+    d->extra.s[1] = (float)m->albedo_texture; /* exact: far below 2^24 */
+    d->extra.s[2] = (float)m->texture_wrap;
+}
+
+/* The texture buffers of b (see scene_device.h). */
+static int texture_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
+                                vct_scene_buffers *b, vct_error *err) {
+    size_t texels = 0;
+    for (uint32_t t = 0; t < s->texture_count; ++t)
+        texels += (size_t)s->textures[t].width * s->textures[t].height;
+    const int textured = s->texture_count > 0 && s->uvs;
+    const size_t n_texels = textured ? texels : 1, n_table = textured ? s->texture_count : 1,
+                 n_uvs = textured ? 2ull * s->triangle_count : 2;
+    float *tx = calloc(n_texels, 16), *uv = calloc(n_uvs, 16);
+    cl_uint *table = calloc(n_table, 16);
+    int rc =
+        tx && uv && table ? VCT_OK : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
+    size_t at = 0;
+    for (uint32_t t = 0; rc == VCT_OK && textured && t < s->texture_count; ++t) {
+        const vct_texture *x = &s->textures[t];
+        memcpy(tx + 4 * at, x->rgba, 16ull * x->width * x->height);
+        table[4 * t] = (cl_uint)at;
+        table[4 * t + 1] = (cl_uint)x->width;
+        table[4 * t + 2] = (cl_uint)x->height;
+        at += (size_t)x->width * x->height;
+    }
+    for (uint32_t t = 0; rc == VCT_OK && textured && t < s->triangle_count; ++t)
+        for (int k = 0; k < 3; ++k)
+            memcpy(uv + 8ull * t + 2 * k, &s->uvs[2 * s->triangles[3 * t + k]], 8);
+    if (rc == VCT_OK && texels > UINT32_MAX)
+        rc = vct_fail(err, VCT_ERR_INPUT, "%s: the textures hold %zu texels, over 2^32", stage,
+                      texels);
+    if (rc == VCT_OK)
+        b->texels = vct_buffer_create(ctx, stage, "texture texels", 16ull * n_texels,
+                                      CL_MEM_READ_ONLY, tx, err);
+    if (b->texels)
+        b->texture_table = vct_buffer_create(ctx, stage, "texture table", 16ull * n_table,
+                                             CL_MEM_READ_ONLY, table, err);
+    if (b->texture_table)
+        b->tri_uvs = vct_buffer_create(ctx, stage, "triangle texture coordinates", 16ull * n_uvs,
+                                       CL_MEM_READ_ONLY, uv, err);
+    if (rc == VCT_OK && !b->tri_uvs)
+        rc = err->status;
+    free(tx);
+    free(uv);
+    free(table);
+    return rc;
+}
+
+int vct_scene_texture_args(cl_kernel k, int first, const vct_scene_buffers *b, const char *stage,
+                           vct_error *err) {
+    return vct_set_args(err, stage, k, first, 3, VCT_ARG_OF(b->texels),
+                        VCT_ARG_OF(b->texture_table), VCT_ARG_OF(b->tri_uvs));
 }
 
 void vct_scene_buffers_release(vct_context *ctx, vct_scene_buffers *b) {
     vct_buffer_release(ctx, b->materials);
     vct_buffer_release(ctx, b->tri_material);
     vct_buffer_release(ctx, b->lights);
+    vct_buffer_release(ctx, b->texels);
+    vct_buffer_release(ctx, b->texture_table);
+    vct_buffer_release(ctx, b->tri_uvs);
 }
 
 int vct_scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
@@ -102,9 +158,8 @@ int vct_scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *sta
                     : NULL;
     free(mats);
     free(lights);
-    if (!b->lights) {
+    const int rc = b->lights ? texture_buffers_make(ctx, s, stage, b, err) : (int)err->status;
+    if (rc != VCT_OK)
         vct_scene_buffers_release(ctx, b);
-        return err->status;
-    }
-    return VCT_OK;
+    return rc;
 }

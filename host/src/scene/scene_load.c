@@ -15,10 +15,11 @@
 
 #include "runtime/runtime.h"
 #include "scene/gltf_json.h"
+#include "scene/scene_textures.h"
 
 typedef struct builder {
     vct_scene *s;
-    uint32_t vertex_cap, triangle_cap;
+    uint32_t vertex_cap, triangle_cap, uv_cap;
     const char *path;
     vct_error *err;
 } builder;
@@ -59,6 +60,24 @@ static int add_mesh(builder *b, const struct aiMesh *mesh, const struct aiMatrix
             return vct_fail(b->err, VCT_ERR_INPUT,
                             "scene %s: mesh \"%s\" vertex %u is not finite (%g, %g, %g)", b->path,
                             mesh->mName.data, i, v.x, v.y, v.z);
+    }
+    /* Texture coordinates: channel 0, or 0 for a mesh without; the array
+     * appears with the first mesh that has them. */
+    if (mesh->mTextureCoords[0] || s->uvs) {
+        uint32_t ucap = b->uv_cap;
+        const int first = !s->uvs;
+        if (!grow((void **)&s->uvs, &ucap, (uint32_t)verts, 2 * sizeof(float)))
+            return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
+        b->uv_cap = ucap;
+        if (first)
+            memset(s->uvs, 0, 2 * sizeof(float) * base);
+        for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+            const struct aiVector3D *uv =
+                mesh->mTextureCoords[0] ? &mesh->mTextureCoords[0][i] : NULL;
+            s->uvs[2 * (base + i)] = uv ? uv->x : 0.0f;
+            /* glTF's v runs down the image as rows do; assimp flips it up */
+            s->uvs[2 * (base + i) + 1] = uv ? 1.0f - uv->y : 0.0f;
+        }
     }
     s->vertex_count = (uint32_t)verts;
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
@@ -285,7 +304,8 @@ static int read_materials(const struct aiScene *sc, const char *path, vct_scene 
         else if (aiGetMaterialFloatArray(am, AI_MATKEY_OPACITY, &f, NULL) == aiReturn_SUCCESS &&
                  f < 1.0f)
             m->transmission = 1.0f - f;
-        /* Textures are not sampled yet, but a missing one is a broken scene. */
+        /* A missing texture of any kind is a broken scene (base colour is read
+         * by scene_textures.c; the others are not used yet). */
         for (int type = aiTextureType_DIFFUSE; type <= aiTextureType_TRANSMISSION; ++type) {
             unsigned count = aiGetMaterialTextureCount(am, (enum aiTextureType)type);
             for (unsigned t = 0; t < count; ++t) {
@@ -325,12 +345,14 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
         return NULL;
     }
     snprintf(s->source, sizeof s->source, "%s", path);
-    builder b = {s, 0, 0, path, err};
+    builder b = {s, 0, 0, 0, path, err};
     struct aiMatrix4x4 identity;
     aiIdentityMatrix4(&identity);
     int rc = read_materials(sc, path, s, err);
     if (rc == VCT_OK)
         rc = vct_gltf_extensions_apply(path, s, err);
+    if (rc == VCT_OK)
+        rc = vct_scene_load_textures(sc, path, s, err);
     if (rc == VCT_OK)
         rc = walk(&b, sc, sc->mRootNode, &identity);
     if (rc == VCT_OK)

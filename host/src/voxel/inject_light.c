@@ -54,7 +54,9 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     if (k && rc == VCT_OK)
         rc = vct_emitters_set_args(k, 21, &em, VCT_EMITTER_INJECT_SAMPLES, STAGE, err);
     if (k && rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 26, 1, VCT_ARG_OF(v->radiance));
+        rc = vct_scene_texture_args(k, 26, &sb, STAGE, err);
+    if (k && rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 29, 1, VCT_ARG_OF(v->radiance));
     if (k && rc == VCT_OK)
         rc = vct_launch(ctx, k, n, 64, err);
     if (rc == VCT_OK)

@@ -86,6 +86,7 @@ typedef struct voxelize_state {
     cl_program program;
     cl_mem tris, tri_normals, materials, chunk_start, counts, frag_keys, frag_ids;
     uint32_t chunks;
+    vct_scene_buffers scene; /* the textures, for the voxels' albedo */
 } voxelize_state;
 
 /* Fragments: chunks -> scan -> count -> scan -> write, then a stable sort. */
@@ -194,10 +195,13 @@ static int reduce_fragments(voxelize_state *st, vct_error *err) {
         rc = *outs[i] ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, st->program, "vox_reduce", STAGE, nv, err, 9,
+        rc = vct_run_kernel(ctx, st->program, "vox_reduce", STAGE, nv, err, 15,
                             VCT_ARG_OF(st->frag_ids), VCT_ARG_OF(start), VCT_ARG_OF(nv),
                             VCT_ARG_OF(f), VCT_ARG_OF(st->tri_normals), VCT_ARG_OF(st->materials),
-                            VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission));
+                            VCT_ARG_OF(v->keys), VCT_ARG_OF(st->tris), VCT_ARG_OF(st->desc),
+                            VCT_ARG_OF(st->scene.texels), VCT_ARG_OF(st->scene.texture_table),
+                            VCT_ARG_OF(st->scene.tri_uvs), VCT_ARG_OF(v->albedo),
+                            VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission));
     /* kept: light injection reads each voxel's fragments */
     v->fragment_start = start;
     v->fragment_tri = st->frag_ids;
@@ -229,6 +233,8 @@ static int upload_triangles(voxelize_state *st, const vct_scene *s, vct_error *e
         rc = st->materials ? VCT_OK : (int)err->status;
     }
     free(m);
+    if (rc == VCT_OK)
+        rc = vct_scene_buffers_make(ctx, s, STAGE, &st->scene, err);
     return rc;
 }
 
@@ -270,6 +276,7 @@ vct_voxels *vct_voxelize(vct_context *ctx, const vct_scene *s, const vct_voxel_o
                       st.counts, st.frag_keys,   st.frag_ids};
     for (size_t i = 0; i < sizeof temps / sizeof temps[0]; ++i)
         vct_buffer_release(ctx, temps[i]);
+    vct_scene_buffers_release(ctx, &st.scene);
     vct_stage_end(ctx);
     if (rc != VCT_OK) {
         vct_voxels_free(v);

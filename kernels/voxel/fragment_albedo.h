@@ -1,0 +1,65 @@
+/* A fragment's albedo: the mean of its material's (textured) albedo over
+ * the part of its triangle inside the voxel, not one texel. A square of
+ * FRAGMENT_ALBEDO_SIDE^2 stratified points about the voxel's centre, in the
+ * triangle's plane, is projected onto the plane; the points that land inside
+ * both the triangle and the voxel are read. A fragment that none lands on
+ * (a sliver through a corner) reads the point nearest the centre. */
+#ifndef VCT_FRAGMENT_ALBEDO_H
+#define VCT_FRAGMENT_ALBEDO_H
+
+#include "accel/tri_nearest.h"
+#include "scene/bsdf.h"
+#include "scene/texture.h"
+#include "vct_types.h"
+
+#define FRAGMENT_ALBEDO_SIDE 8
+
+/* The sum of m's albedo over the samples of triangle tri that land inside
+ * it and the voxel, and their count in *inside; where none does, the albedo
+ * at the triangle's point nearest the centre, with *inside 0. */
+inline float3 fragment_albedo_sum(const texture_view *tv, const vct_material_desc *m, uint tri,
+                                  float3 a, float3 b, float3 c, float3 centre, float voxel,
+                                  uint *inside) {
+    *inside = 0u;
+    const float3 cr = cross(b - a, c - a);
+    const float len = length(cr);
+    if ((uint)m->extra.y == 0u || !(len > 0.0f))
+        return m->albedo.xyz;
+    /* the plane's frame from its normal turned one fixed way, so that the
+     * samples do not depend on the winding */
+    float3 n = cr / len;
+    const float3 an = fabs(n);
+    if ((an.x >= an.y && an.x >= an.z ? n.x : an.y >= an.z ? n.y : n.z) < 0.0f)
+        n = -n;
+    float3 t1, t2;
+    basis_of(n, &t1, &t2);
+    const float3 on_plane = centre - n * dot(centre - a, n);
+    const float half_voxel = 0.5f * voxel * (1.0f + 1e-5f);
+    float3 sum = (float3)(0.0f);
+    for (int j = 0; j < FRAGMENT_ALBEDO_SIDE; ++j)
+        for (int i = 0; i < FRAGMENT_ALBEDO_SIDE; ++i) {
+            const float s = ((float)i + 0.5f) / FRAGMENT_ALBEDO_SIDE - 0.5f;
+            const float t = ((float)j + 0.5f) / FRAGMENT_ALBEDO_SIDE - 0.5f;
+            const float3 q = on_plane + voxel * (s * t1 + t * t2);
+            const float2 uv = triangle_barycentrics(q, a, b, c);
+            if (uv.x < 0.0f || uv.y < 0.0f || uv.x + uv.y > 1.0f ||
+                any(fabs(q - centre) > half_voxel))
+                continue;
+            sum += texture_albedo(tv, m, tri, uv.x, uv.y);
+            ++*inside;
+        }
+    if (*inside > 0u)
+        return sum;
+    const float2 uv = triangle_barycentrics(triangle_nearest(centre, a, b, c), a, b, c);
+    return texture_albedo(tv, m, tri, uv.x, uv.y);
+}
+
+/* The fragment's own mean (light injection shades each fragment alone). */
+inline float3 fragment_albedo(const texture_view *tv, const vct_material_desc *m, uint tri,
+                              float3 a, float3 b, float3 c, float3 centre, float voxel) {
+    uint inside;
+    const float3 sum = fragment_albedo_sum(tv, m, tri, a, b, c, centre, voxel, &inside);
+    return inside > 0u ? sum / (float)inside : sum;
+}
+
+#endif
