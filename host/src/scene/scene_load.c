@@ -15,6 +15,7 @@
 
 #include "runtime/runtime.h"
 #include "scene/gltf_json.h"
+#include "scene/obj_check.h"
 #include "scene/scene_textures.h"
 
 typedef struct builder {
@@ -328,7 +329,7 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
         vct_fail(err, VCT_ERR_IO, "scene %s: cannot read the file", path);
         return NULL;
     }
-    if (vct_gltf_precheck(path, err))
+    if (vct_gltf_precheck(path, err) || vct_obj_precheck(path, err))
         return NULL;
     const struct aiScene *sc = aiImportFile(path, aiProcess_Triangulate);
     if (!sc || !sc->mRootNode) {
