@@ -76,11 +76,7 @@ static const double LAMP[4][3] = {{4, 3, 4}, {6, 3, 4}, {6, 3, 6}, {4, 3, 6}};
 static void pixels_against_analytic(const char *name, int blocker, int lamp_up) {
     vct_scene *s = lamp_scene(blocker, lamp_up);
     vct_plan plan;
-    vct_effect_force force[VCT_EFFECTS];
-    for (int e = 0; e < VCT_EFFECTS; ++e)
-        force[e] = VCT_FORCE_AUTO;
-    force[VCT_EFFECT_INDIRECT] = VCT_FORCE_OFF;
-    vct_plan_make(s, force, &plan);
+    vct_case_direct_plan(s, &plan);
     CHECK(plan.on[VCT_EFFECT_DIRECT] && strstr(plan.why[VCT_EFFECT_DIRECT], "emissive"),
           "%s: direct light planned for the emitters (%s)", name, plan.why[VCT_EFFECT_DIRECT]);
     vct_aovs aovs;

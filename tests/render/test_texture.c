@@ -78,11 +78,7 @@ static vct_scene *floor_scene(float reps, uint32_t wrap, float shift) {
 static void pixels_against_reference(const char *name, float reps, uint32_t wrap) {
     vct_scene *s = floor_scene(reps, wrap, 0.0f);
     vct_plan plan;
-    vct_effect_force force[VCT_EFFECTS];
-    for (int e = 0; e < VCT_EFFECTS; ++e)
-        force[e] = VCT_FORCE_AUTO;
-    force[VCT_EFFECT_INDIRECT] = VCT_FORCE_OFF;
-    vct_plan_make(s, force, &plan);
+    vct_case_direct_plan(s, &plan);
     vct_aovs aovs;
     vct_image im = vct_case_render(ctx, s, &plan, 16, 80, 80, 1, &aovs);
     int checked = 0, bad = 0;

@@ -31,4 +31,13 @@ static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, co
     return image;
 }
 
+/* The scene's own plan with indirect light forced off: direct light alone. */
+static inline void vct_case_direct_plan(const vct_scene *s, vct_plan *plan) {
+    vct_effect_force force[VCT_EFFECTS];
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        force[e] = VCT_FORCE_AUTO;
+    force[VCT_EFFECT_INDIRECT] = VCT_FORCE_OFF;
+    vct_plan_make(s, force, plan);
+}
+
 #endif

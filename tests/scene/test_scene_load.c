@@ -71,19 +71,25 @@ static const char *gltf =
     "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,"
     "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}]}";
 
-static void check_hierarchy(void) {
+/* Loads `text` as a glTF file of a private directory. */
+static vct_scene *load_gltf_text(const char *text) {
     char dir[] = "/tmp/vct-scene-XXXXXX", path[64];
     if (!mkdtemp(dir))
         exit(1);
-    snprintf(path, sizeof path, "%s/nodes.gltf", dir);
+    snprintf(path, sizeof path, "%s/scene.gltf", dir);
     FILE *f = fopen(path, "w");
-    if (!f || fputs(gltf, f) < 0 || fclose(f) != 0)
+    if (!f || fputs(text, f) < 0 || fclose(f) != 0)
         exit(1);
     vct_error err = {0};
     vct_scene *s = vct_scene_load(path, &err);
     unlink(path);
     rmdir(dir);
     REQUIRE_OK(s ? VCT_OK : err.status, err);
+    return s;
+}
+
+static void check_hierarchy(void) {
+    vct_scene *s = load_gltf_text(gltf);
     CHECK(s->triangle_count == 1, "hierarchy: %u triangles", s->triangle_count);
     /* Vertex (1, 0, 0) -> child (11, 0, 0) -> parent scale 2 -> (22, 0, 0). */
     float max_x = -1e9f;
@@ -145,18 +151,7 @@ static const vct_material *named(const vct_scene *s, const char *name) {
 }
 
 static void check_materials(void) {
-    char dir[] = "/tmp/vct-scene-XXXXXX", path[64];
-    if (!mkdtemp(dir))
-        exit(1);
-    snprintf(path, sizeof path, "%s/materials.gltf", dir);
-    FILE *f = fopen(path, "w");
-    if (!f || fputs(gltf_materials, f) < 0 || fclose(f) != 0)
-        exit(1);
-    vct_error err = {0};
-    vct_scene *s = vct_scene_load(path, &err);
-    unlink(path);
-    rmdir(dir);
-    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    vct_scene *s = load_gltf_text(gltf_materials);
     const vct_material *lamp = named(s, "lamp"), *glass = named(s, "glass"),
                        *gold = named(s, "gold");
     CHECK(lamp && near(lamp->emission[0], 8.0f, 1e-6f) && near(lamp->emission[1], 4.0f, 1e-6f) &&

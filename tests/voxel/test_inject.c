@@ -36,6 +36,28 @@ static void inject(inject_case *c) {
     REQUIRE_OK(vct_voxels_read_radiance(ctx, c->voxels, c->radiance, &err), err);
 }
 
+/* The grid and the voxels of c.scene in [0, 16]^3, its voxel keys read
+ * back (the previous ones released). */
+static void case_build(inject_case *c) {
+    vct_error err = {0};
+    vct_grid_free(c->grid);
+    vct_voxels_free(c->voxels);
+    free(c->keys);
+    free(c->radiance);
+    c->grid = vct_grid_build(ctx, c->scene, NULL, &err);
+    REQUIRE_OK(c->grid ? VCT_OK : err.status, err);
+    vct_voxel_options o = {0};
+    o.resolution = RES;
+    o.has_bounds = 1;
+    o.bounds_size = RES;
+    c->voxels = vct_voxelize(ctx, c->scene, &o, &err);
+    REQUIRE_OK(c->voxels ? VCT_OK : err.status, err);
+    vct_voxels_info_get(c->voxels, &c->info);
+    c->keys = malloc(4ull * c->info.voxels);
+    c->radiance = malloc(16ull * c->info.voxels);
+    REQUIRE_OK(vct_voxels_read(ctx, c->voxels, c->keys, NULL, NULL, NULL, &err), err);
+}
+
 /* Plane z = PLANE_Z over [0, 16]^2 facing +z, plus an optional occluder
  * square at z = 11.5 over [3, 9]^2 and a material for the plane. */
 static inject_case make_case(int occluder, const vct_material *plane_material) {
@@ -48,18 +70,7 @@ static inject_case make_case(int occluder, const vct_material *plane_material) {
     inject_case c = {0};
     c.scene = vct_scene_from_arrays(pos, 8, tri, occluder ? 4 : 2, mat, m, 2, &err);
     REQUIRE_OK(c.scene ? VCT_OK : err.status, err);
-    c.grid = vct_grid_build(ctx, c.scene, NULL, &err);
-    REQUIRE_OK(c.grid ? VCT_OK : err.status, err);
-    vct_voxel_options o = {0};
-    o.resolution = RES;
-    o.has_bounds = 1;
-    o.bounds_size = RES;
-    c.voxels = vct_voxelize(ctx, c.scene, &o, &err);
-    REQUIRE_OK(c.voxels ? VCT_OK : err.status, err);
-    vct_voxels_info_get(c.voxels, &c.info);
-    c.keys = malloc(4ull * c.info.voxels);
-    c.radiance = malloc(16ull * c.info.voxels);
-    REQUIRE_OK(vct_voxels_read(ctx, c.voxels, c.keys, NULL, NULL, NULL, &err), err);
+    case_build(&c);
     return c;
 }
 
@@ -165,18 +176,7 @@ static float *thin_slab(const char *name, float bottom, float top, unsigned wind
     const double light[3] = {8.3, 7.7, 14.5}, intensity = 100.0;
     vct_light l = {VCT_LIGHT_POINT, {8.3f, 7.7f, 14.5f}, {0}, {100, 100, 100}, 0, 0, 0};
     REQUIRE_OK(vct_scene_add_light(c.scene, &l, &err), err);
-    c.grid = vct_grid_build(ctx, c.scene, NULL, &err);
-    REQUIRE_OK(c.grid ? VCT_OK : err.status, err);
-    vct_voxel_options o = {0};
-    o.resolution = RES;
-    o.has_bounds = 1;
-    o.bounds_size = RES;
-    c.voxels = vct_voxelize(ctx, c.scene, &o, &err);
-    REQUIRE_OK(c.voxels ? VCT_OK : err.status, err);
-    vct_voxels_info_get(c.voxels, &c.info);
-    c.keys = malloc(4ull * c.info.voxels);
-    c.radiance = malloc(16ull * c.info.voxels);
-    REQUIRE_OK(vct_voxels_read(ctx, c.voxels, c.keys, NULL, NULL, NULL, &err), err);
+    case_build(&c);
     inject(&c);
     const uint32_t lit_layer = (uint32_t)top, dark_layer = (uint32_t)bottom;
     const double share = lit_layer == dark_layer ? 0.5 : 1.0;
@@ -276,19 +276,7 @@ int main(void) {
         c.scene->triangles[3 * t + 1] = c.scene->triangles[3 * t + 2];
         c.scene->triangles[3 * t + 2] = keep;
     }
-    vct_grid_free(c.grid);
-    vct_voxels_free(c.voxels);
-    {
-        vct_error e = {0};
-        vct_voxel_options o = {0};
-        o.resolution = RES;
-        o.has_bounds = 1;
-        o.bounds_size = RES;
-        c.grid = vct_grid_build(ctx, c.scene, NULL, &e);
-        REQUIRE_OK(c.grid ? VCT_OK : e.status, e);
-        c.voxels = vct_voxelize(ctx, c.scene, &o, &e);
-        REQUIRE_OK(c.voxels ? VCT_OK : e.status, e);
-    }
+    case_build(&c);
     check_point_light("point light, winding reversed", &c, light, 100.0, 0, 0.0f);
     double winding_diff = 0.0;
     for (uint32_t i = 0; i < 4 * c.info.voxels; ++i)
