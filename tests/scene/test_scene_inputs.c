@@ -4,7 +4,8 @@
  * keeps what the fuzzer (tools/fuzz.sh) found, once fixed, beside
  * hand-written bad input: malformed JSON, bad base64 (on which assimp 5.2
  * leaks), an index out of range, a NaN vertex, a truncated binary glTF and a
- * negative emissive strength. A refusal with a NAME.expect file beside it
+ * negative emissive strength. An OBJ's material file (.mtl) is read with
+ * it, not alone. A refusal with a NAME.expect file beside it
  * must also say what that file's first line says. */
 #include <dirent.h>
 #include <stdio.h>
@@ -22,7 +23,8 @@ int main(void) {
     for (struct dirent *e; d && (e = readdir(d)) != NULL;) {
         const int refuse = strncmp(e->d_name, "refuse_", 7) == 0;
         const char *dot = strrchr(e->d_name, '.');
-        if ((!refuse && strncmp(e->d_name, "load_", 5) != 0) || (dot && !strcmp(dot, ".expect")))
+        if ((!refuse && strncmp(e->d_name, "load_", 5) != 0) ||
+            (dot && (!strcmp(dot, ".expect") || !strcmp(dot, ".mtl"))))
             continue;
         char path[2048];
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);

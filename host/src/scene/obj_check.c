@@ -1,7 +1,8 @@
 /* OBJ files checked before assimp parses them: assimp 5.2 leaks memory when
  * its OBJ parser gives up (found by tools/fuzz.sh: a face index out of
- * range, bytes no number can hold), so those are refused here first, naming
- * the line. */
+ * range, bytes no number can hold), and reads past the end of an MTL file
+ * whose texture statement has no file name (a crash), so those are refused
+ * here first, naming the file and line. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,6 +36,58 @@ static int face_indices_ok(const char *rest, long count, long *bad) {
             ++p; /* the /vt/vn part */
     }
     return 1;
+}
+
+/* Texture statements of an MTL file, each to be followed by a file name. */
+static const char *const texture_keywords[] = {
+    "map_ka", "map_kd", "map_ks", "map_ke", "map_ns", "map_d", "map_bump", "map_disp", "map_pr",
+    "map_pm", "map_ps", "map_ao", "map_kn", "bump",   "disp",  "decal",    "refl",     "norm"};
+
+/* 1 if the line of an MTL file starting at `line` is no texture statement,
+ * or a known one with an argument after it. */
+static int mtl_line_ok(const char *line) {
+    const char *p = line;
+    while (*p == ' ' || *p == '\t')
+        ++p;
+    size_t n = 0;
+    while (p[n] && p[n] != ' ' && p[n] != '\t' && p[n] != '\r' && p[n] != '\n')
+        ++n;
+    const int texture = strncasecmp(p, "map_", 4) == 0 || strncasecmp(p, "bump", 4) == 0 ||
+                        strncasecmp(p, "disp", 4) == 0 || strncasecmp(p, "decal", 5) == 0 ||
+                        strncasecmp(p, "refl", 4) == 0 || strncasecmp(p, "norm", 4) == 0;
+    if (!texture)
+        return 1;
+    int known = 0;
+    for (size_t k = 0; k < sizeof texture_keywords / sizeof texture_keywords[0]; ++k)
+        known |= strlen(texture_keywords[k]) == n && strncasecmp(p, texture_keywords[k], n) == 0;
+    const char *rest = p + n;
+    while (*rest == ' ' || *rest == '\t')
+        ++rest;
+    return known && *rest && *rest != '\r' && *rest != '\n';
+}
+
+/* Checks the MTL file `name`, beside the model, if it exists. */
+static int mtl_precheck(const char *model, const char *name, vct_error *err) {
+    char path[2048];
+    const char *slash = strrchr(model, '/');
+    const int dir_len = slash ? (int)(slash - model + 1) : 0;
+    snprintf(path, sizeof path, "%.*s%s", dir_len, model, name);
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return VCT_OK;
+    char line[8192];
+    unsigned number = 0;
+    int rc = VCT_OK;
+    while (rc == VCT_OK && fgets(line, sizeof line, f)) {
+        ++number;
+        if (!mtl_line_ok(line))
+            rc = vct_fail(err, VCT_ERR_INPUT,
+                          "scene %s: material file %s, line %u: a texture statement without a "
+                          "file name, or one vct does not know",
+                          model, name, number);
+    }
+    fclose(f);
+    return rc;
 }
 
 int vct_obj_precheck(const char *path, vct_error *err) {
@@ -72,9 +125,16 @@ int vct_obj_precheck(const char *path, vct_error *err) {
                               number, (unsigned char)line[i]);
                 break;
             }
-        if (rc != VCT_OK || !start)
+        if (rc != VCT_OK)
             continue;
         long bad = 0;
+        if (start == 0 && strncmp(line, "mtllib", 6) == 0 && (line[6] == ' ' || line[6] == '\t')) {
+            char *name = line + 7;
+            name[strcspn(name, "\r\n")] = '\0';
+            while (*name == ' ' || *name == '\t')
+                ++name;
+            rc = mtl_precheck(path, name, err);
+        }
         if (start == 1 && line[0] == 'v')
             ++vertices;
         else if (line[0] == 'f' && !face_indices_ok(line + 1, vertices, &bad))
@@ -86,5 +146,13 @@ int vct_obj_precheck(const char *path, vct_error *err) {
     if (rc == VCT_OK && ferror(f))
         rc = vct_fail(err, VCT_ERR_IO, "scene %s: read error", path);
     fclose(f);
+    /* assimp reads <name>.mtl where the named one is missing */
+    if (rc == VCT_OK) {
+        const char *slash = strrchr(path, '/');
+        char fallback[1024];
+        snprintf(fallback, sizeof fallback, "%.*s.mtl", (int)(dot - (slash ? slash + 1 : path)),
+                 slash ? slash + 1 : path);
+        rc = mtl_precheck(path, fallback, err);
+    }
     return rc;
 }
