@@ -76,7 +76,27 @@ static int base64_payload_ok(const char *uri) {
     return pad <= 2 && n % 4 == 0;
 }
 
+/* 1 if `path` names a .glb file that does not start with a binary glTF
+ * header and JSON chunk (assimp would read it by its content as another
+ * format instead). */
+static int glb_without_header(const char *path) {
+    const char *dot = strrchr(path, '.');
+    if (!dot || strcasecmp(dot, ".glb") != 0)
+        return 0;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    unsigned char head[20];
+    const int ok = fread(head, 1, 20, f) == 20 && memcmp(head, "glTF", 4) == 0 &&
+                   memcmp(head + 16, "JSON", 4) == 0;
+    fclose(f);
+    return !ok;
+}
+
 int vct_gltf_precheck(const char *path, vct_error *err) {
+    if (glb_without_header(path))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "scene %s: not a binary glTF file (no glTF header and JSON chunk)", path);
     char *text = read_json(path);
     if (!text)
         return VCT_OK; /* not glTF, or unreadable: assimp says which */

@@ -4,7 +4,8 @@
 
 #include "runtime/runtime.h"
 
-/* Checks, before assimp parses `path`, what assimp 5.2 mishandles: JSON that
+/* Checks, before assimp parses `path`, what assimp 5.2 mishandles: a .glb
+ * without its binary header (read by content as another format), JSON that
  * does not parse, and embedded buffers whose data URI is not base64 (assimp
  * leaks memory on those). Nothing for other formats. */
 int vct_gltf_precheck(const char *path, vct_error *err);

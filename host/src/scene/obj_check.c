@@ -1,8 +1,8 @@
 /* OBJ files checked before assimp parses them: assimp 5.2 leaks memory when
  * its OBJ parser gives up (found by tools/fuzz.sh: a face index out of
- * range, bytes no number can hold), and reads past the end of an MTL file
- * whose texture statement has no file name (a crash), so those are refused
- * here first, naming the file and line. */
+ * range, bytes no number can hold), and crashes on an MTL file whose
+ * statements come before any newmtl, so those are refused here first,
+ * naming the file and line. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,32 +38,28 @@ static int face_indices_ok(const char *rest, long count, long *bad) {
     return 1;
 }
 
-/* Texture statements of an MTL file, each to be followed by a file name. */
-static const char *const texture_keywords[] = {
-    "map_ka", "map_kd", "map_ks", "map_ke", "map_ns", "map_d", "map_bump", "map_disp", "map_pr",
-    "map_pm", "map_ps", "map_ao", "map_kn", "bump",   "disp",  "decal",    "refl",     "norm"};
+/* 1 if `line` of an MTL file is blank or a comment. */
+static int mtl_blank(const char *line) {
+    const char *p = line;
+    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
+        ++p;
+    return *p == '\0' || *p == '#';
+}
 
-/* 1 if the line of an MTL file starting at `line` is no texture statement,
- * or a known one with an argument after it. */
-static int mtl_line_ok(const char *line) {
+/* 1 if `line` is a texture statement (map_*, bump, disp, decal, refl, norm)
+ * with nothing after its keyword. */
+static int mtl_texture_without_file(const char *line) {
     const char *p = line;
     while (*p == ' ' || *p == '\t')
         ++p;
-    size_t n = 0;
-    while (p[n] && p[n] != ' ' && p[n] != '\t' && p[n] != '\r' && p[n] != '\n')
-        ++n;
     const int texture = strncasecmp(p, "map_", 4) == 0 || strncasecmp(p, "bump", 4) == 0 ||
                         strncasecmp(p, "disp", 4) == 0 || strncasecmp(p, "decal", 5) == 0 ||
                         strncasecmp(p, "refl", 4) == 0 || strncasecmp(p, "norm", 4) == 0;
-    if (!texture)
-        return 1;
-    int known = 0;
-    for (size_t k = 0; k < sizeof texture_keywords / sizeof texture_keywords[0]; ++k)
-        known |= strlen(texture_keywords[k]) == n && strncasecmp(p, texture_keywords[k], n) == 0;
-    const char *rest = p + n;
-    while (*rest == ' ' || *rest == '\t')
-        ++rest;
-    return known && *rest && *rest != '\r' && *rest != '\n';
+    while (*p && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n')
+        ++p;
+    while (*p == ' ' || *p == '\t')
+        ++p;
+    return texture && (*p == '\0' || *p == '\r' || *p == '\n');
 }
 
 /* Checks the MTL file `name`, beside the model, if it exists. */
@@ -77,13 +73,21 @@ static int mtl_precheck(const char *model, const char *name, vct_error *err) {
         return VCT_OK;
     char line[8192];
     unsigned number = 0;
-    int rc = VCT_OK;
+    int rc = VCT_OK, material = 0;
     while (rc == VCT_OK && fgets(line, sizeof line, f)) {
         ++number;
-        if (!mtl_line_ok(line))
+        if (mtl_blank(line))
+            continue;
+        if (strncmp(line, "newmtl", 6) == 0)
+            material = 1;
+        else if (!material)
+            rc = vct_fail(err, VCT_ERR_INPUT,
+                          "scene %s: material file %s, line %u: a statement before any newmtl",
+                          model, name, number);
+        else if (mtl_texture_without_file(line))
             rc = vct_fail(err, VCT_ERR_INPUT,
                           "scene %s: material file %s, line %u: a texture statement without a "
-                          "file name, or one vct does not know",
+                          "file name",
                           model, name, number);
     }
     fclose(f);
