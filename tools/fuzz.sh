@@ -30,6 +30,8 @@ for f in tests/scene/inputs/*.gltf tests/scene/inputs/*.glb tests/scene/inputs/*
 done
 cd out/fuzz
 # fork mode keeps fuzzing past a finding, so that one run collects them all
+# leaks inside assimp itself are upstream: tools/fuzz/lsan.supp
+LSAN_OPTIONS=suppressions=$(pwd)/../../tools/fuzz/lsan.supp:print_suppressions=1 \
 ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
     ../../build-fuzz/fuzz_scene_load corpus seeds -max_total_time="$SECONDS_TO_RUN" \
     -timeout=20 -rss_limit_mb=4096 -max_len=400000 -fork="$JOBS" -ignore_crashes=1 \

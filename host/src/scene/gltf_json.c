@@ -56,12 +56,16 @@ static vct_material *material_for(vct_scene *s, uint32_t i, const char *name) {
     return NULL;
 }
 
-/* 1 if every character of the data URI's payload after "base64," is of
- * the base64 alphabet (padding only at the end). */
+/* 1 if the data URI is base64, every character of its payload after
+ * "base64," of the alphabet (padding only at the end). */
 static int base64_payload_ok(const char *uri) {
     const char *p = strstr(uri, ";base64,");
     if (!p)
-        return 1; /* not base64: assimp reports it */
+        return 0;                             /* glTF's data URIs are base64 */
+    for (const char *m = uri + 5; m < p; ++m) /* the media type */
+        if (!((*m >= 'a' && *m <= 'z') || (*m >= 'A' && *m <= 'Z') || (*m >= '0' && *m <= '9') ||
+              *m == '/' || *m == '+' || *m == '-' || *m == '.'))
+            return 0;
     p += 8;
     size_t n = 0, pad = 0;
     for (; *p; ++p, ++n) {
@@ -105,17 +109,21 @@ int vct_gltf_precheck(const char *path, vct_error *err) {
     if (!root)
         return vct_fail(err, VCT_ERR_INPUT, "scene %s: its glTF JSON does not parse", path);
     int rc = VCT_OK;
-    uint32_t i = 0;
-    const cJSON *b;
-    cJSON_ArrayForEach(b, cJSON_GetObjectItemCaseSensitive(root, "buffers")) {
-        const cJSON *uri = cJSON_GetObjectItemCaseSensitive(b, "uri");
-        if (cJSON_IsString(uri) && strncmp(uri->valuestring, "data:", 5) == 0 &&
-            !base64_payload_ok(uri->valuestring)) {
-            rc = vct_fail(err, VCT_ERR_INPUT,
-                          "scene %s: buffer %u: its data URI is not valid base64", path, i);
-            break;
+    static const char *const lists[] = {"buffers", "images"}, *items[] = {"buffer", "image"};
+    for (int l = 0; l < 2 && rc == VCT_OK; ++l) {
+        uint32_t i = 0;
+        const cJSON *b;
+        cJSON_ArrayForEach(b, cJSON_GetObjectItemCaseSensitive(root, lists[l])) {
+            const cJSON *uri = cJSON_GetObjectItemCaseSensitive(b, "uri");
+            if (cJSON_IsString(uri) && strncmp(uri->valuestring, "data:", 5) == 0 &&
+                !base64_payload_ok(uri->valuestring)) {
+                rc = vct_fail(err, VCT_ERR_INPUT,
+                              "scene %s: %s %u: its data URI is not valid base64", path, lists[l],
+                              i);
+                break;
+            }
+            ++i;
         }
-        ++i;
     }
     cJSON_Delete(root);
     return rc;

@@ -103,7 +103,7 @@ int vct_obj_precheck(const char *path, vct_error *err) {
         return VCT_OK; /* assimp reports it */
     char line[8192];
     unsigned number = 0;
-    long vertices = 0;
+    long vertices = 0, faces = 0;
     int rc = VCT_OK;
     while (rc == VCT_OK && fgets(line, sizeof line, f)) {
         ++number;
@@ -141,7 +141,11 @@ int vct_obj_precheck(const char *path, vct_error *err) {
         }
         if (start == 1 && line[0] == 'v')
             ++vertices;
-        else if (line[0] == 'f' && !face_indices_ok(line + 1, vertices, &bad))
+        else if (line[0] == 'v' && strchr(line, '/'))
+            rc = vct_fail(err, VCT_ERR_INPUT, "scene %s: line %u: a '/' among coordinates", path,
+                          number);
+        else if ((line[0] == 'f' || line[0] == 'l' || line[0] == 'p') &&
+                 (faces += line[0] == 'f', !face_indices_ok(line + 1, vertices, &bad)))
             rc = vct_fail(err, VCT_ERR_INPUT,
                           "scene %s: line %u: a face uses vertex %ld, but %ld are defined "
                           "before it",
@@ -158,5 +162,10 @@ int vct_obj_precheck(const char *path, vct_error *err) {
                  slash ? slash + 1 : path);
         rc = mtl_precheck(path, fallback, err);
     }
+    /* assimp leaks on an OBJ without geometry too */
+    if (rc == VCT_OK && (vertices == 0 || faces == 0))
+        rc = vct_fail(err, VCT_ERR_INPUT,
+                      "scene %s: no triangles to render (%ld vertices, %ld faces)", path, vertices,
+                      faces);
     return rc;
 }
