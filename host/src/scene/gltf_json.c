@@ -118,7 +118,7 @@ int vct_gltf_precheck(const char *path, vct_error *err) {
             if (cJSON_IsString(uri) && strncmp(uri->valuestring, "data:", 5) == 0 &&
                 !base64_payload_ok(uri->valuestring)) {
                 rc = vct_fail(err, VCT_ERR_INPUT,
-                              "scene %s: %s %u: its data URI is not valid base64", path, lists[l],
+                              "scene %s: %s %u: its data URI is not valid base64", path, items[l],
                               i);
                 break;
             }
