@@ -2,9 +2,10 @@
 # Fuzzes scene loading and validation (OBJ+MTL, glTF with its buffers, binary
 # glTF) with libFuzzer and AddressSanitizer/LeakSanitizer (leaks inside assimp
 # itself suppressed: tools/fuzz/lsan.supp), seeded with the scene suite and
-# the Cornell box, for SECONDS (default 3600) on JOBS processes (default 1). Crashes, leaks and hangs land in out/fuzz/ as
-# crash-*, leak-*, timeout-*; each one fixed is kept in tests/scene/inputs/,
-# which test_scene_inputs loads on every test run.
+# the Cornell box, for SECONDS (default 3600) on JOBS processes (default 1).
+# Crashes, leaks and hangs land in out/fuzz/ as crash-*, leak-*, timeout-*;
+# each one fixed is kept in tests/scene/inputs/, which test_scene_inputs
+# loads on every test run.
 # usage: tools/fuzz.sh [SECONDS] [JOBS]
 set -eu
 cd "$(dirname "$0")/.."
