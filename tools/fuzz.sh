@@ -31,9 +31,10 @@ for f in tests/scene/inputs/*.gltf tests/scene/inputs/*.glb tests/scene/inputs/*
 done
 cd out/fuzz
 # fork mode keeps fuzzing past a finding, so that one run collects them all
-# leaks inside assimp itself are upstream: tools/fuzz/lsan.supp
+# leaks inside assimp itself are upstream: tools/fuzz/lsan.supp (the full
+# stacks of malloc, so that the suppression sees assimp in them)
 LSAN_OPTIONS=suppressions=$(pwd)/../../tools/fuzz/lsan.supp:print_suppressions=1 \
-ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
+ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0:allocator_may_return_null=1 \
     ../../build-fuzz/fuzz_scene_load corpus seeds -max_total_time="$SECONDS_TO_RUN" \
     -timeout=20 -rss_limit_mb=4096 -max_len=400000 -fork="$JOBS" -ignore_crashes=1 \
     -ignore_timeouts=1 -ignore_ooms=1 -print_final_stats=1 >fuzz.log 2>&1 || true
