@@ -59,7 +59,17 @@ int cmd_info(const cli_options *opt) {
                "metallic %g, transmission %g, ior %g\n",
                i, m->name, m->albedo[0], m->albedo[1], m->albedo[2], m->emission[0], m->emission[1],
                m->emission[2], m->roughness, m->metallic, m->transmission, m->ior);
+        if (m->albedo_texture)
+            printf("  base colour texture %u (\"%s\", %dx%d), %s in s, %s in t\n",
+                   m->albedo_texture - 1, s->textures[m->albedo_texture - 1].name,
+                   s->textures[m->albedo_texture - 1].width,
+                   s->textures[m->albedo_texture - 1].height,
+                   m->texture_wrap & VCT_WRAP_CLAMP_S ? "clamped" : "repeated",
+                   m->texture_wrap & VCT_WRAP_CLAMP_T ? "clamped" : "repeated");
     }
+    if (s->texture_count)
+        printf("%u texture%s, texture coordinates %s\n", s->texture_count,
+               s->texture_count == 1 ? "" : "s", s->uvs ? "present" : "absent (all 0)");
     vct_scene_free(s);
     return 0;
 }
