@@ -6,14 +6,15 @@
  * Surfaces are two-sided, whatever their winding: each fragment of a voxel
  * (one triangle crossing it) is lit from the side its light is on, and the
  * voxel sends out the mean of what its fragments reflect. A fragment is
- * shaded at the voxel's centre with its triangle's normal, and seen from the
- * light at the point of its triangle nearest that centre, lifted by a
- * relative epsilon off the triangle on the light's side and towards the
- * light. So a wall lit on one
- * face leaves its other face dark, however thin the wall and whichever way
- * it is wound (the dark face's ray starts inside the wall and meets the lit
- * face), and a closed object shadows its own far side. Shadow edges move by
- * less than a voxel. The rays of hard point and spot lights test the light's
+ * shaded at the voxel's centre with its triangle's normal (and its albedo
+ * averaged over the voxel, fragment_albedo.h), and seen from the light at
+ * the point of its triangle nearest that centre, lifted by a relative
+ * epsilon off the triangle on the light's side and towards the light. So a
+ * wall lit on one face leaves its other face dark, however thin the wall
+ * and whichever way it is wound (the dark face's ray starts inside the wall
+ * and meets the lit face), and a closed object shadows its own far side.
+ * Emissive triangles light the fragments as well (light/emitters.h).
+ * Shadow edges move by less than a voxel. The rays of hard point and spot lights test the light's
  * own triangle bins (light_bins.h) when it has them, the grid otherwise, with
  * the same answer; they end two lifts short of the light. A light with a
  * radius is seen through INJECT_EXTENT_SAMPLES fixed points of its extent
