@@ -52,30 +52,57 @@ inline float inject_visibility(const grid_view *g, const light_bins_view *bins,
     return (float)seen / (float)INJECT_EXTENT_SAMPLES;
 }
 
+/* Fragments of one voxel on one plane (normals within about 8 degrees, of
+ * the same sign, and their points within SHARED_PLANE voxels of each
+ * other's plane: the two faces of a wall, however thin, are not) share
+ * their shadow rays. A dense mesh puts
+ * several such fragments in a voxel, and each tracing its own rays made
+ * the light update 3x slower. Up to SHARED_LIGHTS lights and emitter
+ * samples are kept. */
+#define SHARED_LIGHTS 8u
+#define SHARED_FACING 0.99f
+#define SHARED_PLANE 0.01f
+
+typedef struct shared_rays {
+    float3 n, q;               /* the normal and point of the fragment that traced them */
+    float seen[SHARED_LIGHTS]; /* per light (or emitter sample), the fraction seen */
+    uint seed;                 /* emitter samples: the stream they came from */
+    int valid;
+} shared_rays;
+
 /* Irradiance at centre p from every light onto one fragment: triangle t,
- * unit normal n (either sign), seen from its point q nearest p. */
+ * unit normal n (either sign), seen from its point q nearest p, or with the
+ * visibility `shared` holds when `reuse`; else what it traces is kept there. */
 inline float3 fragment_irradiance(const grid_view *g, const light_bins_view *bins,
                                   __global const vct_light_desc *lights, uint light_count, float3 p,
-                                  float3 q, float3 n) {
+                                  float3 q, float3 n, shared_rays *shared, int reuse) {
     const float lift = surface_epsilon(g, q);
+    const int keep = !reuse && light_count <= SHARED_LIGHTS;
     float3 irradiance = (float3)(0.0f);
     for (uint i = 0; i < light_count; ++i) {
+        if (keep)
+            shared->seen[i] = 0.0f;
         float3 wi, radiant;
         float dist;
-        if (!light_incident(lights, i, p, &wi, &dist, &radiant))
+        if (!light_incident(lights, i, p, &wi, &dist, &radiant) || all(radiant == 0.0f))
             continue;
         const float cos_theta = fabs(dot(n, wi));
-        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
-            continue;
-        float3 wq, unused;
-        float dq;
-        if (!light_incident(lights, i, q, &wq, &dq, &unused))
-            continue;
-        /* Off the triangle on the light's side, and towards the light, so
-         * that a ray from an edge shared with a wall does not start on it. */
-        const float3 up = normalize((dot(n, wq) < 0.0f ? -n : n) + wq);
-        irradiance +=
-            radiant * cos_theta * inject_visibility(g, bins, lights, i, q, up, lift, wq, dq);
+        float seen;
+        if (reuse) {
+            seen = shared->seen[i];
+        } else {
+            float3 wq, unused;
+            float dq;
+            if (!light_incident(lights, i, q, &wq, &dq, &unused))
+                continue;
+            /* Off the triangle on the light's side, and towards the light, so
+             * that a ray from an edge shared with a wall does not start on it. */
+            const float3 up = normalize((dot(n, wq) < 0.0f ? -n : n) + wq);
+            seen = inject_visibility(g, bins, lights, i, q, up, lift, wq, dq);
+            if (keep)
+                shared->seen[i] = seen;
+        }
+        irradiance += radiant * cos_theta * seen;
     }
     return irradiance;
 }
@@ -86,21 +113,27 @@ inline float3 fragment_irradiance(const grid_view *g, const light_bins_view *bin
 inline float3 fragment_emitters(const grid_view *g, const emitter_view *e,
                                 __global const vct_material_desc *materials,
                                 __global const uint *tri_material, float3 p, float3 q, float3 n,
-                                uint seed) {
+                                uint seed, shared_rays *shared, int reuse) {
     float3 irradiance = (float3)(0.0f);
     const float lift = surface_epsilon(g, q);
+    const int keep = !reuse && e->samples <= SHARED_LIGHTS;
     for (uint s = 0; s < e->samples; ++s) {
         float3 target;
         uint tri;
         const float3 radiant =
             emitter_sample(e, g, materials, tri_material, p, seed, s, &target, &tri);
         const float cos_theta = fabs(dot(n, normalize(target - p)));
-        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
-            continue;
-        const float3 wq = normalize(target - q);
-        const float3 up = normalize((dot(n, wq) < 0.0f ? -n : n) + wq);
-        if (emitter_visible(g, q + up * lift, target))
-            irradiance += radiant * cos_theta;
+        float seen = 0.0f;
+        if (reuse) {
+            seen = shared->seen[s];
+        } else if (any(radiant != 0.0f)) {
+            const float3 wq = normalize(target - q);
+            const float3 up = normalize((dot(n, wq) < 0.0f ? -n : n) + wq);
+            seen = (float)emitter_visible(g, q + up * lift, target);
+        }
+        if (keep)
+            shared->seen[s] = seen;
+        irradiance += radiant * cos_theta * seen;
     }
     return irradiance / (float)e->samples;
 }
@@ -125,6 +158,9 @@ __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
     const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
     float3 reflected = (float3)(0.0f);
     uint surfaces = 0;
+    /* lights and emitters keep apart: each has its own shared rays */
+    shared_rays lit = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0},
+                glow = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0};
     for (uint f = begin; f < end && (light_count > 0 || emitter_count > 0); ++f) {
         const uint t = fragment_tri[f];
         const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
@@ -134,10 +170,29 @@ __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         if (!(len > 0.0f))
             continue; /* zero area: never hit, never lit */
         ++surfaces;
-        const float3 q = triangle_nearest(p, a, b, c);
-        float3 e = fragment_irradiance(&g, &bins, lights, light_count, p, q, cr / len);
-        if (emitter_count > 0u)
-            e += fragment_emitters(&g, &ev, materials, tri_material, p, q, cr / len, f);
+        const float3 q = triangle_nearest(p, a, b, c), n = cr / len;
+        const float plane = SHARED_PLANE * size;
+        const int reuse_lit =
+            lit.valid && dot(n, lit.n) > SHARED_FACING && fabs(dot(q - lit.q, n)) < plane;
+        float3 e = fragment_irradiance(&g, &bins, lights, light_count, p, q, n, &lit, reuse_lit);
+        if (!reuse_lit) {
+            lit.n = n;
+            lit.q = q;
+            lit.valid = light_count <= SHARED_LIGHTS;
+        }
+        if (emitter_count > 0u) {
+            /* the first fragment's stream: shared samples are the same samples */
+            const int reuse_glow =
+                glow.valid && dot(n, glow.n) > SHARED_FACING && fabs(dot(q - glow.q, n)) < plane;
+            e += fragment_emitters(&g, &ev, materials, tri_material, p, q, n,
+                                   reuse_glow ? glow.seed : f, &glow, reuse_glow);
+            if (!reuse_glow) {
+                glow.n = n;
+                glow.q = q;
+                glow.seed = f;
+                glow.valid = ev.samples <= SHARED_LIGHTS;
+            }
+        }
         const vct_material_desc m = materials[tri_material[t]];
         reflected += fragment_albedo(&tv, &m, t, a, b, c, p, size) * e;
     }
