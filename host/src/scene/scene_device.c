@@ -77,7 +77,9 @@ static int texture_buffers_make(vct_context *ctx, const vct_scene *s, const char
     size_t texels = 0;
     for (uint32_t t = 0; t < s->texture_count; ++t)
         texels += (size_t)s->textures[t].width * s->textures[t].height;
-    const int textured = s->texture_count > 0 && s->uvs;
+    /* materials name textures by index: with any texture, every table entry
+     * and every triangle's coordinates exist (0 where the file has none) */
+    const int textured = s->texture_count > 0;
     const size_t n_texels = textured ? texels : 1, n_table = textured ? s->texture_count : 1,
                  n_uvs = textured ? 2ull * s->triangle_count : 2;
     float *tx = calloc(n_texels, 16), *uv = calloc(n_uvs, 16);
@@ -93,7 +95,7 @@ static int texture_buffers_make(vct_context *ctx, const vct_scene *s, const char
         table[4 * t + 2] = (cl_uint)x->height;
         at += (size_t)x->width * x->height;
     }
-    for (uint32_t t = 0; rc == VCT_OK && textured && t < s->triangle_count; ++t)
+    for (uint32_t t = 0; rc == VCT_OK && textured && s->uvs && t < s->triangle_count; ++t)
         for (int k = 0; k < 3; ++k)
             memcpy(uv + 8ull * t + 2 * k, &s->uvs[2 * s->triangles[3 * t + k]], 8);
     if (rc == VCT_OK && texels > UINT32_MAX)
