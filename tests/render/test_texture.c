@@ -220,6 +220,40 @@ static void obj_map_kd(void) {
               "decoded texels (%g %g %g %g), (%g)", t[0], t[1], t[2], t[3], t[8]);
     }
     vct_scene_free(s);
+    /* the same without texture coordinates: every point reads uv (0, 0), the
+     * same colour everywhere, and nothing past the buffers */
+    snprintf(path, sizeof path, "%s/t.obj", dir);
+    f = fopen(path, "w");
+    fputs("mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 0 1\nusemtl tex\nf 1 2 3\n", f);
+    fclose(f);
+    s = vct_scene_load(path, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const vct_light sun = {VCT_LIGHT_DIRECTIONAL, {0}, {0, -1, 0}, {1, 1, 1}, 0, 0, 0};
+    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
+    const vct_camera above = {{0.3f, 2, 0.3f}, {0.3f, 0, 0.3f}, {0, 0, -1}, 20.0f};
+    s->camera = above;
+    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_render_job job = vct_render_job_default(VCT_METHOD_RAYCAST, 16, 16);
+    job.scene = s;
+    job.grid = g;
+    vct_image im;
+    REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
+    int lit = 0, differ = 0;
+    float first = -1.0f;
+    for (int i = 0; i < 16 * 16; ++i) {
+        const float r = im.rgba[4 * i];
+        if (!(r > 0.0f))
+            continue;
+        first = first < 0.0f ? r : first;
+        differ += r != first;
+        ++lit;
+    }
+    CHECK(lit > 20 && differ == 0, "no coordinates: %d pixels lit, %d of another colour", lit,
+          differ);
+    vct_image_free(&im);
+    vct_grid_free(g);
+    vct_scene_free(s);
     /* a missing image is refused, naming it */
     snprintf(path, sizeof path, "%s/t.png", dir);
     unlink(path);
