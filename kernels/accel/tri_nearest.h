@@ -1,4 +1,5 @@
-/* Nearest points on triangles, and barycentric coordinates. */
+/* Nearest points on triangles, barycentric coordinates, and normals as
+ * axes. */
 #ifndef VCT_TRI_NEAREST_H
 #define VCT_TRI_NEAREST_H
 
@@ -27,6 +28,15 @@ inline float3 triangle_nearest(float3 p, float3 a, float3 b, float3 c) {
     const float inv = 1.0f / (w_a + w_b + w_c);
     const float3 q = a + ab * (w_b * inv) + ac * (w_c * inv);
     return all(isfinite(q)) ? q : a;
+}
+
+/* A surface's normal as an axis: the sign that makes its largest component
+ * positive (the first such component on ties). A surface and its copy wound
+ * the other way give the same axis bit for bit. */
+inline float3 axis_canonical(float3 n) {
+    const float3 a = fabs(n);
+    const float lead = a.x >= a.y && a.x >= a.z ? n.x : a.y >= a.z ? n.y : n.z;
+    return lead < 0.0f ? -n : n;
 }
 
 /* Barycentrics (u, v) of point q of triangle (a, b, c)'s plane: q = a +

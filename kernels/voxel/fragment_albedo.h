@@ -27,10 +27,7 @@ inline float3 fragment_albedo_sum(const texture_view *tv, const vct_material_des
         return m->albedo.xyz;
     /* the plane's frame from its normal turned one fixed way, so that the
      * samples do not depend on the winding */
-    float3 n = cr / len;
-    const float3 an = fabs(n);
-    if ((an.x >= an.y && an.x >= an.z ? n.x : an.y >= an.z ? n.y : n.z) < 0.0f)
-        n = -n;
+    const float3 n = axis_canonical(cr / len);
     float3 t1, t2;
     basis_of(n, &t1, &t2);
     const float3 on_plane = centre - n * dot(centre - a, n);

@@ -52,6 +52,13 @@ inline float inject_visibility(const grid_view *g, const light_bins_view *bins,
     return (float)seen / (float)INJECT_EXTENT_SAMPLES;
 }
 
+/* Which way a shadow ray towards w leaves a triangle of normal n (either
+ * sign): off the triangle on w's side, and towards w, so that a ray from an
+ * edge shared with a wall does not start on the wall. */
+inline float3 lift_direction(float3 n, float3 w) {
+    return normalize((dot(n, w) < 0.0f ? -n : n) + w);
+}
+
 /* Fragments of one voxel on one plane (normals within about 8 degrees, of
  * the same sign, and their points within SHARED_PLANE voxels of each
  * other's plane: the two faces of a wall, however thin, are not) share
@@ -95,9 +102,7 @@ inline float3 fragment_irradiance(const grid_view *g, const light_bins_view *bin
             float dq;
             if (!light_incident(lights, i, q, &wq, &dq, &unused))
                 continue;
-            /* Off the triangle on the light's side, and towards the light, so
-             * that a ray from an edge shared with a wall does not start on it. */
-            const float3 up = normalize((dot(n, wq) < 0.0f ? -n : n) + wq);
+            const float3 up = lift_direction(n, wq);
             seen = inject_visibility(g, bins, lights, i, q, up, lift, wq, dq);
             if (keep)
                 shared->seen[i] = seen;
@@ -128,7 +133,7 @@ inline float3 fragment_emitters(const grid_view *g, const emitter_view *e,
             seen = shared->seen[s];
         } else if (any(radiant != 0.0f)) {
             const float3 wq = normalize(target - q);
-            const float3 up = normalize((dot(n, wq) < 0.0f ? -n : n) + wq);
+            const float3 up = lift_direction(n, wq);
             seen = (float)emitter_visible(g, q + up * lift, target);
         }
         if (keep)

@@ -183,14 +183,6 @@ __kernel void vox_starts(__global const uint *keys, uint n, __global const uint 
     }
 }
 
-/* A surface's normal as an axis: the sign that makes its largest component
- * positive (the first such component on ties). */
-inline float3 axis_canonical(float3 n) {
-    const float3 a = fabs(n);
-    const float lead = a.x >= a.y && a.x >= a.z ? n.x : a.y >= a.z ? n.y : n.z;
-    return lead < 0.0f ? -n : n;
-}
-
 /* The sum of n n^T over a voxel's fragment normals, symmetric: xx yy zz in
  * d, xy yz zx in o. A normal and its negation add the same bits to it. */
 typedef struct normal_tensor {

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "runtime/runtime.h"
+#include "light/emitters.h"
 
 static const char *const effect_names[VCT_EFFECTS] = {
     "direct", "shadows", "indirect", "specular", "refraction", "emission", "ao", "soft_shadows"};
@@ -82,9 +83,7 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
     const int emissive = used ? first_used(s, used, is_emissive) : -1;
     const int ambient = positive3(s->ambient);
     free(used);
-    uint32_t emitters = 0; /* emissive triangles: area lights */
-    for (uint32_t t = 0; emissive >= 0 && t < s->triangle_count; ++t)
-        emitters += is_emissive(&s->materials[s->triangle_material[t]]);
+    const uint32_t emitters = emissive >= 0 ? vct_scene_emissive_triangles(s) : 0; /* area lights */
     char sources[96];
     snprintf(sources, sizeof sources, "%u light%s", lights, lights == 1 ? "" : "s");
     if (emitters)

@@ -9,6 +9,7 @@
 #include <strings.h>
 
 #include "scene/obj_check.h"
+#include "scene/scene_path.h"
 
 /* Bytes a geometry line may hold after its keyword: digits, signs, points,
  * exponents, slashes, blanks, and the letters of nan and inf(inity). */
@@ -65,9 +66,7 @@ static int mtl_texture_without_file(const char *line) {
 /* Checks the MTL file `name`, beside the model, if it exists. */
 static int mtl_precheck(const char *model, const char *name, vct_error *err) {
     char path[2048];
-    const char *slash = strrchr(model, '/');
-    const int dir_len = slash ? (int)(slash - model + 1) : 0;
-    snprintf(path, sizeof path, "%.*s%s", dir_len, model, name);
+    vct_path_beside(model, name, path, sizeof path);
     FILE *f = fopen(path, "rb");
     if (!f)
         return VCT_OK;

@@ -16,6 +16,7 @@
 #include "runtime/runtime.h"
 #include "scene/gltf_json.h"
 #include "scene/obj_check.h"
+#include "scene/scene_path.h"
 #include "scene/scene_textures.h"
 
 typedef struct builder {
@@ -244,13 +245,7 @@ static int file_exists_near(const char *model, const char *rel) {
     if (strncmp(rel, "data:", 5) == 0)
         return 1;
     char path[2048];
-    if (rel[0] == '/') {
-        snprintf(path, sizeof path, "%s", rel);
-    } else {
-        const char *slash = strrchr(model, '/');
-        int dir_len = slash ? (int)(slash - model + 1) : 0;
-        snprintf(path, sizeof path, "%.*s%s", dir_len, model, rel);
-    }
+    vct_path_beside(model, rel, path, sizeof path);
     return access(path, R_OK) == 0;
 }
 

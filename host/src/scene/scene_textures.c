@@ -14,6 +14,7 @@
 #include <stb/stb_image.h>
 
 #include "runtime/runtime.h"
+#include "scene/scene_path.h"
 #include "scene/scene_textures.h"
 
 /* Textures larger than this per side are refused: a broken or hostile file
@@ -76,13 +77,7 @@ static int load_texture(const struct aiScene *sc, const char *model, const char 
                         model, name);
     }
     char path[2048];
-    if (name[0] == '/') {
-        snprintf(path, sizeof path, "%s", name);
-    } else {
-        const char *slash = strrchr(model, '/');
-        const int dir_len = slash ? (int)(slash - model + 1) : 0;
-        snprintf(path, sizeof path, "%.*s%s", dir_len, model, name);
-    }
+    vct_path_beside(model, name, path, sizeof path);
     unsigned char *px = stbi_load(path, &w, &h, &n, 4);
     return decode(model, name, px, w, h, t, err);
 }
