@@ -70,7 +70,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     vct_error err = {0};
     vct_stats_reset(ctx);
     const double t0 = vct_now_ms();
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     if (!g)
         bench_die(&err);
     vct_plan plan;
@@ -102,7 +102,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
              vs->bounces, vs->bounces == 1 ? "" : "s", vs->nearest ? ", nearest level" : "",
              vs->sparse ? ", sparse diffuse" : "");
     vct_voxels_free(v);
-    vct_grid_free(g);
+    vct_accel_free(g);
     return im;
 }
 
@@ -130,7 +130,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
     vct_error err = {0};
     vct_stats_reset(ctx);
     double t0 = vct_now_ms();
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     if (!g)
         bench_die(&err);
     vct_image im;
@@ -150,7 +150,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
     r->wall_ms = vct_now_ms() - t0;
     r->grid_ms = stage_device_ms(ctx, "grid build");
     r->total_ms = r->grid_ms + r->render_ms;
-    vct_grid_free(g);
+    vct_accel_free(g);
     return im;
 }
 

@@ -57,7 +57,7 @@ static double stages_peak(const vct_context *ctx) {
     return peak;
 }
 
-static spine_run run_once(vct_context *ctx, vct_scene *s, vct_grid *grid, uint32_t res,
+static spine_run run_once(vct_context *ctx, vct_scene *s, vct_accel *accel, uint32_t res,
                           int anisotropic) {
     vct_error err = {0};
     spine_run r = {0};
@@ -68,7 +68,7 @@ static spine_run run_once(vct_context *ctx, vct_scene *s, vct_grid *grid, uint32
     /* Light first: the bricks then build and filter every channel in one pass. */
     const vct_brick_options bo = {VCT_BRICKS_AUTO, anisotropic, 0};
     if (!v || vct_octree_build(ctx, v, &err) != VCT_OK ||
-        vct_voxels_inject_light(ctx, s, grid, v, &err) != VCT_OK ||
+        vct_voxels_inject_light(ctx, s, accel, v, &err) != VCT_OK ||
         vct_bricks_build(ctx, v, &bo, &err) != VCT_OK)
         bench_die(&err);
     r.voxelize = stage_device_ms(ctx, "voxelize");
@@ -81,7 +81,7 @@ static spine_run run_once(vct_context *ctx, vct_scene *s, vct_grid *grid, uint32
     vct_bricks_info_get(v, &r.bricks);
     s->lights[0].position[0] += 40.0f;
     vct_stats_reset(ctx);
-    if (vct_voxels_inject_light(ctx, s, grid, v, &err) != VCT_OK)
+    if (vct_voxels_inject_light(ctx, s, accel, v, &err) != VCT_OK)
         bench_die(&err);
     s->lights[0].position[0] -= 40.0f;
     r.update = stage_device_ms(ctx, "light injection") + stage_device_ms(ctx, "radiance filtering");
@@ -95,7 +95,7 @@ static spine_run run_once(vct_context *ctx, vct_scene *s, vct_grid *grid, uint32
 
 /* Light injection at 256^3 through the lights' triangle bins against the
  * triangle grid alone, alternated in one run, best of `runs` each. */
-static void bins_against_grid(vct_context *ctx, vct_scene *s, vct_grid *grid, int runs) {
+static void bins_against_grid(vct_context *ctx, vct_scene *s, vct_accel *accel, int runs) {
     vct_error err = {0};
     vct_voxel_options o = {0};
     o.resolution = 256;
@@ -106,7 +106,7 @@ static void bins_against_grid(vct_context *ctx, vct_scene *s, vct_grid *grid, in
     double best[2] = {INFINITY, INFINITY};
     for (int i = 0; i < 2 * runs; ++i) {
         vct_stats_reset(ctx);
-        if (vct_voxels_inject_light_with(ctx, s, grid, v, i & 1 ? &grid_only : &with_bins, &err))
+        if (vct_voxels_inject_light_with(ctx, s, accel, v, i & 1 ? &grid_only : &with_bins, &err))
             bench_die(&err);
         best[i & 1] = fmin(best[i & 1], stage_device_ms(ctx, "light injection"));
     }
@@ -129,15 +129,15 @@ int main(void) {
     vct_context *ctx = vct_context_create(NULL, &err);
     if (!ctx)
         bench_die(&err);
-    vct_grid *grid = vct_grid_build(ctx, s, NULL, &err);
-    if (!grid)
+    vct_accel *accel = vct_accel_build(ctx, s, NULL, &err);
+    if (!accel)
         bench_die(&err);
     const int runs = bench_repeats();
     const uint32_t res[RESOLUTIONS] = {128, 256, 512};
     spine_run best[RESOLUTIONS], aniso = {0};
     for (int r = 0; r < RESOLUTIONS; ++r) {
         for (int i = 0; i < runs; ++i) {
-            const spine_run one = run_once(ctx, s, grid, res[r], 0);
+            const spine_run one = run_once(ctx, s, accel, res[r], 0);
             if (i == 0)
                 best[r] = one;
             keep_best(&best[r], &one);
@@ -145,7 +145,7 @@ int main(void) {
         fprintf(stderr, "%u^3 done\n", res[r]);
     }
     for (int i = 0; i < runs; ++i) {
-        const spine_run one = run_once(ctx, s, grid, 256, 1);
+        const spine_run one = run_once(ctx, s, accel, 256, 1);
         if (i == 0)
             aniso = one;
         keep_best(&aniso, &one);
@@ -236,8 +236,8 @@ int main(void) {
         printf("\n");
     }
     printf("brick pool kind: %s\n", best[1].bricks.storage_reason);
-    bins_against_grid(ctx, s, grid, runs);
-    vct_grid_free(grid);
+    bins_against_grid(ctx, s, accel, runs);
+    vct_accel_free(accel);
     vct_context_destroy(ctx);
     vct_scene_free(s);
     return 0;

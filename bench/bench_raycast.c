@@ -1,11 +1,14 @@
-/* Grid build time and primary / shadow rays per second on a 100k+ triangle
- * scene, beside Embree (BVH build, rtcIntersect1 / rtcOccluded1 on as many
- * threads as the OpenCL device has compute units) on the same rays in the
- * same run. */
+/* Build time and rays per second of the triangle grid and the BVH, beside
+ * Embree (its BVH build, rtcIntersect1 / rtcOccluded1 on as many threads as
+ * the OpenCL device has compute units), on the same rays in the same run:
+ * primary rays, shadow rays to the light, and diffuse bounce rays (cosine
+ * directions from the primary hits: incoherent), on the 102k-triangle heavy
+ * scene and on a dense ball in a large room (seed 000's "ball in a
+ * stadium"). Ratios are times measured in this run. */
 #include <math.h>
 #include <pthread.h>
 
-#include "accel/grid.h"
+#include "accel/accel.h"
 #include "bench_util.h"
 #include "heavy_scene.h"
 
@@ -14,6 +17,7 @@
 #endif
 
 #define SIDE 1024
+#define MAX_STRUCTS 3
 
 typedef struct ray_set {
     float *rays; /* 8 floats per ray */
@@ -82,19 +86,6 @@ static ray_set shadow_rays(const vct_scene *s, const ray_set *prim, const vct_hi
     return r;
 }
 
-static double trace_best(vct_context *ctx, vct_grid *g, const ray_set *r, int any, vct_hit *hits) {
-    double best = 1e30;
-    vct_error err = {0};
-    for (int i = 0; i < bench_repeats(); ++i) {
-        vct_stats_reset(ctx);
-        if (vct_trace_rays(ctx, g, r->rays, r->n, any, hits, &err))
-            bench_die(&err);
-        double ms = stage_device_ms(ctx, any ? "trace rays (any hit)" : "trace rays");
-        best = ms < best ? ms : best;
-    }
-    return best;
-}
-
 #ifdef VCT_WITH_EMBREE
 typedef struct embree_job {
     RTCScene scene;
@@ -154,52 +145,172 @@ static double embree_trace(RTCScene scene, const ray_set *r, int occluded, int t
 }
 #endif
 
-int main(void) {
+/* Cosine-distributed directions about each primary hit's normal, turned
+ * towards the camera side; misses get an empty ray. */
+static ray_set diffuse_rays(const vct_scene *s, const ray_set *prim, const vct_hit *hits) {
+    ray_set r = {malloc(32ull * prim->n), prim->n};
+    float extent = 0.0f;
+    for (int k = 0; k < 3; ++k)
+        extent = fmaxf(extent, s->bounds_max[k] - s->bounds_min[k]);
+    uint64_t seed = 1;
+    for (uint32_t i = 0; i < prim->n; ++i) {
+        const float *p = &prim->rays[8 * i];
+        float *o = &r.rays[8 * i];
+        memset(o, 0, 32);
+        if (!(hits[i].t >= 0))
+            continue;
+        const uint32_t *tr = &s->triangles[3 * hits[i].triangle];
+        const float *a = &s->positions[3 * tr[0]], *b = &s->positions[3 * tr[1]],
+                    *c = &s->positions[3 * tr[2]];
+        float e1[3], e2[3], n[3], t[3], bt[3];
+        for (int k = 0; k < 3; ++k)
+            e1[k] = b[k] - a[k], e2[k] = c[k] - a[k];
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        const float side = n[0] * p[4] + n[1] * p[5] + n[2] * p[6] > 0 ? -1.0f : 1.0f;
+        for (int k = 0; k < 3; ++k)
+            n[k] *= side / len;
+        /* A tangent frame and a cosine sample in it. */
+        const float up[3] = {fabsf(n[0]) < 0.9f ? 1.0f : 0.0f, fabsf(n[0]) < 0.9f ? 0.0f : 1.0f,
+                             0.0f};
+        t[0] = up[1] * n[2] - up[2] * n[1];
+        t[1] = up[2] * n[0] - up[0] * n[2];
+        t[2] = up[0] * n[1] - up[1] * n[0];
+        len = sqrtf(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        for (int k = 0; k < 3; ++k)
+            t[k] /= len;
+        bt[0] = n[1] * t[2] - n[2] * t[1];
+        bt[1] = n[2] * t[0] - n[0] * t[2];
+        bt[2] = n[0] * t[1] - n[1] * t[0];
+        const float u1 = check_randf(&seed), u2 = check_randf(&seed);
+        const float rad = sqrtf(u1), phi = 6.2831853f * u2, z = sqrtf(fmaxf(0.0f, 1.0f - u1));
+        for (int k = 0; k < 3; ++k) {
+            o[k] = p[k] + p[4 + k] * hits[i].t + n[k] * 1e-4f * extent;
+            o[4 + k] = rad * cosf(phi) * t[k] + rad * sinf(phi) * bt[k] + z * n[k];
+        }
+        o[7] = INFINITY;
+    }
+    return r;
+}
+
+static double trace_best(vct_context *ctx, const vct_accel *a, const ray_set *r, int any,
+                         vct_hit *hits) {
+    double best = 1e30;
     vct_error err = {0};
-    const char *src = getenv("VCT_SOURCE_DIR");
-    vct_scene *s = heavy_scene_load(src ? src : ".", &err);
-    if (!s)
-        bench_die(&err);
-    vct_context *ctx = vct_context_create(NULL, &err);
-    if (!ctx)
-        bench_die(&err);
-    const int threads = (int)ctx->info.compute_units;
-    printf("scene: %u triangles; device: %s, %d compute units; %dx%d rays\n\n", s->triangle_count,
-           ctx->info.name, threads, SIDE, SIDE);
-
-    /* VCT_GRID_RES=N overrides the automatic resolution (for sweeps). */
-    uint32_t res[3] = {0, 0, 0};
-    if (getenv("VCT_GRID_RES"))
-        res[0] = res[1] = res[2] = (uint32_t)atoi(getenv("VCT_GRID_RES"));
-    vct_grid *g = NULL;
-    double build_dev = 1e30, build_host = 1e30;
     for (int i = 0; i < bench_repeats(); ++i) {
-        vct_grid_free(g);
         vct_stats_reset(ctx);
-        double t0 = vct_now_ms();
-        g = vct_grid_build(ctx, s, res, &err);
-        double host = vct_now_ms() - t0;
-        if (!g)
+        if (vct_trace_rays(ctx, a, r->rays, r->n, any, hits, &err))
             bench_die(&err);
-        double dev = stage_device_ms(ctx, "grid build");
-        build_dev = dev < build_dev ? dev : build_dev;
-        build_host = host < build_host ? host : build_host;
+        double ms = stage_device_ms(ctx, any ? "trace rays (any hit)" : "trace rays");
+        best = ms < best ? ms : best;
+        if (ms > 10000.0)
+            break; /* the grid's worst case: one run says enough */
     }
-    printf("grid %ux%ux%u, %u references: build %.1f ms device time, %.1f ms wall\n", g->res[0],
-           g->res[1], g->res[2], g->references, build_dev, build_host);
+    return best;
+}
 
-    ray_set prim = primary_rays(s);
-    vct_hit *hits = malloc(sizeof *hits * prim.n), *shadow_hits = malloc(sizeof *hits * prim.n);
-    double prim_ms = trace_best(ctx, g, &prim, 0, hits);
-    ray_set shadow = shadow_rays(s, &prim, hits);
-    double shadow_ms = trace_best(ctx, g, &shadow, 1, shadow_hits);
-    uint32_t prim_hits = 0, occluded = 0;
-    for (uint32_t i = 0; i < prim.n; ++i) {
-        prim_hits += hits[i].t >= 0;
-        occluded += shadow_hits[i].t >= 0;
+/* Best of the repeats: device time of the build stage and wall time. */
+static vct_accel *build_best(vct_context *ctx, const vct_scene *s, const vct_accel_options *o,
+                             double *device_ms, double *wall_ms) {
+    vct_error err = {0};
+    vct_accel *a = NULL;
+    *device_ms = *wall_ms = 1e30;
+    for (int i = 0; i < bench_repeats(); ++i) {
+        vct_accel_free(a);
+        vct_stats_reset(ctx);
+        const double t0 = vct_now_ms();
+        a = vct_accel_build(ctx, s, o, &err);
+        const double wall = vct_now_ms() - t0;
+        if (!a)
+            bench_die(&err);
+        const double dev =
+            stage_device_ms(ctx, o->kind == VCT_ACCEL_BVH ? "bvh build" : "grid build");
+        *device_ms = dev < *device_ms ? dev : *device_ms;
+        *wall_ms = wall < *wall_ms ? wall : *wall_ms;
     }
-    printf("\n| | vct grid (OpenCL) | Embree 3 (%d threads) | vct / Embree time |\n", threads);
-    printf("|---|---:|---:|---:|\n");
+    return a;
+}
+
+/* A dense ball (icosphere, 81,920 triangles, 1 wide) in a closed room 100
+ * wide, the camera and light inside the room. */
+static vct_scene *ball_room_scene(vct_error *err) {
+    const float centre[3] = {3.0f, 1.0f, -2.0f}, L = 50.0f;
+    test_mesh ball = mesh_icosphere(6, 0.5f, centre);
+    const float walls[6][12] = {
+        {-L, -L, -L, L, -L, -L, L, -L, L, -L, -L, L}, {-L, L, -L, -L, L, L, L, L, L, L, L, -L},
+        {-L, -L, -L, -L, -L, L, -L, L, L, -L, L, -L}, {L, -L, -L, L, L, -L, L, L, L, L, -L, L},
+        {-L, -L, -L, -L, L, -L, L, L, -L, L, -L, -L}, {-L, -L, L, L, -L, L, L, L, L, -L, L, L}};
+    test_mesh room = mesh_quads(&walls[0][0], 6);
+    const uint32_t nv = ball.nv + room.nv, nt = ball.nt + room.nt;
+    float *pos = malloc(12ull * nv);
+    uint32_t *tri = malloc(12ull * nt), *mat = calloc(nt, 4);
+    memcpy(pos, ball.pos, 12ull * ball.nv);
+    memcpy(pos + 3 * ball.nv, room.pos, 12ull * room.nv);
+    memcpy(tri, ball.tri, 12ull * ball.nt);
+    for (uint32_t i = 0; i < 3 * room.nt; ++i)
+        tri[3 * ball.nt + i] = room.tri[i] + ball.nv;
+    vct_scene *s = vct_scene_from_arrays(pos, nv, tri, nt, mat, NULL, 0, err);
+    if (s) {
+        const vct_camera cam = {{3.0f, 2.0f, 2.0f}, {3.0f, 1.0f, -2.0f}, {0, 1, 0}, 30.0f};
+        s->camera = cam;
+        vct_light light = {0};
+        light.type = VCT_LIGHT_POINT;
+        light.position[0] = -10.0f, light.position[1] = 30.0f, light.position[2] = 10.0f;
+        light.color[0] = light.color[1] = light.color[2] = 1000.0f;
+        if (vct_scene_add_light(s, &light, err) != VCT_OK) {
+            vct_scene_free(s);
+            s = NULL;
+        }
+    }
+    free(pos), free(tri), free(mat);
+    mesh_free(&ball);
+    mesh_free(&room);
+    return s;
+}
+
+static void bench_scene(vct_context *ctx, const vct_scene *s, const char *name, int threads) {
+    printf("\n### %s: %u triangles, %dx%d rays\n\n", name, s->triangle_count, SIDE, SIDE);
+    /* The grid, the linear BVH and the clustered BVH (the default). */
+    const vct_accel_options kinds[MAX_STRUCTS] = {{VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC},
+                                                  {VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_LINEAR},
+                                                  {VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_PLOC}};
+    vct_accel *acc[MAX_STRUCTS];
+    double build_dev[MAX_STRUCTS], build_wall[MAX_STRUCTS];
+    for (int i = 0; i < MAX_STRUCTS; ++i)
+        acc[i] = build_best(ctx, s, &kinds[i], &build_dev[i], &build_wall[i]);
+    vct_error err = {0};
+    vct_accel_info info;
+    for (int i = 1; i < MAX_STRUCTS; ++i) {
+        if (vct_accel_info_get(ctx, acc[i], &info, &err))
+            bench_die(&err);
+        printf("bvh (%s): %u nodes, %u leaves, %u levels, %u passes, SAH cost %.2f, %.1f MiB\n",
+               i == 1 ? "linear" : "clustered", info.nodes, info.leaves, info.depth, info.passes,
+               info.sah_cost, info.bytes / 1048576.0);
+    }
+    if (vct_accel_info_get(ctx, acc[0], &info, &err))
+        bench_die(&err);
+    printf("grid: %ux%ux%u cells, %u references, %.1f MiB\n", info.grid.res[0], info.grid.res[1],
+           info.grid.res[2], info.grid.references, info.bytes / 1048576.0);
+
+    ray_set sets[3];
+    sets[0] = primary_rays(s);
+    vct_hit *hits = malloc(sizeof *hits * sets[0].n), *scratch = malloc(sizeof *hits * sets[0].n);
+    double ms[MAX_STRUCTS][3];
+    ms[2][0] = trace_best(ctx, acc[2], &sets[0], 0, hits);
+    sets[1] = shadow_rays(s, &sets[0], hits);
+    sets[2] = diffuse_rays(s, &sets[0], hits);
+    uint32_t counts[MAX_STRUCTS][3] = {{0}};
+    for (int i = 0; i < MAX_STRUCTS; ++i)
+        for (int r = 0; r < 3; ++r) {
+            ms[i][r] = trace_best(ctx, acc[i], &sets[r], r == 1, scratch);
+            for (uint32_t j = 0; j < sets[r].n; ++j)
+                counts[i][r] += scratch[j].t >= 0;
+        }
+    const char *rows[3] = {"primary", "shadow", "diffuse bounce"};
+    double e_ms[3] = {0, 0, 0}, e_build = 0;
+    uint32_t e_counts[3] = {0, 0, 0};
 #ifdef VCT_WITH_EMBREE
     char cfg[32];
     snprintf(cfg, sizeof cfg, "threads=%d", threads);
@@ -217,32 +328,57 @@ int main(void) {
     rtcAttachGeometry(scene, geom);
     rtcReleaseGeometry(geom);
     rtcCommitScene(scene);
-    double embree_build = vct_now_ms() - t0;
-    uint32_t e_hits = 0, e_occ = 0;
-    double e_prim = embree_trace(scene, &prim, 0, threads, &e_hits);
-    double e_shadow = embree_trace(scene, &shadow, 1, threads, &e_occ);
-    printf("| acceleration structure build (ms) | %.1f | %.1f | %.2f |\n", build_dev, embree_build,
-           build_dev / embree_build);
-    printf("| primary rays (M rays/s) | %.2f | %.2f | %.2f |\n", prim.n / prim_ms / 1e3,
-           prim.n / e_prim / 1e3, prim_ms / e_prim);
-    printf("| shadow rays (M rays/s) | %.2f | %.2f | %.2f |\n", shadow.n / shadow_ms / 1e3,
-           shadow.n / e_shadow / 1e3, shadow_ms / e_shadow);
-    printf("\nhits: vct %u, Embree %u; occluded: vct %u, Embree %u\n", prim_hits, e_hits, occluded,
-           e_occ);
+    e_build = vct_now_ms() - t0;
+    for (int r = 0; r < 3; ++r)
+        e_ms[r] = embree_trace(scene, &sets[r], r == 1, threads, &e_counts[r]);
     rtcReleaseScene(scene);
     rtcReleaseDevice(dev);
 #else
-    printf("| grid build (ms) | %.1f | - | - |\n", build_dev);
-    printf("| primary rays (M rays/s) | %.2f | - | - |\n", prim.n / prim_ms / 1e3);
-    printf("| shadow rays (M rays/s) | %.2f | - | - |\n", shadow.n / shadow_ms / 1e3);
-    printf("\nhits %u, occluded %u\n", prim_hits, occluded);
+    (void)threads;
 #endif
-    free(prim.rays);
-    free(shadow.rays);
+    printf(
+        "\n| | grid | bvh, linear | bvh, clustered | Embree 3 (%d threads) | bvh / Embree rays/s "
+        "| bvh / grid rays/s |\n",
+        threads);
+    printf("|---|---:|---:|---:|---:|---:|---:|\n");
+    printf("| build (ms, wall) | %.1f | %.1f | %.1f | %.1f | %.2f (time) | %.2f (time) |\n",
+           build_wall[0], build_wall[1], build_wall[2], e_build,
+           e_build > 0 ? build_wall[2] / e_build : 0.0, build_wall[2] / build_wall[0]);
+    printf("| build (ms, device) | %.1f | %.1f | %.1f | - | - | - |\n", build_dev[0], build_dev[1],
+           build_dev[2]);
+    for (int r = 0; r < 3; ++r)
+        printf("| %s (M rays/s) | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", rows[r],
+               sets[r].n / ms[0][r] / 1e3, sets[r].n / ms[1][r] / 1e3, sets[r].n / ms[2][r] / 1e3,
+               e_ms[r] > 0 ? sets[r].n / e_ms[r] / 1e3 : 0.0,
+               e_ms[r] > 0 ? e_ms[r] / ms[2][r] : 0.0, ms[0][r] / ms[2][r]);
+    printf("\nhits (grid, linear, clustered, Embree): primary %u %u %u %u; occluded %u %u %u %u; "
+           "diffuse %u %u %u %u\n",
+           counts[0][0], counts[1][0], counts[2][0], e_counts[0], counts[0][1], counts[1][1],
+           counts[2][1], e_counts[1], counts[0][2], counts[1][2], counts[2][2], e_counts[2]);
+    for (int r = 0; r < 3; ++r)
+        free(sets[r].rays);
     free(hits);
-    free(shadow_hits);
-    vct_grid_free(g);
+    free(scratch);
+    for (int i = 0; i < MAX_STRUCTS; ++i)
+        vct_accel_free(acc[i]);
+}
+
+int main(void) {
+    vct_error err = {0};
+    const char *src = getenv("VCT_SOURCE_DIR");
+    vct_scene *heavy = heavy_scene_load(src ? src : ".", &err);
+    vct_scene *ball = heavy ? ball_room_scene(&err) : NULL;
+    if (!ball)
+        bench_die(&err);
+    vct_context *ctx = vct_context_create(NULL, &err);
+    if (!ctx)
+        bench_die(&err);
+    const int threads = (int)ctx->info.compute_units;
+    printf("device: %s, %d compute units\n", ctx->info.name, threads);
+    bench_scene(ctx, heavy, "heavy scene (Cornell box and 80 spheres)", threads);
+    bench_scene(ctx, ball, "dense ball in a large room", threads);
     vct_context_destroy(ctx);
-    vct_scene_free(s);
+    vct_scene_free(heavy);
+    vct_scene_free(ball);
     return 0;
 }

@@ -17,7 +17,7 @@ typedef struct frame_times {
 } frame_times;
 
 /* Best of the repeats, per stage. */
-static frame_times render_best(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+static frame_times render_best(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                const vct_voxels *v, const vct_plan *plan,
                                const vct_vct_options *o) {
     frame_times best = {INFINITY, INFINITY, INFINITY, INFINITY};
@@ -39,7 +39,7 @@ static frame_times render_best(vct_context *ctx, const vct_scene *s, const vct_g
     return best;
 }
 
-static vct_voxels *prepare(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+static vct_voxels *prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                            const vct_plan *plan, uint32_t res, int anisotropic, double *ms) {
     vct_error err = {0};
     vct_voxel_options vo = {0};
@@ -83,7 +83,7 @@ int main(int argc, char **argv) {
     double planned_ms = 0.0, all_ms = 0.0;
     for (int i = 0; i < 2; ++i) {
         vct_scene *s = scenes[i];
-        vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+        vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
         if (!g)
             bench_die(&err);
         vct_vct_options o = vct_vct_options_default();
@@ -133,7 +133,7 @@ int main(int argc, char **argv) {
             frame_row(names[i], what, &sparse);
             vct_voxels_free(v);
         }
-        vct_grid_free(g);
+        vct_accel_free(g);
     }
     printf("\nThe plan: every effect forced on takes %.2fx the planned frame's time "
            "(%.1f ms against %.1f ms).\n",

@@ -52,8 +52,8 @@ int main(void) {
     const int have_mesh = write_mesh(s, mesh);
     printf("%u triangles, %s, best of %d\n\n", s->triangle_count, vct_context_device(ctx)->name,
            runs);
-    vct_grid *grid = vct_grid_build(ctx, s, NULL, &err);
-    if (!grid)
+    vct_accel *accel = vct_accel_build(ctx, s, NULL, &err);
+    if (!accel)
         bench_die(&err);
     printf("| resolution | voxels | nodes | voxelize | octree | light injection | light update | "
            "peak MiB | final MiB | peak / final | OpenVDB mesh-to-volume | OpenVDB / vct voxelize "
@@ -77,12 +77,12 @@ int main(void) {
             peak = fmax(peak,
                         fmax(stage_peak_mib(ctx, "voxelize"), stage_peak_mib(ctx, "octree build")));
             /* Inject, then move the light and inject again: the update. */
-            if (vct_voxels_inject_light(ctx, s, grid, v, &err) != VCT_OK)
+            if (vct_voxels_inject_light(ctx, s, accel, v, &err) != VCT_OK)
                 bench_die(&err);
             best_inject = fmin(best_inject, stage_device_ms(ctx, "light injection"));
             s->lights[0].position[0] += 40.0f;
             vct_stats_reset(ctx);
-            if (vct_voxels_inject_light(ctx, s, grid, v, &err) != VCT_OK)
+            if (vct_voxels_inject_light(ctx, s, accel, v, &err) != VCT_OK)
                 bench_die(&err);
             s->lights[0].position[0] -= 40.0f;
             best_update = fmin(best_update, stage_device_ms(ctx, "light injection"));
@@ -112,7 +112,7 @@ int main(void) {
     for (int i = 0; i < nk; ++i)
         printf("  %-24s %8.2f ms %4d launches\n", k[i].name, k[i].device_ms, k[i].launches);
     remove(mesh);
-    vct_grid_free(grid);
+    vct_accel_free(accel);
     vct_context_destroy(ctx);
     vct_scene_free(s);
     return 0;

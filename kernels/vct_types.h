@@ -6,7 +6,7 @@
 
 /* The kernel interface's version: bumped whenever an entry point's
  * arguments, a buffer layout or the meaning of a -D option changes. */
-#define VCT_KERNEL_ABI_VERSION 2
+#define VCT_KERNEL_ABI_VERSION 3
 
 #ifdef __OPENCL_VERSION__
 typedef float4 vct_f4;
@@ -28,13 +28,15 @@ typedef cl_float4 vct_f4;
 typedef cl_uint4 vct_u4;
 #endif
 
-/* Uniform grid over triangles: cells [0,res) per axis from origin. */
-typedef struct vct_grid_desc {
+/* What every ray query knows of its acceleration structure: the scene's
+ * extent and tolerance, the triangle count, and the grid's cells [0,res) per
+ * axis from origin (BVH: res.x is the node count). */
+typedef struct vct_accel_desc {
     vct_f4 origin;    /* xyz; w = scene extent (for relative epsilons) */
     vct_f4 cell_size; /* xyz; w = distance tolerance: extent and float spacing */
     vct_f4 inv_cell;  /* 1 / cell_size */
     vct_u4 res;       /* xyz; w = triangle count */
-} vct_grid_desc;
+} vct_accel_desc;
 
 typedef struct vct_camera_desc {
     vct_f4 position; /* w = tan(fov_y / 2) */
@@ -112,11 +114,11 @@ typedef struct vct_cone_dir {
  * the device's own layout by tests/runtime/test_abi.c. S(type, size),
  * F(type, field, offset). */
 #define VCT_ABI_LAYOUT(S, F)                                                                       \
-    S(vct_grid_desc, 64)                                                                           \
-    F(vct_grid_desc, origin, 0)                                                                    \
-    F(vct_grid_desc, cell_size, 16)                                                                \
-    F(vct_grid_desc, inv_cell, 32)                                                                 \
-    F(vct_grid_desc, res, 48)                                                                      \
+    S(vct_accel_desc, 64)                                                                           \
+    F(vct_accel_desc, origin, 0)                                                                    \
+    F(vct_accel_desc, cell_size, 16)                                                                \
+    F(vct_accel_desc, inv_cell, 32)                                                                 \
+    F(vct_accel_desc, res, 48)                                                                      \
     S(vct_camera_desc, 80)                                                                         \
     F(vct_camera_desc, position, 0)                                                                \
     F(vct_camera_desc, forward, 16)                                                                \

@@ -102,3 +102,25 @@ void cli_print_plan(const vct_plan *plan, FILE *out) {
         fprintf(out, "  %-12s %-3s  %s\n", vct_effect_name((vct_effect)e),
                 plan->on[e] ? "on" : "off", plan->why[e]);
 }
+
+vct_accel *cli_accel_build(vct_context *ctx, const vct_scene *s, const cli_options *opt,
+                           vct_error *err) {
+    return vct_accel_build(ctx, s, &opt->accel, err);
+}
+
+int cli_print_accel(vct_context *ctx, const vct_accel *accel, FILE *out, vct_error *err) {
+    vct_accel_info in;
+    int rc = vct_accel_info_get(ctx, accel, &in, err);
+    if (rc != VCT_OK)
+        return rc;
+    if (in.kind == VCT_ACCEL_GRID)
+        fprintf(out, "accel: grid %ux%ux%u cells, %u references, %.2f MiB, built in %.1f ms\n",
+                in.grid.res[0], in.grid.res[1], in.grid.res[2], in.grid.references,
+                in.bytes / 1048576.0, in.build_ms);
+    else
+        fprintf(out,
+                "accel: bvh 4-wide, %u nodes, %u leaves, %u levels, SAH cost %.2f, %.2f MiB, "
+                "built in %.1f ms\n",
+                in.nodes, in.leaves, in.depth, in.sah_cost, in.bytes / 1048576.0, in.build_ms);
+    return VCT_OK;
+}

@@ -16,5 +16,9 @@ vct_context *cli_open_context(const cli_options *opt, vct_error *err);
 int cli_make_parent_dir(const char *path, vct_error *err);
 void cli_voxel_options(const cli_options *opt, uint32_t default_res, vct_voxel_options *options);
 void cli_print_plan(const vct_plan *plan, FILE *out);
+/* The --accel structure for the scene, and one line on what it is. */
+vct_accel *cli_accel_build(vct_context *ctx, const vct_scene *s, const cli_options *opt,
+                           vct_error *err);
+int cli_print_accel(vct_context *ctx, const vct_accel *accel, FILE *out, vct_error *err);
 
 #endif

@@ -44,7 +44,7 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
     cli_voxel_options(opt, 128, &voxel);
     const vct_brick_options bricks = {opt->bricks, opt->anisotropic != 0, 0};
     vct_voxels *v = NULL;
-    int rc = vct_vct_prepare(ctx, job->scene, job->grid, &plan, &voxel, &bricks,
+    int rc = vct_vct_prepare(ctx, job->scene, job->accel, &plan, &voxel, &bricks,
                              (uint32_t)opt->bounces, &opt->cones, &v, err);
     if (rc == VCT_OK && v) {
         vct_brick_info b;

@@ -66,13 +66,13 @@ int cmd_voxelize(const cli_options *opt) {
     cli_voxel_options(opt, 256, &vo);
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
     int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
-    /* With lights, inject direct light (shadows through the triangle grid
+    /* With lights, inject direct light (shadows through the acceleration structure
      * or the lights' bins) first: the bricks then take every channel in
      * one pass. */
-    vct_grid *grid = NULL;
+    vct_accel *accel = NULL;
     if (rc == VCT_OK && s->light_count) {
-        grid = vct_grid_build(ctx, s, opt->grid_res, &err);
-        rc = grid ? vct_voxels_inject_light(ctx, s, grid, v, &err) : (int)err.status;
+        accel = cli_accel_build(ctx, s, opt, &err);
+        rc = accel ? vct_voxels_inject_light(ctx, s, accel, v, &err) : (int)err.status;
     }
     const vct_brick_options bo = {opt->bricks, opt->anisotropic == 1, 0};
     if (rc == VCT_OK)
@@ -99,7 +99,7 @@ int cmd_voxelize(const cli_options *opt) {
                    s->light_count ? "their injected radiance" : "albedo under a headlight");
     }
     vct_image_free(&image);
-    vct_grid_free(grid);
+    vct_accel_free(accel);
     vct_voxels_free(v);
     vct_context_destroy(ctx);
     vct_scene_free(s);

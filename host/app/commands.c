@@ -70,8 +70,14 @@ int cmd_info(const cli_options *opt) {
     if (s->texture_count)
         printf("%u texture%s, texture coordinates %s\n", s->texture_count,
                s->texture_count == 1 ? "" : "s", s->uvs ? "present" : "absent (all 0)");
+    /* What rays would traverse: built on the device, as a render builds it. */
+    vct_context *ctx = vct_context_create(opt->device, &err);
+    vct_accel *accel = ctx ? cli_accel_build(ctx, s, opt, &err) : NULL;
+    int rc = accel ? cli_print_accel(ctx, accel, stdout, &err) : (int)err.status;
+    vct_accel_free(accel);
+    vct_context_destroy(ctx);
     vct_scene_free(s);
-    return 0;
+    return rc == VCT_OK ? 0 : cli_fail(&err);
 }
 
 int cmd_render(const cli_options *opt) {
@@ -105,17 +111,17 @@ int cmd_render(const cli_options *opt) {
         return cli_fail(&err);
     }
     vct_image image = {0};
-    vct_grid *grid = vct_grid_build(ctx, s, opt->grid_res, &err);
+    vct_accel *accel = cli_accel_build(ctx, s, opt, &err);
     vct_render_job job = vct_render_job_default((vct_method)method, opt->width, opt->height);
     job.scene = s;
-    job.grid = grid;
+    job.accel = accel;
     job.pathtrace.spp = (uint32_t)(opt->spp ? opt->spp : (opt->time_limit > 0 ? 0 : 64));
     job.pathtrace.time_limit_s = opt->time_limit;
     job.pathtrace.max_depth = (uint32_t)opt->max_depth;
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
     vct_render_result result = {0};
-    int rc = !grid                      ? (int)err.status
+    int rc = !accel                     ? (int)err.status
              : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &err)
                                         : vct_render(ctx, &job, &image, &result, &err);
     if (rc == VCT_OK && pt)
@@ -132,10 +138,7 @@ int cmd_render(const cli_options *opt) {
         rc = png ? vct_image_write_png_tone(&image, out, &opt->tone, &stops, &err)
                  : vct_image_write_pfm(&image, out, &err);
     if (rc == VCT_OK) {
-        vct_grid_info gi;
-        vct_grid_info_get(grid, &gi);
-        fprintf(stderr, "grid: %ux%ux%u cells, %u references\n", gi.res[0], gi.res[1], gi.res[2],
-                gi.references);
+        rc = cli_print_accel(ctx, accel, stderr, &err);
         if (opt->stats)
             cli_print_stats(ctx);
         if (png)
@@ -146,7 +149,7 @@ int cmd_render(const cli_options *opt) {
             printf("wrote %s (%dx%d, linear radiance)\n", out, image.width, image.height);
     }
     vct_image_free(&image);
-    vct_grid_free(grid);
+    vct_accel_free(accel);
     vct_context_destroy(ctx);
     vct_scene_free(s);
     return rc == VCT_OK ? 0 : cli_fail(&err);

@@ -51,6 +51,8 @@ void cli_usage(void) {
         "  --light-radius R                 every light's size for soft shadows: world units\n"
         "                                   (point, spot), radians (directional); 0 = hard\n"
         "  --ambient R G B                  radiance arriving where nothing is hit\n"
+        "  --accel bvh|grid    what rays traverse: the 4-wide BVH (default) or the\n"
+        "                      uniform triangle grid\n"
         "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
         "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default\n"
         "                                   128 for render, 256 for voxelize)\n"
@@ -239,6 +241,14 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
         } else if (strcmp(a, "--dir-light") == 0) {
             if (parse_floats(argc, argv, &i, 6, v) || add_light(opt, VCT_LIGHT_DIRECTIONAL, v))
                 return 1;
+        } else if (strcmp(a, "--accel") == 0) {
+            const int kind = i + 1 < argc ? vct_accel_kind_parse(argv[i + 1]) : -1;
+            if (kind < 0) {
+                fprintf(stderr, "vct: --accel takes bvh or grid\n");
+                return 1;
+            }
+            opt->accel.kind = (vct_accel_kind)kind;
+            ++i;
         } else if (strcmp(a, "--grid-res") == 0) {
             int r[3];
             if (parse_int(argc, argv, &i, 1, 1024, &r[0]))
@@ -255,7 +265,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 return 1;
             }
             for (int k = 0; k < 3; ++k)
-                opt->grid_res[k] = (uint32_t)(n == 1 ? r[0] : r[k]);
+                opt->accel.grid_res[k] = (uint32_t)(n == 1 ? r[0] : r[k]);
         } else if (strcmp(a, "--voxel-res") == 0) {
             if (parse_int(argc, argv, &i, 2, 1024, &opt->voxel_res))
                 return 1;

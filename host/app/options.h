@@ -19,8 +19,8 @@ typedef struct cli_options {
     int spp, max_depth, seed;
     float time_limit;
     int stats;
-    vct_tone tone; /* PNG: exposure and curve */
-    uint32_t grid_res[3];
+    vct_tone tone;           /* PNG: exposure and curve */
+    vct_accel_options accel; /* --accel, --grid-res */
     int has_camera_pos, has_look_at, has_up, has_fov;
     float camera_pos[3], look_at[3], up[3], fov;
     vct_light lights[MAX_CLI_LIGHTS];

@@ -59,16 +59,16 @@ int view_app_init(view_app *app, const cli_options *opt, vct_error *err) {
 
 int view_app_attach(view_app *app, vct_context *ctx, vct_error *err) {
     app->ctx = ctx;
-    app->grid = vct_grid_build(ctx, app->scene, app->opt.grid_res, err);
-    return app->grid ? VCT_OK : (int)err->status;
+    app->accel = vct_accel_build(ctx, app->scene, &app->opt.accel, err);
+    return app->accel ? VCT_OK : (int)err->status;
 }
 
 void view_app_free(view_app *app) {
     vct_voxels_free(app->voxels);
-    vct_grid_free(app->grid);
+    vct_accel_free(app->accel);
     vct_scene_free(app->scene);
     app->voxels = NULL;
-    app->grid = NULL;
+    app->accel = NULL;
     app->scene = NULL;
 }
 
@@ -102,7 +102,7 @@ static int ensure_voxels(view_app *app, vct_error *err) {
             return VCT_OK;
         drop_voxels(app);
         const vct_brick_options bricks = {app->opt.bricks, app->opt.anisotropic != 0, 0};
-        int rc = vct_vct_prepare(app->ctx, app->scene, app->grid, &app->plan, &vo, &bricks,
+        int rc = vct_vct_prepare(app->ctx, app->scene, app->accel, &app->plan, &vo, &bricks,
                                  (uint32_t)app->opt.bounces, &app->opt.cones, &app->voxels, err);
         if (rc)
             return rc;
@@ -128,7 +128,7 @@ static int ensure_voxels(view_app *app, vct_error *err) {
 static int update_light(view_app *app, vct_error *err) {
     if (!app->light_moved || !app->voxels || !app->voxels_lit)
         return VCT_OK;
-    int rc = vct_voxels_inject_light(app->ctx, app->scene, app->grid, app->voxels, err);
+    int rc = vct_voxels_inject_light(app->ctx, app->scene, app->accel, app->voxels, err);
     for (int b = 1; rc == VCT_OK && b < app->opt.bounces; ++b)
         rc = vct_voxels_inject_bounce(app->ctx, app->scene, app->voxels, &app->opt.cones,
                                       BOUNCE_CONES, err);
@@ -154,7 +154,7 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
                                          [VIEW_VOXELS] = VCT_METHOD_VOXELS};
     vct_render_job job = vct_render_job_default(methods[app->method], app->width, app->height);
     job.scene = app->scene;
-    job.grid = app->grid;
+    job.accel = app->accel;
     job.voxels = app->voxels;
     job.plan = &app->plan;
     job.vct.diffuse_cones = (uint32_t)app->opt.diffuse_cones;

@@ -21,7 +21,7 @@ typedef struct view_app {
     cli_options opt;
     vct_context *ctx;
     vct_scene *scene;
-    vct_grid *grid;
+    vct_accel *accel;
     vct_voxels *voxels;
     int voxels_lit;      /* light injected into the voxels (and bounced) */
     int voxels_for_plan; /* built for the plan (with bricks), not only for viewing */

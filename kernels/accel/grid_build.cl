@@ -10,7 +10,7 @@
 #include "accel/tri_box.h"
 #include "vct_types.h"
 
-inline int grid_cell_range(vct_grid_desc g, float4 a, float4 b, float4 c, float pad, int3 *lo,
+inline int grid_cell_range(vct_accel_desc g, float4 a, float4 b, float4 c, float pad, int3 *lo,
                            int3 *hi) {
     const float3 mn = fmin(a.xyz, fmin(b.xyz, c.xyz)) - pad;
     const float3 mx = fmax(a.xyz, fmax(b.xyz, c.xyz)) + pad;
@@ -20,7 +20,7 @@ inline int grid_cell_range(vct_grid_desc g, float4 a, float4 b, float4 c, float 
     return 1;
 }
 
-inline int cell_accepts(vct_grid_desc g, int3 cell, float4 a, float4 b, float4 c, float pad) {
+inline int cell_accepts(vct_accel_desc g, int3 cell, float4 a, float4 b, float4 c, float pad) {
     float v0[3] = {a.x, a.y, a.z}, v1[3] = {b.x, b.y, b.z}, v2[3] = {c.x, c.y, c.z};
     const float3 centre = g.origin.xyz + (convert_float3(cell) + 0.5f) * g.cell_size.xyz;
     const float3 hs = 0.5f * g.cell_size.xyz + pad;
@@ -31,7 +31,7 @@ inline int cell_accepts(vct_grid_desc g, int3 cell, float4 a, float4 b, float4 c
 /* Walks the cells triangle t overlaps, in x-fastest order; with `write`
  * stores (cell, t) pairs from keys[out] and ids[out]. Returns the count, so
  * the counting and writing passes cannot disagree. */
-inline uint grid_visit(__global const float4 *tri_vertices, uint t, vct_grid_desc g, float pad,
+inline uint grid_visit(__global const float4 *tri_vertices, uint t, vct_accel_desc g, float pad,
                        int write, __global uint *keys, __global uint *ids, uint out) {
     const float4 a = tri_vertices[3 * t], b = tri_vertices[3 * t + 1], c = tri_vertices[3 * t + 2];
     int3 lo, hi;
@@ -51,14 +51,14 @@ inline uint grid_visit(__global const float4 *tri_vertices, uint t, vct_grid_des
 }
 
 /* pad: how far each cell box is widened (relative to the cell, set by host). */
-__kernel void grid_count(__global const float4 *tri_vertices, uint triangles, vct_grid_desc g,
+__kernel void grid_count(__global const float4 *tri_vertices, uint triangles, vct_accel_desc g,
                          float pad, __global uint *counts) {
     const uint t = get_global_id(0);
     if (t < triangles)
         counts[t] = grid_visit(tri_vertices, t, g, pad, 0, counts, counts, 0);
 }
 
-__kernel void grid_write(__global const float4 *tri_vertices, uint triangles, vct_grid_desc g,
+__kernel void grid_write(__global const float4 *tri_vertices, uint triangles, vct_accel_desc g,
                          float pad, __global const uint *offsets, __global uint *cell_keys,
                          __global uint *tri_ids) {
     const uint t = get_global_id(0);
@@ -78,17 +78,4 @@ __kernel void grid_ranges(__global const uint *cell_keys, uint n, __global uint 
     }
     if (i == n - 1 || cell_keys[i + 1] != key)
         cell_ranges[2 * key + 1] = i + 1;
-}
-
-/* Triangle vertices gathered once into 3 float4 per triangle for traversal. */
-__kernel void grid_gather_vertices(__global const float *positions, __global const uint *triangles,
-                                   uint count, __global float4 *tri_vertices) {
-    const uint t = get_global_id(0);
-    if (t >= count)
-        return;
-    for (int k = 0; k < 3; ++k) {
-        const uint v = triangles[3 * t + k];
-        tri_vertices[3 * t + k] =
-            (float4)(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2], 0.0f);
-    }
 }

@@ -5,55 +5,33 @@
 #ifndef VCT_GRID_TRAVERSE_H
 #define VCT_GRID_TRAVERSE_H
 
+#include "accel/hit.h"
 #include "accel/ray_tri.h"
 #include "vct_types.h"
 
-typedef struct grid_view {
-    vct_grid_desc desc;
+typedef struct accel_view {
+    vct_accel_desc desc;
     __global const uint *cell_bits;   /* 1 bit per cell: holds any triangle */
     __global const uint *cell_ranges; /* (start, end) per cell into tri_ids */
     __global const uint *tri_ids;
     __global const float4 *tri_vertices; /* 3 per triangle */
-} grid_view;
+} accel_view;
 
 /* The first kernel arguments of every kernel that traverses the grid, and
  * the view built from them (set by the host's vct_grid_set_args). */
-#define GRID_ARGS                                                                                  \
-    vct_grid_desc grid, __global const uint *cell_bits, __global const uint *cell_ranges,          \
+#define ACCEL_ARGS                                                                                 \
+    vct_accel_desc accel, __global const uint *cell_bits, __global const uint *cell_ranges,        \
         __global const uint *tri_ids, __global const float4 *tri_vertices
-#define GRID_VIEW() ((grid_view){grid, cell_bits, cell_ranges, tri_ids, tri_vertices})
-
-typedef struct hit_record {
-    float t, u, v;
-    uint tri;
-} hit_record;
-
-/* Where a hit lies: position from barycentrics, unit geometric normal ng and
- * the normal n turned towards the incoming ray; front: the ray arrived on
- * ng's side. 0 for a zero-area triangle (which traversal never reports). */
-inline int surface_hit(const grid_view *g, const hit_record *h, float3 dir, float3 *p, float3 *ng,
-                       float3 *n, int *front) {
-    const float3 a = g->tri_vertices[3 * h->tri].xyz, b = g->tri_vertices[3 * h->tri + 1].xyz,
-                 c = g->tri_vertices[3 * h->tri + 2].xyz;
-    const float3 cr = cross(b - a, c - a);
-    const float len = length(cr);
-    if (!(len > 0.0f))
-        return 0;
-    *ng = cr / len;
-    *front = dot(*ng, dir) < 0.0f;
-    *n = *front ? *ng : -*ng;
-    *p = a + h->u * (b - a) + h->v * (c - a);
-    return 1;
-}
+#define ACCEL_VIEW() ((accel_view){accel, cell_bits, cell_ranges, tri_ids, tri_vertices})
 
 inline uint grid_cell_index(uint3 c, uint4 res) {
     return c.x + res.x * (c.y + res.y * c.z);
 }
 
 /* Closest hit in (tmin, tmax]; any_hit: stop at the first one (shadow rays). */
-__attribute__((always_inline)) inline int grid_trace(const grid_view *g, float3 org, float3 dir,
-                                                     float tmin, float tmax, int any_hit,
-                                                     hit_record *hit) {
+__attribute__((always_inline)) inline int accel_trace(const accel_view *g, float3 org, float3 dir,
+                                                      float tmin, float tmax, int any_hit,
+                                                      hit_record *hit) {
     const float3 lo = g->desc.origin.xyz;
     const float3 size = g->desc.cell_size.xyz;
     const uint4 res = g->desc.res;

@@ -1,16 +1,16 @@
 /* Direct illumination from punctual lights at a surface point, with hard
- * shadows from any-hit rays through the grid. Lambert: albedo / pi. */
+ * shadows from any-hit rays through the acceleration structure. Lambert: albedo / pi. */
 #ifndef VCT_DIRECT_LIGHT_H
 #define VCT_DIRECT_LIGHT_H
 
-#include "accel/grid_traverse.h"
+#include "accel/accel.h"
 #include "vct_types.h"
 
 #define VCT_INV_PI 0.318309886f
 
 /* Offset that lifts a point off its surface: relative to the scene extent and
  * to the point's own magnitude (float spacing grows with it). */
-inline float surface_epsilon(const grid_view *g, float3 p) {
+inline float surface_epsilon(const accel_view *g, float3 p) {
     const float3 ap = fabs(p);
     return g->desc.origin.w * 1e-5f + fmax(ap.x, fmax(ap.y, ap.z)) * 2e-6f;
 }
@@ -46,9 +46,10 @@ inline int light_incident(__global const vct_light_desc *lights, uint i, float3 
 
 /* 1 if nothing blocks the segment from p (lifted off its surface along n by
  * eps) towards wi over dist; shading itself uses p. */
-inline int light_visible(const grid_view *g, float3 p, float3 n, float eps, float3 wi, float dist) {
+inline int light_visible(const accel_view *g, float3 p, float3 n, float eps, float3 wi,
+                         float dist) {
     hit_record h;
-    return !grid_trace(g, p + n * eps, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h);
+    return !accel_trace(g, p + n * eps, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h);
 }
 
 /* What lights send to p (normal n): the irradiance sum of radiant *
@@ -83,7 +84,7 @@ inline int light_is_soft(__global const vct_light_desc *lights, uint i) {
 
 /* Every light but, when skip_soft, those with a radius (their shadows are
  * traced elsewhere); lights with a radius are otherwise shaded as points. */
-inline direct_terms direct_gather(const grid_view *g, __global const vct_light_desc *lights,
+inline direct_terms direct_gather(const accel_view *g, __global const vct_light_desc *lights,
                                   uint light_count, float3 p, float3 n, int shadows, float3 r,
                                   float e, int skip_soft) {
     direct_terms sum = {(float3)(0.0f), (float3)(0.0f)};
@@ -128,7 +129,7 @@ inline float3 light_extent_sample(__global const vct_light_desc *lights, uint i,
 
 /* Radiance reflected towards the viewer by a Lambertian point p with normal n
  * (facing the viewer) from every light. */
-inline float3 direct_lambert(const grid_view *g, __global const vct_light_desc *lights,
+inline float3 direct_lambert(const accel_view *g, __global const vct_light_desc *lights,
                              uint light_count, float3 p, float3 n, float3 albedo) {
     return albedo * VCT_INV_PI *
            direct_gather(g, lights, light_count, p, n, 1, (float3)(0.0f), -1.0f, 0).irradiance;

@@ -9,7 +9,7 @@
 #ifndef VCT_EMITTERS_H
 #define VCT_EMITTERS_H
 
-#include "accel/grid_traverse.h"
+#include "accel/accel.h"
 #include "light/direct_light.h"
 #include "scene/rng.h"
 #include "vct_types.h"
@@ -29,7 +29,7 @@ typedef struct emitter_view {
 
 /* Triangle t's vertices in lexicographic order of position: a sample at
  * given barycentrics lands on the same point whichever way t is wound. */
-inline void emitter_vertices(const grid_view *g, uint t, float3 *a, float3 *b, float3 *c) {
+inline void emitter_vertices(const accel_view *g, uint t, float3 *a, float3 *b, float3 *c) {
     float3 v[3] = {g->tri_vertices[3u * t].xyz, g->tri_vertices[3u * t + 1u].xyz,
                    g->tri_vertices[3u * t + 2u].xyz};
     for (int i = 0; i < 2; ++i)
@@ -62,7 +62,7 @@ inline uint emitter_pick(const emitter_view *e, float u) {
 /* Sample s of stream `seed`: an emitter point *q, the emitter's triangle in
  * *tri, and the sample's weight before the receiver's cosine and 1 /
  * samples: Le cos_l / d^2 * scale, seen from p (0 when edge-on). */
-inline float3 emitter_sample(const emitter_view *e, const grid_view *g,
+inline float3 emitter_sample(const emitter_view *e, const accel_view *g,
                              __global const vct_material_desc *materials,
                              __global const uint *tri_material, float3 p, uint seed, uint s,
                              float3 *q, uint *tri) {
@@ -96,17 +96,17 @@ inline float3 emitter_sample(const emitter_view *e, const grid_view *g,
 
 /* 1 if nothing blocks the segment from o to emitter point q (ending short of
  * q by its surface epsilon, so that the emitter itself does not block it). */
-inline int emitter_visible(const grid_view *g, float3 o, float3 q) {
+inline int emitter_visible(const accel_view *g, float3 o, float3 q) {
     const float3 to = q - o;
     const float dist = length(to);
     hit_record h;
-    return !grid_trace(g, o, to / dist, 0.0f, dist - 2.0f * surface_epsilon(g, q), 1, &h);
+    return !accel_trace(g, o, to / dist, 0.0f, dist - 2.0f * surface_epsilon(g, q), 1, &h);
 }
 
 /* Adds the emitters' light at p (normal n facing the viewer) to `sum`, as
  * direct_gather adds a punctual light's: the irradiance, and the Phong lobe
  * of exponent e about r when e >= 0. */
-inline void direct_emitters(const grid_view *g, const emitter_view *e,
+inline void direct_emitters(const accel_view *g, const emitter_view *e,
                             __global const vct_material_desc *materials,
                             __global const uint *tri_material, float3 p, float3 n, float3 r,
                             float exponent, uint seed, direct_terms *sum) {

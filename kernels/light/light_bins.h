@@ -7,14 +7,14 @@
  * direction from it, so every triangle that can block it sits in one cell,
  * and those that could lie before the segment's far end come first: the test
  * stops at the first farther one. The triangle test and the segment are those
- * of the grid's shadow ray (light_segment_visible_grid), so both say the same.
+ * of the plain shadow ray (light_segment_visible_accel), so both say the same.
  *
  * Face f = 2 * axis + (component < 0) of a direction w, with m = |w[axis]|,
  * u = w[axis + 1] / m and v = w[axis + 2] / m (axes mod 3) in [-1, 1]. */
 #ifndef VCT_LIGHT_BINS_H
 #define VCT_LIGHT_BINS_H
 
-#include "accel/grid_traverse.h"
+#include "accel/accel.h"
 #include "vct_types.h"
 
 /* How far short of the light a shadow segment ends, at least, relative to
@@ -81,17 +81,17 @@ inline int light_segment(float3 o, float3 l, float margin, float extent, float3 
 }
 
 /* 1 if no triangle blocks the segment from o to light position l (short of
- * it by margin), through the grid. */
-inline int light_segment_visible_grid(const grid_view *g, float3 o, float3 l, float margin) {
+ * it by margin), through the acceleration structure. */
+inline int light_segment_visible_accel(const accel_view *g, float3 o, float3 l, float margin) {
     float3 dir;
     float len, end;
     hit_record h;
     return !light_segment(o, l, margin, g->desc.origin.w, &dir, &len, &end) ||
-           !grid_trace(g, o, dir, 0.0f, end, 1, &h);
+           !accel_trace(g, o, dir, 0.0f, end, 1, &h);
 }
 
 /* The same answer from light i's bins (which it must have). */
-inline int light_segment_visible_bins(const light_bins_view *b, const grid_view *g, uint i,
+inline int light_segment_visible_bins(const light_bins_view *b, const accel_view *g, uint i,
                                       float3 o, float margin) {
     const vct_light_bins_desc d = b->desc[i];
     __global const float4 *tri_vertices = g->tri_vertices;

@@ -1,4 +1,4 @@
-/* Unbiased path tracing on the shared grid: next-event estimation to every
+/* Unbiased path tracing on the shared acceleration structure: next-event estimation to every
  * punctual light and to emissive triangles (chosen by area, combined with BSDF
  * sampling by the power heuristic), Russian roulette after RR_DEPTH bounces.
  * Each launch adds `samples` samples per pixel to `accum` (sum of radiance,
@@ -10,7 +10,7 @@
 #include "light/direct_light.h"
 #include "light/emitters.h"
 #include "scene/texture.h"
-#include "accel/grid_traverse.h"
+#include "accel/accel.h"
 #include "scene/rng.h"
 #include "vct_types.h"
 
@@ -30,7 +30,7 @@ inline float power_heuristic(float a, float b) {
 /* Radiance from the punctual lights, for any BSDF (delta lobes excluded).
  * A light with a radius is shaded from its centre; its shadow ray goes to a
  * random point of its extent. */
-inline float3 nee_punctual(const grid_view *g, __global const vct_light_desc *lights,
+inline float3 nee_punctual(const accel_view *g, __global const vct_light_desc *lights,
                            uint light_count, const vct_material_desc *m, float3 p, float3 n,
                            float3 wo, uint *rng) {
     float3 sum = (float3)(0.0f);
@@ -56,7 +56,7 @@ inline float3 nee_punctual(const grid_view *g, __global const vct_light_desc *li
 }
 
 /* One emissive-triangle sample, MIS-weighted against BSDF sampling. */
-inline float3 nee_emitters(const grid_view *g, const emitters *e,
+inline float3 nee_emitters(const accel_view *g, const emitters *e,
                            __global const vct_material_desc *materials,
                            __global const uint *tri_material, const vct_material_desc *m, float3 p,
                            float3 n, float3 wo, uint *rng) {
@@ -88,14 +88,15 @@ inline float3 nee_emitters(const grid_view *g, const emitters *e,
     const float eps = surface_epsilon(g, p);
     const float leps = surface_epsilon(g, q);
     hit_record h;
-    if (grid_trace(g, p + n * eps, wi, 0.0f, dist - eps - 2.0f * leps, 1, &h))
+    if (accel_trace(g, p + n * eps, wi, 0.0f, dist - eps - 2.0f * leps, 1, &h))
         return (float3)(0.0f);
     const float pdf_light = e->inv_area * d2 / cos_l; /* solid angle */
     const float3 Le = materials[tri_material[tri]].emission.xyz;
     return Le * fc * (power_heuristic(pdf_light, pdf_bsdf) / pdf_light);
 }
 
-__kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,
+__kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
+                        __global const vct_material_desc *materials,
                         __global const uint *tri_material, TEXTURE_ARGS,
                         __global const vct_light_desc *lights, uint light_count,
                         __global const uint *emitter_tris, __global const float *emitter_cdf,
@@ -105,7 +106,7 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    const grid_view g = GRID_VIEW();
+    const accel_view g = ACCEL_VIEW();
     const texture_view tv = TEXTURE_VIEW();
     const emitters em = {{emitter_tris, emitter_cdf, 0, emitter_count, 1u}, emitter_inv_area};
     const uint pixel = y * cam.size.x + x;
@@ -121,7 +122,7 @@ __kernel void pathtrace(GRID_ARGS, vct_camera_desc cam, __global const vct_mater
         float3 prev_p = org;
         for (uint depth = 0; depth < max_depth; ++depth) {
             hit_record h;
-            if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
+            if (!accel_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
                 radiance += throughput * ambient.xyz; /* the environment */
                 break;
             }

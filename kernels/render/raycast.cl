@@ -1,4 +1,4 @@
-/* Ray casting: primary visibility through the triangle grid, direct light
+/* Ray casting: primary visibility through the acceleration structure, direct light
  * from every punctual light with hard shadows and from emissive triangles
  * (light/emitters.h, emitter_samples shadow rays per pixel), emission,
  * Lambert shading. */
@@ -6,10 +6,10 @@
 #include "light/direct_light.h"
 #include "light/emitters.h"
 #include "scene/texture.h"
-#include "accel/grid_traverse.h"
+#include "accel/accel.h"
 #include "vct_types.h"
 
-__kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
+__kernel void render_direct(ACCEL_ARGS, vct_camera_desc cam,
                             __global const vct_material_desc *materials,
                             __global const uint *tri_material, TEXTURE_ARGS,
                             __global const vct_light_desc *lights, uint light_count, EMITTER_ARGS,
@@ -17,11 +17,11 @@ __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    const grid_view g = GRID_VIEW();
+    const accel_view g = ACCEL_VIEW();
     const float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
     float3 radiance = (float3)(0.0f);
     hit_record h;
-    if (grid_trace(&g, cam.position.xyz, dir, 0.0f, INFINITY, 0, &h)) {
+    if (accel_trace(&g, cam.position.xyz, dir, 0.0f, INFINITY, 0, &h)) {
         float3 p, ng, n;
         int front;
         surface_hit(&g, &h, dir, &p, &ng, &n, &front);
@@ -38,15 +38,15 @@ __kernel void render_direct(GRID_ARGS, vct_camera_desc cam,
 }
 
 /* Closest (or any) hits for arbitrary rays: t < 0 on a miss. */
-__kernel void trace_rays(GRID_ARGS, __global const vct_ray_desc *rays, uint n, uint any_hit,
+__kernel void trace_rays(ACCEL_ARGS, __global const vct_ray_desc *rays, uint n, uint any_hit,
                          __global vct_hit_desc *hits) {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
-    const grid_view g = GRID_VIEW();
+    const accel_view g = ACCEL_VIEW();
     const vct_ray_desc r = rays[i];
     hit_record h;
-    if (grid_trace(&g, r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w, any_hit, &h))
+    if (accel_trace(&g, r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w, any_hit, &h))
         hits[i] = (float4)(h.t, as_float(h.tri), h.u, h.v);
     else
         hits[i] = (float4)(-1.0f, as_float(0xffffffffu), 0.0f, 0.0f);

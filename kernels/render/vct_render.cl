@@ -1,6 +1,6 @@
 /* Voxel cone tracing into the image buffer, one kernel per effect so that
  * an effect the plan leaves out enqueues nothing:
- *   vct_primary        camera rays through the triangle grid, direct light
+ *   vct_primary        camera rays through the acceleration structure, direct light
  *                      exactly as the ray caster computes it, emission, and
  *                      refraction through dielectrics; writes the G-buffer
  *   vct_soft_shadows   direct light of the lights with a radius, through one
@@ -33,7 +33,7 @@
 #include "light/direct_light.h"
 #include "light/emitters.h"
 #include "scene/texture.h"
-#include "accel/grid_traverse.h"
+#include "accel/accel.h"
 #include "vct_types.h"
 
 #define VCT_MAX_INTERFACES 8u
@@ -78,7 +78,7 @@ inline float3 direct_shade(const vct_material_desc *m, direct_terms d, float e) 
     return out;
 }
 
-__kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
+__kernel void vct_primary(ACCEL_ARGS, vct_camera_desc cam,
                           __global const vct_material_desc *materials,
                           __global const uint *tri_material, TEXTURE_ARGS,
                           __global const vct_light_desc *lights, uint light_count, EMITTER_ARGS,
@@ -87,7 +87,7 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    const grid_view g = GRID_VIEW();
+    const accel_view g = ACCEL_VIEW();
     const uint pixel = y * cam.size.x + x;
     float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
     float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
@@ -97,7 +97,7 @@ __kernel void vct_primary(GRID_ARGS, vct_camera_desc cam,
     int reflected = 0;
     for (uint depth = 0; depth < VCT_MAX_INTERFACES; ++depth) {
         hit_record h;
-        if (!grid_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
+        if (!accel_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
             radiance += throughput * ambient.xyz;
             break;
         }

@@ -1,6 +1,6 @@
 /* Direct light injected into the leaf voxels: the radiance each voxel sends
  * out, Lambert (albedo / pi times irradiance from every punctual light, with
- * hard shadows from any-hit rays through the triangle grid) plus emission.
+ * hard shadows from any-hit rays through the acceleration structure) plus emission.
  * The same conventions as the ray caster and the path tracer.
  *
  * Surfaces are two-sided, whatever their winding: each fragment of a voxel
@@ -15,7 +15,7 @@
  * and meets the lit face), and a closed object shadows its own far side.
  * Emissive triangles light the fragments as well (light/emitters.h).
  * Shadow edges move by less than a voxel. The rays of hard point and spot lights test the light's
- * own triangle bins (light_bins.h) when it has them, the grid otherwise, with
+ * own triangle bins (light_bins.h) when it has them, the acceleration structure otherwise, with
  * the same answer; they end two lifts short of the light. A light with a
  * radius is seen through INJECT_EXTENT_SAMPLES fixed points of its extent
  * (a spiral), so that its penumbrae reach the voxels too. */
@@ -30,16 +30,16 @@
 #define INJECT_EXTENT_SAMPLES 8u
 
 /* The fraction of light i that p sees, lifted by `lift` along `up`. */
-inline float inject_visibility(const grid_view *g, const light_bins_view *bins,
+inline float inject_visibility(const accel_view *g, const light_bins_view *bins,
                                __global const vct_light_desc *lights, uint i, float3 p, float3 up,
                                float lift, float3 wi, float dist) {
     if (!light_is_soft(lights, i)) {
         if (isinf(dist)) /* directional */
             return (float)light_visible(g, p, up, lift, wi, dist);
         const float3 o = p + up * lift;
-        return (float)(bins->desc[i].info.w
-                           ? light_segment_visible_bins(bins, g, i, o, 2.0f * lift)
-                           : light_segment_visible_grid(g, o, lights[i].position.xyz, 2.0f * lift));
+        return (float)(bins->desc[i].info.w ? light_segment_visible_bins(bins, g, i, o, 2.0f * lift)
+                                            : light_segment_visible_accel(
+                                                  g, o, lights[i].position.xyz, 2.0f * lift));
     }
     uint seen = 0;
     for (uint s = 0; s < INJECT_EXTENT_SAMPLES; ++s) {
@@ -80,7 +80,7 @@ typedef struct shared_rays {
 /* Irradiance at centre p from every light onto one fragment: triangle t,
  * unit normal n (either sign), seen from its point q nearest p, or with the
  * visibility `shared` holds when `reuse`; else what it traces is kept there. */
-inline float3 fragment_irradiance(const grid_view *g, const light_bins_view *bins,
+inline float3 fragment_irradiance(const accel_view *g, const light_bins_view *bins,
                                   __global const vct_light_desc *lights, uint light_count, float3 p,
                                   float3 q, float3 n, shared_rays *shared, int reuse) {
     const float lift = surface_epsilon(g, q);
@@ -115,7 +115,7 @@ inline float3 fragment_irradiance(const grid_view *g, const light_bins_view *bin
 /* Irradiance at centre p onto one fragment (triangle normal n, nearest
  * point q) from the emitters: e->samples samples of stream `seed`, each seen
  * from q, lifted off the triangle on the sample's side and towards it. */
-inline float3 fragment_emitters(const grid_view *g, const emitter_view *e,
+inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
                                 __global const vct_material_desc *materials,
                                 __global const uint *tri_material, float3 p, float3 q, float3 n,
                                 uint seed, shared_rays *shared, int reuse) {
@@ -143,7 +143,7 @@ inline float3 fragment_emitters(const grid_view *g, const emitter_view *e,
     return irradiance / (float)e->samples;
 }
 
-__kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
+__kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                             __global const uint *keys, uint voxels,
                             __global const uint *voxel_start, __global const uint *fragment_tri,
                             uint fragments, __global const vct_material_desc *materials,
@@ -154,7 +154,7 @@ __kernel void inject_direct(GRID_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
-    const grid_view g = GRID_VIEW();
+    const accel_view g = ACCEL_VIEW();
     const light_bins_view bins = LIGHT_BINS_VIEW();
     const emitter_view ev = EMITTER_VIEW();
     const texture_view tv = TEXTURE_VIEW();

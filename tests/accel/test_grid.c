@@ -3,52 +3,9 @@
  * brute force over every triangle on random and axis-parallel rays; and
  * watertightness: rays through shared vertices and edges of a closed mesh
  * never pass through. */
-#include <float.h>
-#include <math.h>
-#include <string.h>
-
-#include "check.h"
-#include "mesh_gen.h"
-#include "accel/grid.h"
+#include "accel/accel.h"
 #include "accel/tri_box.h"
-
-/* Möller-Trumbore in double: the independent reference. Returns t or -1, and
- * the distance of the hit to the triangle's border in barycentric units. */
-static double ref_intersect(const double o[3], const double d[3], const float *a, const float *b,
-                            const float *c, double *border) {
-    double e1[3], e2[3], p[3], s[3], q[3];
-    for (int k = 0; k < 3; ++k) {
-        e1[k] = (double)b[k] - a[k];
-        e2[k] = (double)c[k] - a[k];
-        s[k] = o[k] - a[k];
-    }
-    p[0] = d[1] * e2[2] - d[2] * e2[1];
-    p[1] = d[2] * e2[0] - d[0] * e2[2];
-    p[2] = d[0] * e2[1] - d[1] * e2[0];
-    double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
-    if (det == 0.0)
-        return -1;
-    double inv = 1.0 / det;
-    double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) * inv;
-    q[0] = s[1] * e1[2] - s[2] * e1[1];
-    q[1] = s[2] * e1[0] - s[0] * e1[2];
-    q[2] = s[0] * e1[1] - s[1] * e1[0];
-    double v = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) * inv;
-    double t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) * inv;
-    *border = fmin(fmin(u, v), 1.0 - u - v);
-    if (u < 0 || v < 0 || u + v > 1 || t <= 0)
-        return -1;
-    return t;
-}
-
-static vct_scene *scene_of(const test_mesh *m) {
-    vct_error err = {0};
-    uint32_t *mats = calloc(m->nt, 4);
-    vct_scene *s = vct_scene_from_arrays(m->pos, m->nv, m->tri, m->nt, mats, NULL, 0, &err);
-    free(mats);
-    REQUIRE_OK(s ? VCT_OK : err.status, err);
-    return s;
-}
+#include "ray_check.h"
 
 /* Every triangle that truly overlaps a cell is listed there (conservative);
  * every listed one overlaps the cell widened by 2e-5 of the scene's extent
@@ -107,146 +64,27 @@ static void check_cells(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     free(ids);
 }
 
-/* Random rays (some axis-parallel, some starting inside the scene) against
- * the brute force; disagreements are allowed only for grazing hits within
- * 1e-5 (barycentric) of a triangle's border. */
-static void check_rays(vct_context *ctx, const vct_scene *s, const vct_grid *g, uint32_t n,
-                       uint64_t seed, const char *name) {
-    float *rays = malloc(32ull * n);
-    vct_hit *hits = malloc(sizeof *hits * n);
-    float lo[3], ext[3];
-    double extent = 0;
-    for (int k = 0; k < 3; ++k) {
-        ext[k] = s->bounds_max[k] - s->bounds_min[k];
-        lo[k] = s->bounds_min[k] - 0.25f * ext[k];
-        extent = fmax(extent, ext[k]);
-    }
-    for (uint32_t i = 0; i < n; ++i) {
-        float *r = &rays[8 * i];
-        double len = 0;
-        for (int k = 0; k < 3; ++k) {
-            r[k] = lo[k] + 1.5f * ext[k] * check_randf(&seed);
-            r[4 + k] = check_randf(&seed) * 2.0f - 1.0f;
-        }
-        if (i % 7 == 0) /* axis-parallel: zero direction components */
-            r[4 + (i / 7) % 3] = 0.0f, r[4 + (i / 7 + 1) % 3] = 0.0f;
-        for (int k = 0; k < 3; ++k)
-            len += (double)r[4 + k] * r[4 + k];
-        if (len == 0)
-            r[4] = 1.0f, len = 1;
-        for (int k = 0; k < 3; ++k)
-            r[4 + k] = (float)(r[4 + k] / sqrt(len));
-        r[3] = 0.0f;
-        r[7] = INFINITY;
-    }
-    vct_error err = {0};
-    REQUIRE_OK(vct_trace_rays(ctx, g, rays, n, 0, hits, &err), err);
-    /* Any-hit (occlusion) queries agree with closest hits on hit or miss. */
-    vct_hit *any = malloc(sizeof *any * n);
-    REQUIRE_OK(vct_trace_rays(ctx, g, rays, n, 1, any, &err), err);
-    uint32_t any_wrong = 0;
-    for (uint32_t i = 0; i < n; ++i)
-        any_wrong += (any[i].t >= 0) != (hits[i].t >= 0) ||
-                     (any[i].t >= 0 && any[i].t < hits[i].t * (1.0f - 1e-6f));
-    CHECK(any_wrong == 0, "%s: %u any-hit answers disagree with closest hits", name, any_wrong);
-    free(any);
-    uint32_t wrong = 0, grazing = 0, hits_ref = 0;
-    for (uint32_t i = 0; i < n; ++i) {
-        const float *r = &rays[8 * i];
-        double o[3] = {r[0], r[1], r[2]}, d[3] = {r[4], r[5], r[6]};
-        double best = INFINITY;
-        int any_grazing = 0;
-        for (uint32_t t = 0; t < s->triangle_count; ++t) {
-            const uint32_t *tr = &s->triangles[3 * t];
-            double border = 1.0;
-            double th = ref_intersect(o, d, &s->positions[3 * tr[0]], &s->positions[3 * tr[1]],
-                                      &s->positions[3 * tr[2]], &border);
-            if (fabs(border) < 1e-5)
-                any_grazing = 1;
-            if (th > 0 && th < best)
-                best = th;
-        }
-        double got = hits[i].t >= 0 ? hits[i].t : INFINITY;
-        hits_ref += isfinite(best);
-        int agree = (!isfinite(best) && !isfinite(got)) ||
-                    (isfinite(best) && isfinite(got) &&
-                     fabs(best - got) <= 1e-5 * (extent + fabs(o[0]) + fabs(o[1]) + fabs(o[2])));
-        if (!agree && any_grazing) {
-            ++grazing;
-        } else if (!agree && wrong++ < 5) {
-            fprintf(stderr, "%s: ray %u: grid t=%.9g, brute force t=%.9g\n", name, i, got, best);
-        }
-    }
-    CHECK(wrong == 0, "%s: %u of %u rays disagree with the brute force", name, wrong, n);
-    CHECK(hits_ref > n / 20, "%s: only %u rays hit anything: a weak test", name, hits_ref);
-    printf("%s: %u rays, %u hits, %u grazing disagreements tolerated\n", name, n, hits_ref,
-           grazing);
-    free(rays);
-    free(hits);
-}
-
-/* Rays aimed exactly at vertices and edge midpoints of a closed mesh, from
- * inside and from outside: each must hit. */
-static void check_watertight(vct_context *ctx, const test_mesh *m, const float centre[3],
-                             const char *name) {
-    vct_scene *s = scene_of(m);
-    vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
-    REQUIRE_OK(g ? VCT_OK : err.status, err);
-    uint32_t n = m->nv + 3 * m->nt;
-    float *rays = malloc(32ull * 2 * n);
-    vct_hit *hits = malloc(sizeof *hits * 2 * n);
-    for (uint32_t i = 0; i < n; ++i) {
-        float target[3];
-        if (i < m->nv) {
-            memcpy(target, &m->pos[3 * i], 12);
-        } else {
-            uint32_t e = i - m->nv, t = e / 3, k = e % 3;
-            const float *a = &m->pos[3 * m->tri[3 * t + k]],
-                        *b = &m->pos[3 * m->tri[3 * t + (k + 1) % 3]];
-            for (int c = 0; c < 3; ++c)
-                target[c] = 0.5f * a[c] + 0.5f * b[c];
-        }
-        float *in = &rays[16 * i], *out = &rays[16 * i + 8];
-        for (int c = 0; c < 3; ++c) {
-            /* From inside: centre towards the target. */
-            in[c] = centre[c];
-            in[4 + c] = target[c] - centre[c];
-            /* From outside: through the target towards the centre. */
-            out[c] = centre[c] + 3.0f * (target[c] - centre[c]);
-            out[4 + c] = centre[c] - out[c];
-        }
-        in[3] = out[3] = 0.0f;
-        in[7] = out[7] = INFINITY;
-    }
-    REQUIRE_OK(vct_trace_rays(ctx, g, rays, 2 * n, 0, hits, &err), err);
-    uint32_t leaks = 0;
-    for (uint32_t i = 0; i < 2 * n; ++i)
-        leaks += !(hits[i].t > 0);
-    CHECK(leaks == 0, "%s: %u of %u rays through vertices and edges leaked", name, leaks, 2 * n);
-    printf("%s: %u rays through shared vertices and edges, %u leaks\n", name, 2 * n, leaks);
-    free(rays);
-    free(hits);
-    vct_grid_free(g);
-    vct_scene_free(s);
-}
-
 static void run_scene(vct_context *ctx, vct_scene *s, const uint32_t *res, uint32_t rays, int cells,
                       const char *name) {
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, res, &err);
-    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_accel_options o = {VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC};
+    if (res)
+        memcpy(o.grid_res, res, sizeof o.grid_res);
+    vct_accel *a = vct_accel_build(ctx, s, &o, &err);
+    REQUIRE_OK(a ? VCT_OK : err.status, err);
+    const vct_grid *g = a->grid;
     printf("%s: %u triangles, grid %ux%ux%u, %u references\n", name, s->triangle_count, g->res[0],
            g->res[1], g->res[2], g->references);
     if (cells)
         check_cells(ctx, s, g, name);
-    check_rays(ctx, s, g, rays, 42, name);
-    vct_grid_free(g);
+    check_rays(ctx, s, a, rays, 42, name);
+    vct_accel_free(a);
 }
 
 int main(void) {
     vct_context *ctx = check_context();
     const float origin[3] = {0, 0, 0}, far_centre[3] = {1e5f, -2e5f, 3e5f};
+    const vct_accel_options grid = {VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC};
 
     test_mesh soup = mesh_soup(1500, 0.0f, 7);
     vct_scene *s = scene_of(&soup);
@@ -269,11 +107,11 @@ int main(void) {
     s = scene_of(&sphere);
     run_scene(ctx, s, NULL, 3000, 1, "icosphere");
     vct_scene_free(s);
-    check_watertight(ctx, &sphere, origin, "icosphere watertight");
+    check_watertight(ctx, &sphere, origin, &grid, "icosphere watertight");
     mesh_free(&sphere);
 
     test_mesh far_sphere = mesh_icosphere(3, 10.0f, far_centre);
-    check_watertight(ctx, &far_sphere, far_centre, "icosphere at 3e5 watertight");
+    check_watertight(ctx, &far_sphere, far_centre, &grid, "icosphere at 3e5 watertight");
     mesh_free(&far_sphere);
 
     char path[1024];

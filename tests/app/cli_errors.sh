@@ -52,7 +52,8 @@ expect_failure "bad cone levels" "--cone-levels takes blend or nearest" render o
 expect_failure "unknown option" "unknown option --bogus" render ok.obj --bogus -o out.png
 expect_failure "no such device" "device 99 does not exist" render ok.obj --device 99 -o out.png
 expect_failure "degenerate camera" "do not define a view" render ok.obj --camera-pos 0 0 5 --look-at 0 0 5 -o out.png
-expect_failure "grid beyond the device's memory" "lower" render ok.obj --grid-res 1024 -o out.png
+expect_failure "grid beyond the device's memory" "lower" render ok.obj --accel grid --grid-res 1024 -o out.png
+expect_failure "unknown acceleration structure" "--accel takes bvh or grid" render ok.obj --accel kdtree -o out.png
 # A kernel that does not compile: the build log names the file and line.
 cp -r "$(dirname "$VCT")/kernels" broken-kernels
 printf 'this is not OpenCL C;\n' >> broken-kernels/render/raycast.cl

@@ -11,11 +11,11 @@ static int fail(const vct_error *err) {
     return 1;
 }
 
-static int render(vct_context *ctx, const vct_scene *scene, const vct_grid *grid, vct_method method,
-                  const char *prefix, vct_error *err) {
+static int render(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                  vct_method method, const char *prefix, vct_error *err) {
     vct_render_job job = vct_render_job_default(method, 128, 128);
     job.scene = scene;
-    job.grid = grid;
+    job.accel = accel;
     vct_voxels *voxels = NULL;
     vct_plan plan;
     int rc = VCT_OK;
@@ -25,7 +25,7 @@ static int render(vct_context *ctx, const vct_scene *scene, const vct_grid *grid
         vo.resolution = 64;
         const vct_brick_options bo = {VCT_BRICKS_AUTO, 1, 0};
         const vct_cone_settings cones = vct_cone_settings_default();
-        rc = vct_vct_prepare(ctx, scene, grid, &plan, &vo, &bo, 2, &cones, &voxels, err);
+        rc = vct_vct_prepare(ctx, scene, accel, &plan, &vo, &bo, 2, &cones, &voxels, err);
         job.voxels = voxels;
         job.plan = &plan;
     }
@@ -61,13 +61,13 @@ int main(int argc, char **argv) {
     if (!scene)
         return fail(&err);
     vct_context *ctx = vct_context_create(NULL, &err);
-    vct_grid *grid = ctx ? vct_grid_build(ctx, scene, NULL, &err) : NULL;
-    int rc = grid ? VCT_OK : (int)err.status;
+    vct_accel *accel = ctx ? vct_accel_build(ctx, scene, NULL, &err) : NULL;
+    int rc = accel ? VCT_OK : (int)err.status;
     if (rc == VCT_OK)
-        rc = render(ctx, scene, grid, VCT_METHOD_RAYCAST, argv[2], &err);
+        rc = render(ctx, scene, accel, VCT_METHOD_RAYCAST, argv[2], &err);
     if (rc == VCT_OK)
-        rc = render(ctx, scene, grid, VCT_METHOD_VCT, argv[2], &err);
-    vct_grid_free(grid);
+        rc = render(ctx, scene, accel, VCT_METHOD_VCT, argv[2], &err);
+    vct_accel_free(accel);
     vct_context_destroy(ctx);
     vct_scene_free(scene);
     return rc == VCT_OK ? 0 : fail(&err);

@@ -222,7 +222,7 @@ static void check_bins(const char *name, float offset, uint32_t face_res) {
     REQUIRE_OK(vct_scene_add_light(s, &point, &err), err);
     REQUIRE_OK(vct_scene_add_light(s, &soft, &err), err);
     REQUIRE_OK(vct_scene_add_light(s, &spot, &err), err);
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_light_bins b;
     const vct_light_bins_options bo = {1, face_res, 0};
@@ -289,11 +289,11 @@ static void check_bins(const char *name, float offset, uint32_t face_res) {
            b.entries, rays, hits, missing ? "no" : "yes");
     bins_free(&h);
     vct_light_bins_release(ctx, &b);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_scene_free(s);
 }
 
-static float *inject_with(const vct_scene *s, const vct_grid *g, vct_voxels *v,
+static float *inject_with(const vct_scene *s, const vct_accel *g, vct_voxels *v,
                           const vct_light_bins_options *bins, uint32_t n) {
     vct_error err = {0};
     float *r = malloc(16ull * n);
@@ -339,7 +339,7 @@ static void check_injection(const char *name, float offset, int sphere) {
     REQUIRE_OK(vct_scene_add_light(s, &point, &err), err);
     if (!sphere)
         REQUIRE_OK(vct_scene_add_light(s, &spot, &err), err);
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_voxel_options o = {0};
     o.resolution = 32;
@@ -392,7 +392,7 @@ static void check_injection(const char *name, float offset, int sphere) {
     free(with_grid);
     free(fallback);
     vct_voxels_free(v);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_scene_free(s);
 }
 

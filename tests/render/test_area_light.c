@@ -131,7 +131,7 @@ static void pixels_against_analytic(const char *name, int blocker, int lamp_up) 
 static void voxels_against_analytic(void) {
     vct_scene *s = lamp_scene(0, 0);
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_voxel_options o = {0};
     o.resolution = 32;
@@ -176,7 +176,7 @@ static void voxels_against_analytic(void) {
     free(keys);
     free(radiance);
     vct_voxels_free(v);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_scene_free(s);
 }
 

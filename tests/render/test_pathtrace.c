@@ -27,12 +27,12 @@ static vct_scene *cube_scene(vct_material m) {
 static vct_image trace(vct_context *ctx, const vct_scene *s, int w, int h, uint32_t spp,
                        uint32_t depth, uint32_t seed, vct_pathtrace_result *res) {
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, res, &err), err);
-    vct_grid_free(g);
+    vct_accel_free(g);
     return im;
 }
 
@@ -87,14 +87,14 @@ static void direct_matches_raycast(vct_context *ctx) {
     vct_light point = {VCT_LIGHT_POINT, {1.0f, 3.0f, -0.5f}, {0, 0, 0}, {10, 20, 30}, 0, 0, 0};
     vct_scene *s = plane_scene(0.6f, &point);
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     /* The path tracer averages each pixel's footprint: compare with the ray
      * caster at 8x8 samples per pixel, box-filtered down. */
     vct_render_options ro = {64 * 8, 48 * 8, {0, 0, 0}};
     vct_image fine, ref = {64, 48, calloc(16, 64 * 48)};
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
-    vct_grid_free(g);
+    vct_accel_free(g);
     for (int y = 0; y < 48 * 8; ++y)
         for (int x = 0; x < 64 * 8; ++x)
             for (int c = 0; c < 4; ++c)
@@ -256,7 +256,7 @@ static void resume_continues(vct_context *ctx) {
         m.emission[c] = 0.5f;
     vct_scene *s = cube_scene(m);
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_pathtrace_options whole = {24, 16, 4, 0.0, 8, 5, 1, 0, 0};
     vct_pathtrace_result r;
@@ -279,7 +279,7 @@ static void resume_continues(vct_context *ctx) {
     vct_image_free(&once);
     vct_image_free(&step);
     vct_image_free(&fresh);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_scene_free(s);
 }
 

@@ -89,7 +89,7 @@ static void run_case(vct_context *ctx, const char *name, vct_light light, double
                              {(float)at.x, (float)at.y, (float)at.z},
                              {0, 1, 0},
                              (float)fov};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_image im;
     vct_render_options ro = {W, H, {0, 0, 0}};
@@ -147,7 +147,7 @@ static void run_case(vct_context *ctx, const char *name, vct_light light, double
         CHECK(shadowed > 20, "%s: the occluder shadows only %d pixels", name, shadowed);
     printf("%s: %d pixels, worst relative error %.3g\n", name, compared, worst);
     vct_image_free(&im);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_scene_free(s);
 }
 

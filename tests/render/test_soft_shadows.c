@@ -144,12 +144,12 @@ static vct_image render_vct(const vct_scene *s, const vct_effect_force *extra, u
 
 static vct_image render_pt(const vct_scene *s, uint32_t spp) {
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_pathtrace_options o = {W, H, spp, 0.0, 1, 7, 64, 0, 0};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, NULL, &err), err);
-    vct_grid_free(g);
+    vct_accel_free(g);
     return im;
 }
 

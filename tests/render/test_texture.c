@@ -116,11 +116,11 @@ static double image_mean(const vct_image *im) {
 static void path_tracer_agrees(void) {
     vct_scene *s = floor_scene(3.0f, 0, 0.0f);
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_render_job job = vct_render_job_default(VCT_METHOD_RAYCAST, 64, 64);
     job.scene = s;
-    job.grid = g;
+    job.accel = g;
     vct_image rc, pt;
     REQUIRE_OK(vct_render(ctx, &job, &rc, NULL, &err), err);
     job.method = VCT_METHOD_PATHTRACE;
@@ -132,7 +132,7 @@ static void path_tracer_agrees(void) {
     printf("path tracer, direct only: mean %.4f of the ray caster's\n", ratio);
     vct_image_free(&rc);
     vct_image_free(&pt);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_scene_free(s);
 }
 
@@ -232,11 +232,11 @@ static void obj_map_kd(void) {
     REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
     const vct_camera above = {{0.3f, 2, 0.3f}, {0.3f, 0, 0.3f}, {0, 0, -1}, 20.0f};
     s->camera = above;
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_render_job job = vct_render_job_default(VCT_METHOD_RAYCAST, 16, 16);
     job.scene = s;
-    job.grid = g;
+    job.accel = g;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
     int lit = 0, differ = 0;
@@ -252,7 +252,7 @@ static void obj_map_kd(void) {
     CHECK(lit > 20 && differ == 0, "no coordinates: %d pixels lit, %d of another colour", lit,
           differ);
     vct_image_free(&im);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_scene_free(s);
     /* a missing image is refused, naming it */
     snprintf(path, sizeof path, "%s/t.png", dir);

@@ -133,7 +133,7 @@ static void specular_only_when_planned(void) {
     CHECK(vct_kernel_launches(ctx, "vct_diffuse_cones") == 0, "direct only launched cones");
     /* ... and its image is the ray caster's, pixel for pixel. */
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, box, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, box, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     const vct_render_options ro = {48, 40, {0, 0, 0}};
     vct_image rc;
@@ -141,7 +141,7 @@ static void specular_only_when_planned(void) {
     CHECK(memcmp(d.image.rgba, rc.rgba, 16ull * 48 * 40) == 0,
           "direct light differs from the ray caster's");
     vct_image_free(&rc);
-    vct_grid_free(g);
+    vct_accel_free(g);
     rendered_free(&a);
     rendered_free(&b);
     rendered_free(&c);
@@ -168,7 +168,7 @@ static void sky_floor(vct_material m, const uint32_t *presets, int count, int mi
           p.on[VCT_EFFECT_INDIRECT], p.on[VCT_EFFECT_SPECULAR], p.on[VCT_EFFECT_AO]);
     for (int i = 0; i < count; ++i) {
         vct_error err = {0};
-        vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+        vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
         REQUIRE_OK(g ? VCT_OK : err.status, err);
         vct_voxel_options vo = {0};
         vo.resolution = 16;
@@ -206,7 +206,7 @@ static void sky_floor(vct_material m, const uint32_t *presets, int count, int mi
         vct_image_free(&im);
         vct_aovs_free(&aovs);
         vct_voxels_free(v);
-        vct_grid_free(g);
+        vct_accel_free(g);
     }
     vct_scene_free(s);
 }
@@ -226,7 +226,7 @@ static void cornell_against_path_tracer(void) {
     vct_scene *box = check_cornell_box();
     const int w = 64, h = 64;
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, box, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, box, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     const vct_pathtrace_options po = {w, h, 512, 0.0, 16, 3, 64, 0, 0};
     vct_pathtrace_result pr;
@@ -234,7 +234,7 @@ static void cornell_against_path_tracer(void) {
     REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, &pr, &err), err);
     const vct_render_options ro = {w, h, {0, 0, 0}};
     REQUIRE_OK(vct_render_raycast(ctx, box, g, &ro, &rc, &err), err);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_plan p;
     vct_plan_make(box, NULL, &p);
     rendered r = render(box, &p, 64, w, h, 2);
@@ -272,12 +272,12 @@ static void glossy_cornell_against_path_tracer(void) {
     box->materials[0].roughness = 0.3f;
     const int w = 64, h = 64;
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, box, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, box, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     const vct_pathtrace_options po = {w, h, 1024, 0.0, 16, 5, 64, 0, 0};
     vct_image ref;
     REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, NULL, &err), err);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_plan p;
     vct_plan_make(box, NULL, &p);
     CHECK(p.on[VCT_EFFECT_SPECULAR], "glossy box: specular planned (%s)",
@@ -469,7 +469,7 @@ static sparse_kind sparse_expect(const vct_aovs *full, int w, int h, int x, int 
 static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_voxel_options *vo,
                                 int w, int h, const int *min_counts, double tolerance) {
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_plan p;
     vct_plan_make(s, NULL, &p);
@@ -536,7 +536,7 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
     vct_aovs_free(&fa);
     vct_aovs_free(&sa);
     vct_voxels_free(v);
-    vct_grid_free(g);
+    vct_accel_free(g);
 }
 
 static void sparse_diffuse(void) {

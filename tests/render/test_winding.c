@@ -48,16 +48,16 @@ static vct_image render(const vct_scene *s, vct_method method) {
         vct_plan_make(s, NULL, &plan);
         return vct_case_render(ctx, s, &plan, RES, SIZE, SIZE, 2, NULL);
     }
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_render_job job = vct_render_job_default(method, SIZE, SIZE);
     job.scene = s;
-    job.grid = g;
+    job.accel = g;
     job.pathtrace.spp = 16;
     job.pathtrace.seed = 7;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
-    vct_grid_free(g);
+    vct_accel_free(g);
     return im;
 }
 

@@ -12,7 +12,7 @@ static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, co
                                         uint32_t res, int w, int h, uint32_t bounces,
                                         vct_aovs *aovs) {
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_voxel_options vo = {0};
     vo.resolution = res;
@@ -27,7 +27,7 @@ static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, co
     vct_stats_reset(ctx);
     REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &image, aovs, &err), err);
     vct_voxels_free(v);
-    vct_grid_free(g);
+    vct_accel_free(g);
     return image;
 }
 

@@ -78,7 +78,7 @@ int main(int argc, char **argv) {
 
     /* Voxels, octree, bricks (a buffer pool, one isotropic radiance value per
      * sample) and injected light: what the cone kernel reads. */
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     const vct_voxel_options vo = {64, 0, 0, {0, 0, 0}, 0};
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
@@ -137,7 +137,7 @@ int main(int argc, char **argv) {
     free(cones), free(result), free(radiance), free(child);
     free(keys), free(albedo), free(normal), free(emission);
     vct_voxels_free(v);
-    vct_grid_free(g);
+    vct_accel_free(g);
     vct_scene_free(s);
     vct_context_destroy(ctx);
     return 0;

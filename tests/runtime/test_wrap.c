@@ -10,14 +10,14 @@
 
 static vct_image render(vct_context *ctx, const vct_scene *s) {
     vct_error err = {0};
-    vct_grid *g = vct_grid_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_render_job job = vct_render_job_default(VCT_METHOD_RAYCAST, 96, 64);
     job.scene = s;
-    job.grid = g;
+    job.accel = g;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
-    vct_grid_free(g);
+    vct_accel_free(g);
     return im;
 }
 

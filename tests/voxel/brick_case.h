@@ -17,7 +17,7 @@ static vct_context *ctx;
 typedef struct brick_case {
     const char *name;
     vct_scene *scene;
-    vct_grid *grid;
+    vct_accel *accel;
     vct_voxels *voxels;
     vct_voxel_info info;
     vct_brick_info bricks;
@@ -28,7 +28,7 @@ typedef struct brick_case {
 
 static void case_free(brick_case *c) {
     vct_voxels_free(c->voxels);
-    vct_grid_free(c->grid);
+    vct_accel_free(c->accel);
     vct_scene_free(c->scene);
     free(c->child);
     free(c->cell);
@@ -62,9 +62,9 @@ static brick_case make_case(const char *name, vct_scene *scene, uint32_t res, fl
     REQUIRE_OK(vct_octree_build(ctx, c.voxels, &err), err);
     REQUIRE_OK(vct_bricks_build(ctx, c.voxels, opt, &err), err);
     if (scene->light_count) {
-        c.grid = vct_grid_build(ctx, scene, NULL, &err);
-        REQUIRE_OK(c.grid ? VCT_OK : err.status, err);
-        REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+        c.accel = vct_accel_build(ctx, scene, NULL, &err);
+        REQUIRE_OK(c.accel ? VCT_OK : err.status, err);
+        REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
     }
     vct_voxels_info_get(c.voxels, &c.info);
     CHECK(vct_bricks_info_get(c.voxels, &c.bricks), "%s: brick info", name);

@@ -223,7 +223,7 @@ static void random_volumes(void) {
         float *a = malloc(27ull * 16 * n + 16), *b = malloc(27ull * 16 * n + 16);
         REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, rf, n, a, &err), err);
         REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &image, &err), err);
-        REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+        REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
         vct_brick_info info;
         vct_bricks_info_get(c.voxels, &info);
         CHECK(info.image == 1, "%s: image pool", name);
@@ -236,7 +236,7 @@ static void random_volumes(void) {
             check_all_channels(&c);
             check_sampling(&c, VCT_BRICK_RADIANCE, c.radiance, 1e-3, 1.0 / 256.0);
             REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &opt, &err), err);
-            REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+            REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
             c.name = "soup 32^3, buffer pool";
             check_sampling(&c, VCT_BRICK_RADIANCE, c.radiance, 1e-5, 0.0);
             check_sampling(&c, VCT_BRICK_ALBEDO, c.albedo, 1e-5, 0.0);
@@ -259,7 +259,7 @@ static void moved_light_and_determinism(void) {
     scene->lights[0].position[0] = 0.05f;
     scene->lights[0].position[2] = 0.95f;
     vct_error err = {0};
-    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
     REQUIRE_OK(vct_voxels_read_radiance(ctx, c.voxels, c.radiance, &err), err);
     free(check_channel(&c, VCT_BRICK_RADIANCE, c.radiance).v);
 
@@ -267,7 +267,7 @@ static void moved_light_and_determinism(void) {
     float *a = malloc(27ull * 16 * n), *b = malloc(27ull * 16 * n);
     REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, rf, n - rf, a, &err), err);
     REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &opt, &err), err);
-    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
     REQUIRE_OK(vct_bricks_read(ctx, c.voxels, VCT_BRICK_RADIANCE, rf, n - rf, b, &err), err);
     CHECK(memcmp(a, b, 27ull * 16 * (n - rf)) == 0, "two builds of the same scene differ");
     /* No isotropic radiance above the leaves of anisotropic bricks: asked
@@ -307,7 +307,7 @@ static void moved_light_and_determinism(void) {
     memset(&refused, 0, sizeof refused);
     CHECK(vct_cone_trace(ctx, c.voxels, &cs, sky, probe, 1, out, &refused) == VCT_ERR_INPUT,
           "a cone before injection: %s", refused.message);
-    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
     int same = 1;
     for (int ch = 0; ch <= last; ++ch) {
         const uint32_t first = ch == VCT_BRICK_RADIANCE ? rf : 0;

@@ -248,7 +248,7 @@ static void random_volumes(void) {
             const vct_brick_options image = {VCT_BRICKS_IMAGE, directional, 0};
             vct_error err = {0};
             REQUIRE_OK(vct_bricks_build(ctx, c.voxels, &image, &err), err);
-            REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+            REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
             compare_cones(&c, directional, "image", vct_cone_settings_default().step, 0, 1.5e-2);
             case_free(&c);
         }
@@ -550,7 +550,7 @@ static void bounces(void) {
     /* The third bounce reads the second's radiance. */
     bounce_against_reference("third bounce", &c, scene, &s, after, direct, after);
     /* Light injection starts over: one bounce after it is the second again. */
-    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.grid, c.voxels, &err), err);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
     bounce_against_reference("second bounce again", &c, scene, &s, direct, direct, after);
     free(direct);
     free(after);

@@ -15,7 +15,7 @@ static vct_context *ctx;
 
 typedef struct inject_case {
     vct_scene *scene;
-    vct_grid *grid;
+    vct_accel *accel;
     vct_voxels *voxels;
     vct_voxel_info info;
     uint32_t *keys;
@@ -24,7 +24,7 @@ typedef struct inject_case {
 
 static void case_free(inject_case *c) {
     vct_voxels_free(c->voxels);
-    vct_grid_free(c->grid);
+    vct_accel_free(c->accel);
     vct_scene_free(c->scene);
     free(c->keys);
     free(c->radiance);
@@ -32,7 +32,7 @@ static void case_free(inject_case *c) {
 
 static void inject(inject_case *c) {
     vct_error err = {0};
-    REQUIRE_OK(vct_voxels_inject_light(ctx, c->scene, c->grid, c->voxels, &err), err);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, c->scene, c->accel, c->voxels, &err), err);
     REQUIRE_OK(vct_voxels_read_radiance(ctx, c->voxels, c->radiance, &err), err);
 }
 
@@ -40,12 +40,12 @@ static void inject(inject_case *c) {
  * back (the previous ones released). */
 static void case_build(inject_case *c) {
     vct_error err = {0};
-    vct_grid_free(c->grid);
+    vct_accel_free(c->accel);
     vct_voxels_free(c->voxels);
     free(c->keys);
     free(c->radiance);
-    c->grid = vct_grid_build(ctx, c->scene, NULL, &err);
-    REQUIRE_OK(c->grid ? VCT_OK : err.status, err);
+    c->accel = vct_accel_build(ctx, c->scene, NULL, &err);
+    REQUIRE_OK(c->accel ? VCT_OK : err.status, err);
     vct_voxel_options o = {0};
     o.resolution = RES;
     o.has_bounds = 1;

@@ -1,4 +1,6 @@
-/* vct: acceleration structures: the uniform triangle grid and ray queries. */
+/* vct: acceleration structures and ray queries. Every ray of every method
+ * goes through one vct_accel: a 4-wide BVH built on the device (the default)
+ * or the uniform triangle grid. */
 #ifndef VCT_API_ACCEL_H
 #define VCT_API_ACCEL_H
 
@@ -28,6 +30,48 @@ int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start, 
                   uint32_t *tri_ids, vct_error *err);
 void vct_grid_free(vct_grid *grid);
 
+typedef enum vct_accel_kind { VCT_ACCEL_BVH = 0, VCT_ACCEL_GRID = 1 } vct_accel_kind;
+
+typedef struct vct_accel vct_accel;
+
+/* How the BVH's binary tree is made from the Morton-sorted triangles:
+ * agglomerative clustering (PLOC, the default: lower SAH cost, faster rays)
+ * or the linear hierarchy alone (Karras 2012: faster to build). */
+typedef enum vct_bvh_builder { VCT_BVH_PLOC = 0, VCT_BVH_LINEAR = 1 } vct_bvh_builder;
+
+typedef struct vct_accel_options {
+    vct_accel_kind kind;
+    uint32_t grid_res[3]; /* the grid's cells per axis; 0: chosen from the scene */
+    vct_bvh_builder bvh_builder;
+} vct_accel_options;
+
+typedef struct vct_accel_info {
+    vct_accel_kind kind;
+    double build_ms;    /* host wall time of the build, device work included */
+    double bytes;       /* device memory it holds */
+    uint32_t nodes;     /* BVH: wide nodes; grid: cells */
+    uint32_t leaves;    /* BVH: leaves; grid: occupied (cell, triangle) references */
+    uint32_t depth;     /* BVH: levels */
+    uint32_t passes;    /* BVH: clustering passes (0 for the linear hierarchy) */
+    double sah_cost;    /* BVH: surface-area cost relative to the root, 1 per node and triangle */
+    vct_grid_info grid; /* grid only */
+} vct_accel_info;
+
+/* options NULL: a BVH. */
+vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *scene,
+                           const vct_accel_options *options, vct_error *err);
+/* The scene's vertices moved (same triangles): bounds recomputed without a
+ * rebuild (the grid is rebuilt, having nothing to refit). */
+int vct_accel_refit(vct_context *ctx, vct_accel *accel, const vct_scene *scene, vct_error *err);
+/* With sah_cost, which reads the nodes back. */
+int vct_accel_info_get(vct_context *ctx, const vct_accel *accel, vct_accel_info *info,
+                       vct_error *err);
+vct_accel_kind vct_accel_kind_of(const vct_accel *accel);
+const char *vct_accel_kind_name(vct_accel_kind kind);
+/* "bvh" or "grid"; -1 for anything else. */
+int vct_accel_kind_parse(const char *name);
+void vct_accel_free(vct_accel *accel);
+
 typedef struct vct_hit {
     float t; /* < 0: miss */
     uint32_t triangle;
@@ -36,7 +80,7 @@ typedef struct vct_hit {
 
 /* Hits for n rays, 8 floats each (origin xyz, tmin; direction xyz, tmax):
  * the closest one, or with any_hit the first found (occlusion queries). */
-int vct_trace_rays(vct_context *ctx, const vct_grid *grid, const float *rays, uint32_t n,
+int vct_trace_rays(vct_context *ctx, const vct_accel *accel, const float *rays, uint32_t n,
                    int any_hit, vct_hit *hits, vct_error *err);
 
 #ifdef __cplusplus

@@ -24,7 +24,7 @@ typedef struct vct_render_options {
 } vct_render_options;
 
 /* Direct illumination with hard shadows by ray casting. */
-int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
                        const vct_render_options *options, vct_image *image, vct_error *err);
 
 typedef struct vct_pathtrace_options {
@@ -49,7 +49,7 @@ typedef struct vct_pathtrace_result {
 
 /* Unbiased path tracing: next-event estimation with MIS, Lambert, glossy,
  * mirror and dielectric materials, Russian roulette. result may be NULL. */
-int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
                          const vct_pathtrace_options *options, vct_image *image,
                          vct_pathtrace_result *result, vct_error *err);
 
@@ -123,7 +123,7 @@ void vct_aovs_free(vct_aovs *aovs);
  * (when indirect diffuse or specular is on) with `bounces` - 1 extra
  * diffuse bounces gathered at the voxels by the 6-cone preset. *voxels is
  * NULL when the plan needs none. */
-int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
                     const vct_plan *plan, const vct_voxel_options *voxel_options,
                     const vct_brick_options *brick_options, uint32_t bounces,
                     const vct_cone_settings *cones, vct_voxels **voxels, vct_error *err);
@@ -131,7 +131,7 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_grid *gr
 /* Renders by voxel cone tracing: stages "vct primary", "vct diffuse cones"
  * and "vct specular cone", each only when the plan calls for it. voxels may
  * be NULL when the plan needs none. aovs may be NULL. */
-int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
                    const vct_voxels *voxels, const vct_plan *plan, const vct_vct_options *options,
                    vct_image *image, vct_aovs *aovs, vct_error *err);
 
@@ -160,7 +160,7 @@ typedef struct vct_voxel_view_options {
 typedef struct vct_render_job {
     vct_method method;
     const vct_scene *scene;
-    const vct_grid *grid;     /* every method but VCT_METHOD_VOXELS */
+    const vct_accel *accel;   /* every method but VCT_METHOD_VOXELS */
     const vct_voxels *voxels; /* VCT_METHOD_VCT (may be NULL when the plan reads none), VOXELS */
     const vct_plan *plan;     /* VCT_METHOD_VCT; NULL: the scene's own plan */
     vct_aovs *aovs;           /* VCT_METHOD_VCT; NULL: none */

@@ -68,7 +68,7 @@ int vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels, const uint32_t
  * grid, or for point and spot lights without a radius through triangle bins
  * around the light: the same answer) + emission, at the voxel centre with
  * its mean normal. Call again after moving lights: nothing is re-voxelized. */
-int vct_voxels_inject_light(vct_context *ctx, const vct_scene *scene, const vct_grid *grid,
+int vct_voxels_inject_light(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
                             vct_voxels *voxels, vct_error *err);
 /* Per voxel: injected radiance rgb and the voxel's opacity (as in its
  * albedo's w), in voxel order. */

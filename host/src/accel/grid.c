@@ -1,5 +1,4 @@
 /* Uniform triangle grid: resolution choice and the device build. */
-#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -7,6 +6,7 @@
 
 #include "runtime/runtime.h"
 #include "accel/grid.h"
+#include "accel/tri_vertices.h"
 #include "parallel/parallel.h"
 #include "vct_types.h"
 
@@ -14,32 +14,6 @@
 #define MAX_AXIS_RES 1024u
 #define MAX_CELLS (1u << 25)
 #define CELLS_PER_TRIANGLE 2.0
-
-/* Grid bounds: the scene's box with a margin, and a distance tolerance that
- * covers both the extent and float spacing at the coordinates' magnitude. */
-static void grid_frame(const vct_scene *s, float lo[3], float hi[3], float *extent,
-                       float *tolerance) {
-    float ext = 0.0f, mag = 0.0f;
-    for (int k = 0; k < 3; ++k) {
-        ext = fmaxf(ext, s->bounds_max[k] - s->bounds_min[k]);
-        mag = fmaxf(mag, fmaxf(fabsf(s->bounds_min[k]), fabsf(s->bounds_max[k])));
-    }
-    if (!(ext > 0.0f))
-        ext = fmaxf(mag * 1e-3f, 1e-3f); /* a point-like scene still gets a box */
-    const float margin = ext * 1e-4f + mag * 8.0f * FLT_EPSILON;
-    for (int k = 0; k < 3; ++k) {
-        lo[k] = s->bounds_min[k] - margin;
-        hi[k] = s->bounds_max[k] + margin;
-        /* Flat axes get a slab a thousandth of the extent thick. */
-        if (hi[k] - lo[k] < ext * 1e-3f) {
-            float mid = 0.5f * (lo[k] + hi[k]);
-            lo[k] = mid - ext * 5e-4f;
-            hi[k] = mid + ext * 5e-4f;
-        }
-    }
-    *extent = ext;
-    *tolerance = ext * 1e-5f + mag * 4.0f * FLT_EPSILON;
-}
 
 static void choose_resolution(const vct_scene *s, const float lo[3], const float hi[3],
                               uint32_t res[3]) {
@@ -59,7 +33,7 @@ static void choose_resolution(const vct_scene *s, const float lo[3], const float
 }
 
 void vct_grid_kernel_args(const vct_grid *grid, void *out) {
-    vct_grid_desc *d = out;
+    vct_accel_desc *d = out;
     memset(d, 0, sizeof *d);
     for (int k = 0; k < 3; ++k) {
         d->origin.s[k] = grid->origin[k];
@@ -91,34 +65,6 @@ void vct_grid_info_get(const vct_grid *g, vct_grid_info *info) {
     info->references = g->references;
 }
 
-static int gather_vertices(vct_context *ctx, vct_grid *g, const vct_scene *s, cl_program p,
-                           vct_error *err) {
-    cl_mem pos = vct_buffer_create(ctx, STAGE, "vertex positions", 12ull * s->vertex_count,
-                                   CL_MEM_READ_ONLY, s->positions, err);
-    cl_mem tri = pos ? vct_buffer_create(ctx, STAGE, "triangle indices", 12ull * s->triangle_count,
-                                         CL_MEM_READ_ONLY, s->triangles, err)
-                     : NULL;
-    g->tri_vertices =
-        tri ? vct_buffer_create(ctx, STAGE, "triangle vertices", 48ull * s->triangle_count,
-                                CL_MEM_READ_WRITE, NULL, err)
-            : NULL;
-    cl_kernel k = g->tri_vertices ? vct_kernel_create(ctx, p, "grid_gather_vertices", err) : NULL;
-    int rc = k ? VCT_OK : (int)err->status;
-    uint32_t n = s->triangle_count;
-    if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 0, 4, VCT_ARG_OF(pos), VCT_ARG_OF(tri), VCT_ARG_OF(n),
-                          VCT_ARG_OF(g->tri_vertices));
-    if (rc == VCT_OK)
-        rc = vct_launch(ctx, k, n, 0, err);
-    if (rc == VCT_OK)
-        rc = vct_finish(ctx, STAGE, err);
-    if (k)
-        clReleaseKernel(k);
-    vct_buffer_release(ctx, tri);
-    vct_buffer_release(ctx, pos);
-    return rc;
-}
-
 vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *res_in,
                          vct_error *err) {
     vct_grid *g = calloc(1, sizeof *g);
@@ -128,8 +74,11 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
     }
     g->ctx = ctx;
     g->triangle_count = s->triangle_count;
-    float lo[3], hi[3];
-    grid_frame(s, lo, hi, &g->scene_extent, &g->tolerance);
+    vct_scene_frame frame;
+    vct_scene_frame_of(s, &frame);
+    const float *lo = frame.lo, *hi = frame.hi;
+    g->scene_extent = frame.extent;
+    g->tolerance = frame.tolerance;
     if (res_in && res_in[0] && res_in[1] && res_in[2]) {
         for (int k = 0; k < 3; ++k)
             g->res[k] = res_in[k];
@@ -151,8 +100,8 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
     cl_program p;
     int rc = vct_program_get(ctx, "accel/grid_build.cl", "", &p, err);
     if (rc == VCT_OK)
-        rc = gather_vertices(ctx, g, s, p, err);
-    vct_grid_desc desc;
+        rc = vct_tri_vertices_upload(ctx, s, STAGE, &g->tri_vertices, err);
+    vct_accel_desc desc;
     vct_grid_kernel_args(g, &desc);
     float max_cell = fmaxf(g->cell_size[0], fmaxf(g->cell_size[1], g->cell_size[2]));
     float pad = max_cell * 1e-5f + g->tolerance;
@@ -259,7 +208,7 @@ int vct_grid_read(vct_context *ctx, const vct_grid *g, uint32_t *cell_start, uin
 }
 
 int vct_grid_set_args(cl_kernel k, const vct_grid *g, const char *stage, vct_error *err) {
-    vct_grid_desc desc;
+    vct_accel_desc desc;
     vct_grid_kernel_args(g, &desc);
     return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(g->cell_bits),
                         VCT_ARG_OF(g->cell_ranges), VCT_ARG_OF(g->tri_ids),

@@ -16,9 +16,9 @@ struct vct_grid {
     vct_context *ctx;
 };
 
-/* Grid description passed to kernels (vct_grid_desc in kernels/vct_types.h). */
+/* Grid description passed to kernels (vct_accel_desc in kernels/vct_types.h). */
 void vct_grid_kernel_args(const vct_grid *grid, void *out_desc);
-/* Arguments 0-4 of every kernel that traverses the grid (GRID_ARGS in the kernels). */
+/* Arguments 0-4 of every kernel that traverses the grid (ACCEL_ARGS in the kernels). */
 int vct_grid_set_args(cl_kernel k, const vct_grid *grid, const char *stage, vct_error *err);
 
 #endif

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "accel/grid.h"
+#include "accel/accel.h"
 #include "light/light_bins_host.h"
 #include "parallel/parallel.h"
 #include "vct_types.h"
@@ -92,15 +92,16 @@ static int make_desc(vct_context *ctx, const vct_scene *s, int enabled, uint32_t
 
 /* Counts and writes the (cell, triangle) pairs; sets *too_many, writing
  * nothing, when there are more than max_entries. */
-static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_grid *g, cl_program p,
+static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_accel *g, cl_program p,
                        const char *stage, uint64_t max_entries, vct_light_bins *b, cl_mem *keys,
                        int *too_many, vct_error *err) {
     const uint32_t n = s->triangle_count, lights = s->light_count;
+    cl_mem tri_vertices = vct_accel_tri_vertices(g);
     cl_mem counts =
         vct_buffer_create(ctx, stage, "light bin counts", 4ull * n, CL_MEM_READ_WRITE, NULL, err);
     int rc = counts ? vct_run_kernel(ctx, p, "light_bins_count", stage, n, err, 5,
-                                     VCT_ARG_OF(g->tri_vertices), VCT_ARG_OF(n),
-                                     VCT_ARG_OF(b->desc), VCT_ARG_OF(lights), VCT_ARG_OF(counts))
+                                     VCT_ARG_OF(tri_vertices), VCT_ARG_OF(n), VCT_ARG_OF(b->desc),
+                                     VCT_ARG_OF(lights), VCT_ARG_OF(counts))
                     : (int)err->status;
     uint64_t total = 0;
     if (rc == VCT_OK)
@@ -122,15 +123,14 @@ static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_grid *g, 
         rc = b->tris ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK && total)
-        rc = vct_run_kernel(ctx, p, "light_bins_write", stage, n, err, 7,
-                            VCT_ARG_OF(g->tri_vertices), VCT_ARG_OF(n), VCT_ARG_OF(b->desc),
-                            VCT_ARG_OF(lights), VCT_ARG_OF(counts), VCT_ARG_OF(*keys),
-                            VCT_ARG_OF(b->tris));
+        rc = vct_run_kernel(ctx, p, "light_bins_write", stage, n, err, 7, VCT_ARG_OF(tri_vertices),
+                            VCT_ARG_OF(n), VCT_ARG_OF(b->desc), VCT_ARG_OF(lights),
+                            VCT_ARG_OF(counts), VCT_ARG_OF(*keys), VCT_ARG_OF(b->tris));
     vct_buffer_release(ctx, counts);
     return rc;
 }
 
-int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                          const vct_light_bins_options *options, const char *stage,
                          vct_light_bins *b, vct_error *err) {
     vct_light_bins_options o = {-1, 0, 0};

@@ -31,7 +31,7 @@ typedef struct vct_light_bins {
 
 /* Bins for every point and spot light of s without a radius (options may
  * be NULL: the defaults). Lights without bins keep to the grid. */
-int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                          const vct_light_bins_options *options, const char *stage,
                          vct_light_bins *bins, vct_error *err);
 /* Sets the four LIGHT_BINS_ARGS from argument `first`. */

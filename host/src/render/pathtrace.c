@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include "runtime/runtime.h"
-#include "accel/grid.h"
+#include "accel/accel.h"
 #include "light/emitters.h"
 #include "render/frame.h"
 #include "scene/scene_device.h"
@@ -62,7 +62,7 @@ static int accumulation_get(vct_context *ctx, const vct_pathtrace_options *opt, 
     return rc;
 }
 
-int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                          const vct_pathtrace_options *opt, vct_image *image,
                          vct_pathtrace_result *result, vct_error *err) {
     vct_pathtrace_result unused;
@@ -81,7 +81,7 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
         return rc;
     vct_stage_begin(ctx, STAGE);
     cl_program p;
-    rc = vct_program_get(ctx, "render/pathtrace.cl", "", &p, err);
+    rc = vct_program_get(ctx, "render/pathtrace.cl", vct_accel_program_options(g), &p, err);
     vct_scene_buffers sb = {0};
     vct_emitters eb = {0};
     if (rc == VCT_OK)
@@ -96,7 +96,7 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_grid *g
     if (rc == VCT_OK && !k)
         rc = err->status;
     if (rc == VCT_OK)
-        rc = vct_grid_set_args(k, g, STAGE, err);
+        rc = vct_accel_set_args(k, g, STAGE, err);
     cl_uint max_depth = opt->max_depth, seed = opt->seed;
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)

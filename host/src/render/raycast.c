@@ -4,25 +4,25 @@
 #include <string.h>
 
 #include "runtime/runtime.h"
-#include "accel/grid.h"
+#include "accel/accel.h"
 #include "light/emitters.h"
 #include "render/frame.h"
 #include "scene/scene_device.h"
 
-int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint32_t n, int any_hit,
+int vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint32_t n, int any_hit,
                    vct_hit *hits, vct_error *err) {
     const char *stage = any_hit ? "trace rays (any hit)" : "trace rays";
     if (n == 0)
         return VCT_OK;
     cl_program p;
-    int rc = vct_program_get(ctx, "render/raycast.cl", "", &p, err);
+    int rc = vct_program_get(ctx, "render/raycast.cl", vct_accel_program_options(g), &p, err);
     if (rc)
         return rc;
     cl_mem rb = vct_buffer_create(ctx, stage, "rays", 32ull * n, CL_MEM_READ_ONLY, rays, err);
     cl_mem hb =
         rb ? vct_buffer_create(ctx, stage, "hits", 16ull * n, CL_MEM_WRITE_ONLY, NULL, err) : NULL;
     cl_kernel k = hb ? vct_kernel_create(ctx, p, "trace_rays", err) : NULL;
-    rc = k ? vct_grid_set_args(k, g, stage, err) : (int)err->status;
+    rc = k ? vct_accel_set_args(k, g, stage, err) : (int)err->status;
     cl_uint any = any_hit != 0;
     if (rc == VCT_OK)
         rc = vct_set_args(err, stage, k, 5, 4, VCT_ARG_OF(rb), VCT_ARG_OF(n), VCT_ARG_OF(any),
@@ -53,7 +53,7 @@ int vct_trace_rays(vct_context *ctx, const vct_grid *g, const float *rays, uint3
     return rc;
 }
 
-int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                        const vct_render_options *opt, vct_image *image, vct_error *err) {
     const char *stage = "ray cast";
     memset(image, 0, sizeof *image);
@@ -63,7 +63,7 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
         return rc;
     vct_stage_begin(ctx, stage);
     cl_program p;
-    rc = vct_program_get(ctx, "render/raycast.cl", "", &p, err);
+    rc = vct_program_get(ctx, "render/raycast.cl", vct_accel_program_options(g), &p, err);
     vct_scene_buffers sb = {0};
     vct_emitters em = {0};
     if (rc == VCT_OK)
@@ -73,7 +73,7 @@ int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_grid *g,
     cl_mem img = rc == VCT_OK ? vct_frame_get(ctx, stage, opt->width, opt->height, err) : NULL;
     cl_kernel k = img ? vct_kernel_create(ctx, p, "render_direct", err) : NULL;
     if (rc == VCT_OK)
-        rc = k ? vct_grid_set_args(k, g, stage, err) : (int)err->status;
+        rc = k ? vct_accel_set_args(k, g, stage, err) : (int)err->status;
     if (rc == VCT_OK)
         rc = vct_set_args(err, stage, k, 5, 3, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
                           VCT_ARG_OF(sb.tri_material));

@@ -62,9 +62,11 @@ static int job_check(const vct_render_job *job, vct_error *err) {
         return vct_fail(err, VCT_ERR_INPUT, "render: unknown method %d", (int)job->method);
     if (!job->scene)
         return vct_fail(err, VCT_ERR_INPUT, "render (%s): the job has no scene", name);
-    if (job->method != VCT_METHOD_VOXELS && !job->grid)
-        return vct_fail(err, VCT_ERR_INPUT,
-                        "render (%s): the job has no grid: build one with vct_grid_build", name);
+    if (job->method != VCT_METHOD_VOXELS && !job->accel)
+        return vct_fail(
+            err, VCT_ERR_INPUT,
+            "render (%s): the job has no acceleration structure: build one with vct_accel_build",
+            name);
     if (job->method == VCT_METHOD_VOXELS && !job->voxels)
         return vct_fail(err, VCT_ERR_INPUT,
                         "render (voxels): the job has no voxels: build them with vct_voxelize "
@@ -80,7 +82,7 @@ static int render_vct_job(vct_context *ctx, const vct_render_job *job, vct_image
         vct_plan_make(job->scene, NULL, &own);
         plan = &own;
     }
-    return vct_render_vct(ctx, job->scene, job->grid, job->voxels, plan, &job->vct, image,
+    return vct_render_vct(ctx, job->scene, job->accel, job->voxels, plan, &job->vct, image,
                           job->aovs, err);
 }
 
@@ -93,10 +95,11 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
     if (rc == VCT_OK) {
         switch (job->method) {
         case VCT_METHOD_RAYCAST:
-            rc = vct_render_raycast(ctx, job->scene, job->grid, &job->raycast, image, err);
+            rc = vct_render_raycast(ctx, job->scene, job->accel, &job->raycast, image, err);
             break;
         case VCT_METHOD_PATHTRACE:
-            rc = vct_render_pathtrace(ctx, job->scene, job->grid, &job->pathtrace, image, &pt, err);
+            rc =
+                vct_render_pathtrace(ctx, job->scene, job->accel, &job->pathtrace, image, &pt, err);
             break;
         case VCT_METHOD_VOXELS: {
             vct_voxel_info info;

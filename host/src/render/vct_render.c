@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "accel/grid.h"
+#include "accel/accel.h"
 #include "light/emitters.h"
 #include "render/frame.h"
 #include "voxel/cones.h"
@@ -106,7 +106,7 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v
     return rc == VCT_OK ? vct_bricks_refresh_radiance(ctx, v, err) : rc;
 }
 
-int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_grid *g, const vct_plan *plan,
+int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, const vct_plan *plan,
                     const vct_voxel_options *vo, const vct_brick_options *bo, uint32_t bounces,
                     const vct_cone_settings *cs, vct_voxels **out, vct_error *err) {
     *out = NULL;
@@ -174,11 +174,11 @@ static int launch_frame_kernel(frame *f, cl_kernel k, cl_uint every, vct_error *
     return vct_launch_2d(f->ctx, k, global, local, err);
 }
 
-static int primary(frame *f, const vct_scene *s, const vct_grid *g, const vct_camera_desc *cam,
+static int primary(frame *f, const vct_scene *s, const vct_accel *g, const vct_camera_desc *cam,
                    vct_error *err) {
     const vct_scene_buffers sb = f->scene;
     cl_kernel k = vct_kernel_create(f->ctx, f->program, "vct_primary", err);
-    int rc = k ? vct_grid_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
+    int rc = k ? vct_accel_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)
         rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 3, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
@@ -288,7 +288,7 @@ static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
     return rc;
 }
 
-int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, const vct_voxels *v,
+int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, const vct_voxels *v,
                    const vct_plan *plan, const vct_vct_options *opt, vct_image *image,
                    vct_aovs *aovs, vct_error *err) {
     memset(image, 0, sizeof *image);
@@ -312,9 +312,9 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_grid *g, cons
     f.size[1] = (cl_uint)opt->height;
     if (f.v)
         vct_cone_desc_make(f.v, &opt->cones, s->ambient, &f.desc);
-    char options[256];
-    program_options(plan, vct_scene_emissive_triangles(s) > 0, f.v, &opt->cones, options,
-                    sizeof options);
+    char own[256], options[320];
+    program_options(plan, vct_scene_emissive_triangles(s) > 0, f.v, &opt->cones, own, sizeof own);
+    vct_accel_options_join(g, own, options, sizeof options);
     const size_t pixels = (size_t)opt->width * opt->height;
 
     vct_stage_begin(ctx, PRIMARY_STAGE);

@@ -1,6 +1,6 @@
 /* Direct light into the voxels (kernels/voxel/inject_light.cl). */
 #include "runtime/runtime.h"
-#include "accel/grid.h"
+#include "accel/accel.h"
 #include "light/emitters.h"
 #include "light/light_bins_host.h"
 #include "scene/scene_device.h"
@@ -9,18 +9,18 @@
 
 #define STAGE "light injection"
 
-int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_grid *g, vct_voxels *v,
+int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
                             vct_error *err) {
     return vct_voxels_inject_light_with(ctx, s, g, v, NULL, err);
 }
 
-int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_grid *g,
+int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                  vct_voxels *v, const vct_light_bins_options *bins_options,
                                  vct_error *err) {
     const uint32_t n = v->info.voxels;
     vct_stage_begin(ctx, STAGE);
     cl_program p;
-    int rc = vct_program_get(ctx, "voxel/inject_light.cl", "", &p, err);
+    int rc = vct_program_get(ctx, "voxel/inject_light.cl", vct_accel_program_options(g), &p, err);
     if (rc == VCT_OK && !v->radiance) {
         v->radiance = vct_buffer_create(ctx, STAGE, "voxel radiance", 16ull * n, CL_MEM_READ_WRITE,
                                         NULL, err);
@@ -41,7 +41,7 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     if (rc == VCT_OK && n && !k)
         rc = err->status;
     if (k)
-        rc = vct_grid_set_args(k, g, STAGE, err);
+        rc = vct_accel_set_args(k, g, STAGE, err);
     if (k && rc == VCT_OK)
         rc = vct_light_bins_set_args(k, 5, &bins, STAGE, err);
     if (k && rc == VCT_OK)

@@ -1,0 +1,41 @@
+/* The one acceleration interface of every ray query: ACCEL_ARGS (the first
+ * five arguments of a kernel that traces rays, set by the host's
+ * vct_accel_set_args), ACCEL_VIEW() (the view made of them) and accel_trace
+ * (closest or any hit). -DVCT_ACCEL_BVH selects the 4-wide BVH, otherwise the
+ * uniform triangle grid; both keep the triangles' vertices in the scene's
+ * order (tri_vertices) and the scene's extent and tolerance in desc. */
+#ifndef VCT_ACCEL_H
+#define VCT_ACCEL_H
+
+/* Shared headers first: the host's include expansion takes each file once,
+ * wherever it first appears, even inside a branch that is not compiled. */
+#include "accel/bvh_node.h"
+#include "accel/hit.h"
+#include "accel/ray_tri.h"
+#include "vct_types.h"
+
+#ifdef VCT_ACCEL_BVH
+#include "accel/bvh_traverse.h"
+#else
+#include "accel/grid_traverse.h"
+#endif
+
+/* Where a hit lies: position from barycentrics, unit geometric normal ng and
+ * the normal n turned towards the incoming ray; front: the ray arrived on
+ * ng's side. 0 for a zero-area triangle (which traversal never reports). */
+inline int surface_hit(const accel_view *g, const hit_record *h, float3 dir, float3 *p, float3 *ng,
+                       float3 *n, int *front) {
+    const float3 a = g->tri_vertices[3 * h->tri].xyz, b = g->tri_vertices[3 * h->tri + 1].xyz,
+                 c = g->tri_vertices[3 * h->tri + 2].xyz;
+    const float3 cr = cross(b - a, c - a);
+    const float len = length(cr);
+    if (!(len > 0.0f))
+        return 0;
+    *ng = cr / len;
+    *front = dot(*ng, dir) < 0.0f;
+    *n = *front ? *ng : -*ng;
+    *p = a + h->u * (b - a) + h->v * (c - a);
+    return 1;
+}
+
+#endif
