@@ -117,31 +117,27 @@ static void *embree_worker(void *arg) {
     return NULL;
 }
 
+/* One run on `threads` threads, wall time. */
 static double embree_trace(RTCScene scene, const ray_set *r, int occluded, int threads,
                            uint32_t *hits) {
-    double best = 1e30;
-    for (int rep = 0; rep < bench_repeats(); ++rep) {
-        pthread_t tid[64];
-        embree_job jobs[64];
-        double t0 = vct_now_ms();
-        for (int i = 0; i < threads; ++i) {
-            jobs[i] = (embree_job){scene,
-                                   r,
-                                   (uint32_t)((uint64_t)r->n * i / threads),
-                                   (uint32_t)((uint64_t)r->n * (i + 1) / threads),
-                                   occluded,
-                                   0};
-            pthread_create(&tid[i], NULL, embree_worker, &jobs[i]);
-        }
-        *hits = 0;
-        for (int i = 0; i < threads; ++i) {
-            pthread_join(tid[i], NULL);
-            *hits += jobs[i].hits;
-        }
-        double ms = vct_now_ms() - t0;
-        best = ms < best ? ms : best;
+    pthread_t tid[64];
+    embree_job jobs[64];
+    const double t0 = vct_now_ms();
+    for (int i = 0; i < threads; ++i) {
+        jobs[i] = (embree_job){scene,
+                               r,
+                               (uint32_t)((uint64_t)r->n * i / threads),
+                               (uint32_t)((uint64_t)r->n * (i + 1) / threads),
+                               occluded,
+                               0};
+        pthread_create(&tid[i], NULL, embree_worker, &jobs[i]);
     }
-    return best;
+    *hits = 0;
+    for (int i = 0; i < threads; ++i) {
+        pthread_join(tid[i], NULL);
+        *hits += jobs[i].hits;
+    }
+    return vct_now_ms() - t0;
 }
 #endif
 
@@ -195,20 +191,14 @@ static ray_set diffuse_rays(const vct_scene *s, const ray_set *prim, const vct_h
     return r;
 }
 
-static double trace_best(vct_context *ctx, const vct_accel *a, const ray_set *r, int any,
+/* One run: device time of the trace stage. */
+static double trace_once(vct_context *ctx, const vct_accel *a, const ray_set *r, int any,
                          vct_hit *hits) {
-    double best = 1e30;
     vct_error err = {0};
-    for (int i = 0; i < bench_repeats(); ++i) {
-        vct_stats_reset(ctx);
-        if (vct_trace_rays(ctx, a, r->rays, r->n, any, hits, &err))
-            bench_die(&err);
-        double ms = stage_device_ms(ctx, any ? "trace rays (any hit)" : "trace rays");
-        best = ms < best ? ms : best;
-        if (ms > 10000.0)
-            break; /* the grid's worst case: one run says enough */
-    }
-    return best;
+    vct_stats_reset(ctx);
+    if (vct_trace_rays(ctx, a, r->rays, r->n, any, hits, &err))
+        bench_die(&err);
+    return stage_device_ms(ctx, any ? "trace rays (any hit)" : "trace rays");
 }
 
 /* Best of the repeats: device time of the build stage and wall time. */
@@ -298,22 +288,9 @@ static void bench_scene(vct_context *ctx, const vct_scene *s, const char *name, 
     sets[0] = primary_rays(s);
     vct_hit *hits = malloc(sizeof *hits * sets[0].n), *scratch = malloc(sizeof *hits * sets[0].n);
     double ms[MAX_STRUCTS][3];
-    ms[2][0] = trace_best(ctx, acc[2], &sets[0], 0, hits);
+    ms[2][0] = trace_once(ctx, acc[2], &sets[0], 0, hits);
     sets[1] = shadow_rays(s, &sets[0], hits);
     sets[2] = diffuse_rays(s, &sets[0], hits);
-    uint32_t counts[MAX_STRUCTS][3] = {{0}};
-    /* VCT_BENCH_NO_GRID=1 leaves the grid out (its worst case takes minutes). */
-    const int first = getenv("VCT_BENCH_NO_GRID") ? 1 : 0;
-    for (int i = 0; i < first; ++i)
-        for (int r = 0; r < 3; ++r)
-            ms[i][r] = 1e30;
-    for (int i = first; i < MAX_STRUCTS; ++i)
-        for (int r = 0; r < 3; ++r) {
-            ms[i][r] = trace_best(ctx, acc[i], &sets[r], r == 1, scratch);
-            for (uint32_t j = 0; j < sets[r].n; ++j)
-                counts[i][r] += scratch[j].t >= 0;
-        }
-    const char *rows[3] = {"primary", "shadow", "diffuse bounce"};
     double e_ms[3] = {0, 0, 0}, e_build = 0;
     uint32_t e_counts[3] = {0, 0, 0};
 #ifdef VCT_WITH_EMBREE
@@ -334,13 +311,40 @@ static void bench_scene(vct_context *ctx, const vct_scene *s, const char *name, 
     rtcReleaseGeometry(geom);
     rtcCommitScene(scene);
     e_build = vct_now_ms() - t0;
-    for (int r = 0; r < 3; ++r)
-        e_ms[r] = embree_trace(scene, &sets[r], r == 1, threads, &e_counts[r]);
-    rtcReleaseScene(scene);
-    rtcReleaseDevice(dev);
 #else
     (void)threads;
 #endif
+    uint32_t counts[MAX_STRUCTS][3] = {{0}};
+    /* VCT_BENCH_NO_GRID=1 leaves the grid out (its worst case takes minutes). */
+    const int first = getenv("VCT_BENCH_NO_GRID") ? 1 : 0;
+    for (int i = 0; i < MAX_STRUCTS; ++i)
+        for (int r = 0; r < 3; ++r)
+            ms[i][r] = 1e30;
+    for (int r = 0; r < 3; ++r)
+        e_ms[r] = 1e30;
+    /* Rounds: every structure and Embree once per round, best of the rounds,
+     * so that a slow spell of the machine touches all of them alike. */
+    for (int round = 0; round < bench_repeats(); ++round)
+        for (int r = 0; r < 3; ++r) {
+            for (int i = first; i < MAX_STRUCTS; ++i) {
+                if (i == 0 && round > 0 && ms[0][r] > 10000.0)
+                    continue; /* the grid's worst case: one run says enough */
+                const double t = trace_once(ctx, acc[i], &sets[r], r == 1, scratch);
+                ms[i][r] = t < ms[i][r] ? t : ms[i][r];
+                counts[i][r] = 0;
+                for (uint32_t j = 0; j < sets[r].n; ++j)
+                    counts[i][r] += scratch[j].t >= 0;
+            }
+#ifdef VCT_WITH_EMBREE
+            const double t = embree_trace(scene, &sets[r], r == 1, threads, &e_counts[r]);
+            e_ms[r] = t < e_ms[r] ? t : e_ms[r];
+#endif
+        }
+#ifdef VCT_WITH_EMBREE
+    rtcReleaseScene(scene);
+    rtcReleaseDevice(dev);
+#endif
+    const char *rows[3] = {"primary", "shadow", "diffuse bounce"};
     printf(
         "\n| | grid | bvh, linear | bvh, clustered | Embree 3 (%d threads) | bvh / Embree rays/s "
         "| bvh / grid rays/s |\n",

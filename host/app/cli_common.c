@@ -119,8 +119,9 @@ int cli_print_accel(vct_context *ctx, const vct_accel *accel, FILE *out, vct_err
                 in.bytes / 1048576.0, in.build_ms);
     else
         fprintf(out,
-                "accel: bvh 4-wide, %u nodes, %u leaves, %u levels, SAH cost %.2f, %.2f MiB, "
-                "built in %.1f ms\n",
-                in.nodes, in.leaves, in.depth, in.sah_cost, in.bytes / 1048576.0, in.build_ms);
+                "accel: bvh 4-wide, %s (%u passes), %u nodes, %u leaves, %u levels, SAH cost %.2f, "
+                "%.2f MiB, built in %.1f ms\n",
+                in.bvh_builder == VCT_BVH_LINEAR ? "linear" : "clustered", in.passes, in.nodes,
+                in.leaves, in.depth, in.sah_cost, in.bytes / 1048576.0, in.build_ms);
     return VCT_OK;
 }

@@ -53,6 +53,8 @@ void cli_usage(void) {
         "  --ambient R G B                  radiance arriving where nothing is hit\n"
         "  --accel bvh|grid    what rays traverse: the 4-wide BVH (default) or the\n"
         "                      uniform triangle grid\n"
+        "  --bvh-build clustered|linear   the BVH's tree: agglomerative clustering (default,\n"
+        "                      faster rays) or the linear hierarchy (faster build)\n"
         "  --grid-res N | --grid-res NX NY NZ   triangle grid cells (default: automatic)\n"
         "  --voxel-res N                    voxels per axis, a power of two up to 1024 (default\n"
         "                                   128 for render, 256 for voxelize)\n"
@@ -248,6 +250,14 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 return 1;
             }
             opt->accel.kind = (vct_accel_kind)kind;
+            ++i;
+        } else if (strcmp(a, "--bvh-build") == 0) {
+            const char *b = i + 1 < argc ? argv[i + 1] : "";
+            if (strcmp(b, "clustered") && strcmp(b, "linear")) {
+                fprintf(stderr, "vct: --bvh-build takes clustered or linear\n");
+                return 1;
+            }
+            opt->accel.bvh_builder = strcmp(b, "linear") ? VCT_BVH_PLOC : VCT_BVH_LINEAR;
             ++i;
         } else if (strcmp(a, "--grid-res") == 0) {
             int r[3];

@@ -12,6 +12,7 @@
 #include "accel/bvh_node.h"
 #include "accel/hit.h"
 #include "accel/ray_tri.h"
+#include "accel/ray_tri4.h"
 #include "vct_types.h"
 
 #ifdef VCT_ACCEL_BVH

@@ -54,6 +54,7 @@ expect_failure "no such device" "device 99 does not exist" render ok.obj --devic
 expect_failure "degenerate camera" "do not define a view" render ok.obj --camera-pos 0 0 5 --look-at 0 0 5 -o out.png
 expect_failure "grid beyond the device's memory" "lower" render ok.obj --accel grid --grid-res 1024 -o out.png
 expect_failure "unknown acceleration structure" "--accel takes bvh or grid" render ok.obj --accel kdtree -o out.png
+expect_failure "unknown bvh builder" "--bvh-build takes clustered or linear" render ok.obj --bvh-build sah -o out.png
 # A kernel that does not compile: the build log names the file and line.
 cp -r "$(dirname "$VCT")/kernels" broken-kernels
 printf 'this is not OpenCL C;\n' >> broken-kernels/render/raycast.cl

@@ -53,6 +53,7 @@ typedef struct vct_accel_info {
     uint32_t leaves;    /* BVH: leaves; grid: occupied (cell, triangle) references */
     uint32_t depth;     /* BVH: levels */
     uint32_t passes;    /* BVH: clustering passes (0 for the linear hierarchy) */
+    vct_bvh_builder bvh_builder;
     double sah_cost;    /* BVH: surface-area cost relative to the root, 1 per node and triangle */
     vct_grid_info grid; /* grid only */
 } vct_accel_info;

@@ -87,6 +87,7 @@ int vct_accel_info_get(vct_context *ctx, const vct_accel *a, vct_accel_info *inf
     info->nodes = b->node_count;
     info->depth = b->depth;
     info->passes = b->passes;
+    info->bvh_builder = a->options.bvh_builder;
     cl_mem mems[] = {b->nodes,    b->leaf_vertices, b->tri_ids, b->tri_vertices,
                      b->children, b->parents,       b->boxes,   b->arrivals};
     for (size_t i = 0; i < sizeof mems / sizeof *mems; ++i)
