@@ -5,7 +5,7 @@
  *
  * usage: accuracy SCENE|heavy [--reference REF.pfm] [--reference-spp N]
  *                 [--size W H] [--max-spp N] [--out DIR] [--no-vct] [--quick]
- *                 [--ambient R G B]
+ *                 [--ambient R G B] [--accel bvh|grid]
  * Without --reference, a path-traced reference of --reference-spp samples
  * (default 2048, a different seed from the runs) is rendered and saved.
  * "heavy" is bench/heavy_scene.h's 102,430-triangle scene. Voxel cone
@@ -13,7 +13,8 @@
  * offsets, isotropic against anisotropic bricks and 1, 2 or 3 bounces; its time is split into
  * building the voxel hierarchy (voxels, octree, bricks, light) and tracing.
  * --quick runs cone tracing at its default and with sparse diffuse alone
- * (the scene suite's table); --ambient gives the scene a sky. */
+ * (the scene suite's table); --ambient gives the scene a sky; --accel picks
+ * the structure every ray goes through (its build counts as "accel ms"). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,7 +26,7 @@
 
 typedef struct run {
     char name[128];
-    double grid_ms, build_ms, render_ms, total_ms; /* device time per stage, and their sum */
+    double accel_ms, build_ms, render_ms, total_ms; /* device time per stage, and their sum */
     double wall_ms;
     vct_image_metrics m;
     int pareto;
@@ -39,6 +40,7 @@ typedef struct settings {
     int quick;
     int has_ambient;
     float ambient[3];
+    vct_accel_options accel;
 } settings;
 
 typedef struct vct_setting {
@@ -70,7 +72,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     vct_error err = {0};
     vct_stats_reset(ctx);
     const double t0 = vct_now_ms();
-    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, &cfg->accel, &err);
     if (!g)
         bench_die(&err);
     vct_plan plan;
@@ -93,10 +95,10 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
         vct_render_vct(ctx, s, g, v, &plan, &o, &im, NULL, &err))
         bench_die(&err);
     r->wall_ms = vct_now_ms() - t0;
-    r->grid_ms = stage_device_ms(ctx, "grid build");
+    r->accel_ms = stage_device_ms(ctx, "grid build") + stage_device_ms(ctx, "bvh build");
     r->build_ms = stages_ms(ctx, build_stages, sizeof build_stages / sizeof build_stages[0]);
     r->render_ms = stages_ms(ctx, trace_stages, sizeof trace_stages / sizeof trace_stages[0]);
-    r->total_ms = r->grid_ms + r->build_ms + r->render_ms;
+    r->total_ms = r->accel_ms + r->build_ms + r->render_ms;
     snprintf(r->name, sizeof r->name, "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s%s%s",
              vs->res, vs->cones, vs->step, o.cones.offset, vs->anisotropic ? "aniso" : "iso",
              vs->bounces, vs->bounces == 1 ? "" : "s", vs->nearest ? ", nearest level" : "",
@@ -130,7 +132,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
     vct_error err = {0};
     vct_stats_reset(ctx);
     double t0 = vct_now_ms();
-    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    vct_accel *g = vct_accel_build(ctx, s, &cfg->accel, &err);
     if (!g)
         bench_die(&err);
     vct_image im;
@@ -148,8 +150,8 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
         r->render_ms = stage_device_ms(ctx, "ray cast");
     }
     r->wall_ms = vct_now_ms() - t0;
-    r->grid_ms = stage_device_ms(ctx, "grid build");
-    r->total_ms = r->grid_ms + r->render_ms;
+    r->accel_ms = stage_device_ms(ctx, "grid build") + stage_device_ms(ctx, "bvh build");
+    r->total_ms = r->accel_ms + r->render_ms;
     vct_accel_free(g);
     return im;
 }
@@ -175,11 +177,11 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
         fprintf(stderr, "accuracy: cannot write into %s\n", cfg->out);
         exit(1);
     }
-    fprintf(csv, "setting,grid_ms,build_ms,render_ms,total_ms,wall_ms,nrmse,rmse,relative_rmse,"
+    fprintf(csv, "setting,accel_ms,build_ms,render_ms,total_ms,wall_ms,nrmse,rmse,relative_rmse,"
                  "relative_mse,mae,psnr_db,pareto,mean_ratio\n");
     fprintf(md, "Scene `%s`, %dx%d, on %s; error against the reference `%s`.\n\n", cfg->scene,
             cfg->width, cfg->height, device, cfg->reference);
-    fprintf(md, "| setting | grid ms | voxel build ms | render ms | total ms | NRMSE | mean / "
+    fprintf(md, "| setting | accel ms | voxel build ms | render ms | total ms | NRMSE | mean / "
                 "reference mean | relative RMSE | PSNR dB | Pareto | path tracer's time to this "
                 "error |\n"
                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|:---:|---:|\n");
@@ -187,9 +189,9 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
         const run *r = &runs[i];
         const double ratio = r->m.reference_mean > 0.0 ? r->m.test_mean / r->m.reference_mean : 0;
         fprintf(csv, "\"%s\",%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%d,%.4f\n",
-                r->name, r->grid_ms, r->build_ms, r->render_ms, r->total_ms, r->wall_ms, r->m.nrmse,
-                r->m.rmse, r->m.relative_rmse, r->m.relative_mse, r->m.mae, r->m.psnr, r->pareto,
-                ratio);
+                r->name, r->accel_ms, r->build_ms, r->render_ms, r->total_ms, r->wall_ms,
+                r->m.nrmse, r->m.rmse, r->m.relative_rmse, r->m.relative_mse, r->m.mae, r->m.psnr,
+                r->pareto, ratio);
         char pt[96] = "";
         const double pt_ms = pt_time_for(runs, n, r->m.nrmse);
         if (strncmp(r->name, "vct", 3) == 0)
@@ -197,7 +199,7 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
                      pt_ms > 0 ? "%.0f ms: %.2fx total, %.1fx render" : "not reached", pt_ms,
                      pt_ms / r->total_ms, pt_ms / r->render_ms);
         fprintf(md, "| %s | %.1f | %.1f | %.1f | %.1f | %.4f | %.3f | %.4f | %.2f | %s | %s |\n",
-                r->name, r->grid_ms, r->build_ms, r->render_ms, r->total_ms, r->m.nrmse, ratio,
+                r->name, r->accel_ms, r->build_ms, r->render_ms, r->total_ms, r->m.nrmse, ratio,
                 r->m.relative_rmse, r->m.psnr, r->pareto ? "yes" : "", pt);
     }
     fclose(csv);
@@ -211,7 +213,7 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
             "set output '%s/accuracy.png'\n"
             "set datafile separator ','\n"
             "set logscale xy\nset grid\n"
-            "set xlabel 'time (ms, device: grid, voxel hierarchy, render)'\n"
+            "set xlabel 'time (ms, device: acceleration structure, voxel hierarchy, render)'\n"
             "set ylabel 'NRMSE against the reference (RMSE / reference mean)'\n"
             "set key top right\n"
             "plot '%s/accuracy.csv' skip 1 using 5:7 with points pt 7 ps 1.2 title 'settings', \\\n"
@@ -227,7 +229,7 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
 }
 
 int main(int argc, char **argv) {
-    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1, 0, 0, {0, 0, 0}};
+    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1, 0, 0, {0, 0, 0}, {0}};
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--reference") == 0 && i + 1 < argc)
             cfg.reference = argv[++i];
@@ -242,7 +244,14 @@ int main(int argc, char **argv) {
             cfg.out = argv[++i];
         else if (strcmp(argv[i], "--quick") == 0)
             cfg.quick = 1;
-        else if (strcmp(argv[i], "--no-vct") == 0)
+        else if (strcmp(argv[i], "--accel") == 0 && i + 1 < argc) {
+            const int kind = vct_accel_kind_parse(argv[++i]);
+            if (kind < 0) {
+                fprintf(stderr, "accuracy: --accel takes bvh or grid\n");
+                return 1;
+            }
+            cfg.accel.kind = (vct_accel_kind)kind;
+        } else if (strcmp(argv[i], "--no-vct") == 0)
             cfg.vct = 0;
         else if (strcmp(argv[i], "--ambient") == 0 && i + 3 < argc) {
             cfg.has_ambient = 1;

@@ -135,6 +135,18 @@ if "$VCT" render ok.obj --plan --ambient 0.5 0.5 0.5 --effect specular=on --voxe
 else
     echo "FAIL render --plan:"; cat stdout.txt stderr.txt; failures=$((failures + 1))
 fi
+# Which acceleration structure: info and render say, with its figures.
+if "$VCT" info ok.obj >stdout.txt 2>stderr.txt &&
+    grep -q "^accel: bvh 4-wide, clustered .* SAH cost .* MiB, built in" stdout.txt &&
+    "$VCT" info ok.obj --accel grid >stdout.txt 2>stderr.txt &&
+    grep -q "^accel: grid [0-9]*x[0-9]*x[0-9]* cells, [0-9]* references" stdout.txt &&
+    "$VCT" render ok.obj --method raycast --bvh-build linear --size 8 8 -o lin.pfm \
+        >stdout.txt 2>stderr.txt &&
+    grep -q "^accel: bvh 4-wide, linear" stderr.txt && [ -s lin.pfm ]; then
+    echo "ok   info and render name the acceleration structure"
+else
+    echo "FAIL accel lines:"; cat stdout.txt stderr.txt; failures=$((failures + 1))
+fi
 
 [ "$failures" -eq 0 ] || { echo "$failures failures"; exit 1; }
 echo "all bad-input cases rejected cleanly"
