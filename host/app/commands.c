@@ -90,7 +90,7 @@ int cmd_render(const cli_options *opt) {
     }
     const int method = vct_method_from_name(opt->method);
     if (method < 0 || method == VCT_METHOD_VOXELS) {
-        fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt)\n", opt->method);
+        fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt, whitted)\n", opt->method);
         return 1;
     }
     const int pt = method == VCT_METHOD_PATHTRACE;
@@ -117,7 +117,9 @@ int cmd_render(const cli_options *opt) {
     job.accel = accel;
     job.pathtrace.spp = (uint32_t)(opt->spp ? opt->spp : (opt->time_limit > 0 ? 0 : 64));
     job.pathtrace.time_limit_s = opt->time_limit;
-    job.pathtrace.max_depth = (uint32_t)opt->max_depth;
+    job.pathtrace.max_depth = (uint32_t)(opt->max_depth ? opt->max_depth : 16);
+    if (opt->max_depth)
+        job.whitted.max_depth = (uint32_t)opt->max_depth;
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
     vct_render_result result = {0};

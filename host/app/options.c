@@ -44,6 +44,9 @@ void cli_usage(void) {
         "  --method raycast                 direct light with hard shadows\n"
         "  --method pt                      path tracing (the reference): --spp N or --time S,\n"
         "                                   --max-depth D (default 16), --seed N\n"
+        "  --method whitted                 Whitted ray trees: mirrors, Fresnel refraction and\n"
+        "                                   total internal reflection, hard shadows;\n"
+        "                                   --max-depth D (default 8, at most 16)\n"
         "  --size W H                       image size in pixels (default 512 512)\n"
         "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
         "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
@@ -161,7 +164,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
     opt->width = opt->height = 512;
     opt->tone = vct_tone_default();
     opt->method = "vct";
-    opt->max_depth = 16;
+    opt->max_depth = 0; /* each method its own default */
     opt->voxel_res = 0; /* each command's own default */
     opt->diffuse_cones = 6;
     opt->bounces = 2;

@@ -10,7 +10,8 @@
 /* Bounce gathering uses the 6-cone preset, as vct_vct_prepare does. */
 #define BOUNCE_CONES 6u
 
-static const char *const METHOD_NAMES[VIEW_METHODS] = {"ray cast", "VCT", "path tracer", "voxels"};
+static const char *const METHOD_NAMES[VIEW_METHODS] = {"ray cast", "VCT", "path tracer", "voxels",
+                                                       "Whitted"};
 
 static int input_error(vct_error *err, const char *fmt, const char *what) {
     err->status = VCT_ERR_INPUT;
@@ -39,12 +40,13 @@ int view_app_init(view_app *app, const cli_options *opt, vct_error *err) {
     memset(app, 0, sizeof *app);
     app->opt = *opt;
     const char *m = opt->method;
-    app->method = strcmp(m, "raycast") == 0  ? VIEW_RAYCAST
-                  : strcmp(m, "pt") == 0     ? VIEW_PATHTRACE
-                  : strcmp(m, "voxels") == 0 ? VIEW_VOXELS
-                                             : VIEW_VCT;
+    app->method = strcmp(m, "raycast") == 0   ? VIEW_RAYCAST
+                  : strcmp(m, "pt") == 0      ? VIEW_PATHTRACE
+                  : strcmp(m, "voxels") == 0  ? VIEW_VOXELS
+                  : strcmp(m, "whitted") == 0 ? VIEW_WHITTED
+                                              : VIEW_VCT;
     if (strcmp(m, "vct") != 0 && app->method == VIEW_VCT)
-        return input_error(err, "unknown --method %s (vct, raycast, pt, voxels)", m);
+        return input_error(err, "unknown --method %s (vct, raycast, pt, voxels, whitted)", m);
     memcpy(app->force, opt->force, sizeof app->force);
     app->width = opt->width;
     app->height = opt->height;
@@ -151,7 +153,8 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     static const vct_method methods[] = {[VIEW_RAYCAST] = VCT_METHOD_RAYCAST,
                                          [VIEW_VCT] = VCT_METHOD_VCT,
                                          [VIEW_PATHTRACE] = VCT_METHOD_PATHTRACE,
-                                         [VIEW_VOXELS] = VCT_METHOD_VOXELS};
+                                         [VIEW_VOXELS] = VCT_METHOD_VOXELS,
+                                         [VIEW_WHITTED] = VCT_METHOD_WHITTED};
     vct_render_job job = vct_render_job_default(methods[app->method], app->width, app->height);
     job.scene = app->scene;
     job.accel = app->accel;
@@ -162,7 +165,9 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     job.vct.sparse_diffuse = app->opt.sparse_diffuse;
     /* The path tracer adds one sample per frame to the previous ones. */
     job.pathtrace.spp = 1;
-    job.pathtrace.max_depth = (uint32_t)app->opt.max_depth;
+    job.pathtrace.max_depth = (uint32_t)(app->opt.max_depth ? app->opt.max_depth : 16);
+    if (app->opt.max_depth)
+        job.whitted.max_depth = (uint32_t)app->opt.max_depth;
     job.pathtrace.seed = (uint32_t)app->opt.seed;
     job.pathtrace.resume = app->pt_spp > 0;
     job.voxel_view.level = app->voxel_level;

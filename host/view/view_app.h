@@ -12,6 +12,7 @@ typedef enum view_method {
     VIEW_VCT,       /* voxel cone tracing (the default) */
     VIEW_PATHTRACE, /* progressive: one sample per pixel per frame, summed */
     VIEW_VOXELS,    /* the voxels of one octree level */
+    VIEW_WHITTED,   /* Whitted ray trees */
     VIEW_METHODS
 } view_method;
 

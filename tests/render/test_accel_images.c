@@ -42,7 +42,8 @@ static vct_image render(const vct_scene *s, vct_method method, vct_accel_kind ki
 }
 
 static void check_scene(const char *name, const vct_scene *s) {
-    const vct_method methods[] = {VCT_METHOD_RAYCAST, VCT_METHOD_VCT, VCT_METHOD_PATHTRACE};
+    const vct_method methods[] = {VCT_METHOD_RAYCAST, VCT_METHOD_VCT, VCT_METHOD_PATHTRACE,
+                                  VCT_METHOD_WHITTED};
     for (size_t m = 0; m < sizeof methods / sizeof *methods; ++m) {
         vct_image bvh = render(s, methods[m], VCT_ACCEL_BVH);
         vct_image grid = render(s, methods[m], VCT_ACCEL_GRID);

@@ -142,8 +142,23 @@ typedef enum vct_method {
     VCT_METHOD_RAYCAST,   /* direct light with hard or soft shadows */
     VCT_METHOD_PATHTRACE, /* unbiased path tracing */
     VCT_METHOD_VOXELS,    /* the voxels themselves, ray marched (needs voxels) */
+    VCT_METHOD_WHITTED,   /* Whitted ray trees: mirrors, Fresnel refraction, hard shadows */
     VCT_METHODS
 } vct_method;
+
+/* Whitted ray tracing: max_depth surface interactions per ray tree (1 to
+ * VCT_WHITTED_MAX_DEPTH; 1 is the ray caster with the glossy highlight and
+ * the ambient term), branches whose throughput falls below min_throughput
+ * end. The scene's ambient is the environment and an ambient term. */
+#define VCT_WHITTED_MAX_DEPTH 16
+typedef struct vct_whitted_options {
+    int width, height;
+    uint32_t max_depth;   /* default 8 */
+    float min_throughput; /* default 1e-3 */
+} vct_whitted_options;
+
+int vct_render_whitted(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                       const vct_whitted_options *options, vct_image *image, vct_error *err);
 
 /* The ray caster's options are the historical vct_render_options. */
 typedef vct_render_options vct_raycast_options;
@@ -165,6 +180,7 @@ typedef struct vct_render_job {
     const vct_plan *plan;     /* VCT_METHOD_VCT; NULL: the scene's own plan */
     vct_aovs *aovs;           /* VCT_METHOD_VCT; NULL: none */
     vct_raycast_options raycast;
+    vct_whitted_options whitted;
     vct_pathtrace_options pathtrace;
     vct_vct_options vct;
     vct_voxel_view_options voxel_view;

@@ -5,7 +5,7 @@
 
 #include "runtime/runtime.h"
 
-static const char *const method_names[VCT_METHODS] = {"vct", "raycast", "pt", "voxels"};
+static const char *const method_names[VCT_METHODS] = {"vct", "raycast", "pt", "voxels", "whitted"};
 
 const char *vct_method_name(vct_method method) {
     return method >= 0 && method < VCT_METHODS ? method_names[method] : "?";
@@ -24,6 +24,10 @@ vct_render_job vct_render_job_default(vct_method method, int width, int height) 
     job.method = method;
     job.raycast.width = width;
     job.raycast.height = height;
+    job.whitted.width = width;
+    job.whitted.height = height;
+    job.whitted.max_depth = 8;
+    job.whitted.min_throughput = 1e-3f;
     job.pathtrace.width = width;
     job.pathtrace.height = height;
     job.pathtrace.spp = 64;
@@ -45,6 +49,9 @@ void vct_render_job_size(const vct_render_job *job, int *width, int *height) {
         break;
     case VCT_METHOD_PATHTRACE:
         *width = job->pathtrace.width, *height = job->pathtrace.height;
+        break;
+    case VCT_METHOD_WHITTED:
+        *width = job->whitted.width, *height = job->whitted.height;
         break;
     case VCT_METHOD_VOXELS:
         *width = job->voxel_view.width, *height = job->voxel_view.height;
@@ -96,6 +103,9 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
         switch (job->method) {
         case VCT_METHOD_RAYCAST:
             rc = vct_render_raycast(ctx, job->scene, job->accel, &job->raycast, image, err);
+            break;
+        case VCT_METHOD_WHITTED:
+            rc = vct_render_whitted(ctx, job->scene, job->accel, &job->whitted, image, err);
             break;
         case VCT_METHOD_PATHTRACE:
             rc =

@@ -1,0 +1,273 @@
+/* Whitted ray tracing against analytic answers.
+ *
+ * Diffuse-only scenes: the image equals the ray caster's bit for bit (the
+ * same shading, nothing to reflect). Mirror: a metal mirror facing a floor
+ * under a point light; each pixel that sees the mirror holds the mirror's
+ * reflectance times the floor's direct radiance at the reflected point, each
+ * pixel that sees the floor that radiance (double-precision reference, 1e-4
+ * relative). Glass: a slab in front of an emissive wall at normal and 45°
+ * incidence: E (1 - F)^2 (1 + F^2 + F^4 ...), the terms the depth limit and
+ * the throughput cut-off leave, with F from the Fresnel equations in double.
+ * Total internal reflection: from inside a slab, below the critical angle
+ * the ceiling's light comes through with 1 - F, beyond it none does. */
+#include <string.h>
+
+#include "check.h"
+#include "mesh_gen.h"
+#include "vec3d.h"
+
+#define L 50.0f
+#define PI 3.14159265358979323846
+
+static vct_context *ctx;
+
+static vct_material matte(float a) {
+    vct_material m = vct_material_default();
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = a;
+    return m;
+}
+
+static vct_material emitter(const float e[3]) {
+    vct_material m = matte(0.0f);
+    memcpy(m.emission, e, sizeof m.emission);
+    return m;
+}
+
+static vct_material glass(void) {
+    vct_material m = matte(1.0f);
+    m.transmission = 1.0f;
+    m.ior = 1.5f;
+    m.roughness = 0.0f;
+    return m;
+}
+
+/* Quads (4 corners each) with one material each. */
+static vct_scene *quads_scene(const float *corners, uint32_t n, const vct_material *mats) {
+    test_mesh m = mesh_quads(corners, n);
+    uint32_t *tri_mat = malloc(4ull * m.nt);
+    for (uint32_t t = 0; t < m.nt; ++t)
+        tri_mat[t] = t / 2;
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(m.pos, m.nv, m.tri, m.nt, tri_mat, mats, n, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    free(tri_mat);
+    mesh_free(&m);
+    return s;
+}
+
+static vct_image render(const vct_scene *s, vct_method method, int w, int h, uint32_t depth,
+                        float cut) {
+    vct_error err = {0};
+    vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(a ? VCT_OK : err.status, err);
+    vct_render_job job = vct_render_job_default(method, w, h);
+    job.scene = s;
+    job.accel = a;
+    if (depth)
+        job.whitted.max_depth = depth;
+    if (cut >= 0.0f)
+        job.whitted.min_throughput = cut;
+    vct_image im;
+    REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
+    vct_accel_free(a);
+    return im;
+}
+
+static void check_same_as_raycast(vct_scene *s, const char *name) {
+    vct_image w = render(s, VCT_METHOD_WHITTED, 40, 40, 0, -1.0f);
+    vct_image r = render(s, VCT_METHOD_RAYCAST, 40, 40, 0, -1.0f);
+    size_t differ = 0;
+    double sum = 0.0;
+    for (size_t i = 0; i < 40 * 40 * 4; ++i) {
+        differ += memcmp(&w.rgba[i], &r.rgba[i], 4) != 0;
+        sum += r.rgba[i];
+    }
+    CHECK(differ == 0 && sum > 0.0, "%s: %zu values differ from the ray caster's", name, differ);
+    printf("%s: whitted equals the ray caster, %zu values differ\n", name, differ);
+    vct_image_free(&w);
+    vct_image_free(&r);
+}
+
+/* Fresnel reflectance for unpolarised light, eta = n_incident / n_transmitted. */
+static double fresnel(double cos_i, double eta) {
+    const double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2_t >= 1.0)
+        return 1.0;
+    const double cos_t = sqrt(1.0 - sin2_t);
+    const double rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    const double rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+static const float radiant[3] = {2.0f, 3.0f, 4.0f};
+
+/* Floor (x <= 1) under a point light, a metal mirror at x = 1 facing it. */
+static void check_mirror(void) {
+    const float floor_mirror[24] = {-6, 0, -6, -6, 0, 6, 1, 0, 6, 1, 0, -6,
+                                    1,  0, -6, 1,  0, 6, 1, 4, 6, 1, 4, -6};
+    vct_material mats[2] = {matte(0.6f), matte(0.0f)};
+    const float R[3] = {0.9f, 0.7f, 0.5f};
+    memcpy(mats[1].albedo, R, sizeof R);
+    mats[1].metallic = 1.0f;
+    mats[1].roughness = 0.0f;
+    vct_scene *s = quads_scene(floor_mirror, 2, mats);
+    vct_light light = {0};
+    light.type = VCT_LIGHT_POINT;
+    light.position[0] = -1.0f, light.position[1] = 3.0f, light.position[2] = 0.5f;
+    light.color[0] = light.color[1] = light.color[2] = 10.0f;
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &light, &err), err);
+    const v3 eye = v(-3.0, 1.5, 0.2), at = v(1.0, 0.8, 0.0), up = v(0, 1, 0);
+    s->camera = (vct_camera){{-3.0f, 1.5f, 0.2f}, {1.0f, 0.8f, 0.0f}, {0, 1, 0}, 60.0f};
+    const int W = 48, H = 48;
+    vct_image im = render(s, VCT_METHOD_WHITTED, W, H, 0, -1.0f);
+    const v3 lp = v3_of(light.position);
+    const double margin = 1e-3;
+    int mirrored = 0, direct = 0, worst_px = -1;
+    double worst = 0.0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            v3 d = camera_ray(eye, at, up, 60.0, W, H, x, y), o = eye;
+            double scale[3] = {1, 1, 1};
+            const double tm = d.x > 0 ? (1.0 - o.x) / d.x : INFINITY;
+            const double tf = d.y < 0 ? -o.y / d.y : INFINITY;
+            if (isfinite(tm) && tm < tf) { /* the mirror, then on to the floor */
+                const v3 m = add(o, mul(d, tm));
+                if (m.y < margin || m.y > 4 - margin || fabs(m.z) > 6 - margin)
+                    continue;
+                o = m;
+                d = v(-d.x, d.y, d.z);
+                for (int k = 0; k < 3; ++k)
+                    scale[k] = R[k];
+            }
+            double expect[3] = {0, 0, 0};
+            if (d.y < 0) {
+                const v3 q = add(o, mul(d, -o.y / d.y));
+                if (q.x < -6 + margin || q.x > 1 - margin || fabs(q.z) > 6 - margin)
+                    continue;
+                const v3 to = sub(lp, q);
+                const double dist2 = dot(to, to), cos_t = to.y / sqrt(dist2);
+                for (int k = 0; k < 3; ++k)
+                    expect[k] = scale[k] * 0.6 / PI * 10.0 * cos_t / dist2;
+                mirrored += scale[0] != 1.0;
+                direct += scale[0] == 1.0;
+            }
+            for (int k = 0; k < 3; ++k) {
+                const double got = im.rgba[4 * (y * W + x) + k];
+                const double e = expect[k] > 0 ? fabs(got - expect[k]) / expect[k] : fabs(got);
+                if (e > worst)
+                    worst = e, worst_px = y * W + x;
+            }
+        }
+    CHECK(worst <= 1e-4, "mirror: error %.3g at pixel %d (1e-4 allowed)", worst, worst_px);
+    CHECK(mirrored > 200 && direct > 200, "mirror: %d reflected and %d direct pixels: a weak test",
+          mirrored, direct);
+    printf("mirror: %d reflected and %d direct floor pixels, worst relative error %.2g\n", mirrored,
+           direct, worst);
+    vct_image_free(&im);
+    vct_scene_free(s);
+}
+
+/* One pixel through a glass slab (faces z = 1 and z = 0) at an emissive wall
+ * (z = -2), the view `angle` from the slab's normal. */
+static void check_slab(double angle_deg, uint32_t depth, float cut, int terms) {
+    const float slab_wall[36] = {-L,    -L,     1,  L,     -L,    1,  L,      L,      1,
+                                 -L,    L,      1,  -L,    L,     0,  L,      L,      0,
+                                 L,     -L,     0,  -L,    -L,    0,  -4 * L, -4 * L, -2,
+                                 4 * L, -4 * L, -2, 4 * L, 4 * L, -2, -4 * L, 4 * L,  -2};
+    const vct_material mats[3] = {glass(), glass(), emitter(radiant)};
+    vct_scene *s = quads_scene(slab_wall, 3, mats);
+    const double a = angle_deg * PI / 180.0;
+    s->camera = (vct_camera){
+        {0, 0, 5}, {(float)(5.0 * sin(a)), 0, (float)(5.0 - 5.0 * cos(a))}, {0, 1, 0}, 30.0f};
+    vct_image im = render(s, VCT_METHOD_WHITTED, 1, 1, depth, cut);
+    const double F = fresnel(cos(a), 1.0 / 1.5), T = (1 - F) * (1 - F);
+    double sum = 0.0, f2k = 1.0;
+    for (int k = 0; k < terms; ++k, f2k *= F * F)
+        sum += T * f2k;
+    double worst = 0.0;
+    for (int k = 0; k < 3; ++k)
+        worst = fmax(worst, fabs(im.rgba[k] - radiant[k] * sum) / (radiant[k] * sum));
+    CHECK(worst < 1e-5, "slab at %g°, depth %u, cut %g: %.7g, expected E x %.7g (error %.2g)",
+          angle_deg, depth, cut, im.rgba[0] / radiant[0], sum, worst);
+    printf("slab at %g°, depth %u, throughput cut %g: E x %.7f (%d terms of (1-F)^2 F^2k, F = "
+           "%.5f), error %.1g\n",
+           angle_deg, depth, cut, im.rgba[0] / radiant[0], terms, F, worst);
+    vct_image_free(&im);
+    vct_scene_free(s);
+}
+
+/* From inside a slab (faces y = 0 and y = 1) towards its top face at `angle`
+ * from the normal, under an emissive ceiling (y = 2), depth 2 (the top
+ * face, then whatever the refracted ray meets). */
+static void check_total_reflection(double angle_deg, uint32_t depth) {
+    const float slab_ceiling[36] = {-L,    1, -L,     -L,    1, L,     L,      1, L,
+                                    L,     1, -L,     L,     0, -L,    L,      0, L,
+                                    -L,    0, L,      -L,    0, -L,    -4 * L, 2, -4 * L,
+                                    4 * L, 2, -4 * L, 4 * L, 2, 4 * L, -4 * L, 2, 4 * L};
+    const vct_material mats[3] = {glass(), glass(), emitter(radiant)};
+    vct_scene *s = quads_scene(slab_ceiling, 3, mats);
+    const double a = angle_deg * PI / 180.0;
+    s->camera =
+        (vct_camera){{0, 0.5f, 0}, {(float)sin(a), (float)(0.5 + cos(a)), 0}, {0, 0, 1}, 30.0f};
+    vct_image im = render(s, VCT_METHOD_WHITTED, 1, 1, depth, 0.0f);
+    const double F = fresnel(cos(a), 1.5), expect = 1.0 - F;
+    double worst = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double e = radiant[k] * expect;
+        worst = fmax(worst, e > 0 ? fabs(im.rgba[k] - e) / e : fabs(im.rgba[k]));
+    }
+    CHECK(worst < 1e-5, "inside glass at %g°, depth %u: E x %.7g, expected E x %.7g", angle_deg,
+          depth, im.rgba[0] / radiant[0], expect);
+    printf("inside glass at %g° (critical %.2f°), depth %u: E x %.7f, expected %.7f\n", angle_deg,
+           asin(1.0 / 1.5) * 180.0 / PI, depth, im.rgba[0] / radiant[0], expect);
+    vct_image_free(&im);
+    vct_scene_free(s);
+}
+
+int main(void) {
+    ctx = check_context();
+    vct_scene *box = check_cornell_box();
+    check_same_as_raycast(box, "cornell box");
+    vct_scene_free(box);
+    char path[1024];
+    const char *src = getenv("VCT_SOURCE_DIR");
+    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", src ? src : ".");
+    vct_error err = {0};
+    vct_scene *lit = vct_scene_load(path, &err);
+    REQUIRE_OK(lit ? VCT_OK : err.status, err);
+    check_same_as_raycast(lit, "emissive cornell box");
+    vct_scene_free(lit);
+
+    check_mirror();
+
+    /* Depth counts surface interactions: the wall is the third of the
+     * straight path, the fifth and seventh after one and two round trips
+     * inside the slab. */
+    check_slab(0.0, 8, 0.0f, 3);
+    check_slab(0.0, 5, 0.0f, 2);
+    check_slab(0.0, 3, 0.0f, 1);
+    check_slab(0.0, 2, 0.0f, 0);
+    /* The default cut-off (1e-3) ends the branch of the second round trip. */
+    check_slab(0.0, 8, -1.0f, 2);
+    check_slab(45.0, 8, 0.0f, 3);
+
+    check_total_reflection(30.0, 2);
+    check_total_reflection(60.0, 2);
+    check_total_reflection(60.0, 16);
+
+    /* Depths outside 1..16 are refused. */
+    vct_scene *one = check_cornell_box();
+    vct_accel *a = vct_accel_build(ctx, one, NULL, &err);
+    REQUIRE_OK(a ? VCT_OK : err.status, err);
+    vct_whitted_options o = {8, 8, 17, 1e-3f};
+    vct_image im;
+    CHECK(vct_render_whitted(ctx, one, a, &o, &im, &err) == VCT_ERR_INPUT &&
+              strstr(err.message, "outside 1..16"),
+          "a depth of 17 is not refused (%s)", err.message);
+    vct_accel_free(a);
+    vct_scene_free(one);
+
+    vct_context_destroy(ctx);
+    return check_exit("test_whitted");
+}
