@@ -90,7 +90,12 @@ int cmd_render(const cli_options *opt) {
     }
     const int method = vct_method_from_name(opt->method);
     if (method < 0 || method == VCT_METHOD_VOXELS) {
-        fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt, whitted)\n", opt->method);
+        fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt, whitted)\n",
+                opt->method);
+        return 1;
+    }
+    if (opt->subsample && method != VCT_METHOD_WHITTED) {
+        fprintf(stderr, "vct: --subsample is for --method whitted\n");
         return 1;
     }
     const int pt = method == VCT_METHOD_PATHTRACE;
@@ -120,12 +125,18 @@ int cmd_render(const cli_options *opt) {
     job.pathtrace.max_depth = (uint32_t)(opt->max_depth ? opt->max_depth : 16);
     if (opt->max_depth)
         job.whitted.max_depth = (uint32_t)opt->max_depth;
+    job.whitted.subsample = (uint32_t)opt->subsample;
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
     vct_render_result result = {0};
     int rc = !accel                     ? (int)err.status
              : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &err)
                                         : vct_render(ctx, &job, &image, &result, &err);
+    if (rc == VCT_OK && method == VCT_METHOD_WHITTED)
+        fprintf(stderr, "whitted: %llu of %llu pixels traced (%.1f %% interpolated)\n",
+                (unsigned long long)result.traced,
+                (unsigned long long)opt->width * (unsigned long long)opt->height,
+                100.0 * (1.0 - (double)result.traced / ((double)opt->width * opt->height)));
     if (rc == VCT_OK && pt)
         fprintf(stderr,
                 "path tracing: %u spp in %.2f s (%.1f spp/s), %u samples discarded as "

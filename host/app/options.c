@@ -46,7 +46,10 @@ void cli_usage(void) {
         "                                   --max-depth D (default 16), --seed N\n"
         "  --method whitted                 Whitted ray trees: mirrors, Fresnel refraction and\n"
         "                                   total internal reflection, hard shadows;\n"
-        "                                   --max-depth D (default 8, at most 16)\n"
+        "                                   --max-depth D (default 8, at most 16),\n"
+        "                                   --subsample N: rays at the corners of N x N squares\n"
+        "                                   (a power of two), squares whose corners agree\n"
+        "                                   interpolated, the others split (default 0: off)\n"
         "  --size W H                       image size in pixels (default 512 512)\n"
         "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
         "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
@@ -206,6 +209,9 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 return 1;
         } else if (strcmp(a, "--spp") == 0) {
             if (parse_int(argc, argv, &i, 1, 1 << 24, &opt->spp))
+                return 1;
+        } else if (strcmp(a, "--subsample") == 0) {
+            if (parse_int(argc, argv, &i, 0, 16384, &opt->subsample))
                 return 1;
         } else if (strcmp(a, "--max-depth") == 0) {
             if (parse_int(argc, argv, &i, 1, 1024, &opt->max_depth))

@@ -17,6 +17,7 @@ typedef struct cli_options {
     float error_scale;
     int width, height;
     int spp, max_depth, seed;
+    int subsample; /* whitted: --subsample N, 0 off */
     float time_limit;
     int stats;
     vct_tone tone;           /* PNG: exposure and curve */

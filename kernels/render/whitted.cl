@@ -41,39 +41,95 @@ inline float3 whitted_local(const accel_view *g, const vct_material_desc *m, flo
     return shade;
 }
 
-__kernel void whitted(ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,
-                      __global const uint *tri_material, TEXTURE_ARGS,
-                      __global const vct_light_desc *lights, uint light_count, EMITTER_ARGS,
-                      float4 ambient, uint max_depth, float min_throughput,
-                      __global float4 *image) {
-    const uint x = get_global_id(0), y = get_global_id(1);
-    if (x >= cam.size.x || y >= cam.size.y)
-        return;
-    const accel_view g = ACCEL_VIEW();
-    const texture_view tv = TEXTURE_VIEW();
-    const emitter_view e = EMITTER_VIEW();
-    const uint pixel = y * cam.size.x + x;
+/* What a ray tree reads. */
+typedef struct whitted_scene {
+    accel_view g;
+    texture_view tv;
+    emitter_view e;
+    __global const vct_material_desc *materials;
+    __global const uint *tri_material;
+    __global const vct_light_desc *lights;
+    uint light_count;
+    float3 ambient;
+    uint max_depth;
+    float min_throughput;
+} whitted_scene;
+
+#define WHITTED_SCENE()                                                                            \
+    ((whitted_scene){ACCEL_VIEW(), TEXTURE_VIEW(), EMITTER_VIEW(), materials, tri_material,        \
+                     lights, light_count, ambient.xyz, max_depth, min_throughput})
+
+/* The lights (the first 32) that light p unshadowed, as bits. */
+inline uint lights_seen(const whitted_scene *w, float3 p, float3 n) {
+    uint mask = 0u;
+    const float eps = surface_epsilon(&w->g, p);
+    for (uint i = 0; i < min(w->light_count, 32u); ++i) {
+        float3 wi, radiant;
+        float dist, cos_theta;
+        if (light_reaches(w->lights, i, p, n, &wi, &dist, &radiant, &cos_theta) &&
+            light_visible(&w->g, p, n, eps, wi, dist))
+            mask |= 1u << i;
+    }
+    return mask;
+}
+
+/* How much of the emissive triangles p sees, in three classes: none (0),
+ * part (1) or all (2) of its emitter samples, so that the edge of an area
+ * light's shadow splits squares as a point light's does. */
+inline uint emitters_seen(const whitted_scene *w, float3 p, float3 n, uint pixel) {
+    const emitter_view *e = &w->e;
+    if (e->count == 0u)
+        return 0u;
+    const float3 o = p + n * surface_epsilon(&w->g, p);
+    uint seen = 0u, facing = 0u;
+    for (uint s = 0; s < e->samples; ++s) {
+        float3 q;
+        uint tri;
+        const float3 radiant =
+            emitter_sample(e, &w->g, w->materials, w->tri_material, p, pixel, s, &q, &tri);
+        if (!(dot(n, q - p) > 0.0f) || all(radiant == 0.0f))
+            continue;
+        ++facing;
+        seen += (uint)emitter_visible(&w->g, o, q);
+    }
+    return seen == 0u ? 0u : (seen == facing ? 2u : 1u);
+}
+
+inline uint key_mix(uint key, uint v) {
+    return (key ^ v) * 16777619u; /* FNV-1a, a word at a time */
+}
+
+/* The radiance of pixel (x, y)'s ray tree. With want_key, *key receives what
+ * the tree met: the material at each hit, in order, each miss, and the
+ * lights each shaded hit sees (seed 001's corner key). */
+inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, uint x, uint y,
+                           int want_key, uint *key) {
+    const uint pixel = y * cam->size.x + x;
     /* Pending branches: origin (w: depth), direction, throughput. */
     float4 stack_org[WHITTED_STACK], stack_dir[WHITTED_STACK], stack_w[WHITTED_STACK];
     int sp = 0;
-    float3 org = cam.position.xyz;
-    float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
+    float3 org = cam->position.xyz;
+    float3 dir = camera_ray_dir(cam, (float)x + 0.5f, (float)y + 0.5f);
     float3 throughput = (float3)(1.0f);
     uint depth = 0;
     float3 radiance = (float3)(0.0f);
+    uint k = 2166136261u;
     for (;;) {
         hit_record h;
         int next = 0; /* 1: this branch continues with org, dir, throughput */
-        if (!accel_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
-            radiance += throughput * ambient.xyz; /* the environment */
+        if (!accel_trace(&w->g, org, dir, 0.0f, INFINITY, 0, &h)) {
+            radiance += throughput * w->ambient; /* the environment */
+            k = key_mix(k, 0xFFFFFFFFu);
         } else {
             float3 p, ng, n;
             int front;
-            if (surface_hit(&g, &h, dir, &p, &ng, &n, &front)) {
-                const vct_material_desc m = materials[tri_material[h.tri]];
+            if (surface_hit(&w->g, &h, dir, &p, &ng, &n, &front)) {
+                const uint mat = w->tri_material[h.tri];
+                const vct_material_desc m = w->materials[mat];
                 const float3 wo = -dir;
-                const float eps = surface_epsilon(&g, p);
-                const int deeper = depth + 1 < max_depth;
+                const float eps = surface_epsilon(&w->g, p);
+                const int deeper = depth + 1 < w->max_depth;
+                k = key_mix(k, mat);
                 if (is_dielectric(&m)) {
                     radiance += throughput * m.emission.xyz;
                     const float ior = fmax(m.extra.x, 1.0001f);
@@ -81,7 +137,7 @@ __kernel void whitted(ACCEL_ARGS, vct_camera_desc cam, __global const vct_materi
                     const float cos_i = fmin(dot(n, wo), 1.0f);
                     const float F = fresnel_dielectric(cos_i, eta);
                     const float3 tw = throughput * (1.0f - F) * m.albedo.xyz;
-                    if (deeper && F < 1.0f && fmax(tw.x, fmax(tw.y, tw.z)) >= min_throughput &&
+                    if (deeper && F < 1.0f && fmax(tw.x, fmax(tw.y, tw.z)) >= w->min_throughput &&
                         sp < WHITTED_STACK) {
                         const float sin2_t = eta * eta * fmax(0.0f, 1.0f - cos_i * cos_i);
                         const float cos_t = sqrt(fmax(0.0f, 1.0f - sin2_t));
@@ -95,10 +151,13 @@ __kernel void whitted(ACCEL_ARGS, vct_camera_desc cam, __global const vct_materi
                     dir = reflect_dir(wo, n);
                     next = deeper;
                 } else {
-                    const float3 albedo = texture_albedo(&tv, &m, h.tri, h.u, h.v);
-                    radiance +=
-                        throughput * whitted_local(&g, &m, albedo, p, n, wo, lights, light_count,
-                                                   &e, materials, tri_material, pixel, ambient.xyz);
+                    const float3 albedo = texture_albedo(&w->tv, &m, h.tri, h.u, h.v);
+                    radiance += throughput * whitted_local(&w->g, &m, albedo, p, n, wo, w->lights,
+                                                           w->light_count, &w->e, w->materials,
+                                                           w->tri_material, pixel, w->ambient);
+                    if (want_key)
+                        k = key_mix(key_mix(k, lights_seen(w, p, n)),
+                                    emitters_seen(w, p, n, pixel));
                     if (is_mirror(&m)) {
                         throughput *= glossy_color(&m);
                         org = p + n * eps;
@@ -108,7 +167,7 @@ __kernel void whitted(ACCEL_ARGS, vct_camera_desc cam, __global const vct_materi
                 }
             }
         }
-        if (next && fmax(throughput.x, fmax(throughput.y, throughput.z)) >= min_throughput) {
+        if (next && fmax(throughput.x, fmax(throughput.y, throughput.z)) >= w->min_throughput) {
             ++depth;
             continue;
         }
@@ -119,6 +178,38 @@ __kernel void whitted(ACCEL_ARGS, vct_camera_desc cam, __global const vct_materi
         depth = (uint)stack_org[sp].w;
         dir = stack_dir[sp].xyz;
         throughput = stack_w[sp].xyz;
+        k = key_mix(k, 0xFFFFFFFEu); /* a branch taken up again */
     }
-    image[pixel] = (float4)(radiance, 1.0f);
+    *key = k;
+    return radiance;
+}
+
+#define WHITTED_ARGS                                                                               \
+    ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,                  \
+        __global const uint *tri_material, TEXTURE_ARGS, __global const vct_light_desc *lights,    \
+        uint light_count, EMITTER_ARGS, float4 ambient, uint max_depth, float min_throughput
+
+/* Every pixel. */
+__kernel void whitted(WHITTED_ARGS, __global float4 *image) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= cam.size.x || y >= cam.size.y)
+        return;
+    const whitted_scene w = WHITTED_SCENE();
+    uint key;
+    image[y * cam.size.x + x] = (float4)(whitted_tree(&w, &cam, x, y, 0, &key), 1.0f);
+}
+
+/* The listed pixels (indices y * width + x), with their keys; traced marks
+ * them (adaptive subsampling, render/subsample.cl). */
+__kernel void whitted_points(WHITTED_ARGS, __global const uint *points, uint n, __global uint *keys,
+                             __global uint *traced, __global float4 *image) {
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint pixel = points[i], x = pixel % cam.size.x, y = pixel / cam.size.x;
+    const whitted_scene w = WHITTED_SCENE();
+    uint key;
+    image[pixel] = (float4)(whitted_tree(&w, &cam, x, y, 1, &key), 1.0f);
+    keys[pixel] = key;
+    traced[pixel] = 1u;
 }

@@ -155,10 +155,22 @@ typedef struct vct_whitted_options {
     int width, height;
     uint32_t max_depth;   /* default 8 */
     float min_throughput; /* default 1e-3 */
+    /* Adaptive subsampling (seed 001): 0 traces every pixel; N (a power of
+     * two, 2 to the image's smaller side) traces the corners of N x N
+     * squares, fills a square whose corners met the same materials and saw
+     * the same lights by bilinear interpolation, and splits the others. */
+    uint32_t subsample;
 } vct_whitted_options;
 
+typedef struct vct_whitted_result {
+    uint64_t traced_pixels; /* pixels whose ray tree was traced (all without subsampling) */
+    uint8_t *traced_mask;   /* in: NULL, or width x height bytes to receive 1 where traced */
+} vct_whitted_result;
+
+/* result may be NULL. */
 int vct_render_whitted(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                       const vct_whitted_options *options, vct_image *image, vct_error *err);
+                       const vct_whitted_options *options, vct_image *image,
+                       vct_whitted_result *result, vct_error *err);
 
 /* The ray caster's options are the historical vct_render_options. */
 typedef vct_render_options vct_raycast_options;
@@ -192,6 +204,7 @@ typedef struct vct_render_result {
     double seconds;     /* host wall time of the call */
     uint32_t spp;       /* path tracing: samples per pixel in the frame */
     uint32_t discarded; /* path tracing: non-finite samples dropped */
+    uint64_t traced;    /* Whitted: pixels traced (the rest interpolated) */
 } vct_render_result;
 
 /* A job with every method's defaults (vct_vct_options_default, 64 spp,

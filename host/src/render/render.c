@@ -99,13 +99,14 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
     memset(image, 0, sizeof *image);
     int rc = job_check(job, err);
     vct_pathtrace_result pt = {0};
+    vct_whitted_result wr = {0, NULL};
     if (rc == VCT_OK) {
         switch (job->method) {
         case VCT_METHOD_RAYCAST:
             rc = vct_render_raycast(ctx, job->scene, job->accel, &job->raycast, image, err);
             break;
         case VCT_METHOD_WHITTED:
-            rc = vct_render_whitted(ctx, job->scene, job->accel, &job->whitted, image, err);
+            rc = vct_render_whitted(ctx, job->scene, job->accel, &job->whitted, image, &wr, err);
             break;
         case VCT_METHOD_PATHTRACE:
             rc =
@@ -134,6 +135,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
         result->seconds = (vct_now_ms() - start) * 1e-3;
         result->spp = pt.spp;
         result->discarded = pt.discarded;
+        result->traced = wr.traced_pixels;
     }
     return rc;
 }

@@ -1,18 +1,55 @@
-/* Whitted ray tracing: ray trees on the device (kernels/render/whitted.cl). */
-#include "render/shaded_frame.h"
+/* Whitted ray tracing: ray trees on the device (kernels/render/whitted.cl),
+ * every pixel or adaptively subsampled (render/subsample.c). */
+#include <string.h>
+
+#include "render/subsample.h"
+
+#define KERNEL_FILE "render/whitted.cl"
+#define STAGE "whitted"
+
+static int check_options(const vct_whitted_options *o, vct_error *err) {
+    if (o->max_depth < 1 || o->max_depth > VCT_WHITTED_MAX_DEPTH)
+        return vct_fail(err, VCT_ERR_INPUT, "whitted: a depth of %u is outside 1..%d", o->max_depth,
+                        VCT_WHITTED_MAX_DEPTH);
+    if (!(o->min_throughput >= 0.0f))
+        return vct_fail(err, VCT_ERR_INPUT, "whitted: the throughput cut-off must be 0 or more");
+    const uint32_t n = o->subsample, side = (uint32_t)(o->width < o->height ? o->width : o->height);
+    if (n && (n < 2 || (n & (n - 1)) || n > side))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "whitted: --subsample %u must be 0 or a power of two from 2 to the "
+                        "image's smaller side (%u)",
+                        n, side);
+    return VCT_OK;
+}
 
 int vct_render_whitted(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                       const vct_whitted_options *opt, vct_image *image, vct_error *err) {
-    if (opt->max_depth < 1 || opt->max_depth > VCT_WHITTED_MAX_DEPTH)
-        return vct_fail(err, VCT_ERR_INPUT, "whitted: a depth of %u is outside 1..%d",
-                        opt->max_depth, VCT_WHITTED_MAX_DEPTH);
-    if (!(opt->min_throughput >= 0.0f))
-        return vct_fail(err, VCT_ERR_INPUT, "whitted: the throughput cut-off must be 0 or more");
+                       const vct_whitted_options *opt, vct_image *image, vct_whitted_result *result,
+                       vct_error *err) {
+    memset(image, 0, sizeof *image);
+    int rc = check_options(opt, err);
+    if (rc)
+        return rc;
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     const cl_uint depth = opt->max_depth;
     const cl_float cut = opt->min_throughput;
     const vct_kernel_arg own[3] = {
         {sizeof ambient, &ambient}, {sizeof depth, &depth}, {sizeof cut, &cut}};
-    return vct_shaded_frame(ctx, s, g, "render/whitted.cl", "whitted", "whitted", opt->width,
-                            opt->height, own, 3, image, err);
+    uint64_t traced = (uint64_t)opt->width * (uint64_t)opt->height;
+    if (!opt->subsample) {
+        rc = vct_shaded_frame(ctx, s, g, KERNEL_FILE, "whitted", STAGE, opt->width, opt->height,
+                              own, 3, image, err);
+        if (rc == VCT_OK && result && result->traced_mask)
+            memset(result->traced_mask, 1, (size_t)traced);
+    } else {
+        vct_shaded sh;
+        rc = vct_shaded_begin(ctx, s, g, KERNEL_FILE, STAGE, opt->width, opt->height, &sh, err);
+        if (rc)
+            return rc;
+        rc = vct_subsample(&sh, "whitted_points", own, 3, opt->subsample, &traced,
+                           result ? result->traced_mask : NULL, err);
+        rc = vct_shaded_end(&sh, rc, image, err);
+    }
+    if (rc == VCT_OK && result)
+        result->traced_pixels = traced;
+    return rc;
 }

@@ -1,0 +1,16 @@
+/* Adaptive subsampling of a ray-traced frame (kernels/render/subsample.cl):
+ * rays at the corners of squares of `size` pixels, squares whose corners
+ * agree filled by interpolation, the others split level by level. */
+#ifndef VCT_RENDER_SUBSAMPLE_H
+#define VCT_RENDER_SUBSAMPLE_H
+
+#include "render/shaded_frame.h"
+
+/* points_kernel traces listed pixels: its own arguments `own`, then points,
+ * n, keys, traced and the frame (whitted_points). Writes the number of
+ * pixels traced, and with traced_mask (width x height) which ones. */
+int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_arg *own,
+                  int own_count, uint32_t size, uint64_t *traced, uint8_t *traced_mask,
+                  vct_error *err);
+
+#endif

@@ -1,0 +1,78 @@
+/* Adaptive subsampling (seed 001): the image is covered by squares whose
+ * corners are traced pixels. A square is packed as y0 << 16 | x0 and has a
+ * size s; its corners are (x0, y0) and (x0 + s, y0 + s), clamped to the
+ * image. Level by level: sub_fill fills every square whose four corner keys
+ * agree with the bilinear interpolation of its corner radiances and flags
+ * the others; the host compacts the flagged squares, sub_points lists the
+ * five pixels that split each (edge midpoints and centre), which are traced,
+ * and sub_split makes the four half-size squares of the next level. At size
+ * 2 the five pixels are the last untraced ones of the square. */
+#pragma OPENCL FP_CONTRACT OFF /* the interpolation as written, on every device */
+
+inline uint2 square_of(uint packed) {
+    return (uint2)(packed & 0xFFFFu, packed >> 16);
+}
+
+inline uint pack_square(uint x, uint y) {
+    return y << 16 | x;
+}
+
+__kernel void sub_fill(__global const uint *squares, uint n, uint size, uint width, uint height,
+                       __global const uint *keys, __global float4 *image, __global uint *refine) {
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint2 q = square_of(squares[i]);
+    if (q.x >= width || q.y >= height) { /* past the image's edge */
+        refine[i] = 0u;
+        return;
+    }
+    const uint x1 = min(q.x + size, width - 1u), y1 = min(q.y + size, height - 1u);
+    const uint k00 = keys[q.y * width + q.x], k10 = keys[q.y * width + x1],
+               k01 = keys[y1 * width + q.x], k11 = keys[y1 * width + x1];
+    const int agree = k00 == k10 && k00 == k01 && k00 == k11;
+    refine[i] = (uint)(!agree && size > 1u);
+    if (!agree)
+        return;
+    const float4 c00 = image[q.y * width + q.x], c10 = image[q.y * width + x1],
+                 c01 = image[y1 * width + q.x], c11 = image[y1 * width + x1];
+    const float dx = (float)(x1 - q.x), dy = (float)(y1 - q.y);
+    for (uint y = q.y; y <= y1; ++y)
+        for (uint x = q.x; x <= x1; ++x) {
+            if ((x == q.x || x == x1) && (y == q.y || y == y1))
+                continue; /* the traced corners stay as they are */
+            const float fx = dx > 0.0f ? (float)(x - q.x) / dx : 0.0f;
+            const float fy = dy > 0.0f ? (float)(y - q.y) / dy : 0.0f;
+            const float4 top = c00 + (c10 - c00) * fx, bottom = c01 + (c11 - c01) * fx;
+            image[y * width + x] = top + (bottom - top) * fy;
+        }
+}
+
+/* The five pixels that split square i (clamped to the image). */
+__kernel void sub_points(__global const uint *squares, uint n, uint size, uint width, uint height,
+                         __global uint *points) {
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint2 q = square_of(squares[i]);
+    const uint h = size / 2u;
+    const uint xm = min(q.x + h, width - 1u), ym = min(q.y + h, height - 1u);
+    const uint x1 = min(q.x + size, width - 1u), y1 = min(q.y + size, height - 1u);
+    points[5 * i] = q.y * width + xm;
+    points[5 * i + 1] = ym * width + q.x;
+    points[5 * i + 2] = ym * width + xm;
+    points[5 * i + 3] = ym * width + x1;
+    points[5 * i + 4] = y1 * width + xm;
+}
+
+__kernel void sub_split(__global const uint *squares, uint n, uint size, __global uint *children) {
+    const uint i = get_global_id(0);
+    if (i >= n)
+        return;
+    const uint2 q = square_of(squares[i]);
+    const uint h = size / 2u;
+    children[4 * i] = pack_square(q.x, q.y);
+    children[4 * i + 1] = pack_square(q.x + h, q.y);
+    children[4 * i + 2] = pack_square(q.x, q.y + h);
+    children[4 * i + 3] = pack_square(q.x + h, q.y + h);
+}
