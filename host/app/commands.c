@@ -126,6 +126,7 @@ int cmd_render(const cli_options *opt) {
     if (opt->max_depth)
         job.whitted.max_depth = (uint32_t)opt->max_depth;
     job.whitted.subsample = (uint32_t)opt->subsample;
+    job.whitted.subsample_unguarded = (uint32_t)opt->subsample_plain;
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
     vct_render_result result = {0};

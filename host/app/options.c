@@ -49,7 +49,9 @@ void cli_usage(void) {
         "                                   --max-depth D (default 8, at most 16),\n"
         "                                   --subsample N: rays at the corners of N x N squares\n"
         "                                   (a power of two), squares whose corners agree\n"
-        "                                   interpolated, the others split (default 0: off)\n"
+        "                                   interpolated, the others split (default 0: off);\n"
+        "                                   --no-guard: also squares that a piece of the mesh\n"
+        "                                   smaller than the square touches (the seed's way)\n"
         "  --size W H                       image size in pixels (default 512 512)\n"
         "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
         "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
@@ -210,6 +212,8 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
         } else if (strcmp(a, "--spp") == 0) {
             if (parse_int(argc, argv, &i, 1, 1 << 24, &opt->spp))
                 return 1;
+        } else if (strcmp(a, "--no-guard") == 0) {
+            opt->subsample_plain = 1;
         } else if (strcmp(a, "--subsample") == 0) {
             if (parse_int(argc, argv, &i, 0, 16384, &opt->subsample))
                 return 1;

@@ -17,7 +17,8 @@ typedef struct cli_options {
     float error_scale;
     int width, height;
     int spp, max_depth, seed;
-    int subsample; /* whitted: --subsample N, 0 off */
+    int subsample;       /* whitted: --subsample N, 0 off */
+    int subsample_plain; /* whitted: --no-guard */
     float time_limit;
     int stats;
     vct_tone tone;           /* PNG: exposure and curve */

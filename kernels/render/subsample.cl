@@ -17,8 +17,14 @@ inline uint pack_square(uint x, uint y) {
     return y << 16 | x;
 }
 
+/* guard: per pixel, the projected size of the smallest object whose screen
+ * box covers it (0xFFFF: none). A square that such an object touches is split
+ * whatever its corners say while the object is less than twice the square's
+ * size (an object that wide can still fall between the corners), so at the
+ * last level every pixel near it is traced. */
 __kernel void sub_fill(__global const uint *squares, uint n, uint size, uint width, uint height,
-                       __global const uint *keys, __global float4 *image, __global uint *refine) {
+                       __global const uint *keys, __global const ushort *guard,
+                       __global float4 *image, __global uint *refine) {
     const uint i = get_global_id(0);
     if (i >= n)
         return;
@@ -30,7 +36,11 @@ __kernel void sub_fill(__global const uint *squares, uint n, uint size, uint wid
     const uint x1 = min(q.x + size, width - 1u), y1 = min(q.y + size, height - 1u);
     const uint k00 = keys[q.y * width + q.x], k10 = keys[q.y * width + x1],
                k01 = keys[y1 * width + q.x], k11 = keys[y1 * width + x1];
-    const int agree = k00 == k10 && k00 == k01 && k00 == k11;
+    int small = 0;
+    for (uint y = q.y; y <= y1 && !small; ++y)
+        for (uint x = q.x; x <= x1 && !small; ++x)
+            small = guard[y * width + x] < 2u * size;
+    const int agree = !small && k00 == k10 && k00 == k01 && k00 == k11;
     refine[i] = (uint)(!agree && size > 1u);
     if (!agree)
         return;

@@ -160,10 +160,15 @@ typedef struct vct_whitted_options {
      * squares, fills a square whose corners met the same materials and saw
      * the same lights by bilinear interpolation, and splits the others. */
     uint32_t subsample;
+    /* 1: the seed's plain scheme; 0 (default): squares that a piece of the
+     * mesh smaller than the square touches on screen are split whatever
+     * their corners say, so small objects are not lost between corners. */
+    uint32_t subsample_unguarded;
 } vct_whitted_options;
 
 typedef struct vct_whitted_result {
     uint64_t traced_pixels; /* pixels whose ray tree was traced (all without subsampling) */
+    uint64_t small_objects; /* pieces of the mesh smaller than a square on screen (guarded) */
     uint8_t *traced_mask;   /* in: NULL, or width x height bytes to receive 1 where traced */
 } vct_whitted_result;
 

@@ -99,7 +99,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
     memset(image, 0, sizeof *image);
     int rc = job_check(job, err);
     vct_pathtrace_result pt = {0};
-    vct_whitted_result wr = {0, NULL};
+    vct_whitted_result wr = {0, 0, NULL};
     if (rc == VCT_OK) {
         switch (job->method) {
         case VCT_METHOD_RAYCAST:

@@ -7,11 +7,12 @@
 #include "vct/parallel.h"
 
 typedef struct sub_buffers {
-    cl_mem keys, traced, points, squares, refining, flags;
+    cl_mem keys, traced, guard, points, squares, refining, flags;
 } sub_buffers;
 
 static void release_all(vct_context *ctx, sub_buffers *b) {
-    cl_mem *m[] = {&b->keys, &b->traced, &b->points, &b->squares, &b->refining, &b->flags};
+    cl_mem *m[] = {&b->keys,    &b->traced,   &b->guard, &b->points,
+                   &b->squares, &b->refining, &b->flags};
     for (size_t i = 0; i < sizeof m / sizeof *m; ++i)
         vct_buffer_release(ctx, *m[i]);
 }
@@ -25,6 +26,7 @@ static int allocate(vct_context *ctx, const char *stage, size_t pixels, size_t s
     } list[] = {
         {&b->keys, "subsample keys", 4 * pixels},
         {&b->traced, "subsample traced pixels", 4 * pixels},
+        {&b->guard, "subsample small-object guard", 4 * ((pixels + 1) / 2)},
         {&b->points, "subsample points", 4 * 5 * squares},
         {&b->squares, "subsample squares", 4 * 4 * squares},
         {&b->refining, "subsample squares to split", 4 * 4 * squares},
@@ -74,8 +76,8 @@ static int trace(vct_shaded *sh, cl_kernel k, int first_arg, sub_buffers *b, uin
 }
 
 int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_arg *own,
-                  int own_count, uint32_t size, uint64_t *traced, uint8_t *traced_mask,
-                  vct_error *err) {
+                  int own_count, uint32_t size, const uint16_t *guard, uint64_t *traced,
+                  uint8_t *traced_mask, vct_error *err) {
     vct_context *ctx = sh->ctx;
     const char *stage = sh->stage;
     const uint32_t w = (uint32_t)sh->width, h = (uint32_t)sh->height;
@@ -87,6 +89,9 @@ int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_ar
     int rc = vct_program_get(ctx, "render/subsample.cl", "", &p, err);
     if (rc == VCT_OK)
         rc = allocate(ctx, stage, pixels, max_squares, &b, err);
+    if (rc == VCT_OK)
+        rc = guard ? vct_buffer_write(ctx, stage, b.guard, 0, 2 * pixels, guard, err)
+                   : vct_buffer_fill_u32(ctx, stage, b.guard, 0xFFFFFFFFu, (pixels + 1) / 2, err);
     cl_kernel k = rc == VCT_OK ? vct_shaded_kernel(sh, points_kernel, own, own_count, err) : NULL;
     if (rc == VCT_OK && !k)
         rc = (int)err->status;
@@ -98,9 +103,10 @@ int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_ar
         rc = trace(sh, k, first_arg, &b, n_points, err);
     const cl_uint cw = w, ch = h;
     for (cl_uint s = size; rc == VCT_OK && m > 0 && s >= 2; s /= 2) {
-        rc = vct_run_kernel(ctx, p, "sub_fill", stage, m, err, 8, VCT_ARG_OF(b.squares),
+        rc = vct_run_kernel(ctx, p, "sub_fill", stage, m, err, 9, VCT_ARG_OF(b.squares),
                             VCT_ARG_OF(m), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
-                            VCT_ARG_OF(b.keys), VCT_ARG_OF(sh->frame), VCT_ARG_OF(b.flags));
+                            VCT_ARG_OF(b.keys), VCT_ARG_OF(b.guard), VCT_ARG_OF(sh->frame),
+                            VCT_ARG_OF(b.flags));
         uint32_t r = 0;
         if (rc == VCT_OK)
             rc = vct_compact_u32(ctx, b.squares, b.flags, b.refining, m, &r, err);

@@ -1,7 +1,9 @@
 /* Whitted ray tracing: ray trees on the device (kernels/render/whitted.cl),
  * every pixel or adaptively subsampled (render/subsample.c). */
+#include <stdlib.h>
 #include <string.h>
 
+#include "render/small_objects.h"
 #include "render/subsample.h"
 
 #define KERNEL_FILE "render/whitted.cl"
@@ -45,8 +47,20 @@ int vct_render_whitted(vct_context *ctx, const vct_scene *s, const vct_accel *g,
         rc = vct_shaded_begin(ctx, s, g, KERNEL_FILE, STAGE, opt->width, opt->height, &sh, err);
         if (rc)
             return rc;
-        rc = vct_subsample(&sh, "whitted_points", own, 3, opt->subsample, &traced,
-                           result ? result->traced_mask : NULL, err);
+        uint16_t *guard = NULL;
+        if (!opt->subsample_unguarded) {
+            guard = malloc(2ull * opt->width * opt->height);
+            const int64_t small =
+                guard ? vct_small_object_map(s, &sh.cam, opt->subsample, guard) : -1;
+            if (small < 0)
+                rc = vct_fail(err, VCT_ERR_MEMORY, "whitted: out of host memory");
+            else if (result)
+                result->small_objects = (uint64_t)small;
+        }
+        if (rc == VCT_OK)
+            rc = vct_subsample(&sh, "whitted_points", own, 3, opt->subsample, guard, &traced,
+                               result ? result->traced_mask : NULL, err);
+        free(guard);
         rc = vct_shaded_end(&sh, rc, image, err);
     }
     if (rc == VCT_OK && result)
