@@ -144,7 +144,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
             bench_die(&err);
         r->render_ms = stage_device_ms(ctx, "path trace");
     } else {
-        vct_render_options o = {cfg->width, cfg->height, {0, 0, 0}};
+        vct_render_options o = {cfg->width, cfg->height, 0, 0};
         if (vct_render_raycast(ctx, s, g, &o, &im, &err))
             bench_die(&err);
         r->render_ms = stage_device_ms(ctx, "ray cast");

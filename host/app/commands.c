@@ -94,8 +94,8 @@ int cmd_render(const cli_options *opt) {
                 opt->method);
         return 1;
     }
-    if (opt->subsample && method != VCT_METHOD_WHITTED) {
-        fprintf(stderr, "vct: --subsample is for --method whitted\n");
+    if (opt->subsample && method != VCT_METHOD_WHITTED && method != VCT_METHOD_RAYCAST) {
+        fprintf(stderr, "vct: --subsample is for --method whitted and raycast\n");
         return 1;
     }
     const int pt = method == VCT_METHOD_PATHTRACE;
@@ -127,6 +127,8 @@ int cmd_render(const cli_options *opt) {
         job.whitted.max_depth = (uint32_t)opt->max_depth;
     job.whitted.subsample = (uint32_t)opt->subsample;
     job.whitted.subsample_unguarded = (uint32_t)opt->subsample_plain;
+    job.raycast.subsample = job.whitted.subsample;
+    job.raycast.subsample_unguarded = job.whitted.subsample_unguarded;
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
     vct_render_result result = {0};

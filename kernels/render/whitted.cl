@@ -20,19 +20,21 @@
 #define WHITTED_STACK 16
 
 /* Local radiance of a non-dielectric hit: what the ray caster computes for a
- * diffuse surface, plus the glossy highlight and the ambient term. */
+ * diffuse surface, plus the glossy highlight and the ambient term; plain:
+ * exactly the ray caster's (every surface Lambertian with its albedo). */
 inline float3 whitted_local(const accel_view *g, const vct_material_desc *m, float3 albedo,
                             float3 p, float3 n, float3 wo, __global const vct_light_desc *lights,
                             uint light_count, const emitter_view *e,
                             __global const vct_material_desc *materials,
-                            __global const uint *tri_material, uint pixel, float3 ambient) {
+                            __global const uint *tri_material, uint pixel, float3 ambient,
+                            int plain) {
     const float pg = glossy_probability(m);
-    const int highlight = pg > 0.0f && !is_mirror(m);
+    const int highlight = !plain && pg > 0.0f && !is_mirror(m);
     const float3 r = reflect_dir(wo, n);
     const float exponent = highlight ? phong_exponent(m->emission.w) : -1.0f;
     direct_terms d = direct_gather(g, lights, light_count, p, n, 1, r, exponent, 0);
     direct_emitters(g, e, materials, tri_material, p, n, r, exponent, pixel, &d);
-    const float3 matte = m->albedo.w > 0.5f ? (float3)(0.0f) : albedo;
+    const float3 matte = !plain && m->albedo.w > 0.5f ? (float3)(0.0f) : albedo;
     float3 shade = m->emission.xyz + matte * VCT_INV_PI * d.irradiance;
     if (highlight)
         shade += glossy_color(m) * d.lobe;
@@ -53,11 +55,12 @@ typedef struct whitted_scene {
     float3 ambient;
     uint max_depth;
     float min_throughput;
+    uint plain; /* the ray caster: one hit, Lambertian shading, no ambient */
 } whitted_scene;
 
 #define WHITTED_SCENE()                                                                            \
     ((whitted_scene){ACCEL_VIEW(), TEXTURE_VIEW(), EMITTER_VIEW(), materials, tri_material,        \
-                     lights, light_count, ambient.xyz, max_depth, min_throughput})
+                     lights, light_count, ambient.xyz, max_depth, min_throughput, plain})
 
 /* The lights (the first 32) that light p unshadowed, as bits. */
 inline uint lights_seen(const whitted_scene *w, float3 p, float3 n) {
@@ -130,7 +133,7 @@ inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, u
                 const float eps = surface_epsilon(&w->g, p);
                 const int deeper = depth + 1 < w->max_depth;
                 k = key_mix(k, mat);
-                if (is_dielectric(&m)) {
+                if (is_dielectric(&m) && !w->plain) {
                     radiance += throughput * m.emission.xyz;
                     const float ior = fmax(m.extra.x, 1.0001f);
                     const float eta = front ? 1.0f / ior : ior;
@@ -154,7 +157,8 @@ inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, u
                     const float3 albedo = texture_albedo(&w->tv, &m, h.tri, h.u, h.v);
                     radiance += throughput * whitted_local(&w->g, &m, albedo, p, n, wo, w->lights,
                                                            w->light_count, &w->e, w->materials,
-                                                           w->tri_material, pixel, w->ambient);
+                                                           w->tri_material, pixel, w->ambient,
+                                                           (int)w->plain);
                     if (want_key)
                         k = key_mix(key_mix(k, lights_seen(w, p, n)),
                                     emitters_seen(w, p, n, pixel));
@@ -187,7 +191,8 @@ inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, u
 #define WHITTED_ARGS                                                                               \
     ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,                  \
         __global const uint *tri_material, TEXTURE_ARGS, __global const vct_light_desc *lights,    \
-        uint light_count, EMITTER_ARGS, float4 ambient, uint max_depth, float min_throughput
+        uint light_count, EMITTER_ARGS, float4 ambient, uint max_depth, float min_throughput,      \
+        uint plain
 
 /* Every pixel. */
 __kernel void whitted(WHITTED_ARGS, __global float4 *image) {

@@ -14,6 +14,7 @@
 
 #include "check.h"
 #include "mesh_gen.h"
+#include "render/whitted_as.h"
 #include "vec3d.h"
 
 #define L 50.0f
@@ -269,6 +270,29 @@ static void check_subsampling(void) {
            (unsigned long long)traced, (unsigned long long)all);
     vct_image_free(&full);
     vct_image_free(&sub);
+
+    /* The ray caster subsampled: its traced pixels are the ray caster's. */
+    vct_accel *acc = vct_accel_build(ctx, box, NULL, &err);
+    REQUIRE_OK(acc ? VCT_OK : err.status, err);
+    const vct_render_options ro = {W, H, 0, 0};
+    REQUIRE_OK(vct_render_raycast(ctx, box, acc, &ro, &full, &err), err);
+    const vct_whitted_options wo = {W, H, 1, 0.0f, 8, 0};
+    vct_whitted_result wr = {0, 0, mask};
+    REQUIRE_OK(vct_whitted_render_as(ctx, box, acc, &wo, 1, &sub, &wr, &err), err);
+    differ = marked = 0;
+    for (size_t i = 0; i < (size_t)W * H; ++i)
+        if (mask[i]) {
+            ++marked;
+            differ += memcmp(&sub.rgba[4 * i], &full.rgba[4 * i], 12) != 0;
+        }
+    CHECK(differ == 0 && marked > 81 && marked < (size_t)W * H,
+          "ray caster subsampled: %zu of %zu traced pixels differ from its full render", differ,
+          marked);
+    printf("the ray caster at 8: %zu of %d pixels traced, each as its full render's\n", marked,
+           W * H);
+    vct_image_free(&full);
+    vct_image_free(&sub);
+    vct_accel_free(acc);
     vct_scene_free(box);
 
     /* A plane filling the view under a lamp: one material, one light seen

@@ -20,7 +20,8 @@ extern "C" {
 
 typedef struct vct_render_options {
     int width, height;
-    uint32_t grid_res[3]; /* 0 = automatic */
+    /* Adaptive subsampling as Whitted's (vct_whitted_options): 0 off. */
+    uint32_t subsample, subsample_unguarded;
 } vct_render_options;
 
 /* Direct illumination with hard shadows by ray casting. */

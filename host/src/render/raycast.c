@@ -6,6 +6,7 @@
 #include "runtime/runtime.h"
 #include "accel/accel.h"
 #include "render/shaded_frame.h"
+#include "render/whitted_as.h"
 
 int vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint32_t n, int any_hit,
                    vct_hit *hits, vct_error *err) {
@@ -53,6 +54,11 @@ int vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint
 
 int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                        const vct_render_options *opt, vct_image *image, vct_error *err) {
+    if (opt->subsample) { /* Whitted's kernels at one hit with the ray caster's shading */
+        const vct_whitted_options wo = {opt->width, opt->height,    1,
+                                        0.0f,       opt->subsample, opt->subsample_unguarded};
+        return vct_whitted_render_as(ctx, s, g, &wo, 1, image, NULL, err);
+    }
     return vct_shaded_frame(ctx, s, g, "render/raycast.cl", "render_direct", "ray cast", opt->width,
                             opt->height, NULL, 0, image, err);
 }

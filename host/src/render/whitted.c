@@ -5,6 +5,7 @@
 
 #include "render/small_objects.h"
 #include "render/subsample.h"
+#include "render/whitted_as.h"
 
 #define KERNEL_FILE "render/whitted.cl"
 #define STAGE "whitted"
@@ -24,22 +25,25 @@ static int check_options(const vct_whitted_options *o, vct_error *err) {
     return VCT_OK;
 }
 
-int vct_render_whitted(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                       const vct_whitted_options *opt, vct_image *image, vct_whitted_result *result,
-                       vct_error *err) {
+int vct_whitted_render_as(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                          const vct_whitted_options *opt, int plain, vct_image *image,
+                          vct_whitted_result *result, vct_error *err) {
     memset(image, 0, sizeof *image);
     int rc = check_options(opt, err);
     if (rc)
         return rc;
-    const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
-    const cl_uint depth = opt->max_depth;
+    const float a = plain ? 0.0f : 1.0f;
+    const cl_float4 ambient = {{a * s->ambient[0], a * s->ambient[1], a * s->ambient[2], 0.0f}};
+    const cl_uint depth = opt->max_depth, plain_arg = (cl_uint)plain;
     const cl_float cut = opt->min_throughput;
-    const vct_kernel_arg own[3] = {
-        {sizeof ambient, &ambient}, {sizeof depth, &depth}, {sizeof cut, &cut}};
+    const vct_kernel_arg own[4] = {{sizeof ambient, &ambient},
+                                   {sizeof depth, &depth},
+                                   {sizeof cut, &cut},
+                                   {sizeof plain_arg, &plain_arg}};
     uint64_t traced = (uint64_t)opt->width * (uint64_t)opt->height;
     if (!opt->subsample) {
         rc = vct_shaded_frame(ctx, s, g, KERNEL_FILE, "whitted", STAGE, opt->width, opt->height,
-                              own, 3, image, err);
+                              own, 4, image, err);
         if (rc == VCT_OK && result && result->traced_mask)
             memset(result->traced_mask, 1, (size_t)traced);
     } else {
@@ -58,7 +62,7 @@ int vct_render_whitted(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                 result->small_objects = (uint64_t)small;
         }
         if (rc == VCT_OK)
-            rc = vct_subsample(&sh, "whitted_points", own, 3, opt->subsample, guard, &traced,
+            rc = vct_subsample(&sh, "whitted_points", own, 4, opt->subsample, guard, &traced,
                                result ? result->traced_mask : NULL, err);
         free(guard);
         rc = vct_shaded_end(&sh, rc, image, err);
@@ -66,4 +70,10 @@ int vct_render_whitted(vct_context *ctx, const vct_scene *s, const vct_accel *g,
     if (rc == VCT_OK && result)
         result->traced_pixels = traced;
     return rc;
+}
+
+int vct_render_whitted(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                       const vct_whitted_options *opt, vct_image *image, vct_whitted_result *result,
+                       vct_error *err) {
+    return vct_whitted_render_as(ctx, s, g, opt, 0, image, result, err);
 }
