@@ -5,7 +5,7 @@
  *
  * usage: accuracy SCENE|heavy [--reference REF.pfm] [--reference-spp N]
  *                 [--size W H] [--max-spp N] [--out DIR] [--no-vct] [--quick]
- *                 [--ambient R G B] [--accel bvh|grid]
+ *                 [--ambient R G B] [--accel bvh|grid] [--whitted]
  * Without --reference, a path-traced reference of --reference-spp samples
  * (default 2048, a different seed from the runs) is rendered and saved.
  * "heavy" is bench/heavy_scene.h's 102,430-triangle scene. Voxel cone
@@ -40,6 +40,7 @@ typedef struct settings {
     int quick;
     int has_ambient;
     float ambient[3];
+    int whitted;
     vct_accel_options accel;
 } settings;
 
@@ -52,7 +53,7 @@ typedef struct vct_setting {
     int sparse;   /* 1: diffuse cones at every other pixel per axis */
 } vct_setting;
 
-#define MAX_RUNS 48
+#define MAX_RUNS 64
 
 static const char *const build_stages[] = {
     "voxelize",        "octree build",       "brick creation", "brick filtering",
@@ -124,6 +125,77 @@ static double pt_time_for(const run *runs, int n, double error) {
         prev = &runs[i];
     }
     return 0.0;
+}
+
+/* Whitted ray tracing, subsampled at n (0: every pixel), guarded or not;
+ * writes the pixels traced. */
+static vct_image render_whitted(vct_context *ctx, const vct_scene *s, const settings *cfg,
+                                uint32_t n, int guarded, uint64_t *traced, run *r) {
+    vct_error err = {0};
+    vct_stats_reset(ctx);
+    const double t0 = vct_now_ms();
+    vct_accel *g = vct_accel_build(ctx, s, &cfg->accel, &err);
+    if (!g)
+        bench_die(&err);
+    const vct_whitted_options o = {cfg->width, cfg->height, 8, 1e-3f, n, (uint32_t)!guarded};
+    vct_whitted_result res = {0, 0, NULL};
+    vct_image im;
+    if (vct_render_whitted(ctx, s, g, &o, &im, &res, &err))
+        bench_die(&err);
+    *traced = res.traced_pixels;
+    r->wall_ms = vct_now_ms() - t0;
+    r->render_ms = stage_device_ms(ctx, "whitted");
+    r->accel_ms = stage_device_ms(ctx, "grid build") + stage_device_ms(ctx, "bvh build");
+    r->build_ms = 0.0;
+    r->total_ms = r->accel_ms + r->render_ms;
+    if (n)
+        snprintf(r->name, sizeof r->name, "whitted, subsample %u%s", n,
+                 guarded ? "" : " (no guard)");
+    else
+        snprintf(r->name, sizeof r->name, "whitted");
+    vct_accel_free(g);
+    return im;
+}
+
+/* Whitted at every pixel and subsampled at 4, 8 and 16, with and without
+ * the guard: rows against the reference, and whitted.md with each setting's
+ * error against full Whitted and the share of pixels it traced. */
+static int whitted_rows(vct_context *ctx, const vct_scene *s, const settings *cfg,
+                        const vct_image *ref, run *runs, int n) {
+    char path[1200];
+    snprintf(path, sizeof path, "%s/whitted.md", cfg->out);
+    FILE *md = fopen(path, "w");
+    if (md)
+        fprintf(md, "| setting | pixels traced | time (ms, device) | NRMSE against full Whitted "
+                    "| NRMSE against the reference |\n|---|---:|---:|---:|---:|\n");
+    vct_image full = {0};
+    static const uint32_t sizes[] = {0, 4, 8, 16};
+    for (size_t i = 0; i < sizeof sizes / sizeof *sizes; ++i)
+        for (int guarded = 1; guarded >= (sizes[i] ? 0 : 1) && n < MAX_RUNS; --guarded) {
+            vct_error err = {0};
+            uint64_t traced = 0;
+            vct_image im = render_whitted(ctx, s, cfg, sizes[i], guarded, &traced, &runs[n]);
+            vct_image_metrics own = {0};
+            if (vct_image_compare(&im, ref, &runs[n].m, &err) ||
+                (full.rgba && vct_image_compare(&im, &full, &own, &err)))
+                bench_die(&err);
+            const double share = (double)traced / ((double)cfg->width * cfg->height);
+            fprintf(stderr,
+                    "%-48s %9.1f ms  NRMSE %.4f, against full Whitted %.4f, %.1f %% traced\n",
+                    runs[n].name, runs[n].total_ms, runs[n].m.nrmse, own.nrmse, 100.0 * share);
+            if (md)
+                fprintf(md, "| %s | %.1f %% | %.1f | %.4f | %.4f |\n", runs[n].name, 100.0 * share,
+                        runs[n].total_ms, own.nrmse, runs[n].m.nrmse);
+            if (!full.rgba)
+                full = im;
+            else
+                vct_image_free(&im);
+            ++n;
+        }
+    vct_image_free(&full);
+    if (md)
+        fclose(md);
+    return n;
 }
 
 /* method "raycast" or "pt"; spp for pt. */
@@ -229,7 +301,7 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
 }
 
 int main(int argc, char **argv) {
-    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1, 0, 0, {0, 0, 0}, {0}};
+    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1, 0, 0, {0, 0, 0}, 0, {0}};
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--reference") == 0 && i + 1 < argc)
             cfg.reference = argv[++i];
@@ -242,6 +314,8 @@ int main(int argc, char **argv) {
             cfg.height = atoi(argv[++i]);
         } else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc)
             cfg.out = argv[++i];
+        else if (strcmp(argv[i], "--whitted") == 0)
+            cfg.whitted = 1;
         else if (strcmp(argv[i], "--quick") == 0)
             cfg.quick = 1;
         else if (strcmp(argv[i], "--accel") == 0 && i + 1 < argc) {
@@ -262,7 +336,7 @@ int main(int argc, char **argv) {
         else {
             fprintf(stderr, "usage: accuracy SCENE [--reference REF.pfm] [--reference-spp N] "
                             "[--size W H] [--max-spp N] [--out DIR] [--no-vct] [--quick] "
-                            "[--ambient R G B]\n");
+                            "[--ambient R G B] [--accel bvh|grid] [--whitted]\n");
             return 2;
         }
     }
@@ -322,6 +396,8 @@ int main(int argc, char **argv) {
                 runs[n].m.nrmse);
         ++n;
     }
+    if (cfg.whitted)
+        n = whitted_rows(ctx, s, &cfg, &ref, runs, n);
     /* The default (128^3, 6 cones, step 1, anisotropic, 2 bounces) and one
      * setting changed at a time. */
     static const vct_setting vct_runs[] = {
