@@ -137,7 +137,7 @@ static vct_image render_whitted(vct_context *ctx, const vct_scene *s, const sett
     vct_accel *g = vct_accel_build(ctx, s, &cfg->accel, &err);
     if (!g)
         bench_die(&err);
-    const vct_whitted_options o = {cfg->width, cfg->height, 8, 1e-3f, n, (uint32_t)!guarded};
+    const vct_whitted_options o = {cfg->width, cfg->height, 8, 1e-3f, n, (uint32_t)!guarded, 0.0f};
     vct_whitted_result res = {0, 0, NULL};
     vct_image im;
     if (vct_render_whitted(ctx, s, g, &o, &im, &res, &err))
@@ -216,7 +216,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
             bench_die(&err);
         r->render_ms = stage_device_ms(ctx, "path trace");
     } else {
-        vct_render_options o = {cfg->width, cfg->height, 0, 0};
+        vct_render_options o = {cfg->width, cfg->height, 0, 0, 0.0f};
         if (vct_render_raycast(ctx, s, g, &o, &im, &err))
             bench_die(&err);
         r->render_ms = stage_device_ms(ctx, "ray cast");

@@ -129,6 +129,7 @@ int cmd_render(const cli_options *opt) {
     job.whitted.subsample_unguarded = (uint32_t)opt->subsample_plain;
     job.raycast.subsample = job.whitted.subsample;
     job.raycast.subsample_unguarded = job.whitted.subsample_unguarded;
+    job.whitted.subsample_contrast = job.raycast.subsample_contrast = opt->contrast;
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
     vct_render_result result = {0};

@@ -51,7 +51,9 @@ void cli_usage(void) {
         "                                   (a power of two), squares whose corners agree\n"
         "                                   interpolated, the others split (default 0: off);\n"
         "                                   --no-guard: also squares that a piece of the mesh\n"
-        "                                   smaller than the square touches (the seed's way)\n"
+        "                                   smaller than the square touches (the seed's way);\n"
+        "                                   --contrast C: corners whose radiance spreads by more\n"
+        "                                   than C of their mean disagree too (default 0)\n"
         "  --size W H                       image size in pixels (default 512 512)\n"
         "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
         "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
@@ -212,6 +214,13 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
         } else if (strcmp(a, "--spp") == 0) {
             if (parse_int(argc, argv, &i, 1, 1 << 24, &opt->spp))
                 return 1;
+        } else if (strcmp(a, "--contrast") == 0) {
+            if (parse_floats(argc, argv, &i, 1, &opt->contrast))
+                return 1;
+            if (!(opt->contrast >= 0.0f)) {
+                fprintf(stderr, "vct: --contrast must be 0 or more\n");
+                return 1;
+            }
         } else if (strcmp(a, "--no-guard") == 0) {
             opt->subsample_plain = 1;
         } else if (strcmp(a, "--subsample") == 0) {

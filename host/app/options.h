@@ -19,6 +19,7 @@ typedef struct cli_options {
     int spp, max_depth, seed;
     int subsample;       /* whitted: --subsample N, 0 off */
     int subsample_plain; /* whitted: --no-guard */
+    float contrast;      /* whitted: --contrast C */
     float time_limit;
     int stats;
     vct_tone tone;           /* PNG: exposure and curve */

@@ -58,6 +58,9 @@ inline int light_visible(const accel_view *g, float3 p, float3 n, float eps, flo
  * radiant * cos(theta) * cos(alpha)^e * (e + 2) / (2 pi). */
 typedef struct direct_terms {
     float3 irradiance, lobe;
+    /* What the shadow rays found: the lights (the first 32) that reach the
+     * point, and how many emitter samples face it and how many it sees. */
+    uint lights_seen, emitters_facing, emitters_seen;
 } direct_terms;
 
 inline void direct_add(direct_terms *sum, float3 radiant, float cos_theta, float3 wi, float3 r,
@@ -87,7 +90,7 @@ inline int light_is_soft(__global const vct_light_desc *lights, uint i) {
 inline direct_terms direct_gather(const accel_view *g, __global const vct_light_desc *lights,
                                   uint light_count, float3 p, float3 n, int shadows, float3 r,
                                   float e, int skip_soft) {
-    direct_terms sum = {(float3)(0.0f), (float3)(0.0f)};
+    direct_terms sum = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u};
     const float eps = surface_epsilon(g, p);
     for (uint i = 0; i < light_count; ++i) {
         if (skip_soft && light_is_soft(lights, i))
@@ -98,6 +101,8 @@ inline direct_terms direct_gather(const accel_view *g, __global const vct_light_
             continue;
         if (shadows && !light_visible(g, p, n, eps, wi, dist))
             continue;
+        if (i < 32u)
+            sum.lights_seen |= 1u << i;
         direct_add(&sum, radiant, cos_theta, wi, r, e, 1.0f);
     }
     return sum;

@@ -120,8 +120,12 @@ inline void direct_emitters(const accel_view *g, const emitter_view *e,
         const float3 radiant = emitter_sample(e, g, materials, tri_material, p, seed, s, &q, &tri);
         const float3 wi = normalize(q - p);
         const float cos_theta = dot(n, wi);
-        if (!(cos_theta > 0.0f) || all(radiant == 0.0f) || !emitter_visible(g, o, q))
+        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
             continue;
+        ++sum->emitters_facing;
+        if (!emitter_visible(g, o, q))
+            continue;
+        ++sum->emitters_seen;
         direct_add(sum, radiant * inv, cos_theta, wi, r, exponent, 1.0f);
     }
 }

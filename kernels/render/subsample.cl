@@ -23,7 +23,7 @@ inline uint pack_square(uint x, uint y) {
  * size (an object that wide can still fall between the corners), so at the
  * last level every pixel near it is traced. */
 __kernel void sub_fill(__global const uint *squares, uint n, uint size, uint width, uint height,
-                       __global const uint *keys, __global const ushort *guard,
+                       __global const uint *keys, __global const ushort *guard, float contrast,
                        __global float4 *image, __global uint *refine) {
     const uint i = get_global_id(0);
     if (i >= n)
@@ -40,12 +40,19 @@ __kernel void sub_fill(__global const uint *squares, uint n, uint size, uint wid
     for (uint y = q.y; y <= y1 && !small; ++y)
         for (uint x = q.x; x <= x1 && !small; ++x)
             small = guard[y * width + x] < 2u * size;
-    const int agree = !small && k00 == k10 && k00 == k01 && k00 == k11;
+    const float4 c00 = image[q.y * width + q.x], c10 = image[q.y * width + x1],
+                 c01 = image[y1 * width + q.x], c11 = image[y1 * width + x1];
+    /* With contrast > 0, corners whose radiance spreads by more than that
+     * share of their mean also disagree (soft shadows, falloff). */
+    const float4 lo = fmin(fmin(c00, c10), fmin(c01, c11)),
+                 hi = fmax(fmax(c00, c10), fmax(c01, c11));
+    const float4 mean = 0.25f * (c00 + c10 + c01 + c11);
+    const int flat =
+        !(contrast > 0.0f) || all((hi - lo).xyz <= contrast * fmax(mean.xyz, (float3)(1e-6f)));
+    const int agree = !small && flat && k00 == k10 && k00 == k01 && k00 == k11;
     refine[i] = (uint)(!agree && size > 1u);
     if (!agree)
         return;
-    const float4 c00 = image[q.y * width + q.x], c10 = image[q.y * width + x1],
-                 c01 = image[y1 * width + q.x], c11 = image[y1 * width + x1];
     const float dx = (float)(x1 - q.x), dy = (float)(y1 - q.y);
     for (uint y = q.y; y <= y1; ++y)
         for (uint x = q.x; x <= x1; ++x) {

@@ -236,7 +236,7 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
     float3 r;
     const float e = direct_lobe(&g.m, g.wo, g.n, &r);
     const float3 origin = cone_origin(&cd, g.p, g.n);
-    direct_terms sum = {(float3)(0.0f), (float3)(0.0f)};
+    direct_terms sum = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u};
     vct_cone_desc sd = cd;
     sd.march.x *= SOFT_STEP_SCALE;
     for (uint i = 0; i < light_count; ++i) {

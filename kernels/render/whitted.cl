@@ -27,13 +27,18 @@ inline float3 whitted_local(const accel_view *g, const vct_material_desc *m, flo
                             uint light_count, const emitter_view *e,
                             __global const vct_material_desc *materials,
                             __global const uint *tri_material, uint pixel, float3 ambient,
-                            int plain) {
+                            int plain, uint *seen) {
     const float pg = glossy_probability(m);
     const int highlight = !plain && pg > 0.0f && !is_mirror(m);
     const float3 r = reflect_dir(wo, n);
     const float exponent = highlight ? phong_exponent(m->emission.w) : -1.0f;
     direct_terms d = direct_gather(g, lights, light_count, p, n, 1, r, exponent, 0);
     direct_emitters(g, e, materials, tri_material, p, n, r, exponent, pixel, &d);
+    /* For the corner key: the lights seen, and none, part or all of the
+     * emitter samples (an area light's shadow edge splits squares). */
+    const uint emitters =
+        d.emitters_seen == 0u ? 0u : (d.emitters_seen == d.emitters_facing ? 2u : 1u);
+    *seen = d.lights_seen ^ (emitters << 30);
     const float3 matte = !plain && m->albedo.w > 0.5f ? (float3)(0.0f) : albedo;
     float3 shade = m->emission.xyz + matte * VCT_INV_PI * d.irradiance;
     if (highlight)
@@ -62,51 +67,16 @@ typedef struct whitted_scene {
     ((whitted_scene){ACCEL_VIEW(), TEXTURE_VIEW(), EMITTER_VIEW(), materials, tri_material,        \
                      lights, light_count, ambient.xyz, max_depth, min_throughput, plain})
 
-/* The lights (the first 32) that light p unshadowed, as bits. */
-inline uint lights_seen(const whitted_scene *w, float3 p, float3 n) {
-    uint mask = 0u;
-    const float eps = surface_epsilon(&w->g, p);
-    for (uint i = 0; i < min(w->light_count, 32u); ++i) {
-        float3 wi, radiant;
-        float dist, cos_theta;
-        if (light_reaches(w->lights, i, p, n, &wi, &dist, &radiant, &cos_theta) &&
-            light_visible(&w->g, p, n, eps, wi, dist))
-            mask |= 1u << i;
-    }
-    return mask;
-}
-
-/* How much of the emissive triangles p sees, in three classes: none (0),
- * part (1) or all (2) of its emitter samples, so that the edge of an area
- * light's shadow splits squares as a point light's does. */
-inline uint emitters_seen(const whitted_scene *w, float3 p, float3 n, uint pixel) {
-    const emitter_view *e = &w->e;
-    if (e->count == 0u)
-        return 0u;
-    const float3 o = p + n * surface_epsilon(&w->g, p);
-    uint seen = 0u, facing = 0u;
-    for (uint s = 0; s < e->samples; ++s) {
-        float3 q;
-        uint tri;
-        const float3 radiant =
-            emitter_sample(e, &w->g, w->materials, w->tri_material, p, pixel, s, &q, &tri);
-        if (!(dot(n, q - p) > 0.0f) || all(radiant == 0.0f))
-            continue;
-        ++facing;
-        seen += (uint)emitter_visible(&w->g, o, q);
-    }
-    return seen == 0u ? 0u : (seen == facing ? 2u : 1u);
-}
-
 inline uint key_mix(uint key, uint v) {
     return (key ^ v) * 16777619u; /* FNV-1a, a word at a time */
 }
 
-/* The radiance of pixel (x, y)'s ray tree. With want_key, *key receives what
+/* The radiance of pixel (x, y)'s ray tree; *key receives what
  * the tree met: the material at each hit, in order, each miss, and the
- * lights each shaded hit sees (seed 001's corner key). */
+ * lights each shaded hit sees (seed 001's corner key), from the shading's
+ * own shadow rays. */
 inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, uint x, uint y,
-                           int want_key, uint *key) {
+                           uint *key) {
     const uint pixel = y * cam->size.x + x;
     /* Pending branches: origin (w: depth), direction, throughput. */
     float4 stack_org[WHITTED_STACK], stack_dir[WHITTED_STACK], stack_w[WHITTED_STACK];
@@ -155,13 +125,12 @@ inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, u
                     next = deeper;
                 } else {
                     const float3 albedo = texture_albedo(&w->tv, &m, h.tri, h.u, h.v);
+                    uint seen;
                     radiance += throughput * whitted_local(&w->g, &m, albedo, p, n, wo, w->lights,
                                                            w->light_count, &w->e, w->materials,
                                                            w->tri_material, pixel, w->ambient,
-                                                           (int)w->plain);
-                    if (want_key)
-                        k = key_mix(key_mix(k, lights_seen(w, p, n)),
-                                    emitters_seen(w, p, n, pixel));
+                                                           (int)w->plain, &seen);
+                    k = key_mix(k, seen);
                     if (is_mirror(&m)) {
                         throughput *= glossy_color(&m);
                         org = p + n * eps;
@@ -201,7 +170,7 @@ __kernel void whitted(WHITTED_ARGS, __global float4 *image) {
         return;
     const whitted_scene w = WHITTED_SCENE();
     uint key;
-    image[y * cam.size.x + x] = (float4)(whitted_tree(&w, &cam, x, y, 0, &key), 1.0f);
+    image[y * cam.size.x + x] = (float4)(whitted_tree(&w, &cam, x, y, &key), 1.0f);
 }
 
 /* The listed pixels (indices y * width + x), with their keys; traced marks
@@ -214,7 +183,7 @@ __kernel void whitted_points(WHITTED_ARGS, __global const uint *points, uint n, 
     const uint pixel = points[i], x = pixel % cam.size.x, y = pixel / cam.size.x;
     const whitted_scene w = WHITTED_SCENE();
     uint key;
-    image[pixel] = (float4)(whitted_tree(&w, &cam, x, y, 1, &key), 1.0f);
+    image[pixel] = (float4)(whitted_tree(&w, &cam, x, y, &key), 1.0f);
     keys[pixel] = key;
     traced[pixel] = 1u;
 }

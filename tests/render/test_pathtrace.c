@@ -91,7 +91,7 @@ static void direct_matches_raycast(vct_context *ctx) {
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     /* The path tracer averages each pixel's footprint: compare with the ray
      * caster at 8x8 samples per pixel, box-filtered down. */
-    vct_render_options ro = {64 * 8, 48 * 8, 0, 0};
+    vct_render_options ro = {64 * 8, 48 * 8, 0, 0, 0.0f};
     vct_image fine, ref = {64, 48, calloc(16, 64 * 48)};
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
     vct_accel_free(g);

@@ -92,7 +92,7 @@ static void run_case(vct_context *ctx, const char *name, vct_light light, double
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_image im;
-    vct_render_options ro = {W, H, 0, 0};
+    vct_render_options ro = {W, H, 0, 0, 0.0f};
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &im, &err), err);
 
     const v3 albedo = v(0.8, 0.5, 0.25);

@@ -135,7 +135,7 @@ static void specular_only_when_planned(void) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, box, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_render_options ro = {48, 40, 0, 0};
+    const vct_render_options ro = {48, 40, 0, 0, 0.0f};
     vct_image rc;
     REQUIRE_OK(vct_render_raycast(ctx, box, g, &ro, &rc, &err), err);
     CHECK(memcmp(d.image.rgba, rc.rgba, 16ull * 48 * 40) == 0,
@@ -232,7 +232,7 @@ static void cornell_against_path_tracer(void) {
     vct_pathtrace_result pr;
     vct_image ref, rc;
     REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, &pr, &err), err);
-    const vct_render_options ro = {w, h, 0, 0};
+    const vct_render_options ro = {w, h, 0, 0, 0.0f};
     REQUIRE_OK(vct_render_raycast(ctx, box, g, &ro, &rc, &err), err);
     vct_accel_free(g);
     vct_plan p;

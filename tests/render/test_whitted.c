@@ -226,12 +226,12 @@ static void check_total_reflection(double angle_deg, uint32_t depth) {
     vct_scene_free(s);
 }
 
-static vct_image render_sub(const vct_scene *s, int w, int h, uint32_t n, uint8_t *mask,
-                            uint64_t *traced) {
+static vct_image render_sub(const vct_scene *s, int w, int h, uint32_t n, float contrast,
+                            uint8_t *mask, uint64_t *traced) {
     vct_error err = {0};
     vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
-    vct_whitted_options o = {w, h, 8, 1e-3f, n, 0};
+    vct_whitted_options o = {w, h, 8, 1e-3f, n, 0, contrast};
     vct_whitted_result r = {0, 0, mask};
     vct_image im;
     REQUIRE_OK(vct_render_whitted(ctx, s, a, &o, &im, &r, &err), err);
@@ -253,8 +253,8 @@ static void check_subsampling(void) {
     REQUIRE_OK(box ? VCT_OK : err.status, err);
     uint8_t *mask = malloc((size_t)W * H);
     uint64_t traced = 0, all = 0;
-    vct_image full = render_sub(box, W, H, 0, mask, &all);
-    vct_image sub = render_sub(box, W, H, 8, mask, &traced);
+    vct_image full = render_sub(box, W, H, 0, 0.0f, mask, &all);
+    vct_image sub = render_sub(box, W, H, 8, 0.0f, mask, &traced);
     size_t differ = 0, marked = 0;
     for (size_t i = 0; i < (size_t)W * H; ++i)
         if (mask[i]) {
@@ -268,15 +268,28 @@ static void check_subsampling(void) {
     printf("subsampling at 8 on the Cornell box: %llu of %llu pixels traced, each as the full "
            "render's\n",
            (unsigned long long)traced, (unsigned long long)all);
+    /* With a contrast threshold, squares whose corners' light spreads split
+     * too: more pixels traced, each still the full render's. */
+    uint64_t traced_contrast = 0;
+    vct_image_free(&sub);
+    sub = render_sub(box, W, H, 8, 0.05f, mask, &traced_contrast);
+    differ = 0;
+    for (size_t i = 0; i < (size_t)W * H; ++i)
+        differ += mask[i] && memcmp(&sub.rgba[4 * i], &full.rgba[4 * i], 12) != 0;
+    CHECK(differ == 0 && traced_contrast > traced,
+          "contrast 0.05: %llu pixels traced (%llu without), %zu differ",
+          (unsigned long long)traced_contrast, (unsigned long long)traced, differ);
+    printf("subsampling at 8 with contrast 0.05: %llu pixels traced (%llu without)\n",
+           (unsigned long long)traced_contrast, (unsigned long long)traced);
     vct_image_free(&full);
     vct_image_free(&sub);
 
     /* The ray caster subsampled: its traced pixels are the ray caster's. */
     vct_accel *acc = vct_accel_build(ctx, box, NULL, &err);
     REQUIRE_OK(acc ? VCT_OK : err.status, err);
-    const vct_render_options ro = {W, H, 0, 0};
+    const vct_render_options ro = {W, H, 0, 0, 0.0f};
     REQUIRE_OK(vct_render_raycast(ctx, box, acc, &ro, &full, &err), err);
-    const vct_whitted_options wo = {W, H, 1, 0.0f, 8, 0};
+    const vct_whitted_options wo = {W, H, 1, 0.0f, 8, 0, 0.0f};
     vct_whitted_result wr = {0, 0, mask};
     REQUIRE_OK(vct_whitted_render_as(ctx, box, acc, &wo, 1, &sub, &wr, &err), err);
     differ = marked = 0;
@@ -306,8 +319,8 @@ static void check_subsampling(void) {
     lamp.color[0] = lamp.color[1] = lamp.color[2] = 3.0f;
     REQUIRE_OK(vct_scene_add_light(s, &lamp, &err), err);
     s->camera = (vct_camera){{0, 4, 2}, {0, 0, 0}, {0, 1, 0}, 50.0f};
-    full = render_sub(s, W, H, 0, mask, &all);
-    sub = render_sub(s, W, H, 16, mask, &traced);
+    full = render_sub(s, W, H, 0, 0.0f, mask, &all);
+    sub = render_sub(s, W, H, 16, 0.0f, mask, &traced);
     const int N = 16;
     double worst = 0.0;
     for (int y = 0; y < H; ++y)
@@ -341,7 +354,7 @@ static void check_subsampling(void) {
     REQUIRE_OK(a ? VCT_OK : err.status, err);
     const uint32_t bad[2] = {12, 64};
     for (int i = 0; i < 2; ++i) {
-        vct_whitted_options o = {W, H, 8, 1e-3f, bad[i], 0};
+        vct_whitted_options o = {W, H, 8, 1e-3f, bad[i], 0, 0.0f};
         vct_image im;
         CHECK(vct_render_whitted(ctx, s, a, &o, &im, NULL, &err) == VCT_ERR_INPUT &&
                   strstr(err.message, "power of two"),
@@ -408,7 +421,7 @@ static void check_small_objects(void) {
     vct_image im[3];
     uint64_t traced[3], small = 0;
     for (int i = 0; i < 3; ++i) {
-        vct_whitted_options o = {W, H, 8, 1e-3f, i ? 16u : 0u, i == 1};
+        vct_whitted_options o = {W, H, 8, 1e-3f, i ? 16u : 0u, i == 1, 0.0f};
         vct_whitted_result r = {0, 0, NULL};
         REQUIRE_OK(vct_render_whitted(ctx, s, a, &o, &im[i], &r, &err), err);
         traced[i] = r.traced_pixels;
@@ -482,7 +495,7 @@ int main(void) {
     vct_scene *one = check_cornell_box();
     vct_accel *a = vct_accel_build(ctx, one, NULL, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
-    vct_whitted_options o = {8, 8, 17, 1e-3f, 0, 0};
+    vct_whitted_options o = {8, 8, 17, 1e-3f, 0, 0, 0.0f};
     vct_image im;
     CHECK(vct_render_whitted(ctx, one, a, &o, &im, NULL, &err) == VCT_ERR_INPUT &&
               strstr(err.message, "outside 1..16"),

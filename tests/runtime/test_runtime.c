@@ -16,7 +16,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s) {
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_image im;
-    vct_render_options ro = {160, 120, 0, 0};
+    vct_render_options ro = {160, 120, 0, 0, 0.0f};
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &im, &err), err);
     vct_accel_free(g);
     return im;

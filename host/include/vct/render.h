@@ -22,6 +22,7 @@ typedef struct vct_render_options {
     int width, height;
     /* Adaptive subsampling as Whitted's (vct_whitted_options): 0 off. */
     uint32_t subsample, subsample_unguarded;
+    float subsample_contrast;
 } vct_render_options;
 
 /* Direct illumination with hard shadows by ray casting. */
@@ -165,6 +166,9 @@ typedef struct vct_whitted_options {
      * mesh smaller than the square touches on screen are split whatever
      * their corners say, so small objects are not lost between corners. */
     uint32_t subsample_unguarded;
+    /* > 0: corners whose radiance spreads by more than this share of their
+     * mean disagree too (soft shadows, falloff); 0: the seed's keys alone. */
+    float subsample_contrast;
 } vct_whitted_options;
 
 typedef struct vct_whitted_result {

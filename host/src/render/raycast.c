@@ -55,8 +55,13 @@ int vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint
 int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                        const vct_render_options *opt, vct_image *image, vct_error *err) {
     if (opt->subsample) { /* Whitted's kernels at one hit with the ray caster's shading */
-        const vct_whitted_options wo = {opt->width, opt->height,    1,
-                                        0.0f,       opt->subsample, opt->subsample_unguarded};
+        const vct_whitted_options wo = {opt->width,
+                                        opt->height,
+                                        1,
+                                        0.0f,
+                                        opt->subsample,
+                                        opt->subsample_unguarded,
+                                        opt->subsample_contrast};
         return vct_whitted_render_as(ctx, s, g, &wo, 1, image, NULL, err);
     }
     return vct_shaded_frame(ctx, s, g, "render/raycast.cl", "render_direct", "ray cast", opt->width,

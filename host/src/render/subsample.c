@@ -76,11 +76,12 @@ static int trace(vct_shaded *sh, cl_kernel k, int first_arg, sub_buffers *b, uin
 }
 
 int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_arg *own,
-                  int own_count, uint32_t size, const uint16_t *guard, uint64_t *traced,
-                  uint8_t *traced_mask, vct_error *err) {
+                  int own_count, uint32_t size, const uint16_t *guard, float contrast_in,
+                  uint64_t *traced, uint8_t *traced_mask, vct_error *err) {
     vct_context *ctx = sh->ctx;
     const char *stage = sh->stage;
     const uint32_t w = (uint32_t)sh->width, h = (uint32_t)sh->height;
+    const cl_float contrast = contrast_in;
     const size_t pixels = (size_t)w * h;
     /* Squares of any level: at most one per 2x2 block, plus the edges. */
     const size_t max_squares = ((size_t)w / 2 + 2) * ((size_t)h / 2 + 2);
@@ -103,10 +104,10 @@ int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_ar
         rc = trace(sh, k, first_arg, &b, n_points, err);
     const cl_uint cw = w, ch = h;
     for (cl_uint s = size; rc == VCT_OK && m > 0 && s >= 2; s /= 2) {
-        rc = vct_run_kernel(ctx, p, "sub_fill", stage, m, err, 9, VCT_ARG_OF(b.squares),
+        rc = vct_run_kernel(ctx, p, "sub_fill", stage, m, err, 10, VCT_ARG_OF(b.squares),
                             VCT_ARG_OF(m), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
-                            VCT_ARG_OF(b.keys), VCT_ARG_OF(b.guard), VCT_ARG_OF(sh->frame),
-                            VCT_ARG_OF(b.flags));
+                            VCT_ARG_OF(b.keys), VCT_ARG_OF(b.guard), VCT_ARG_OF(contrast),
+                            VCT_ARG_OF(sh->frame), VCT_ARG_OF(b.flags));
         uint32_t r = 0;
         if (rc == VCT_OK)
             rc = vct_compact_u32(ctx, b.squares, b.flags, b.refining, m, &r, err);

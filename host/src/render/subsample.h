@@ -12,7 +12,7 @@
 /* guard: per pixel, the projected size of the smallest object covering it
  * (render/small_objects.h), or NULL for the plain scheme. */
 int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_arg *own,
-                  int own_count, uint32_t size, const uint16_t *guard, uint64_t *traced,
-                  uint8_t *traced_mask, vct_error *err);
+                  int own_count, uint32_t size, const uint16_t *guard, float contrast,
+                  uint64_t *traced, uint8_t *traced_mask, vct_error *err);
 
 #endif

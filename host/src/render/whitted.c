@@ -14,6 +14,8 @@ static int check_options(const vct_whitted_options *o, vct_error *err) {
     if (o->max_depth < 1 || o->max_depth > VCT_WHITTED_MAX_DEPTH)
         return vct_fail(err, VCT_ERR_INPUT, "whitted: a depth of %u is outside 1..%d", o->max_depth,
                         VCT_WHITTED_MAX_DEPTH);
+    if (!(o->subsample_contrast >= 0.0f))
+        return vct_fail(err, VCT_ERR_INPUT, "whitted: the subsampling contrast must be 0 or more");
     if (!(o->min_throughput >= 0.0f))
         return vct_fail(err, VCT_ERR_INPUT, "whitted: the throughput cut-off must be 0 or more");
     const uint32_t n = o->subsample, side = (uint32_t)(o->width < o->height ? o->width : o->height);
@@ -62,7 +64,8 @@ int vct_whitted_render_as(vct_context *ctx, const vct_scene *s, const vct_accel 
                 result->small_objects = (uint64_t)small;
         }
         if (rc == VCT_OK)
-            rc = vct_subsample(&sh, "whitted_points", own, 4, opt->subsample, guard, &traced,
+            rc = vct_subsample(&sh, "whitted_points", own, 4, opt->subsample, guard,
+                               opt->subsample_contrast, &traced,
                                result ? result->traced_mask : NULL, err);
         free(guard);
         rc = vct_shaded_end(&sh, rc, image, err);
