@@ -168,6 +168,10 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     job.pathtrace.max_depth = (uint32_t)(app->opt.max_depth ? app->opt.max_depth : 16);
     if (app->opt.max_depth)
         job.whitted.max_depth = (uint32_t)app->opt.max_depth;
+    job.whitted.subsample = job.raycast.subsample = (uint32_t)app->opt.subsample;
+    job.whitted.subsample_unguarded = job.raycast.subsample_unguarded =
+        (uint32_t)app->opt.subsample_plain;
+    job.whitted.subsample_contrast = job.raycast.subsample_contrast = app->opt.contrast;
     job.pathtrace.seed = (uint32_t)app->opt.seed;
     job.pathtrace.resume = app->pt_spp > 0;
     job.voxel_view.level = app->voxel_level;
