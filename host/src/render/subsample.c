@@ -72,7 +72,7 @@ static int trace(vct_shaded *sh, cl_kernel k, int first_arg, sub_buffers *b, uin
                  vct_error *err) {
     int rc = vct_set_args(err, sh->stage, k, first_arg, 5, VCT_ARG_OF(b->points), VCT_ARG_OF(n),
                           VCT_ARG_OF(b->keys), VCT_ARG_OF(b->traced), VCT_ARG_OF(sh->frame));
-    return rc == VCT_OK ? vct_launch(sh->ctx, k, n, 16, err) : rc;
+    return rc == VCT_OK ? vct_launch(sh->ctx, k, n, 64, err) : rc;
 }
 
 int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_arg *own,
