@@ -68,14 +68,32 @@ static double stages_ms(const vct_context *ctx, const char *const *names, size_t
     return ms;
 }
 
-static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings *cfg,
-                            const vct_setting *vs, run *r) {
+/* A run: statistics reset, its start time, and the acceleration structure
+ * its rays go through. */
+static vct_accel *run_begin(vct_context *ctx, const vct_scene *s, const settings *cfg, double *t0) {
     vct_error err = {0};
     vct_stats_reset(ctx);
-    const double t0 = vct_now_ms();
+    *t0 = vct_now_ms();
     vct_accel *g = vct_accel_build(ctx, s, &cfg->accel, &err);
     if (!g)
         bench_die(&err);
+    return g;
+}
+
+/* Wall time, the acceleration build's device time and the total, once the
+ * render stage's time is in r. */
+static void run_end(vct_context *ctx, vct_accel *g, double t0, run *r) {
+    r->wall_ms = vct_now_ms() - t0;
+    r->accel_ms = stage_device_ms(ctx, "grid build") + stage_device_ms(ctx, "bvh build");
+    r->total_ms = r->accel_ms + r->render_ms;
+    vct_accel_free(g);
+}
+
+static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings *cfg,
+                            const vct_setting *vs, run *r) {
+    vct_error err = {0};
+    double t0;
+    vct_accel *g = run_begin(ctx, s, cfg, &t0);
     vct_plan plan;
     vct_plan_make(s, NULL, &plan);
     vct_voxel_options vo = {0};
@@ -132,28 +150,22 @@ static double pt_time_for(const run *runs, int n, double error) {
 static vct_image render_whitted(vct_context *ctx, const vct_scene *s, const settings *cfg,
                                 uint32_t n, int guarded, uint64_t *traced, run *r) {
     vct_error err = {0};
-    vct_stats_reset(ctx);
-    const double t0 = vct_now_ms();
-    vct_accel *g = vct_accel_build(ctx, s, &cfg->accel, &err);
-    if (!g)
-        bench_die(&err);
+    double t0;
+    vct_accel *g = run_begin(ctx, s, cfg, &t0);
     const vct_whitted_options o = {cfg->width, cfg->height, 8, 1e-3f, n, (uint32_t)!guarded, 0.0f};
     vct_whitted_result res = {0, 0, NULL};
     vct_image im;
     if (vct_render_whitted(ctx, s, g, &o, &im, &res, &err))
         bench_die(&err);
     *traced = res.traced_pixels;
-    r->wall_ms = vct_now_ms() - t0;
     r->render_ms = stage_device_ms(ctx, "whitted");
-    r->accel_ms = stage_device_ms(ctx, "grid build") + stage_device_ms(ctx, "bvh build");
     r->build_ms = 0.0;
-    r->total_ms = r->accel_ms + r->render_ms;
+    run_end(ctx, g, t0, r);
     if (n)
         snprintf(r->name, sizeof r->name, "whitted, subsample %u%s", n,
                  guarded ? "" : " (no guard)");
     else
         snprintf(r->name, sizeof r->name, "whitted");
-    vct_accel_free(g);
     return im;
 }
 
@@ -202,11 +214,8 @@ static int whitted_rows(vct_context *ctx, const vct_scene *s, const settings *cf
 static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cfg,
                         const char *method, uint32_t spp, uint32_t seed, run *r) {
     vct_error err = {0};
-    vct_stats_reset(ctx);
-    double t0 = vct_now_ms();
-    vct_accel *g = vct_accel_build(ctx, s, &cfg->accel, &err);
-    if (!g)
-        bench_die(&err);
+    double t0;
+    vct_accel *g = run_begin(ctx, s, cfg, &t0);
     vct_image im;
     if (strcmp(method, "pt") == 0) {
         vct_pathtrace_options o = {cfg->width, cfg->height,         spp, 0.0, 16,
@@ -221,10 +230,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
             bench_die(&err);
         r->render_ms = stage_device_ms(ctx, "ray cast");
     }
-    r->wall_ms = vct_now_ms() - t0;
-    r->accel_ms = stage_device_ms(ctx, "grid build") + stage_device_ms(ctx, "bvh build");
-    r->total_ms = r->accel_ms + r->render_ms;
-    vct_accel_free(g);
+    run_end(ctx, g, t0, r);
     return im;
 }
 

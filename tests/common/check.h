@@ -53,14 +53,32 @@ static inline vct_context *check_context(void) {
     return ctx;
 }
 
-/* The shipped Cornell box (glTF), from $VCT_SOURCE_DIR. */
-static inline vct_scene *check_cornell_box(void) {
+/* A scene file of the source tree (relative to $VCT_SOURCE_DIR). */
+static inline vct_scene *check_scene_file(const char *relative) {
     char path[1024];
     const char *src = getenv("VCT_SOURCE_DIR");
-    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", src ? src : ".");
+    snprintf(path, sizeof path, "%s/%s", src ? src : ".", relative);
     vct_error err = {0};
     vct_scene *s = vct_scene_load(path, &err);
     REQUIRE_OK(s ? VCT_OK : err.status, err);
+    return s;
+}
+
+/* The shipped Cornell box (glTF, lit by its emissive ceiling). */
+static inline vct_scene *check_cornell_box(void) {
+    return check_scene_file("scenes/cornell_box.gltf");
+}
+
+/* The Cornell box as an OBJ (no lights of its own) under the README's point
+ * light below the ceiling. */
+static inline vct_scene *check_cornell_box_point_light(void) {
+    vct_scene *s = check_scene_file("scenes/cornell_box.obj");
+    vct_light light = {0};
+    light.type = VCT_LIGHT_POINT;
+    light.position[0] = 278.0f, light.position[1] = 448.8f, light.position[2] = 279.5f;
+    light.color[0] = light.color[1] = light.color[2] = 6e5f;
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &light, &err), err);
     return s;
 }
 

@@ -89,17 +89,6 @@ static void check_same_as_raycast(vct_scene *s, const char *name) {
     vct_image_free(&r);
 }
 
-/* Fresnel reflectance for unpolarised light, eta = n_incident / n_transmitted. */
-static double fresnel(double cos_i, double eta) {
-    const double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
-    if (sin2_t >= 1.0)
-        return 1.0;
-    const double cos_t = sqrt(1.0 - sin2_t);
-    const double rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    const double rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    return 0.5 * (rs * rs + rp * rp);
-}
-
 static const float radiant[3] = {2.0f, 3.0f, 4.0f};
 
 /* Floor (x <= 1) under a point light, a metal mirror at x = 1 facing it. */
@@ -182,7 +171,7 @@ static void check_slab(double angle_deg, uint32_t depth, float cut, int terms) {
     s->camera = (vct_camera){
         {0, 0, 5}, {(float)(5.0 * sin(a)), 0, (float)(5.0 - 5.0 * cos(a))}, {0, 1, 0}, 30.0f};
     vct_image im = render(s, VCT_METHOD_WHITTED, 1, 1, depth, cut);
-    const double F = fresnel(cos(a), 1.0 / 1.5), T = (1 - F) * (1 - F);
+    const double F = check_fresnel(cos(a), 1.0 / 1.5), T = (1 - F) * (1 - F);
     double sum = 0.0, f2k = 1.0;
     for (int k = 0; k < terms; ++k, f2k *= F * F)
         sum += T * f2k;
@@ -212,7 +201,7 @@ static void check_total_reflection(double angle_deg, uint32_t depth) {
     s->camera =
         (vct_camera){{0, 0.5f, 0}, {(float)sin(a), (float)(0.5 + cos(a)), 0}, {0, 0, 1}, 30.0f};
     vct_image im = render(s, VCT_METHOD_WHITTED, 1, 1, depth, 0.0f);
-    const double F = fresnel(cos(a), 1.5), expect = 1.0 - F;
+    const double F = check_fresnel(cos(a), 1.5), expect = 1.0 - F;
     double worst = 0.0;
     for (int k = 0; k < 3; ++k) {
         const double e = radiant[k] * expect;
@@ -245,12 +234,8 @@ static vct_image render_sub(const vct_scene *s, int w, int h, uint32_t n, float 
  * interpolation of its square's corners. */
 static void check_subsampling(void) {
     const int W = 64, H = 48;
-    char path[1024];
-    const char *src = getenv("VCT_SOURCE_DIR");
-    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", src ? src : ".");
     vct_error err = {0};
-    vct_scene *box = vct_scene_load(path, &err);
-    REQUIRE_OK(box ? VCT_OK : err.status, err);
+    vct_scene *box = check_cornell_box();
     uint8_t *mask = malloc((size_t)W * H);
     uint64_t traced = 0, all = 0;
     vct_image full = render_sub(box, W, H, 0, 0.0f, mask, &all);
@@ -460,15 +445,11 @@ static void check_small_objects(void) {
 
 int main(void) {
     ctx = check_context();
-    vct_scene *box = check_cornell_box();
+    vct_scene *box = check_cornell_box_point_light();
     check_same_as_raycast(box, "cornell box");
     vct_scene_free(box);
-    char path[1024];
-    const char *src = getenv("VCT_SOURCE_DIR");
-    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", src ? src : ".");
     vct_error err = {0};
-    vct_scene *lit = vct_scene_load(path, &err);
-    REQUIRE_OK(lit ? VCT_OK : err.status, err);
+    vct_scene *lit = check_cornell_box();
     check_same_as_raycast(lit, "emissive cornell box");
     vct_scene_free(lit);
 
