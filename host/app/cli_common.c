@@ -125,3 +125,50 @@ int cli_print_accel(vct_context *ctx, const vct_accel *accel, FILE *out, vct_err
                 in.leaves, in.depth, in.sah_cost, in.bytes / 1048576.0, in.build_ms);
     return VCT_OK;
 }
+
+void cli_pm_options(const cli_options *opt, vct_pm_options *pm) {
+    const cli_pm *c = &opt->pm;
+    *pm = vct_pm_options_default(opt->width, opt->height);
+    pm->passes = (uint32_t)(opt->spp ? opt->spp : (opt->time_limit > 0 ? 0 : 64));
+    pm->time_limit_s = opt->time_limit;
+    if (opt->max_depth)
+        pm->max_depth = (uint32_t)opt->max_depth;
+    pm->seed = (uint32_t)opt->seed;
+    pm->progress = 1;
+    if (c->photons)
+        pm->photons_per_pass = (uint32_t)c->photons;
+    pm->radius = c->radius;
+    pm->caustic_radius = c->caustic_radius;
+    pm->fixed_radius = c->fixed;
+    if (c->has_alpha)
+        pm->alpha = c->alpha;
+    pm->final_gather = c->final_gather_rays > 0;
+    if (c->final_gather_rays)
+        pm->gather_rays = (uint32_t)c->final_gather_rays;
+    pm->direct_photons = c->direct_photons;
+    if (c->kernel_box)
+        pm->kernel = VCT_PM_KERNEL_BOX;
+    if (c->has_normal_cos)
+        pm->normal_cos = c->normal_cos;
+}
+
+void cli_print_pm(const vct_pm_result *r, FILE *out) {
+    fprintf(out, "photon mapping: %u passes, %llu photons emitted in %.2f s (%.2f M/s traced)\n",
+            r->passes, (unsigned long long)r->photons_emitted, r->seconds,
+            r->trace_ms > 0 ? r->photons_emitted / (r->trace_ms * 1e3) : 0.0);
+    const char *names[2] = {"global", "caustic"};
+    const int on[2] = {r->global_map, r->caustic_map};
+    for (int m = 0; m < 2; ++m) {
+        if (!on[m]) {
+            fprintf(out, "  %s map: none (%s)\n", names[m],
+                    m ? "nothing in the scene is a mirror or glass"
+                      : "the plan has no indirect light");
+            continue;
+        }
+        fprintf(out, "  %s map: %llu photons stored, last grid %s, cell %.4g, %.2f MiB\n", names[m],
+                (unsigned long long)r->photons_stored[m], r->hashed[m] ? "hashed" : "dense",
+                r->cell[m], r->grid_bytes[m] / 1048576.0);
+    }
+    fprintf(out, "  device time: photons %.1f ms, grids %.1f ms, gathers %.1f ms\n", r->trace_ms,
+            r->grid_ms, r->gather_ms);
+}

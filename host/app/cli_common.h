@@ -19,6 +19,9 @@ void cli_print_plan(const vct_plan *plan, FILE *out);
 /* The --accel structure for the scene, and one line on what it is. */
 vct_accel *cli_accel_build(vct_context *ctx, const vct_scene *s, const cli_options *opt,
                            vct_error *err);
+/* --method pm: the options from the command line, and the report. */
+void cli_pm_options(const cli_options *opt, vct_pm_options *pm);
+void cli_print_pm(const vct_pm_result *r, FILE *out);
 int cli_print_accel(vct_context *ctx, const vct_accel *accel, FILE *out, vct_error *err);
 
 #endif

@@ -90,7 +90,7 @@ int cmd_render(const cli_options *opt) {
     }
     const int method = vct_method_from_name(opt->method);
     if (method < 0 || method == VCT_METHOD_VOXELS) {
-        fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt, whitted)\n",
+        fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt, whitted, pm)\n",
                 opt->method);
         return 1;
     }
@@ -132,15 +132,20 @@ int cmd_render(const cli_options *opt) {
     job.whitted.subsample_contrast = job.raycast.subsample_contrast = opt->contrast;
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
+    cli_pm_options(opt, &job.pm);
     vct_render_result result = {0};
+    vct_pm_result pm = {0};
     int rc = !accel                     ? (int)err.status
              : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &err)
+             : method == VCT_METHOD_PM  ? vct_render_pm(ctx, s, accel, &job.pm, &image, &pm, &err)
                                         : vct_render(ctx, &job, &image, &result, &err);
     if (rc == VCT_OK && method == VCT_METHOD_WHITTED)
         fprintf(stderr, "whitted: %llu of %llu pixels traced (%.1f %% interpolated)\n",
                 (unsigned long long)result.traced,
                 (unsigned long long)opt->width * (unsigned long long)opt->height,
                 100.0 * (1.0 - (double)result.traced / ((double)opt->width * opt->height)));
+    if (rc == VCT_OK && method == VCT_METHOD_PM)
+        cli_print_pm(&pm, stderr);
     if (rc == VCT_OK && pt)
         fprintf(stderr,
                 "path tracing: %u spp in %.2f s (%.1f spp/s), %u samples discarded as "

@@ -54,6 +54,19 @@ void cli_usage(void) {
         "                                   smaller than the square touches (the seed's way);\n"
         "                                   --contrast C: corners whose radiance spreads by more\n"
         "                                   than C of their mean disagree too (default 0)\n"
+        "  --method pm                      photon mapping, progressive (SPPM): --spp N passes\n"
+        "                                   or --time S; --photons N per pass (131072);\n"
+        "                                   --pm-radius R, --pm-caustic-radius R: initial radii\n"
+        "                                   (default 1.5 %% and 0.75 %% of the scene's size);\n"
+        "                                   --pm-alpha A (2/3); --pm-fixed: the seed's fixed\n"
+        "                                   radii; --final-gather N: the global map read at the\n"
+        "                                   hits of N rays per pixel and pass; "
+        "--pm-direct-photons:\n"
+        "                                   direct light from photons too (no shadow rays);\n"
+        "                                   --pm-kernel box|epanechnikov (default);\n"
+        "                                   --pm-normal-filter C|off: photons whose normal's\n"
+        "                                   cosine with the surface's is below C are not\n"
+        "                                   counted (0.7); --max-depth, --seed as for pt\n"
         "  --size W H                       image size in pixels (default 512 512)\n"
         "  --camera-pos X Y Z  --look-at X Y Z  --up X Y Z  --fov DEGREES (vertical)\n"
         "  --point-light X Y Z R G B        radiant intensity in W/sr (repeatable)\n"
@@ -119,6 +132,64 @@ static int parse_int(int argc, char **argv, int *i, int lo, int hi, int *out) {
     return 0;
 }
 
+/* --method pm's options: 0 parsed, 1 a bad value, -1 not one of them. */
+static int parse_pm_option(int argc, char **argv, int *i, cli_pm *pm) {
+    const char *a = argv[*i];
+    if (strcmp(a, "--photons") == 0)
+        return parse_int(argc, argv, i, 1, 1 << 30, &pm->photons);
+    if (strcmp(a, "--final-gather") == 0)
+        return parse_int(argc, argv, i, 1, 1024, &pm->final_gather_rays);
+    if (strcmp(a, "--pm-fixed") == 0)
+        return pm->fixed = 1, 0;
+    if (strcmp(a, "--pm-direct-photons") == 0)
+        return pm->direct_photons = 1, 0;
+    if (strcmp(a, "--pm-radius") == 0 || strcmp(a, "--pm-caustic-radius") == 0) {
+        float *r = strcmp(a, "--pm-radius") == 0 ? &pm->radius : &pm->caustic_radius;
+        if (parse_floats(argc, argv, i, 1, r))
+            return 1;
+        if (!(*r > 0.0f)) {
+            fprintf(stderr, "vct: %s must be a positive distance\n", a);
+            return 1;
+        }
+        return 0;
+    }
+    if (strcmp(a, "--pm-alpha") == 0) {
+        if (parse_floats(argc, argv, i, 1, &pm->alpha))
+            return 1;
+        if (!(pm->alpha > 0.0f && pm->alpha <= 1.0f)) {
+            fprintf(stderr, "vct: --pm-alpha must be in (0, 1]\n");
+            return 1;
+        }
+        pm->has_alpha = 1;
+        return 0;
+    }
+    if (strcmp(a, "--pm-kernel") == 0) {
+        const char *v = *i + 1 < argc ? argv[++*i] : "";
+        if (strcmp(v, "box") && strcmp(v, "epanechnikov")) {
+            fprintf(stderr, "vct: --pm-kernel takes box or epanechnikov, not '%s'\n", v);
+            return 1;
+        }
+        pm->kernel_box = strcmp(v, "box") == 0;
+        return 0;
+    }
+    if (strcmp(a, "--pm-normal-filter") == 0) {
+        pm->has_normal_cos = 1;
+        if (*i + 1 < argc && strcmp(argv[*i + 1], "off") == 0) {
+            ++*i;
+            pm->normal_cos = -2.0f;
+            return 0;
+        }
+        if (parse_floats(argc, argv, i, 1, &pm->normal_cos))
+            return 1;
+        if (!(pm->normal_cos >= -1.0f && pm->normal_cos <= 1.0f)) {
+            fprintf(stderr, "vct: --pm-normal-filter takes a cosine in [-1, 1] or off\n");
+            return 1;
+        }
+        return 0;
+    }
+    return -1;
+}
+
 static int add_light(cli_options *opt, vct_light_type type, const float v[6]) {
     if (opt->light_count == MAX_CLI_LIGHTS) {
         fprintf(stderr, "vct: at most %d lights on the command line\n", MAX_CLI_LIGHTS);
@@ -182,7 +253,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
         return 1;
     }
     opt->command = argv[1];
-    for (int i = 2; i < argc; ++i) {
+    for (int i = 2, pm_rc; i < argc; ++i) {
         const char *a = argv[i];
         float v[6];
         int n = 0;
@@ -396,6 +467,9 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
         } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
             cli_usage();
             exit(0);
+        } else if ((pm_rc = parse_pm_option(argc, argv, &i, &opt->pm)) >= 0) {
+            if (pm_rc)
+                return 1;
         } else if (a[0] == '-' && a[1] != '\0') {
             fprintf(stderr, "vct: unknown option %s (see vct --help)\n", a);
             return 1;

@@ -6,6 +6,13 @@
 
 #define MAX_CLI_LIGHTS 16
 
+/* --method pm's options; 0 where not given (the library's defaults). */
+typedef struct cli_pm {
+    int photons, final_gather_rays, fixed, direct_photons, kernel_box;
+    float radius, caustic_radius, alpha, normal_cos;
+    int has_alpha, has_normal_cos;
+} cli_pm;
+
 typedef struct cli_options {
     const char *command;
     const char *inputs[2];
@@ -42,6 +49,7 @@ typedef struct cli_options {
     int diffuse_cones, bounces, sparse_diffuse;
     vct_cone_settings cones;
     const char *aov_prefix;
+    cli_pm pm;
 } cli_options;
 
 /* Parses argv into opt; on error prints the reason and returns non-zero. */

@@ -145,6 +145,7 @@ typedef enum vct_method {
     VCT_METHOD_PATHTRACE, /* unbiased path tracing */
     VCT_METHOD_VOXELS,    /* the voxels themselves, ray marched (needs voxels) */
     VCT_METHOD_WHITTED,   /* Whitted ray trees: mirrors, Fresnel refraction, hard shadows */
+    VCT_METHOD_PM,        /* photon mapping, progressive (SPPM) or with a fixed radius */
     VCT_METHODS
 } vct_method;
 
@@ -182,6 +183,62 @@ int vct_render_whitted(vct_context *ctx, const vct_scene *scene, const vct_accel
                        const vct_whitted_options *options, vct_image *image,
                        vct_whitted_result *result, vct_error *err);
 
+/* Photon mapping (seed 000, made progressive). Each pass traces the camera
+ * rays through mirrors and glass to their first diffuse or glossy hit,
+ * shoots photons_per_pass photons from the lights (by power), grids them
+ * (cell = radius) and gathers them at every such hit. Direct light comes
+ * from shadow rays, light with a specular bounce since its last diffuse one
+ * from the caustic map, the rest from the global map: by a density estimate
+ * at the hit or, with final_gather, at the hits of a few rays from it. */
+typedef enum vct_pm_kernel { VCT_PM_KERNEL_BOX, VCT_PM_KERNEL_EPANECHNIKOV } vct_pm_kernel;
+#define VCT_PM_DIRECT 1u  /* component: emission and direct light */
+#define VCT_PM_GLOBAL 2u  /* component: the global map (or final gathering) */
+#define VCT_PM_CAUSTIC 4u /* component: the caustic map */
+#define VCT_PM_ALL 7u
+typedef struct vct_pm_options {
+    int width, height;
+    uint32_t passes;           /* 0: run for time_limit_s */
+    double time_limit_s;       /* used when passes is 0 */
+    uint32_t photons_per_pass; /* photon paths per pass (default 131072) */
+    uint32_t max_depth;        /* camera and photon bounces (default 16) */
+    /* Gather radii in world units, initial (progressive) or fixed; 0: from
+     * the scene's size (1.5 % and 0.75 % of its largest side). */
+    float radius, caustic_radius;
+    /* 0: progressive, each pixel's radius shrinking by alpha (Hachisuka and
+     * Jensen; default 2/3, as pbrt-v4); 1: the seed's fixed radii. */
+    int fixed_radius;
+    float alpha;
+    int final_gather;     /* 1: the global map read by final gathering */
+    uint32_t gather_rays; /* final-gathering rays per pixel and pass (default 8) */
+    int direct_photons;   /* 1: direct light from the photons too (the seed's way) */
+    vct_pm_kernel kernel; /* default VCT_PM_KERNEL_EPANECHNIKOV */
+    /* Photons whose surface normal's cosine with the point's is below this
+     * are not counted (seed 000's filter); default 0.7, -2 counts all. */
+    float normal_cos;
+    uint32_t components; /* VCT_PM_* bits to show; 0: all */
+    uint32_t seed;       /* same seed and passes: same image, bit for bit */
+    int progress;        /* progress bar on a terminal's stderr */
+    /* 1: go on from the previous call's statistics on this context (same
+     * scene, camera, size and settings); 0: start over. */
+    int resume;
+} vct_pm_options;
+/* Defaults as above, at width x height, 64 passes. */
+vct_pm_options vct_pm_options_default(int width, int height);
+typedef struct vct_pm_result {
+    uint32_t passes;
+    uint64_t photons_emitted;                     /* photon paths, all passes */
+    uint64_t photons_stored[2];                   /* global, caustic: all passes */
+    int global_map, caustic_map;                  /* which maps the scene called for */
+    int hashed[2];                                /* the last pass's grids: 1 where hashed */
+    uint64_t grid_bytes[2];                       /* their device memory */
+    float cell[2];                                /* their cell edge */
+    double seconds, trace_ms, grid_ms, gather_ms; /* wall time; per-part device time */
+} vct_pm_result;
+/* result may be NULL. */
+int vct_render_pm(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                  const vct_pm_options *options, vct_image *image, vct_pm_result *result,
+                  vct_error *err);
+
 /* The ray caster's options are the historical vct_render_options. */
 typedef vct_render_options vct_raycast_options;
 
@@ -204,6 +261,7 @@ typedef struct vct_render_job {
     vct_raycast_options raycast;
     vct_whitted_options whitted;
     vct_pathtrace_options pathtrace;
+    vct_pm_options pm;
     vct_vct_options vct;
     vct_voxel_view_options voxel_view;
 } vct_render_job;
@@ -212,9 +270,10 @@ typedef struct vct_render_result {
     vct_method method;
     int width, height;
     double seconds;     /* host wall time of the call */
-    uint32_t spp;       /* path tracing: samples per pixel in the frame */
+    uint32_t spp;       /* path tracing: samples per pixel; photon mapping: passes */
     uint32_t discarded; /* path tracing: non-finite samples dropped */
     uint64_t traced;    /* Whitted: pixels traced (the rest interpolated) */
+    uint64_t photons;   /* photon mapping: photon paths emitted */
 } vct_render_result;
 
 /* A job with every method's defaults (vct_vct_options_default, 64 spp,

@@ -10,22 +10,10 @@
 #include "accel/accel.h"
 #include "light/emitters.h"
 #include "render/frame.h"
+#include "render/progress.h"
 #include "scene/scene_device.h"
 
 #define STAGE "path trace"
-
-static void progress_line(uint32_t done, uint32_t total, double elapsed_s, double limit_s) {
-    const int width = 30;
-    double frac = total ? (double)done / total : 0.0;
-    if (limit_s > 0.0)
-        frac = fmax(frac, fmin(elapsed_s / limit_s, 1.0));
-    int filled = (int)(frac * width + 0.5);
-    double rate = elapsed_s > 0.0 ? done / elapsed_s : 0.0;
-    double left = frac > 0.0 ? elapsed_s * (1.0 - frac) / frac : 0.0;
-    fprintf(stderr, "\r[%.*s%*s] %u spp, %.1f spp/s, %.0f s left ", filled,
-            "##############################", width - filled, "", done, rate, left);
-    fflush(stderr);
-}
 
 static void pathtrace_release(vct_context *ctx) {
     vct_buffer_release(ctx, ctx->pt_accum);
@@ -133,7 +121,7 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_accel *
         done += n;
         sample += n;
         if (show)
-            progress_line(done, opt->spp, (vct_now_ms() - t0) * 1e-3, opt->time_limit_s);
+            vct_progress_line(done, opt->spp, (vct_now_ms() - t0) * 1e-3, opt->time_limit_s, "spp");
     }
     if (show)
         fputc('\n', stderr);

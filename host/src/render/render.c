@@ -5,7 +5,8 @@
 
 #include "runtime/runtime.h"
 
-static const char *const method_names[VCT_METHODS] = {"vct", "raycast", "pt", "voxels", "whitted"};
+static const char *const method_names[VCT_METHODS] = {"vct",    "raycast", "pt",
+                                                      "voxels", "whitted", "pm"};
 
 const char *vct_method_name(vct_method method) {
     return method >= 0 && method < VCT_METHODS ? method_names[method] : "?";
@@ -33,6 +34,7 @@ vct_render_job vct_render_job_default(vct_method method, int width, int height) 
     job.pathtrace.spp = 64;
     job.pathtrace.max_depth = 16;
     job.pathtrace.samples_per_pass = 1;
+    job.pm = vct_pm_options_default(width, height);
     job.vct = vct_vct_options_default();
     job.vct.width = width;
     job.vct.height = height;
@@ -52,6 +54,9 @@ void vct_render_job_size(const vct_render_job *job, int *width, int *height) {
         break;
     case VCT_METHOD_WHITTED:
         *width = job->whitted.width, *height = job->whitted.height;
+        break;
+    case VCT_METHOD_PM:
+        *width = job->pm.width, *height = job->pm.height;
         break;
     case VCT_METHOD_VOXELS:
         *width = job->voxel_view.width, *height = job->voxel_view.height;
@@ -100,6 +105,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
     int rc = job_check(job, err);
     vct_pathtrace_result pt = {0};
     vct_whitted_result wr = {0, 0, NULL};
+    vct_pm_result pm = {0};
     if (rc == VCT_OK) {
         switch (job->method) {
         case VCT_METHOD_RAYCAST:
@@ -111,6 +117,9 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
         case VCT_METHOD_PATHTRACE:
             rc =
                 vct_render_pathtrace(ctx, job->scene, job->accel, &job->pathtrace, image, &pt, err);
+            break;
+        case VCT_METHOD_PM:
+            rc = vct_render_pm(ctx, job->scene, job->accel, &job->pm, image, &pm, err);
             break;
         case VCT_METHOD_VOXELS: {
             vct_voxel_info info;
@@ -133,7 +142,8 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
         result->width = image->width;
         result->height = image->height;
         result->seconds = (vct_now_ms() - start) * 1e-3;
-        result->spp = pt.spp;
+        result->spp = job->method == VCT_METHOD_PM ? pm.passes : pt.spp;
+        result->photons = pm.photons_emitted;
         result->discarded = pt.discarded;
         result->traced = wr.traced_pixels;
     }

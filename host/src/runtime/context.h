@@ -56,6 +56,7 @@ struct vct_context {
     cl_mem pt_accum, pt_discarded;
     int pt_size[2];
     uint32_t pt_done;
+    void *pm_state; /* photon mapping's per-pixel statistics (render/sppm.c) */
     /* What higher stages keep in the context, released with it: each stage
      * registers its own release, so the runtime calls up into none of them. */
     vct_release_hook release_hooks[VCT_MAX_RELEASE_HOOKS];
