@@ -159,7 +159,13 @@ static int scene_has_specular(const vct_scene *s) {
     return 0;
 }
 
-static int options_check(const vct_pm_options *o, const vct_scene_frame *f, vct_error *err) {
+static int options_check(const vct_scene *s, const vct_pm_options *o, const vct_scene_frame *f,
+                         vct_error *err) {
+    if (s->light_count == 0 && vct_scene_emissive_triangles(s) == 0)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: the scene has no lights and nothing emits: add a light "
+                        "(--point-light, --dir-light) or an emissive material",
+                        STAGE);
     if (o->passes == 0 && !(o->time_limit_s > 0.0))
         return vct_fail(err, VCT_ERR_INPUT, "%s: give a pass count (--spp) or a time (--time)",
                         STAGE);
@@ -393,7 +399,7 @@ int vct_render_pm(vct_context *ctx, const vct_scene *s, const vct_accel *accel,
     r.opt = opt;
     int rc = plan_maps(&r, err);
     if (rc == VCT_OK)
-        rc = options_check(opt, &r.frame, err);
+        rc = options_check(s, opt, &r.frame, err);
     if (rc == VCT_OK)
         rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &r.cam, err);
     if (rc != VCT_OK)
