@@ -5,7 +5,7 @@
  *
  * usage: accuracy SCENE|heavy [--reference REF.pfm] [--reference-spp N]
  *                 [--size W H] [--max-spp N] [--out DIR] [--no-vct] [--quick]
- *                 [--ambient R G B] [--accel bvh|grid] [--whitted]
+ *                 [--ambient R G B] [--accel bvh|grid] [--whitted] [--pm]
  * Without --reference, a path-traced reference of --reference-spp samples
  * (default 2048, a different seed from the runs) is rendered and saved.
  * "heavy" is bench/heavy_scene.h's 102,430-triangle scene. Voxel cone
@@ -41,6 +41,7 @@ typedef struct settings {
     int has_ambient;
     float ambient[3];
     int whitted;
+    int pm;
     vct_accel_options accel;
 } settings;
 
@@ -143,6 +144,53 @@ static double pt_time_for(const run *runs, int n, double error) {
         prev = &runs[i];
     }
     return 0.0;
+}
+
+/* Photon mapping after `passes` passes: progressive (SPPM), with the
+ * seed's fixed radii, or progressive with final gathering. */
+typedef enum pm_kind { PM_PROGRESSIVE, PM_FIXED, PM_FINAL_GATHER } pm_kind;
+
+static vct_image render_pm(vct_context *ctx, const vct_scene *s, const settings *cfg, pm_kind kind,
+                           uint32_t passes, run *r) {
+    static const char *const names[] = {"photon mapping, progressive",
+                                        "photon mapping, fixed radius",
+                                        "photon mapping, final gathering"};
+    vct_error err = {0};
+    double t0;
+    vct_accel *g = run_begin(ctx, s, cfg, &t0);
+    vct_pm_options o = vct_pm_options_default(cfg->width, cfg->height);
+    o.passes = passes;
+    o.fixed_radius = kind == PM_FIXED;
+    o.final_gather = kind == PM_FINAL_GATHER;
+    vct_image im;
+    if (vct_render_pm(ctx, s, g, &o, &im, NULL, &err))
+        bench_die(&err);
+    r->render_ms = stage_device_ms(ctx, "photon mapping");
+    r->build_ms = 0.0;
+    run_end(ctx, g, t0, r);
+    snprintf(r->name, sizeof r->name, "%s, %u passes", names[kind], passes);
+    return im;
+}
+
+static int pm_rows(vct_context *ctx, const vct_scene *s, const settings *cfg, const vct_image *ref,
+                   run *runs, int n) {
+    static const struct {
+        pm_kind kind;
+        uint32_t passes;
+    } rows[] = {{PM_PROGRESSIVE, 1},  {PM_PROGRESSIVE, 4},  {PM_PROGRESSIVE, 16},
+                {PM_PROGRESSIVE, 64}, {PM_FIXED, 4},        {PM_FIXED, 16},
+                {PM_FIXED, 64},       {PM_FINAL_GATHER, 4}, {PM_FINAL_GATHER, 16}};
+    vct_error err = {0};
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0] && n < MAX_RUNS; ++i) {
+        vct_image im = render_pm(ctx, s, cfg, rows[i].kind, rows[i].passes, &runs[n]);
+        if (vct_image_compare(&im, ref, &runs[n].m, &err))
+            bench_die(&err);
+        vct_image_free(&im);
+        fprintf(stderr, "%-48s %9.1f ms  NRMSE %.4f\n", runs[n].name, runs[n].total_ms,
+                runs[n].m.nrmse);
+        ++n;
+    }
+    return n;
 }
 
 /* Whitted ray tracing, subsampled at n (0: every pixel), guarded or not;
@@ -307,7 +355,7 @@ static void write_outputs(const settings *cfg, const run *runs, int n, const cha
 }
 
 int main(int argc, char **argv) {
-    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1, 0, 0, {0, 0, 0}, 0, {0}};
+    settings cfg = {NULL, NULL, "out/accuracy", 128, 128, 2048, 256, 1, 0, 0, {0, 0, 0}, 0, 0, {0}};
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--reference") == 0 && i + 1 < argc)
             cfg.reference = argv[++i];
@@ -322,6 +370,8 @@ int main(int argc, char **argv) {
             cfg.out = argv[++i];
         else if (strcmp(argv[i], "--whitted") == 0)
             cfg.whitted = 1;
+        else if (strcmp(argv[i], "--pm") == 0)
+            cfg.pm = 1;
         else if (strcmp(argv[i], "--quick") == 0)
             cfg.quick = 1;
         else if (strcmp(argv[i], "--accel") == 0 && i + 1 < argc) {
@@ -342,7 +392,7 @@ int main(int argc, char **argv) {
         else {
             fprintf(stderr, "usage: accuracy SCENE [--reference REF.pfm] [--reference-spp N] "
                             "[--size W H] [--max-spp N] [--out DIR] [--no-vct] [--quick] "
-                            "[--ambient R G B] [--accel bvh|grid] [--whitted]\n");
+                            "[--ambient R G B] [--accel bvh|grid] [--whitted] [--pm]\n");
             return 2;
         }
     }
@@ -404,6 +454,8 @@ int main(int argc, char **argv) {
     }
     if (cfg.whitted)
         n = whitted_rows(ctx, s, &cfg, &ref, runs, n);
+    if (cfg.pm)
+        n = pm_rows(ctx, s, &cfg, &ref, runs, n);
     /* The default (128^3, 6 cones, step 1, anisotropic, 2 bounces) and one
      * setting changed at a time. */
     static const vct_setting vct_runs[] = {

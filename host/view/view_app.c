@@ -10,8 +10,8 @@
 /* Bounce gathering uses the 6-cone preset, as vct_vct_prepare does. */
 #define BOUNCE_CONES 6u
 
-static const char *const METHOD_NAMES[VIEW_METHODS] = {"ray cast", "VCT", "path tracer", "voxels",
-                                                       "Whitted"};
+static const char *const METHOD_NAMES[VIEW_METHODS] = {"ray cast", "VCT",     "path tracer",
+                                                       "voxels",   "Whitted", "photon mapping"};
 
 static int input_error(vct_error *err, const char *fmt, const char *what) {
     err->status = VCT_ERR_INPUT;
@@ -44,9 +44,10 @@ int view_app_init(view_app *app, const cli_options *opt, vct_error *err) {
                   : strcmp(m, "pt") == 0      ? VIEW_PATHTRACE
                   : strcmp(m, "voxels") == 0  ? VIEW_VOXELS
                   : strcmp(m, "whitted") == 0 ? VIEW_WHITTED
+                  : strcmp(m, "pm") == 0      ? VIEW_PM
                                               : VIEW_VCT;
     if (strcmp(m, "vct") != 0 && app->method == VIEW_VCT)
-        return input_error(err, "unknown --method %s (vct, raycast, pt, voxels, whitted)", m);
+        return input_error(err, "unknown --method %s (vct, raycast, pt, voxels, whitted, pm)", m);
     memcpy(app->force, opt->force, sizeof app->force);
     app->width = opt->width;
     app->height = opt->height;
@@ -149,12 +150,15 @@ static void summarise_stages(view_app *app) {
                                  i ? ", " : "", st[i].name, st[i].host_ms);
 }
 
+int view_app_progressive(const view_app *app) {
+    return app->method == VIEW_PATHTRACE || app->method == VIEW_PM;
+}
+
 static int render_method(view_app *app, vct_image *image, vct_error *err) {
-    static const vct_method methods[] = {[VIEW_RAYCAST] = VCT_METHOD_RAYCAST,
-                                         [VIEW_VCT] = VCT_METHOD_VCT,
-                                         [VIEW_PATHTRACE] = VCT_METHOD_PATHTRACE,
-                                         [VIEW_VOXELS] = VCT_METHOD_VOXELS,
-                                         [VIEW_WHITTED] = VCT_METHOD_WHITTED};
+    static const vct_method methods[] = {
+        [VIEW_RAYCAST] = VCT_METHOD_RAYCAST,     [VIEW_VCT] = VCT_METHOD_VCT,
+        [VIEW_PATHTRACE] = VCT_METHOD_PATHTRACE, [VIEW_VOXELS] = VCT_METHOD_VOXELS,
+        [VIEW_WHITTED] = VCT_METHOD_WHITTED,     [VIEW_PM] = VCT_METHOD_PM};
     vct_render_job job = vct_render_job_default(methods[app->method], app->width, app->height);
     job.scene = app->scene;
     job.accel = app->accel;
@@ -175,15 +179,22 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     job.pathtrace.seed = (uint32_t)app->opt.seed;
     job.pathtrace.resume = app->pt_spp > 0;
     job.voxel_view.level = app->voxel_level;
+    /* Photon mapping likewise: one pass per frame. */
+    cli_pm_options(&app->opt, &job.pm);
+    job.pm.width = app->width;
+    job.pm.height = app->height;
+    job.pm.passes = 1;
+    job.pm.progress = 0;
+    job.pm.resume = app->pt_spp > 0;
     vct_render_result result;
     const int rc = vct_render(app->ctx, &job, image, &result, err);
-    if (app->method == VIEW_PATHTRACE)
+    if (view_app_progressive(app))
         app->pt_spp = rc == VCT_OK ? result.spp : 0;
     return rc;
 }
 
 int view_app_wants_frame(const view_app *app) {
-    return app->dirty || (app->method == VIEW_PATHTRACE && app->pt_spp < VIEW_PT_MAX_SPP);
+    return app->dirty || (view_app_progressive(app) && app->pt_spp < VIEW_PT_MAX_SPP);
 }
 
 int view_app_render(view_app *app, vct_error *err) {
@@ -260,8 +271,9 @@ void view_app_status(const view_app *app, const char *display_path, char *out, s
             used += (size_t)snprintf(plan + used, sizeof plan - used, "%s%s", used ? " " : "",
                                      vct_effect_name((vct_effect)e));
     char extra[64] = "";
-    if (app->method == VIEW_PATHTRACE)
-        snprintf(extra, sizeof extra, " %u spp", app->pt_spp);
+    if (view_app_progressive(app))
+        snprintf(extra, sizeof extra, app->method == VIEW_PM ? " %u passes" : " %u spp",
+                 app->pt_spp);
     else if (app->method == VIEW_VOXELS)
         snprintf(extra, sizeof extra, " level %u/%u", app->voxel_level, app->voxel_levels);
     snprintf(out, size, "vct-view | %s%s | %dx%d %.0f ms (%s) | plan: %s | %s",

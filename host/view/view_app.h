@@ -13,6 +13,7 @@ typedef enum view_method {
     VIEW_PATHTRACE, /* progressive: one sample per pixel per frame, summed */
     VIEW_VOXELS,    /* the voxels of one octree level */
     VIEW_WHITTED,   /* Whitted ray trees */
+    VIEW_PM,        /* photon mapping: one pass per frame, progressive */
     VIEW_METHODS
 } view_method;
 
@@ -35,7 +36,7 @@ typedef struct view_app {
     int width, height; /* the frame's size */
     int dirty;         /* the frame is out of date */
     int light_moved;   /* the voxels' light is out of date */
-    uint32_t pt_spp;   /* samples in the progressive frame */
+    uint32_t pt_spp;   /* samples (photon mapping: passes) in the progressive frame */
     double frame_ms;
     char stages[256]; /* ms per stage of the last frame */
 } view_app;
@@ -48,6 +49,8 @@ int view_app_attach(view_app *app, vct_context *ctx, vct_error *err);
 void view_app_free(view_app *app);
 /* Whether another frame is wanted now (changes, or a path tracer still converging). */
 int view_app_wants_frame(const view_app *app);
+/* The path tracer and photon mapping: frames add to the previous ones. */
+int view_app_progressive(const view_app *app);
 /* Renders one frame into the context's frame at app->width x app->height. */
 int view_app_render(view_app *app, vct_error *err);
 

@@ -26,7 +26,8 @@ typedef struct viewer {
 static void usage(void) {
     fputs(
         "usage: vct-view SCENE [--capture OUT.png] [--keys K,K,...] [--display auto|interop|host]\n"
-        "                [render options of `vct render`: --method vct|raycast|pt|voxels,\n"
+        "                [render options of `vct render`: --method "
+        "vct|raycast|pt|voxels|whitted|pm,\n"
         "                --size, --effect, --voxel-res, --cones, ...]\n"
         "  --capture OUT.png   render one frame, read the window back into OUT.png, exit\n"
         "  --keys LIST         keys pressed before the first frame (1, F1, [, left, r, ...),\n"
@@ -202,7 +203,7 @@ static int render_frame(viewer *v, int print) {
         fprintf(stderr, "vct-view: %s\n", err.message);
         snprintf(title, sizeof title, "vct-view | error: %.400s", err.message);
         app->dirty = 0;
-        if (app->method == VIEW_PATHTRACE)
+        if (view_app_progressive(app))
             app->pt_spp = VIEW_PT_MAX_SPP;
     }
     glfwSetWindowTitle(v->display.window, title);

@@ -180,6 +180,11 @@ static int options_check(const vct_scene *s, const vct_pm_options *o, const vct_
         if (!(radii[m] >= 0.0f) || !isfinite(radii[m]))
             return vct_fail(err, VCT_ERR_INPUT, "%s: %s %g must be a positive distance", STAGE,
                             flag, radii[m]);
+        if (radii[m] > 0.0f && radii[m] < 1e-6f * f->extent)
+            return vct_fail(err, VCT_ERR_INPUT,
+                            "%s: %s %g is below what positions in a scene %g across can tell "
+                            "apart: give at least %g",
+                            STAGE, flag, radii[m], f->extent, 1e-6f * f->extent);
         if (radii[m] > f->extent)
             return vct_fail(err, VCT_ERR_INPUT,
                             "%s: %s %g is larger than the scene (%g across): give a radius "
@@ -269,6 +274,8 @@ static int photon_pass(vct_context *ctx, sppm_run *r, cl_uint pass, float fg_rad
             cell = r->r0[m];
         if (m == GLOBAL && r->opt->final_gather)
             cell = fg_radius;
+        /* Cells stay countable in ints however far the radii shrink. */
+        cell = fmaxf(cell, 1e-6f * r->frame.extent);
         rc = vct_photon_grid_build(ctx, STAGE, &r->slots, masks[m], cell, r->frame.lo, r->frame.hi,
                                    &r->grid[m], err);
         st->stored[m] += r->grid[m].count;
