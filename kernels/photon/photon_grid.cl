@@ -1,31 +1,48 @@
-/* The photon grid, built as the triangle grid is (seed 000 §2.3): the slots
- * of the wanted kinds flagged, scanned and written as (cell key, slot)
- * pairs, sorted by key, the photons copied in key order, and each key's
+/* The photon grid, built as the triangle grid is (seed 000 §2.3): each
+ * path's photons of the wanted kinds counted, scanned and written as (cell
+ * key, slot) pairs, sorted by key, the photons copied in key order, and each key's
  * range found where the sorted keys change. */
 #include "photon/photon.h"
 #include "vct_types.h"
 
-__kernel void photon_flags(__global const uint *kinds, uint slots, uint kind_mask,
-                           __global uint *flags) {
-    const uint i = get_global_id(0);
-    if (i < slots)
-        flags[i] = (kinds[i] & kind_mask) != 0u ? 1u : 0u;
+/* Photons of the wanted kinds per path (a path's photons fill its first slots). */
+__kernel void photon_counts(__global const uint *kinds, uint paths, uint depth, uint kind_mask,
+                            __global uint *counts) {
+    const uint p = get_global_id(0);
+    if (p >= paths)
+        return;
+    uint n = 0;
+    for (uint k = 0; k < depth; ++k) {
+        const uint kind = kinds[p * depth + k];
+        if (kind == 0u)
+            break;
+        n += (kind & kind_mask) != 0u ? 1u : 0u;
+    }
+    counts[p] = n;
 }
 
-/* offsets: the exclusive scan of photon_flags. */
-__kernel void photon_keys(__global const float4 *records, __global const uint *kinds, uint slots,
-                          uint kind_mask, __global const uint *offsets, float4 origin, uint4 dims,
-                          __global uint *keys, __global uint *ids) {
-    const uint i = get_global_id(0);
-    if (i >= slots || !(kinds[i] & kind_mask))
+/* offsets: the exclusive scan of photon_counts. Each path writes its
+ * photons' (key, slot) pairs in slot order. */
+__kernel void photon_keys(__global const float4 *records, __global const uint *kinds, uint paths,
+                          uint depth, uint kind_mask, __global const uint *offsets, float4 origin,
+                          uint4 dims, __global uint *keys, __global uint *ids) {
+    const uint p = get_global_id(0);
+    if (p >= paths)
         return;
-    const int3 c = photon_cell_of(origin, records[3u * i].xyz);
     /* A photon on the grid's far faces belongs to the last cell. */
     const int3 last = convert_int3((uint3)(dims.x, dims.y, dims.z)) - 1;
-    const int3 cell = dims.w != 0u ? c : clamp(c, (int3)(0), last);
-    const uint o = offsets[i];
-    keys[o] = photon_cell_key(origin, dims, cell);
-    ids[o] = i;
+    uint o = offsets[p];
+    for (uint k = 0; k < depth; ++k) {
+        const uint i = p * depth + k, kind = kinds[i];
+        if (kind == 0u)
+            break;
+        if (!(kind & kind_mask))
+            continue;
+        const int3 c = photon_cell_of(origin, records[3u * i].xyz);
+        const int3 cell = dims.w != 0u ? c : clamp(c, (int3)(0), last);
+        keys[o] = photon_cell_key(origin, dims, cell);
+        ids[o++] = i;
+    }
 }
 
 __kernel void photon_reorder(__global const float4 *records, __global const uint *ids, uint count,

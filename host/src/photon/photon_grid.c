@@ -1,4 +1,4 @@
-/* Photon grid build: flags, scan, keys, sort, reorder, ranges. */
+/* Photon grid build: counts per path, scan, keys, sort, reorder, ranges. */
 #include <math.h>
 #include <string.h>
 
@@ -61,19 +61,20 @@ int vct_photon_grid_build(vct_context *ctx, const char *stage, const vct_photon_
     const double t0 = vct_now_ms();
     cl_program p;
     int rc = vct_program_get(ctx, "photon/photon_grid.cl", "", &p, err);
-    const cl_uint n = slots->paths * slots->depth;
+    const cl_uint paths = slots->paths, depth = slots->depth;
     if (rc == VCT_OK)
-        rc = ensure(ctx, stage, "photon flags", &g->flags, &g->slot_capacity, n, 4, err);
+        rc = ensure(ctx, stage, "photon counts", &g->counts, &g->slot_capacity, paths, 4, err);
     if (rc == VCT_OK) {
         size_t cap = g->slot_capacity;
-        rc = ensure(ctx, stage, "photon offsets", &g->offsets, &cap, n, 4, err);
+        rc = ensure(ctx, stage, "photon offsets", &g->offsets, &cap, paths, 4, err);
     }
     if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, p, "photon_flags", stage, n, err, 4, VCT_ARG_OF(slots->kinds),
-                            VCT_ARG_OF(n), VCT_ARG_OF(kind_mask), VCT_ARG_OF(g->flags));
+        rc = vct_run_kernel(ctx, p, "photon_counts", stage, paths, err, 5, VCT_ARG_OF(slots->kinds),
+                            VCT_ARG_OF(paths), VCT_ARG_OF(depth), VCT_ARG_OF(kind_mask),
+                            VCT_ARG_OF(g->counts));
     uint64_t total = 0;
     if (rc == VCT_OK)
-        rc = vct_scan_u32(ctx, g->flags, g->offsets, n, 0, &total, err);
+        rc = vct_scan_u32(ctx, g->counts, g->offsets, paths, 0, &total, err);
     g->count = (uint32_t)total;
     layout(g, cell, lo, hi, total);
     if (rc == VCT_OK)
@@ -89,10 +90,11 @@ int vct_photon_grid_build(vct_context *ctx, const char *stage, const vct_photon_
         rc = ensure(ctx, stage, "photon grid ranges", &g->ranges, &g->table_capacity, g->table, 8,
                     err);
     if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, p, "photon_keys", stage, n, err, 9, VCT_ARG_OF(slots->records),
-                            VCT_ARG_OF(slots->kinds), VCT_ARG_OF(n), VCT_ARG_OF(kind_mask),
-                            VCT_ARG_OF(g->offsets), VCT_ARG_OF(g->origin), VCT_ARG_OF(g->dims),
-                            VCT_ARG_OF(g->keys), VCT_ARG_OF(g->ids));
+        rc =
+            vct_run_kernel(ctx, p, "photon_keys", stage, paths, err, 10, VCT_ARG_OF(slots->records),
+                           VCT_ARG_OF(slots->kinds), VCT_ARG_OF(paths), VCT_ARG_OF(depth),
+                           VCT_ARG_OF(kind_mask), VCT_ARG_OF(g->offsets), VCT_ARG_OF(g->origin),
+                           VCT_ARG_OF(g->dims), VCT_ARG_OF(g->keys), VCT_ARG_OF(g->ids));
     const cl_uint count = g->count;
     if (rc == VCT_OK && count > 1)
         rc = vct_sort_pairs_u32(ctx, g->keys, g->ids, count, vct_key_bits_for(g->table), err);
@@ -120,7 +122,7 @@ uint64_t vct_photon_grid_bytes(const vct_photon_grid *g) {
 }
 
 void vct_photon_grid_release(vct_context *ctx, vct_photon_grid *g) {
-    cl_mem *mems[] = {&g->photons, &g->ranges, &g->keys, &g->ids, &g->flags, &g->offsets};
+    cl_mem *mems[] = {&g->photons, &g->ranges, &g->keys, &g->ids, &g->counts, &g->offsets};
     for (size_t i = 0; i < sizeof mems / sizeof *mems; ++i) {
         vct_buffer_release(ctx, *mems[i]);
         *mems[i] = NULL;
