@@ -50,6 +50,7 @@ static void throughput(vct_context *ctx, const char *name, const vct_scene *s) {
         o.fixed_radius = 1;
         vct_pm_result r;
         vct_image im;
+        vct_stats_reset(ctx); /* a long event record slows every launch */
         if (vct_render_pm(ctx, s, a, &o, &im, &r, &err))
             bench_die(&err);
         const double stored = (double)(r.photons_stored[0] + r.photons_stored[1]);

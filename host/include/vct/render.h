@@ -202,7 +202,8 @@ typedef struct vct_pm_options {
     uint32_t photons_per_pass; /* photon paths per pass (default 131072) */
     uint32_t max_depth;        /* camera and photon bounces (default 16) */
     /* Gather radii in world units, initial (progressive) or fixed; 0: from
-     * the scene's size (1.5 % and 0.75 % of its largest side). */
+     * the scene's size: 1.5 % of its largest side, the caustic radius the
+     * same when progressive and half that when fixed. */
     float radius, caustic_radius;
     /* 0: progressive, each pixel's radius shrinking by alpha (Hachisuka and
      * Jensen; default 2/3, as pbrt-v4); 1: the seed's fixed radii. */

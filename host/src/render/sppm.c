@@ -373,7 +373,11 @@ static int plan_maps(sppm_run *r, vct_error *err) {
         r->store_mask |= VCT_PHOTON_CAUSTIC;
     vct_scene_frame_of(r->scene, &r->frame);
     r->r0[GLOBAL] = o->radius > 0.0f ? o->radius : 0.015f * r->frame.extent;
-    r->r0[CAUSTIC] = o->caustic_radius > 0.0f ? o->caustic_radius : 0.0075f * r->frame.extent;
+    /* Progressive radii shrink fastest where photons are densest, caustics
+     * first, so both maps start alike; fixed radii follow the seed, whose
+     * caustic radius was about half the global one. */
+    const float caustic_share = o->fixed_radius ? 0.5f : 1.0f;
+    r->r0[CAUSTIC] = o->caustic_radius > 0.0f ? o->caustic_radius : caustic_share * r->r0[GLOBAL];
     (void)err;
     return VCT_OK;
 }
