@@ -8,9 +8,12 @@
  * deposits a photon, of the kinds in store_mask, into its own slots
  * path * max_depth + k: no atomics, and the same slots on every run.
  *
- * sources: per light, then one entry for all emitters: x = the cumulative
- * pick probability, y = 1 / its own, z = the light's index (as bits; ~0 for
- * the emitters). bounds: the scene's bounding sphere. */
+ * sources: per light, then one entry for all emitters and one for the
+ * environment: x = the cumulative pick probability, y = 1 / its own, z = the
+ * light's index (as bits; ~0 for the emitters, ~1 for the environment).
+ * bounds: the scene's bounding sphere; ambient: the environment's radiance,
+ * which arrives from every direction: its photons come in along a uniform
+ * direction through a disk covering the scene. */
 #include "accel/accel.h"
 #include "light/direct_light.h"
 #include "light/emitters.h"
@@ -21,6 +24,8 @@
 #include "vct_types.h"
 
 #define PHOTON_PI 3.14159265f
+#define SOURCE_EMITTERS 0xffffffffu
+#define SOURCE_ENVIRONMENT 0xfffffffeu
 
 /* A unit vector about axis w: cos_theta given, phi = 2 pi u. */
 inline float3 photon_dir_about(float3 w, float cos_theta, float u) {
@@ -31,14 +36,31 @@ inline float3 photon_dir_about(float3 w, float cos_theta, float u) {
 }
 
 /* A photon's start: origin, direction and power, for light source `src`. */
+/* A photon entering along d through the disk of the bounding sphere facing
+ * it: a directional light's, or the environment's for a uniform d. */
+inline float3 photon_from_disk(float4 bounds, float3 d, float u1, float u2) {
+    float3 t, b;
+    basis_of(d, &t, &b);
+    const float rad = bounds.w * sqrt(u1);
+    return bounds.xyz - d * (2.0f * bounds.w) + rad * (cospi(2.0f * u2) * t + sinpi(2.0f * u2) * b);
+}
+
 inline int photon_emit(const accel_view *g, __global const vct_light_desc *lights, float4 source,
                        const emitter_view *e, __global const vct_material_desc *materials,
-                       __global const uint *tri_material, float4 bounds, uint *rng, float3 *org,
-                       float3 *dir, float3 *power) {
+                       __global const uint *tri_material, float4 bounds, float4 ambient, uint *rng,
+                       float3 *org, float3 *dir, float3 *power) {
     const uint index = as_uint(source.z);
     const float inv_p = source.y;
     const float u1 = rng_next(rng), u2 = rng_next(rng);
-    if (index == 0xffffffffu) {
+    const float disk = PHOTON_PI * bounds.w * bounds.w;
+    if (index == SOURCE_ENVIRONMENT) {
+        *dir = photon_dir_about((float3)(0.0f, 0.0f, 1.0f), 1.0f - 2.0f * rng_next(rng),
+                                rng_next(rng));
+        *org = photon_from_disk(bounds, *dir, u1, u2);
+        *power = ambient.xyz * (4.0f * PHOTON_PI * disk * inv_p);
+        return 1;
+    }
+    if (index == SOURCE_EMITTERS) {
         const uint i = emitter_pick(e, fmin(rng_next(rng), 0.99999994f));
         const uint tri = e->tris[i];
         float3 a, b, c;
@@ -62,14 +84,9 @@ inline int photon_emit(const accel_view *g, __global const vct_light_desc *light
     const vct_light_desc L = lights[index];
     const uint kind = (uint)L.position.w;
     if (kind == VCT_LIGHT_KIND_DIRECTIONAL) {
-        const float3 d = L.direction.xyz;
-        float3 t, b;
-        basis_of(d, &t, &b);
-        const float rad = bounds.w * sqrt(u1);
-        *org = bounds.xyz - d * (2.0f * bounds.w) +
-               rad * (cospi(2.0f * u2) * t + sinpi(2.0f * u2) * b);
-        *dir = d;
-        *power = L.color.xyz * (PHOTON_PI * bounds.w * bounds.w * inv_p);
+        *dir = L.direction.xyz;
+        *org = photon_from_disk(bounds, *dir, u1, u2);
+        *power = L.color.xyz * (disk * inv_p);
         return 1;
     }
     *org = L.position.xyz;
@@ -95,8 +112,8 @@ __kernel void photon_trace(ACCEL_ARGS, __global const vct_material_desc *materia
                            __global const vct_light_desc *lights, __global const float4 *sources,
                            uint source_count, __global const uint *emitter_tris,
                            __global const float *emitter_cdf, __global const float *emitter_scale,
-                           uint emitter_count, float4 bounds, uint seed, uint pass, uint paths,
-                           uint max_depth, uint store_mask, __global float4 *records,
+                           uint emitter_count, float4 bounds, float4 ambient, uint seed, uint pass,
+                           uint paths, uint max_depth, uint store_mask, __global float4 *records,
                            __global uint *kinds) {
     const uint path = get_global_id(0);
     if (path >= paths)
@@ -111,8 +128,8 @@ __kernel void photon_trace(ACCEL_ARGS, __global const vct_material_desc *materia
         ++src;
     float3 org, dir, power;
     uint stored = 0;
-    if (photon_emit(&g, lights, sources[src], &e, materials, tri_material, bounds, &rng, &org, &dir,
-                    &power)) {
+    if (photon_emit(&g, lights, sources[src], &e, materials, tri_material, bounds, ambient, &rng,
+                    &org, &dir, &power)) {
         uint specular = 0;
         for (uint bounce = 0; bounce < max_depth; ++bounce) {
             hit_record h;

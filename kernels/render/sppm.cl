@@ -50,16 +50,16 @@ inline int delta_only(const vct_material_desc *m) {
     return is_dielectric(m) || (is_mirror(m) && glossy_probability(m) >= 1.0f);
 }
 
-/* The emitters' light by one BSDF-sampled ray, weighted against the
- * emitter sample by the power heuristic as in the path tracer: the two
- * together keep the variance low both near a large emitter (where the BSDF
- * finds it) and far from a small one (where the emitter sample does). */
-inline float3 emitter_by_bsdf(const accel_view *g, const emitters *e,
-                              __global const vct_material_desc *materials,
-                              __global const uint *tri_material, const texture_view *tv,
-                              const vct_material_desc *m, float3 p, float3 n, float3 wo, int front,
-                              uint *rng) {
-    if (e->view.count == 0)
+/* One BSDF-sampled ray: the emitter it reaches, weighted against the emitter
+ * sample by the power heuristic as in the path tracer (the two together keep
+ * the variance low near a large emitter, where the BSDF finds it, and far
+ * from a small one, where the emitter sample does), or the environment
+ * where it escapes, which only this ray finds. */
+inline float3 direct_by_bsdf(const accel_view *g, const emitters *e,
+                             __global const vct_material_desc *materials,
+                             __global const uint *tri_material, const vct_material_desc *m,
+                             float3 p, float3 n, float3 wo, int front, float3 ambient, uint *rng) {
+    if (e->view.count == 0 && all(ambient == 0.0f))
         return (float3)(0.0f);
     bsdf_sample bs;
     const float u0 = rng_next(rng), u1 = rng_next(rng), u2 = rng_next(rng);
@@ -68,11 +68,11 @@ inline float3 emitter_by_bsdf(const accel_view *g, const emitters *e,
     hit_record h;
     const float3 o = p + (dot(bs.wi, n) > 0.0f ? n : -n) * surface_epsilon(g, p);
     if (!accel_trace(g, o, bs.wi, 0.0f, INFINITY, 0, &h))
-        return (float3)(0.0f);
+        return bs.weight * ambient;
     const float3 Le = materials[tri_material[h.tri]].emission.xyz;
     float3 q, ng, nq;
     int fr;
-    if (all(Le == 0.0f) || !surface_hit(g, &h, bs.wi, &q, &ng, &nq, &fr))
+    if (e->view.count == 0 || all(Le == 0.0f) || !surface_hit(g, &h, bs.wi, &q, &ng, &nq, &fr))
         return (float3)(0.0f);
     const float3 d = q - p;
     const float pdf_light = e->inv_area * dot(d, d) / fabs(dot(ng, bs.wi));
@@ -124,8 +124,8 @@ sppm_visible(ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *
                 radiance += beta * nee_punctual(&g, lights, light_count, &m, p, n, wo, &rng);
                 radiance +=
                     beta * nee_emitters(&g, &em, materials, tri_material, &m, p, n, wo, 1, &rng);
-                radiance += beta * emitter_by_bsdf(&g, &em, materials, tri_material, &tv, &m, p, n,
-                                                   wo, front, &rng);
+                radiance += beta * direct_by_bsdf(&g, &em, materials, tri_material, &m, p, n, wo,
+                                                  front, ambient.xyz, &rng);
             }
             vp_pos = (float4)(p, 1.0f);
             vp_n = (float4)(n, 0.0f);

@@ -123,7 +123,7 @@ expect_failure "negative light radius" "radius -1" render ok.obj --point-light 0
 expect_failure "sun radius of a radian or more" "below 1 radian" render ok.obj --dir-light 0 -1 0 1 1 1 --light-radius 1.5 -o out.png
 expect_failure "bad cone step" "cone step" render ok.obj --ambient 1 1 1 --cone-step 0 -o out.png
 expect_failure "too many bounces" "not an integer in 1..4" render ok.obj --bounces 9 -o out.png
-expect_failure "photon mapping without light" "no lights and nothing emits" render ok.obj --method pm --size 8 8 -o out.png
+expect_failure "photon mapping without light" "no lights, nothing emits" render ok.obj --method pm --size 8 8 -o out.png
 expect_failure "photon radius larger than the scene" "larger than the scene" render ok.obj --method pm --point-light 0 0 1 1 1 1 --pm-radius 50 --size 8 8 -o out.png
 expect_failure "zero photon radius" "positive distance" render ok.obj --method pm --point-light 0 0 1 1 1 1 --pm-radius 0 -o out.png
 expect_failure "photon radius below precision" "can tell" render ok.obj --method pm --point-light 0 0 1 1 1 1 --pm-radius 1e-9 --size 8 8 -o out.png

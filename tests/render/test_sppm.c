@@ -9,6 +9,8 @@
  *   image, I R cos / d'^2 * albedo / pi from the mirrored light;
  * - a glass sphere over a plane under a small area light: the caustic
  *   region against the path tracer;
+ * - a plane under a uniform sky: a L, by escaping BSDF rays and by the
+ *   environment's photons;
  * - corners of a closed box: with the normal filter no brighter than the
  *   path tracer's, without it brighter (the difference printed);
  * - the same seed and passes: the same image; resumed calls continue;
@@ -380,7 +382,7 @@ static void bad_input(vct_context *ctx) {
     vct_scene *dark = quads_scene(&CUBE[0][0], mats, 6, &m, 1);
     vct_pm_options o = vct_pm_options_default(8, 8);
     o.passes = 1;
-    refused(ctx, dark, &o, "no lights and nothing emits", "a scene without light");
+    refused(ctx, dark, &o, "no lights, nothing emits", "a scene without light");
     vct_scene *s = check_cornell_box();
     o.radius = 1e6f;
     refused(ctx, s, &o, "larger than the scene", "a radius larger than the scene");
@@ -394,9 +396,39 @@ static void bad_input(vct_context *ctx) {
     vct_scene_free(s);
 }
 
+/* A plane under a uniform sky of radiance L: radiance a L, from the BSDF
+ * rays that escape (default) and from the environment's photons alone (the
+ * seed's mode, where every photon is a direct one). */
+static void sky(vct_context *ctx) {
+    const float a = 0.6f, L = 0.5f;
+    vct_scene *s = plane_scene(a, 1.0f, 0.0f);
+    s->light_count = 0; /* the sky alone */
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = L;
+    const double expect = a * L;
+    vct_pm_options o = vct_pm_options_default(16, 16);
+    o.passes = 32;
+    o.photons_per_pass = 1u << 15;
+    vct_image im = render(ctx, s, &o, NULL);
+    const double by_rays = channel_mean(&im, 0);
+    vct_image_free(&im);
+    o.direct_photons = 1;
+    o.radius = 0.1f;
+    im = render(ctx, s, &o, NULL);
+    const double by_photons = channel_mean(&im, 0);
+    vct_image_free(&im);
+    printf("plane under a sky: %.5f by BSDF rays, %.5f by photons, exact %.5f\n", by_rays,
+           by_photons, expect);
+    CHECK(fabs(by_rays - expect) < 0.02 * expect, "sky by rays: %.5f, expected %.5f", by_rays,
+          expect);
+    CHECK(fabs(by_photons - expect) < 0.03 * expect, "sky by photons: %.5f, expected %.5f",
+          by_photons, expect);
+    vct_scene_free(s);
+}
+
 int main(void) {
     vct_context *ctx = check_context();
     furnace(ctx);
+    sky(ctx);
     plane_convergence(ctx);
     mirror_caustic(ctx);
     glass_caustic(ctx);

@@ -8,8 +8,8 @@
 #include "photon/photon_trace.h"
 
 typedef struct vct_photon_grid {
-    cl_mem photons;                   /* 3 float4 each, in key order */
-    cl_mem ranges;                    /* uint2 per key */
+    cl_mem photons;                    /* 3 float4 each, in key order */
+    cl_mem ranges;                     /* uint2 per key */
     cl_mem keys, ids, counts, offsets; /* build scratch, kept for the next pass */
     size_t photon_capacity, key_capacity, table_capacity, slot_capacity;
     cl_float4 origin; /* w: cell edge */

@@ -1,4 +1,5 @@
-/* Photon sources: each light's power, the emitters' as one source. */
+/* Photon sources: each light's power, the emitters' as one source, the
+ * environment (the scene's ambient) as another. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,7 +36,7 @@ int vct_photon_sources_make(vct_context *ctx, const vct_scene *s, const char *st
     int rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_POWER, stage, &out->emitters, err);
     if (rc != VCT_OK)
         return rc;
-    const uint32_t n = s->light_count + 1;
+    const uint32_t n = s->light_count + 2;
     double *w = calloc(n, sizeof *w);
     cl_float4 *table = calloc(n, sizeof *table);
     uint32_t *index = calloc(n, sizeof *index);
@@ -53,10 +54,19 @@ int vct_photon_sources_make(vct_context *ctx, const vct_scene *s, const char *st
         w[count] = out->emitters.power * 2.0 * PI; /* two-sided, cosine: pi per side */
         index[count++] = 0xffffffffu;
     }
+    const double sky = (double)s->ambient[0] + s->ambient[1] + s->ambient[2];
+    if (rc == VCT_OK && sky > 0.0) {
+        /* radiance from every direction through the disk: L 4 pi (pi R^2) */
+        w[count] = sky * 4.0 * PI * PI * (double)out->bounds.s[3] * out->bounds.s[3];
+        index[count++] = 0xfffffffeu;
+    }
+    for (int k = 0; k < 3; ++k)
+        out->ambient.s[k] = s->ambient[k];
     if (rc == VCT_OK && count == 0)
         rc = vct_fail(err, VCT_ERR_INPUT,
-                      "%s: the scene has no lights and nothing emits, so no photons can be "
-                      "shot: add a light (--point-light, --dir-light) or an emissive material",
+                      "%s: the scene has no lights, nothing emits and it has no sky, so no "
+                      "photons can be shot: add a light (--point-light, --dir-light, --ambient) "
+                      "or an emissive material",
                       stage);
     double total = 0.0;
     for (uint32_t i = 0; i < count; ++i)

@@ -1,5 +1,6 @@
-/* Where photons come from: every light and the emissive triangles, picked
- * in proportion to the power they send (kernels/photon/photon_trace.cl). */
+/* Where photons come from: every light, the emissive triangles and the
+ * environment (the scene's ambient radiance), picked in proportion to the
+ * power they send (kernels/photon/photon_trace.cl). */
 #ifndef VCT_PHOTON_SOURCES_H
 #define VCT_PHOTON_SOURCES_H
 
@@ -11,6 +12,7 @@ typedef struct vct_photon_sources {
     cl_uint count;         /* lights that send power, plus 1 when something emits */
     vct_emitters emitters; /* picked by power */
     cl_float4 bounds;      /* the scene's bounding sphere, for directional lights */
+    cl_float4 ambient;     /* the environment's radiance */
     double power;          /* total emitted power (sum over channels), W */
 } vct_photon_sources;
 

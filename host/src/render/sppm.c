@@ -161,10 +161,11 @@ static int scene_has_specular(const vct_scene *s) {
 
 static int options_check(const vct_scene *s, const vct_pm_options *o, const vct_scene_frame *f,
                          vct_error *err) {
-    if (s->light_count == 0 && vct_scene_emissive_triangles(s) == 0)
+    const int sky = s->ambient[0] > 0.0f || s->ambient[1] > 0.0f || s->ambient[2] > 0.0f;
+    if (s->light_count == 0 && vct_scene_emissive_triangles(s) == 0 && !sky)
         return vct_fail(err, VCT_ERR_INPUT,
-                        "%s: the scene has no lights and nothing emits: add a light "
-                        "(--point-light, --dir-light) or an emissive material",
+                        "%s: the scene has no lights, nothing emits and it has no sky: add a "
+                        "light (--point-light, --dir-light, --ambient) or an emissive material",
                         STAGE);
     if (o->passes == 0 && !(o->time_limit_s > 0.0))
         return vct_fail(err, VCT_ERR_INPUT, "%s: give a pass count (--spp) or a time (--time)",
