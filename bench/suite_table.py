@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Gathers bench/suite.sh's per-scene accuracy.csv files into one Markdown
 table: scene x method x setting -> NRMSE, mean ratio, device time, and the
-path tracer's time to reach each cone-traced image's error."""
+path tracer's time to reach each cone-traced or photon-mapped image's
+error."""
 import csv
 import math
 import os
@@ -39,10 +40,14 @@ def main():
             continue
         rows = list(csv.DictReader(open(path)))
         keep = [r for r in rows if r["setting"].startswith(("ray cast", "vct"))
-                or r["setting"] in ("path trace 16 spp", "path trace 256 spp")]
+                or r["setting"] in ("path trace 16 spp", "path trace 256 spp",
+                                    "photon mapping, progressive, 16 passes",
+                                    "photon mapping, progressive, 64 passes",
+                                    "photon mapping, fixed radius, 16 passes",
+                                    "photon mapping, final gathering, 16 passes")]
         for r in keep:
             to = ""
-            if r["setting"].startswith("vct"):
+            if r["setting"].startswith(("vct", "photon")):
                 t = pt_time_for(rows, float(r["nrmse"]))
                 to = f"{t:.0f} ms" if t else "not reached by 1024 spp"
             print(f"| {name} | {r['setting']} | {float(r['nrmse']):.3f} | "

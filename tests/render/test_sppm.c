@@ -13,6 +13,8 @@
  *   environment's photons;
  * - corners of a closed box: with the normal filter no brighter than the
  *   path tracer's, without it brighter (the difference printed);
+ * - a wall of zero thickness between a lit and a dark room: the dark room
+ *   gets at most what the gather radius reaches across the wall's foot;
  * - the same seed and passes: the same image; resumed calls continue;
  * - bad input refused with a message. */
 #include <math.h>
@@ -425,6 +427,56 @@ static void sky(vct_context *ctx) {
     vct_scene_free(s);
 }
 
+/* Two closed rooms sharing one wall of zero thickness, a light in the first,
+ * the camera in the second, looking at the wall and the floor under it: the
+ * second room is black for the path tracer. Photon mapping may only let in
+ * what a disk of the gather radius reaches across the wall's foot, and less
+ * as the radius shrinks. */
+static double dark_room_mean(vct_context *ctx, const vct_scene *s, uint32_t passes,
+                             float normal_cos) {
+    vct_pm_options o = vct_pm_options_default(24, 24);
+    o.passes = passes;
+    o.photons_per_pass = 1u << 15;
+    o.normal_cos = normal_cos;
+    vct_image im = render(ctx, s, &o, NULL);
+    const double m = channel_mean(&im, 0);
+    vct_image_free(&im);
+    return m;
+}
+
+static void thin_wall(vct_context *ctx) {
+    /* x in [-2, 0] and [0, 2], y in [0, 2], z in [-1, 1]; the wall x = 0. */
+    const float q[11][12] = {
+        {-2, 0, -1, -2, 0, 1, 0, 0, 1, 0, 0, -1},   {0, 0, -1, 0, 0, 1, 2, 0, 1, 2, 0, -1},
+        {-2, 2, -1, 0, 2, -1, 0, 2, 1, -2, 2, 1},   {0, 2, -1, 2, 2, -1, 2, 2, 1, 0, 2, 1},
+        {-2, 0, -1, 0, 0, -1, 0, 2, -1, -2, 2, -1}, {0, 0, -1, 2, 0, -1, 2, 2, -1, 0, 2, -1},
+        {-2, 0, 1, -2, 2, 1, 0, 2, 1, 0, 0, 1},     {0, 0, 1, 0, 2, 1, 2, 2, 1, 2, 0, 1},
+        {-2, 0, -1, -2, 2, -1, -2, 2, 1, -2, 0, 1}, {2, 0, -1, 2, 0, 1, 2, 2, 1, 2, 2, -1},
+        {0, 0, -1, 0, 2, -1, 0, 2, 1, 0, 0, 1}};
+    const uint32_t mats[11] = {0};
+    vct_material m = grey(0.7f);
+    vct_scene *s = quads_scene(&q[0][0], mats, 11, &m, 1);
+    vct_light l = {0};
+    l.type = VCT_LIGHT_POINT;
+    l.position[0] = -1.0f, l.position[1] = 1.0f;
+    l.color[0] = l.color[1] = l.color[2] = 2.0f;
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &l, &err), err);
+    s->camera = (vct_camera){{1.6f, 1.2f, 0.0f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 60.0f};
+    const double early = dark_room_mean(ctx, s, 4, 0.7f), late = dark_room_mean(ctx, s, 64, 0.7f);
+    const double unfiltered = dark_room_mean(ctx, s, 64, -2.0f);
+    s->camera = (vct_camera){{-1.6f, 1.2f, 0.0f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 60.0f};
+    const double lit = dark_room_mean(ctx, s, 4, 0.7f);
+    printf("thin wall: the dark room's mean radiance is %.3g %% of the lit room's after 4 passes, "
+           "%.3g %% after 64 (%.3g %% without the normal filter)\n",
+           100.0 * early / lit, 100.0 * late / lit, 100.0 * unfiltered / lit);
+    CHECK(late < 0.005 * lit, "light through the wall: %.4g against %.4g in the lit room", late,
+          lit);
+    CHECK(late < early || early == 0.0, "the leak does not shrink with the radius: %.4g, %.4g",
+          early, late);
+    vct_scene_free(s);
+}
+
 int main(void) {
     vct_context *ctx = check_context();
     furnace(ctx);
@@ -433,6 +485,7 @@ int main(void) {
     mirror_caustic(ctx);
     glass_caustic(ctx);
     corners(ctx);
+    thin_wall(ctx);
     determinism(ctx);
     bad_input(ctx);
     vct_context_destroy(ctx);
