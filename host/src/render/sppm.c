@@ -62,7 +62,7 @@ vct_pm_options vct_pm_options_default(int width, int height) {
     o.alpha = 2.0f / 3.0f;
     o.gather_rays = 8;
     o.kernel = VCT_PM_KERNEL_EPANECHNIKOV;
-    o.normal_cos = 0.7f;
+    o.normal_cos = 0.0f;
     return o;
 }
 
