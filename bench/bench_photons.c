@@ -9,7 +9,8 @@
  *      path-traced reference (whose own noise sets a floor under both).
  *
  * usage: bench_photons [--reference REF.pfm] [--reference-spp N] [--size W H]
- * (run from the source tree, or with VCT_SOURCE_DIR set). */
+ * (run from the source tree, or with VCT_SOURCE_DIR set, after
+ * python3 scenes/suite/make_suite.py has written the suite's scenes). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,8 +27,12 @@ static vct_scene *load(const char *relative) {
     snprintf(path, sizeof path, "%s/%s", src, relative);
     vct_error err = {0};
     vct_scene *s = vct_scene_load(path, &err);
-    if (!s)
-        bench_die(&err);
+    if (!s) {
+        fprintf(stderr, "bench_photons: %s (the suite's scenes are written by "
+                        "python3 scenes/suite/make_suite.py)\n",
+                err.message);
+        exit(1);
+    }
     return s;
 }
 

@@ -12,6 +12,8 @@ glTF file cannot hold, is given as --ambient).
   dense_hall        a 10^5-triangle bumpy sphere in a large hall, one lamp
   lamp_room         a living room lit by two emissive lamp shades and a
                     small point light, single-quad furniture wound either way
+  small_objects     200 beads of 1.5 cm (diffuse, mirror and glass) before a
+                    wall under a point light: a few pixels each on screen
 """
 import math
 import os
@@ -204,7 +206,27 @@ def lamp_room():
     s.write(os.path.join(OUT, "lamp_room.gltf"))
 
 
+def small_objects():
+    s = Scene()
+    wall = s.material("wall", (0.75, 0.74, 0.7))
+    floor = s.material("floor", (0.3, 0.32, 0.35))
+    beads = [s.material("red bead", (0.8, 0.1, 0.08)),
+             s.material("steel bead", (0.9, 0.9, 0.9), roughness=0.0, metallic=1.0),
+             s.material("glass bead", (1, 1, 1), roughness=0.0, transmission=1.0, ior=1.5),
+             s.material("green bead", (0.1, 0.6, 0.15))]
+    s.quads(floor, [[(-2, 0, -1), (-2, 0, 2), (2, 0, 2), (2, 0, -1)]])
+    s.quads(wall, [[(-2, 0, 0), (2, 0, 0), (2, 2, 0), (-2, 2, 0)]])
+    for i in range(20):
+        for j in range(10):
+            x, y = -1.14 + 0.12 * i, 0.3 + 0.12 * j
+            s.sphere(beads[(i + j) % 4], (x, y, 0.25), 0.015, rings=6, segments=10)
+    s.point_light((0.5, 1.8, 1.6), 4.0, (1.0, 0.95, 0.9))
+    s.look((0, 0.9, 3.2), (0, 0.85, 0), 42, aspect=4 / 3)
+    s.write(os.path.join(OUT, "small_objects.gltf"))
+
+
 if __name__ == "__main__":
-    for make in (atrium, window_room, glass_mirror_box, blinds_fins, dense_hall, lamp_room):
+    for make in (atrium, window_room, glass_mirror_box, blinds_fins, dense_hall, lamp_room,
+                 small_objects):
         make()
         print("wrote", make.__name__)
