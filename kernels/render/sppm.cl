@@ -172,12 +172,19 @@ __kernel void sppm_gather(__global const float4 *vp, uint pixels,
     if (!visible_point_get(vp, i, materials, &v))
         return;
     const photon_grid g = PHOTON_GRID_VIEW(map);
-    const float r = radius[i];
+    const float4 s = stats[i];
+    float r = radius[i];
+    /* A pixel that has found no photon yet has nothing to keep consistent
+     * with its radius: it follows the grid down to two cells, so that its
+     * search never spans many more cells than the others'. */
+    if (s.w == 0.0f && r > 2.0f * g.origin.w) {
+        r = 2.0f * g.origin.w;
+        radius[i] = r;
+    }
     uint found;
     const float3 phi = photon_estimate(&g, v.p, v.n, v.wo, r, &v.m, flags, normal_cos, &found);
     if (found == 0u)
         return;
-    const float4 s = stats[i];
     const float n_new = s.w + alpha * (float)found;
     const float r_new = r * sqrt(n_new / (s.w + (float)found));
     const float shrink = (r_new * r_new) / (r * r);
