@@ -65,6 +65,10 @@ typedef struct vct_light_bins_desc {
     vct_u4 info;  /* x: its first cell, y: F, z: distance bits, w: 1 if it has bins */
 } vct_light_bins_desc;
 
+/* Below this roughness a glossy lobe is an ideal mirror (a delta lobe), on
+ * both sides: the BSDF (kernels/scene/bsdf.h) and the host's choices. */
+#define VCT_MIRROR_ROUGHNESS 0.02f
+
 typedef struct vct_material_desc {
     vct_f4 albedo;   /* rgb; w = metallic */
     vct_f4 emission; /* rgb; w = roughness */
@@ -114,11 +118,11 @@ typedef struct vct_cone_dir {
  * the device's own layout by tests/runtime/test_abi.c. S(type, size),
  * F(type, field, offset). */
 #define VCT_ABI_LAYOUT(S, F)                                                                       \
-    S(vct_accel_desc, 64)                                                                           \
-    F(vct_accel_desc, origin, 0)                                                                    \
-    F(vct_accel_desc, cell_size, 16)                                                                \
-    F(vct_accel_desc, inv_cell, 32)                                                                 \
-    F(vct_accel_desc, res, 48)                                                                      \
+    S(vct_accel_desc, 64)                                                                          \
+    F(vct_accel_desc, origin, 0)                                                                   \
+    F(vct_accel_desc, cell_size, 16)                                                               \
+    F(vct_accel_desc, inv_cell, 32)                                                                \
+    F(vct_accel_desc, res, 48)                                                                     \
     S(vct_camera_desc, 80)                                                                         \
     F(vct_camera_desc, position, 0)                                                                \
     F(vct_camera_desc, forward, 16)                                                                \

@@ -141,10 +141,8 @@ __kernel void photon_trace(ACCEL_ARGS, __global const vct_material_desc *materia
                 break;
             vct_material_desc m = materials[tri_material[h.tri]];
             m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
-            const int delta_only =
-                is_dielectric(&m) || (is_mirror(&m) && glossy_probability(&m) >= 1.0f);
             const float3 wo = -dir;
-            if (!delta_only) {
+            if (!bsdf_delta_only(&m)) {
                 const uint kind =
                     specular ? PHOTON_CAUSTIC : (bounce == 0u ? PHOTON_DIRECT : PHOTON_INDIRECT);
                 if (kind & store_mask) {

@@ -63,7 +63,7 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                 radiance += throughput * m.emission.xyz * w;
             }
             /* Next-event estimation (delta lobes cannot be lit this way). */
-            if (!is_dielectric(&m) && !(is_mirror(&m) && glossy_probability(&m) >= 1.0f)) {
+            if (!bsdf_delta_only(&m)) {
                 radiance += throughput * nee_punctual(&g, lights, light_count, &m, p, n, wo, &rng);
                 radiance += throughput *
                             nee_emitters(&g, &em, materials, tri_material, &m, p, n, wo, 1, &rng);

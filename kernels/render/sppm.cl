@@ -46,10 +46,6 @@ inline int visible_point_get(__global const float4 *vp, uint pixel,
     return 1;
 }
 
-inline int delta_only(const vct_material_desc *m) {
-    return is_dielectric(m) || (is_mirror(m) && glossy_probability(m) >= 1.0f);
-}
-
 /* One BSDF-sampled ray: the emitter it reaches, weighted against the emitter
  * sample by the power heuristic as in the path tracer (the two together keep
  * the variance low near a large emitter, where the BSDF finds it, and far
@@ -119,7 +115,7 @@ sppm_visible(ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *
         m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
         radiance += beta * m.emission.xyz;
         const float3 wo = -dir;
-        if (!delta_only(&m)) {
+        if (!bsdf_delta_only(&m)) {
             if (direct_mode) {
                 radiance += beta * nee_punctual(&g, lights, light_count, &m, p, n, wo, &rng);
                 radiance +=
@@ -230,7 +226,7 @@ __kernel void sppm_final_gather(ACCEL_ARGS, __global const vct_material_desc *ma
             continue;
         vct_material_desc m = materials[tri_material[h.tri]];
         m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
-        if (delta_only(&m))
+        if (bsdf_delta_only(&m))
             continue;
         uint found;
         float3 l = photon_estimate(&gg, p, n, -bs.wi, radius, &m, flags, normal_cos, &found);

@@ -8,7 +8,6 @@
 #include "vct_types.h"
 
 #define BSDF_PI 3.14159265f
-#define MIRROR_ROUGHNESS 0.02f
 
 typedef struct bsdf_sample {
     float3 wi;
@@ -54,7 +53,13 @@ inline int is_dielectric(const vct_material_desc *m) {
 }
 
 inline int is_mirror(const vct_material_desc *m) {
-    return glossy_probability(m) > 0.0f && m->emission.w < MIRROR_ROUGHNESS;
+    return glossy_probability(m) > 0.0f && m->emission.w < VCT_MIRROR_ROUGHNESS;
+}
+
+/* Only delta lobes (glass, a pure mirror): nothing for next-event
+ * estimation or a density estimate to see. */
+inline int bsdf_delta_only(const vct_material_desc *m) {
+    return is_dielectric(m) || (is_mirror(m) && glossy_probability(m) >= 1.0f);
 }
 
 /* f(wo, wi) cos(wi) and the pdf of sampling wi, for the non-delta lobes. */

@@ -17,7 +17,6 @@
 #include "scene/scene_device.h"
 
 #define STAGE "photon mapping"
-#define MIRROR_ROUGHNESS 0.02f /* kernels/scene/bsdf.h */
 
 enum { GLOBAL, CAUSTIC, MAPS };
 
@@ -92,7 +91,8 @@ static int same_settings(const vct_pm_options *a, const vct_pm_options *b) {
            a->normal_cos == b->normal_cos && a->seed == b->seed;
 }
 
-static cl_mem pixel_buffer(vct_context *ctx, const char *what, size_t bytes, int *rc,
+/* A buffer of bytes / 4 words, each set to `fill` (a uint or a float's bits). */
+static cl_mem pixel_buffer(vct_context *ctx, const char *what, size_t bytes, uint32_t fill, int *rc,
                            vct_error *err) {
     if (*rc != VCT_OK)
         return NULL;
@@ -100,7 +100,7 @@ static cl_mem pixel_buffer(vct_context *ctx, const char *what, size_t bytes, int
     if (!m)
         *rc = err->status;
     else
-        *rc = vct_buffer_fill_u32(ctx, STAGE, m, 0, bytes / 4, err);
+        *rc = vct_buffer_fill_u32(ctx, STAGE, m, fill, bytes / 4, err);
     return m;
 }
 
@@ -120,22 +120,15 @@ static int state_get(vct_context *ctx, sppm_run *r, vct_error *err) {
     st->settings = *o;
     const size_t px = (size_t)o->width * o->height;
     int rc = VCT_OK;
-    st->vp = pixel_buffer(ctx, "visible points", 80 * px, &rc, err);
-    st->direct_sum = pixel_buffer(ctx, "direct light sums", 16 * px, &rc, err);
-    st->fg_sum = pixel_buffer(ctx, "final gathering sums", 16 * px, &rc, err);
-    st->radius_max = pixel_buffer(ctx, "largest radii", 8, &rc, err);
+    st->vp = pixel_buffer(ctx, "visible points", 80 * px, 0, &rc, err);
+    st->direct_sum = pixel_buffer(ctx, "direct light sums", 16 * px, 0, &rc, err);
+    st->fg_sum = pixel_buffer(ctx, "final gathering sums", 16 * px, 0, &rc, err);
+    st->radius_max = pixel_buffer(ctx, "largest radii", 8, 0, &rc, err);
     for (int m = 0; m < MAPS; ++m) {
-        st->stats[m] = pixel_buffer(ctx, "photon statistics", 16 * px, &rc, err);
-        st->radius[m] =
-            vct_buffer_create(ctx, STAGE, "gather radii", 4 * px, CL_MEM_READ_WRITE, NULL, err);
-        if (rc == VCT_OK && !st->radius[m])
-            rc = err->status;
-        if (rc == VCT_OK)
-            rc = clEnqueueFillBuffer(ctx->queue, st->radius[m], &r->r0[m], 4, 0, 4 * px, 0, NULL,
-                                     NULL) == CL_SUCCESS
-                     ? VCT_OK
-                     : vct_fail(err, VCT_ERR_OPENCL, "%s: clEnqueueFillBuffer (radii) failed",
-                                STAGE);
+        uint32_t r0_bits;
+        memcpy(&r0_bits, &r->r0[m], 4);
+        st->stats[m] = pixel_buffer(ctx, "photon statistics", 16 * px, 0, &rc, err);
+        st->radius[m] = pixel_buffer(ctx, "gather radii", 4 * px, r0_bits, &rc, err);
     }
     if (rc != VCT_OK) {
         state_free(ctx, st);
@@ -153,7 +146,7 @@ static int scene_has_specular(const vct_scene *s) {
         const float glossy = d.albedo.s[3] > 0.5f
                                  ? d.albedo.s[0] + d.albedo.s[1] + d.albedo.s[2]
                                  : d.specular.s[0] + d.specular.s[1] + d.specular.s[2];
-        if (d.specular.s[3] > 0.0f || (glossy > 0.0f && d.emission.s[3] < MIRROR_ROUGHNESS))
+        if (d.specular.s[3] > 0.0f || (glossy > 0.0f && d.emission.s[3] < VCT_MIRROR_ROUGHNESS))
             return 1;
     }
     return 0;
