@@ -16,7 +16,8 @@ import re
 import subprocess
 import sys
 
-STAGES = ["runtime", "parallel", "scene", "accel", "light", "voxel", "photon", "render", "image"]
+STAGES = ["runtime", "parallel", "scene", "accel", "light", "voxel", "photon", "render", "image",
+          "multi"]
 # image/ (files and metrics of host images) is used by the renderers but
 # uses only the runtime: it sits beside the pipeline, not above render.
 BELOW = {s: set(STAGES[: i + 1]) for i, s in enumerate(STAGES)}

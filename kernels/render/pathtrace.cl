@@ -1,8 +1,11 @@
 /* Unbiased path tracing on the shared acceleration structure: next-event estimation to every
  * punctual light and to emissive triangles (chosen by area, combined with BSDF
  * sampling by the power heuristic), Russian roulette after RR_DEPTH bounces.
- * Each launch adds `samples` samples per pixel to `accum` (sum of radiance,
- * w = sample count); a sample that is not finite is dropped and counted.
+ * Each launch adds `samples` samples per pixel to `accum`: per pixel the
+ * exact sums (render/exact_sum.h) of red, green and blue, then the count of
+ * samples kept (x); a sample that is not finite is dropped and counted. The
+ * sums are exact, so the image does not depend on how samples were split
+ * into launches, calls or devices.
  *
  * max_depth: surface interactions per path (1 = direct light only). */
 #include "scene/bsdf.h"
@@ -11,6 +14,7 @@
 #include "scene/texture.h"
 #include "accel/accel.h"
 #include "scene/rng.h"
+#include "render/exact_sum.h"
 #include "vct_types.h"
 
 #define RR_DEPTH 3
@@ -21,8 +25,8 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                         __global const vct_light_desc *lights, uint light_count,
                         __global const uint *emitter_tris, __global const float *emitter_cdf,
                         uint emitter_count, float emitter_inv_area, uint sample_begin, uint samples,
-                        uint max_depth, uint seed, __global float4 *accum, __global uint *discarded,
-                        float4 ambient) {
+                        uint max_depth, uint seed, __global exact_sum *accum,
+                        __global uint *discarded, float4 ambient) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
@@ -30,13 +34,14 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
     const texture_view tv = TEXTURE_VIEW();
     const emitters em = {{emitter_tris, emitter_cdf, 0, emitter_count, 1u}, emitter_inv_area};
     const uint pixel = y * cam.size.x + x;
-    float3 sum = (float3)(0.0f);
+    exact_sum sum_r = accum[4u * pixel], sum_g = accum[4u * pixel + 1u],
+              sum_b = accum[4u * pixel + 2u];
     uint dropped = 0;
     for (uint s = 0; s < samples; ++s) {
-        uint rng = rng_start(seed, pixel, sample_begin + s);
+        uint rng = rng_start(seed, camera_pixel_id(&cam, x, y), sample_begin + s);
         const float jx = rng_next(&rng), jy = rng_next(&rng);
         float3 org = cam.position.xyz;
-        float3 dir = camera_ray_dir(&cam, (float)x + jx, (float)y + jy);
+        float3 dir = camera_ray_dir(&cam, (float)x + jx, (float)camera_row(&cam, y) + jy);
         float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
         float prev_pdf = 0.0f; /* 0: camera ray or delta bounce, emission counts fully */
         float3 prev_p = org;
@@ -88,24 +93,30 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                 throughput /= q;
             }
         }
-        if (all(isfinite(radiance)))
-            sum += radiance;
-        else
+        if (all(isfinite(radiance))) {
+            sum_r = exact_add(sum_r, exact_from_float(radiance.x));
+            sum_g = exact_add(sum_g, exact_from_float(radiance.y));
+            sum_b = exact_add(sum_b, exact_from_float(radiance.z));
+        } else {
             ++dropped;
+        }
     }
-    float4 acc = accum[pixel];
-    acc.xyz += sum;
-    acc.w += (float)(samples - dropped);
-    accum[pixel] = acc;
+    accum[4u * pixel] = sum_r;
+    accum[4u * pixel + 1u] = sum_g;
+    accum[4u * pixel + 2u] = sum_b;
+    accum[4u * pixel + 3u].x += (ulong)(samples - dropped);
     if (dropped)
         atomic_add(discarded, dropped);
 }
 
 /* The frame: each pixel's mean sample (black where every sample was dropped). */
-__kernel void pathtrace_resolve(__global const float4 *accum, uint pixels, __global float4 *frame) {
+__kernel void pathtrace_resolve(__global const exact_sum *accum, uint pixels,
+                                __global float4 *frame) {
     const uint i = get_global_id(0);
     if (i >= pixels)
         return;
-    const float4 a = accum[i];
-    frame[i] = a.w > 0.0f ? (float4)(a.xyz / a.w, 1.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+    const float n = (float)accum[4u * i + 3u].x;
+    const float3 sum = (float3)(exact_to_float(accum[4u * i]), exact_to_float(accum[4u * i + 1u]),
+                                exact_to_float(accum[4u * i + 2u]));
+    frame[i] = n > 0.0f ? (float4)(sum / n, 1.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
 }

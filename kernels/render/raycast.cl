@@ -18,7 +18,7 @@ __kernel void render_direct(ACCEL_ARGS, vct_camera_desc cam,
     if (x >= cam.size.x || y >= cam.size.y)
         return;
     const accel_view g = ACCEL_VIEW();
-    const float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
+    const float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)camera_row(&cam, y) + 0.5f);
     float3 radiance = (float3)(0.0f);
     hit_record h;
     if (accel_trace(&g, cam.position.xyz, dir, 0.0f, INFINITY, 0, &h)) {
@@ -31,7 +31,7 @@ __kernel void render_direct(ACCEL_ARGS, vct_camera_desc cam,
         direct_terms d = direct_gather(&g, lights, light_count, p, n, 1, (float3)(0.0f), -1.0f, 0);
         const emitter_view e = EMITTER_VIEW();
         direct_emitters(&g, &e, materials, tri_material, p, n, (float3)(0.0f), -1.0f,
-                        y * cam.size.x + x, &d);
+                        camera_pixel_id(&cam, x, y), &d);
         radiance = m.emission.xyz + albedo * VCT_INV_PI * d.irradiance;
     }
     image[y * cam.size.x + x] = (float4)(radiance, 1.0f);

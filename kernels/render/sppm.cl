@@ -94,9 +94,9 @@ sppm_visible(ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *
     const texture_view tv = TEXTURE_VIEW();
     const emitters em = {{emitter_tris, emitter_cdf, 0, emitter_count, 1u}, emitter_inv_area};
     const uint pixel = y * cam.size.x + x;
-    uint rng = rng_start(seed, pixel, pass);
+    uint rng = rng_start(seed, camera_pixel_id(&cam, x, y), pass);
     const float jx = rng_next(&rng), jy = rng_next(&rng);
-    float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + jx, (float)y + jy);
+    float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + jx, (float)camera_row(&cam, y) + jy);
     float3 beta = (float3)(1.0f), radiance = (float3)(0.0f);
     float4 vp_pos = (float4)(0.0f), vp_n = vp_pos, vp_wo = vp_pos, vp_beta = vp_pos,
            vp_mat = vp_pos;

@@ -89,7 +89,8 @@ __kernel void vct_primary(ACCEL_ARGS, vct_camera_desc cam,
         return;
     const accel_view g = ACCEL_VIEW();
     const uint pixel = y * cam.size.x + x;
-    float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
+    float3 org = cam.position.xyz,
+           dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)camera_row(&cam, y) + 0.5f);
     float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
     float4 gpos = (float4)(0.0f), gnormal = (float4)(0.0f), gview = (float4)(0.0f),
            galbedo = (float4)(0.0f);
@@ -151,7 +152,8 @@ __kernel void vct_primary(ACCEL_ARGS, vct_camera_desc cam,
         direct_terms d = direct_gather(&g, lights, light_count, p, n, SHADOWS, r, e, SOFT_SHADOWS);
 #ifdef VCT_EMITTERS
         const emitter_view ev = EMITTER_VIEW();
-        direct_emitters(&g, &ev, materials, tri_material, p, n, r, e, pixel, &d);
+        direct_emitters(&g, &ev, materials, tri_material, p, n, r, e, camera_pixel_id(&cam, x, y),
+                        &d);
 #endif
         radiance += throughput * direct_shade(&m, d, e);
 #endif

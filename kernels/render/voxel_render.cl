@@ -16,7 +16,7 @@ __kernel void voxel_render(vct_camera_desc cam, vct_volume_desc vol, __global co
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    const float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)y + 0.5f);
+    const float3 dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)camera_row(&cam, y) + 0.5f);
     const float res = (float)vol.res.x;
     const uint levels = vol.res.y;
     /* Voxel space: the cube is [0, res]^3 and t is measured in voxels. */

@@ -77,12 +77,12 @@ inline uint key_mix(uint key, uint v) {
  * own shadow rays. */
 inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, uint x, uint y,
                            uint *key) {
-    const uint pixel = y * cam->size.x + x;
+    const uint pixel = camera_pixel_id(cam, x, y);
     /* Pending branches: origin (w: depth), direction, throughput. */
     float4 stack_org[WHITTED_STACK], stack_dir[WHITTED_STACK], stack_w[WHITTED_STACK];
     int sp = 0;
     float3 org = cam->position.xyz;
-    float3 dir = camera_ray_dir(cam, (float)x + 0.5f, (float)y + 0.5f);
+    float3 dir = camera_ray_dir(cam, (float)x + 0.5f, (float)camera_row(cam, y) + 0.5f);
     float3 throughput = (float3)(1.0f);
     uint depth = 0;
     float3 radiance = (float3)(0.0f);

@@ -252,6 +252,14 @@ typedef struct vct_voxel_view_options {
 } vct_voxel_view_options;
 #define VCT_VOXEL_VIEW_LEAVES 0xffffffffu
 
+/* A band of a taller image: rows [first, first + the job's height) of an
+ * image `height` rows tall, rendered as an image of their own with the
+ * whole image's rays and random streams, so that its pixels equal the whole
+ * image's. height 0: the job is the whole image. */
+typedef struct vct_band {
+    int first, height;
+} vct_band;
+
 /* One render: the method, what it reads and its options. Only the options
  * of `method` are read. */
 typedef struct vct_render_job {
@@ -267,6 +275,7 @@ typedef struct vct_render_job {
     vct_pm_options pm;
     vct_vct_options vct;
     vct_voxel_view_options voxel_view;
+    vct_band band; /* every method but path tracing and photon mapping */
 } vct_render_job;
 
 typedef struct vct_render_result {
@@ -282,8 +291,9 @@ typedef struct vct_render_result {
 /* A job with every method's defaults (vct_vct_options_default, 64 spp,
  * depth 16) at width x height, for `method`. */
 vct_render_job vct_render_job_default(vct_method method, int width, int height);
-/* Its image size, whichever method it names. */
+/* Its image size, whichever method it names, and a new one for that method. */
 void vct_render_job_size(const vct_render_job *job, int *width, int *height);
+void vct_render_job_set_size(vct_render_job *job, int width, int height);
 const char *vct_method_name(vct_method method);
 /* -1 for an unknown name ("vct", "raycast", "pt", "voxels"). */
 int vct_method_from_name(const char *name);

@@ -14,7 +14,8 @@
  *   vct/accel.h     the triangle grid and ray queries
  *   vct/voxels.h    voxels, octree, bricks, light injection, cones
  *   vct/render.h    renderers, the effect plan, the frame, OpenGL display
- *   vct/image.h     images, files, error metrics */
+ *   vct/image.h     images, files, error metrics
+ *   vct/multi.h     one frame on several devices */
 #ifndef VCT_VCT_H
 #define VCT_VCT_H
 
@@ -28,5 +29,6 @@
 #include "vct/voxels.h"
 #include "vct/render.h"
 #include "vct/image.h"
+#include "vct/multi.h"
 
 #endif

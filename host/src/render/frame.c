@@ -6,6 +6,7 @@
 
 #include "runtime/runtime.h"
 #include "render/frame.h"
+#include "scene/scene_device.h"
 
 static void frame_release(vct_context *ctx);
 
@@ -19,6 +20,23 @@ cl_mem vct_frame_get(vct_context *ctx, const char *stage, int width, int height,
     ctx->frame_size[0] = ctx->frame ? width : 0;
     ctx->frame_size[1] = ctx->frame ? height : 0;
     return ctx->frame;
+}
+
+int vct_frame_camera(const vct_context *ctx, const vct_camera *camera, int width, int height,
+                     vct_camera_desc *cam, vct_error *err) {
+    const int whole = ctx->band_height ? ctx->band_height : height;
+    int rc = vct_camera_desc_make(camera, width, whole, cam, err);
+    if (rc != VCT_OK || !ctx->band_height)
+        return rc;
+    if (ctx->band_first < 0 || height < 1 || ctx->band_first + height > ctx->band_height)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "render: rows %d to %d are not a band of an image %d rows tall",
+                        ctx->band_first, ctx->band_first + height - 1, ctx->band_height);
+    /* The aspect stays the whole image's: the band's rays are its rows' rays. */
+    cam->size.s[1] = (cl_uint)height;
+    cam->size.s[2] = (cl_uint)ctx->band_first;
+    cam->size.s[3] = (cl_uint)ctx->band_height;
+    return VCT_OK;
 }
 
 int vct_frame_deliver(vct_context *ctx, const char *stage, vct_image *image, vct_error *err) {

@@ -8,10 +8,9 @@
 
 #include "runtime/runtime.h"
 #include "accel/accel.h"
-#include "light/emitters.h"
 #include "render/frame.h"
+#include "render/pathtrace.h"
 #include "render/progress.h"
-#include "scene/scene_device.h"
 
 #define STAGE "path trace"
 
@@ -31,14 +30,15 @@ static int accumulation_get(vct_context *ctx, const vct_pathtrace_options *opt, 
     pathtrace_release(ctx);
     vct_context_on_release(ctx, pathtrace_release);
     const size_t pixels = (size_t)opt->width * opt->height;
-    ctx->pt_accum =
-        vct_buffer_create(ctx, STAGE, "accumulation", 16 * pixels, CL_MEM_READ_WRITE, NULL, err);
+    ctx->pt_accum = vct_buffer_create(ctx, STAGE, "accumulation", VCT_PT_ACCUM_BYTES * pixels,
+                                      CL_MEM_READ_WRITE, NULL, err);
     ctx->pt_discarded = ctx->pt_accum ? vct_buffer_create(ctx, STAGE, "discarded count", 4,
                                                           CL_MEM_READ_WRITE, NULL, err)
                                       : NULL;
     int rc = ctx->pt_discarded ? VCT_OK : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_buffer_fill_u32(ctx, STAGE, ctx->pt_accum, 0, 4 * pixels, err);
+        rc =
+            vct_buffer_fill_u32(ctx, STAGE, ctx->pt_accum, 0, VCT_PT_ACCUM_BYTES / 4 * pixels, err);
     if (rc == VCT_OK)
         rc = vct_buffer_fill_u32(ctx, STAGE, ctx->pt_discarded, 0, 1, err);
     if (rc != VCT_OK)
@@ -47,6 +47,105 @@ static int accumulation_get(vct_context *ctx, const vct_pathtrace_options *opt, 
         ctx->pt_size[0] = opt->width;
         ctx->pt_size[1] = opt->height;
     }
+    return rc;
+}
+
+int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                 const vct_pathtrace_options *opt, vct_pt_session *pt, vct_error *err) {
+    memset(pt, 0, sizeof *pt);
+    pt->ctx = ctx;
+    pt->opt = opt;
+    if (opt->max_depth == 0)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: the path depth must be at least 1", STAGE);
+    vct_camera_desc cam;
+    int rc = vct_frame_camera(ctx, &s->camera, opt->width, opt->height, &cam, err);
+    if (rc)
+        return rc;
+    vct_stage_begin(ctx, STAGE);
+    rc = vct_program_get(ctx, "render/pathtrace.cl", vct_accel_program_options(g), &pt->program,
+                         err);
+    if (rc == VCT_OK)
+        rc = vct_scene_buffers_make(ctx, s, STAGE, &pt->sb, err);
+    if (rc == VCT_OK)
+        rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_AREA, STAGE, &pt->eb, err);
+    if (rc == VCT_OK)
+        rc = accumulation_get(ctx, opt, err);
+    cl_kernel k = rc == VCT_OK ? vct_kernel_create(ctx, pt->program, "pathtrace", err) : NULL;
+    pt->kernel = k;
+    if (rc == VCT_OK && !k)
+        rc = err->status;
+    if (rc == VCT_OK)
+        rc = vct_accel_set_args(k, g, STAGE, err);
+    cl_uint max_depth = opt->max_depth, seed = opt->seed;
+    const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
+    const vct_scene_buffers *sb = &pt->sb;
+    const vct_emitters *eb = &pt->eb;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 5, 3, VCT_ARG_OF(cam), VCT_ARG_OF(sb->materials),
+                          VCT_ARG_OF(sb->tri_material));
+    if (rc == VCT_OK)
+        rc = vct_scene_texture_args(k, 8, sb, STAGE, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 11, 6, VCT_ARG_OF(sb->lights), VCT_ARG_OF(sb->light_count),
+                          VCT_ARG_OF(eb->tris), VCT_ARG_OF(eb->cdf), VCT_ARG_OF(eb->count),
+                          VCT_ARG_OF(eb->inv_area));
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, STAGE, k, 19, 5, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
+                          VCT_ARG_OF(ctx->pt_accum), VCT_ARG_OF(ctx->pt_discarded),
+                          VCT_ARG_OF(ambient));
+    return rc;
+}
+
+int vct_pt_run(vct_pt_session *pt, uint32_t first, uint32_t count, int wait, vct_error *err) {
+    const vct_pathtrace_options *opt = pt->opt;
+    const size_t global[2] = {(size_t)opt->width, (size_t)opt->height}, local[2] = {8, 8};
+    const cl_uint per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;
+    int rc = VCT_OK;
+    for (cl_uint done = 0; rc == VCT_OK && done < count;) {
+        cl_uint n = count - done < per_pass ? count - done : per_pass;
+        cl_uint sample = first + done;
+        rc = vct_set_args(err, STAGE, pt->kernel, 17, 2, VCT_ARG_OF(sample), VCT_ARG_OF(n));
+        if (rc == VCT_OK)
+            rc = vct_launch_2d(pt->ctx, pt->kernel, global, local, err);
+        done += n;
+    }
+    if (rc == VCT_OK && wait)
+        rc = vct_finish(pt->ctx, STAGE, err);
+    return rc;
+}
+
+int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
+               vct_pathtrace_result *result, vct_error *err) {
+    vct_context *ctx = pt->ctx;
+    const vct_pathtrace_options *opt = pt->opt;
+    const size_t pixels = (size_t)opt->width * opt->height;
+    if (!sums)
+        sums = ctx->pt_accum;
+    cl_mem frame =
+        rc == VCT_OK && image ? vct_frame_get(ctx, STAGE, opt->width, opt->height, err) : NULL;
+    if (rc == VCT_OK && image && !frame)
+        rc = err->status;
+    const cl_uint pixel_count = (cl_uint)pixels;
+    if (rc == VCT_OK && image)
+        rc = vct_run_kernel(ctx, pt->program, "pathtrace_resolve", STAGE, pixels, err, 3,
+                            VCT_ARG_OF(sums), VCT_ARG_OF(pixel_count), VCT_ARG_OF(frame));
+    cl_uint dropped = 0;
+    if (rc == VCT_OK && result)
+        rc = vct_buffer_read(ctx, STAGE, ctx->pt_discarded, 0, 4, &dropped, err);
+    if (result)
+        result->discarded = dropped;
+    if (rc == VCT_OK && image)
+        rc = vct_frame_deliver(ctx, STAGE, image, err);
+    if (rc != VCT_OK) {
+        if (image)
+            vct_image_free(image);
+        pathtrace_release(ctx); /* the running sums are no longer whole */
+    }
+    if (pt->kernel)
+        clReleaseKernel(pt->kernel);
+    vct_emitters_release(ctx, &pt->eb);
+    vct_scene_buffers_release(ctx, &pt->sb);
+    vct_stage_end(ctx);
     return rc;
 }
 
@@ -61,45 +160,8 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_accel *
     if (opt->spp == 0 && !(opt->time_limit_s > 0.0))
         return vct_fail(err, VCT_ERR_INPUT, "%s: give a sample count (--spp) or a time (--time)",
                         STAGE);
-    if (opt->max_depth == 0)
-        return vct_fail(err, VCT_ERR_INPUT, "%s: the path depth must be at least 1", STAGE);
-    vct_camera_desc cam;
-    int rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &cam, err);
-    if (rc)
-        return rc;
-    vct_stage_begin(ctx, STAGE);
-    cl_program p;
-    rc = vct_program_get(ctx, "render/pathtrace.cl", vct_accel_program_options(g), &p, err);
-    vct_scene_buffers sb = {0};
-    vct_emitters eb = {0};
-    if (rc == VCT_OK)
-        rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
-    if (rc == VCT_OK)
-        rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_AREA, STAGE, &eb, err);
-    const size_t pixels = (size_t)opt->width * opt->height;
-    if (rc == VCT_OK)
-        rc = accumulation_get(ctx, opt, err);
-    cl_mem accum = ctx->pt_accum, discarded = ctx->pt_discarded;
-    cl_kernel k = rc == VCT_OK ? vct_kernel_create(ctx, p, "pathtrace", err) : NULL;
-    if (rc == VCT_OK && !k)
-        rc = err->status;
-    if (rc == VCT_OK)
-        rc = vct_accel_set_args(k, g, STAGE, err);
-    cl_uint max_depth = opt->max_depth, seed = opt->seed;
-    const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
-    if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 5, 3, VCT_ARG_OF(cam), VCT_ARG_OF(sb.materials),
-                          VCT_ARG_OF(sb.tri_material));
-    if (rc == VCT_OK)
-        rc = vct_scene_texture_args(k, 8, &sb, STAGE, err);
-    if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 11, 6, VCT_ARG_OF(sb.lights), VCT_ARG_OF(sb.light_count),
-                          VCT_ARG_OF(eb.tris), VCT_ARG_OF(eb.cdf), VCT_ARG_OF(eb.count),
-                          VCT_ARG_OF(eb.inv_area));
-    if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 19, 5, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
-                          VCT_ARG_OF(accum), VCT_ARG_OF(discarded), VCT_ARG_OF(ambient));
-    const size_t global[2] = {(size_t)opt->width, (size_t)opt->height}, local[2] = {8, 8};
+    vct_pt_session pt;
+    int rc = vct_pt_begin(ctx, s, g, opt, &pt, err);
     const int show = opt->progress && isatty(2);
     const cl_uint per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;
     const double t0 = vct_now_ms();
@@ -111,13 +173,9 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_accel *
         cl_uint n = per_pass;
         if (opt->spp && done + n > opt->spp)
             n = opt->spp - done;
-        rc = vct_set_args(err, STAGE, k, 17, 2, VCT_ARG_OF(sample), VCT_ARG_OF(n));
-        if (rc == VCT_OK)
-            rc = vct_launch_2d(ctx, k, global, local, err);
         /* Waiting per pass only serves the clock and the progress bar; a fixed
          * sample count is queued whole and awaited by the final read. */
-        if (rc == VCT_OK && (show || !opt->spp))
-            rc = vct_finish(ctx, STAGE, err);
+        rc = vct_pt_run(&pt, sample, n, show || !opt->spp, err);
         done += n;
         sample += n;
         if (show)
@@ -128,27 +186,5 @@ int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_accel *
     ctx->pt_done = sample;
     result->spp = sample;
     result->seconds = (vct_now_ms() - t0) * 1e-3;
-    cl_mem frame = rc == VCT_OK ? vct_frame_get(ctx, STAGE, opt->width, opt->height, err) : NULL;
-    if (rc == VCT_OK && !frame)
-        rc = err->status;
-    const cl_uint pixel_count = (cl_uint)pixels;
-    if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, p, "pathtrace_resolve", STAGE, pixels, err, 3, VCT_ARG_OF(accum),
-                            VCT_ARG_OF(pixel_count), VCT_ARG_OF(frame));
-    cl_uint dropped = 0;
-    if (rc == VCT_OK)
-        rc = vct_buffer_read(ctx, STAGE, discarded, 0, 4, &dropped, err);
-    result->discarded = dropped;
-    if (rc == VCT_OK)
-        rc = vct_frame_deliver(ctx, STAGE, image, err);
-    if (rc != VCT_OK) {
-        vct_image_free(image);
-        pathtrace_release(ctx); /* the running sums are no longer whole */
-    }
-    if (k)
-        clReleaseKernel(k);
-    vct_emitters_release(ctx, &eb);
-    vct_scene_buffers_release(ctx, &sb);
-    vct_stage_end(ctx);
-    return rc;
+    return vct_pt_end(&pt, rc, NULL, image, result, err);
 }

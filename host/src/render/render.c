@@ -67,6 +67,29 @@ void vct_render_job_size(const vct_render_job *job, int *width, int *height) {
     }
 }
 
+void vct_render_job_set_size(vct_render_job *job, int width, int height) {
+    switch (job->method) {
+    case VCT_METHOD_RAYCAST:
+        job->raycast.width = width, job->raycast.height = height;
+        break;
+    case VCT_METHOD_PATHTRACE:
+        job->pathtrace.width = width, job->pathtrace.height = height;
+        break;
+    case VCT_METHOD_WHITTED:
+        job->whitted.width = width, job->whitted.height = height;
+        break;
+    case VCT_METHOD_PM:
+        job->pm.width = width, job->pm.height = height;
+        break;
+    case VCT_METHOD_VOXELS:
+        job->voxel_view.width = width, job->voxel_view.height = height;
+        break;
+    default:
+        job->vct.width = width, job->vct.height = height;
+        break;
+    }
+}
+
 /* What the job's method reads, present. */
 static int job_check(const vct_render_job *job, vct_error *err) {
     const char *name = vct_method_name(job->method);
@@ -79,6 +102,10 @@ static int job_check(const vct_render_job *job, vct_error *err) {
             err, VCT_ERR_INPUT,
             "render (%s): the job has no acceleration structure: build one with vct_accel_build",
             name);
+    if (job->band.height && job->method == VCT_METHOD_PM)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "render (pm): photon mapping renders whole images, not bands (its grids "
+                        "follow the radii of every pixel)");
     if (job->method == VCT_METHOD_VOXELS && !job->voxels)
         return vct_fail(err, VCT_ERR_INPUT,
                         "render (voxels): the job has no voxels: build them with vct_voxelize "
@@ -106,6 +133,10 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
     vct_pathtrace_result pt = {0};
     vct_whitted_result wr = {0, 0, NULL};
     vct_pm_result pm = {0};
+    if (rc == VCT_OK && job->band.height) {
+        ctx->band_first = job->band.first;
+        ctx->band_height = job->band.height;
+    }
     if (rc == VCT_OK) {
         switch (job->method) {
         case VCT_METHOD_RAYCAST:
@@ -136,6 +167,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
             break;
         }
     }
+    ctx->band_first = ctx->band_height = 0;
     if (result) {
         memset(result, 0, sizeof *result);
         result->method = job->method;

@@ -19,7 +19,7 @@ int vct_shaded_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g, c
     sh->stage = stage;
     sh->width = width;
     sh->height = height;
-    int rc = vct_camera_desc_make(&s->camera, width, height, &sh->cam, err);
+    int rc = vct_frame_camera(ctx, &s->camera, width, height, &sh->cam, err);
     if (rc)
         return rc;
     vct_stage_begin(ctx, stage);

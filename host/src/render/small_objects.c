@@ -26,8 +26,10 @@ static int project(const vct_camera_desc *c, const double p[3], double *x, doubl
     if (!(z > 1e-6))
         return 0;
     const double tan_half = c->position.s[3], aspect = c->forward.s[3];
+    /* A band of a taller image (kernels/scene/camera.h): rows from its first. */
+    const double height = c->size.s[3] ? c->size.s[3] : c->size.s[1];
     *x = (r / (z * tan_half * aspect) + 1.0) * 0.5 * c->size.s[0] - 0.5;
-    *y = (1.0 - u / (z * tan_half)) * 0.5 * c->size.s[1] - 0.5;
+    *y = (1.0 - u / (z * tan_half)) * 0.5 * height - 0.5 - c->size.s[2];
     return 1;
 }
 

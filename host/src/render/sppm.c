@@ -406,7 +406,7 @@ int vct_render_pm(vct_context *ctx, const vct_scene *s, const vct_accel *accel,
     if (rc == VCT_OK)
         rc = options_check(s, opt, &r.frame, err);
     if (rc == VCT_OK)
-        rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &r.cam, err);
+        rc = vct_frame_camera(ctx, &s->camera, opt->width, opt->height, &r.cam, err);
     if (rc != VCT_OK)
         return rc;
     vct_stage_begin(ctx, STAGE);

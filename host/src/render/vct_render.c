@@ -301,7 +301,7 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, con
     int rc = vct_cone_settings_check(&opt->cones, err);
     vct_camera_desc cam;
     if (rc == VCT_OK)
-        rc = vct_camera_desc_make(&s->camera, opt->width, opt->height, &cam, err);
+        rc = vct_frame_camera(ctx, &s->camera, opt->width, opt->height, &cam, err);
     if (rc)
         return rc;
     frame f;

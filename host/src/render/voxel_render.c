@@ -24,7 +24,7 @@ int vct_render_voxels_level(vct_context *ctx, const vct_scene *s, const vct_voxe
         return vct_fail(err, VCT_ERR_INPUT, "%s: level %u does not exist (levels 0 to %u)", stage,
                         level, v->info.levels);
     vct_camera_desc cam;
-    int rc = vct_camera_desc_make(&s->camera, width, height, &cam, err);
+    int rc = vct_frame_camera(ctx, &s->camera, width, height, &cam, err);
     if (rc)
         return rc;
     vct_volume_desc vol;

@@ -57,6 +57,10 @@ struct vct_context {
     int pt_size[2];
     uint32_t pt_done;
     void *pm_state; /* photon mapping's per-pixel statistics (render/sppm.c) */
+    /* The band of a taller image the current render draws (vct_render_job
+     * band): its first row and the whole image's height, 0 for none. */
+    int band_first, band_height;
+    long launch_count; /* kernels launched on this context (runtime/launch.c) */
     /* What higher stages keep in the context, released with it: each stage
      * registers its own release, so the runtime calls up into none of them. */
     vct_release_hook release_hooks[VCT_MAX_RELEASE_HOOKS];

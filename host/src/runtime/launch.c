@@ -1,9 +1,48 @@
 /* Kernel arguments and launches, each recorded in the current stage. */
 #include <stdarg.h>
 #include <stdio.h>
+#include <math.h>
+#include <stdlib.h>
+#include <time.h>
 
 #include "runtime/launch.h"
 #include "runtime/program.h"
+
+/* Switches that make a device misbehave, to test how a device group copes:
+ * VCT_FAIL_LAUNCH=D:N fails every launch of device D (its index in `vct
+ * devices`) from its N-th on, as a lost device would; VCT_SLOW_LAUNCH=D:F
+ * makes device D F times slower: each launch is awaited, then the host
+ * waits F - 1 times as long again. */
+static int launch_switches(vct_context *ctx, const char *stage, double *slow_factor,
+                           vct_error *err) {
+    ++ctx->launch_count;
+    *slow_factor = 0.0;
+    int device = -1;
+    long at = 0;
+    const char *fail = getenv("VCT_FAIL_LAUNCH");
+    if (fail && sscanf(fail, "%d:%ld", &device, &at) == 2 && device == ctx->info.index &&
+        ctx->launch_count >= at)
+        return vct_fail(err, VCT_ERR_OPENCL,
+                        "%s: clEnqueueNDRangeKernel failed on %s (device %d) with "
+                        "CL_OUT_OF_RESOURCES, injected by VCT_FAIL_LAUNCH from launch %ld",
+                        stage, ctx->info.name, device, at);
+    double factor = 0.0;
+    const char *slow = getenv("VCT_SLOW_LAUNCH");
+    if (slow && sscanf(slow, "%d:%lf", &device, &factor) == 2 && device == ctx->info.index &&
+        factor > 1.0)
+        *slow_factor = factor;
+    return VCT_OK;
+}
+
+/* VCT_SLOW_LAUNCH's wait, after a launch queued at host time start_ms. */
+static void launch_slowdown(vct_context *ctx, double factor, double start_ms) {
+    if (!(factor > 1.0))
+        return;
+    clFinish(ctx->queue);
+    const double wait_ms = (vct_now_ms() - start_ms) * (factor - 1.0);
+    const struct timespec pause = {(time_t)(wait_ms / 1e3), (long)(fmod(wait_ms, 1e3) * 1e6)};
+    nanosleep(&pause, NULL);
+}
 
 static int kernel_name_of(cl_kernel kernel, char *name, size_t size) {
     name[0] = '\0';
@@ -19,9 +58,14 @@ int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, 
         global = (global + local - 1) / local * local;
     cl_event ev = NULL;
     const char *stage = ctx->current_stage >= 0 ? ctx->stages[ctx->current_stage].name : name;
+    double slow = 0.0;
+    if (launch_switches(ctx, stage, &slow, err) != VCT_OK)
+        return err->status;
+    const double start_ms = vct_now_ms();
     VCT_CL(err, stage,
            clEnqueueNDRangeKernel(ctx->queue, kernel, 1, NULL, &global, local ? &local : NULL, 0,
                                   NULL, &ev));
+    launch_slowdown(ctx, slow, start_ms);
     return vct_record_event(ctx, ev, name, err);
 }
 
@@ -36,8 +80,13 @@ int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global_in[2],
         global[i] = (global[i] + local[i] - 1) / local[i] * local[i];
     cl_event ev = NULL;
     const char *stage = ctx->current_stage >= 0 ? ctx->stages[ctx->current_stage].name : name;
+    double slow = 0.0;
+    if (launch_switches(ctx, stage, &slow, err) != VCT_OK)
+        return err->status;
+    const double start_ms = vct_now_ms();
     VCT_CL(err, stage,
            clEnqueueNDRangeKernel(ctx->queue, kernel, 2, NULL, global, local, 0, NULL, &ev));
+    launch_slowdown(ctx, slow, start_ms);
     return vct_record_event(ctx, ev, name, err);
 }
 

@@ -1,0 +1,77 @@
+/* vct: one frame on several OpenCL devices at once.
+ *
+ * A group is one context per device (any platforms together), each with its
+ * own queue, program cache and copy of the scene's structures, built there.
+ * Path tracing is split by samples: each device takes the next chunk of the
+ * sample sequence whenever it finishes one, into exact sums that add up to
+ * the one-device sums bit for bit. The other methods split the image into
+ * row bands shared by each device's measured time per row: rebalanced after
+ * every render (damped, with a dead band), and a device too slow to pay for
+ * its part gets none. A device that fails is dropped, said once, and its
+ * work is done again by the others: the frame completes, unchanged. */
+#ifndef VCT_API_MULTI_H
+#define VCT_API_MULTI_H
+
+#include "vct/accel.h"
+#include "vct/render.h"
+#include "vct/voxels.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct vct_group vct_group;
+
+/* list: comma-separated device selectors (an index in `vct devices`, or a
+ * name as vct_context_create takes), or "all", "gpu" (every GPU), "cpu"
+ * (every CPU); NULL or "": $VCT_DEVICE, else vct_context_create's choice.
+ * A device that does not exist, or one named twice, is refused with the list
+ * of devices there are. */
+vct_group *vct_group_create(const char *list, vct_error *err);
+void vct_group_destroy(vct_group *group);
+int vct_group_size(const vct_group *group);
+vct_context *vct_group_context(vct_group *group, int device);
+
+/* What every device builds for the renders. */
+typedef struct vct_group_build {
+    vct_accel_options accel;
+    /* Cone tracing's voxels, when the plan reads them (NULL: none). */
+    const vct_plan *plan;
+    vct_voxel_options voxel;
+    vct_brick_options bricks;
+    uint32_t bounces;
+    vct_cone_settings cones;
+} vct_group_build;
+
+/* Builds `scene`'s structures on every device, at once; a device that cannot
+ * hold them is left out with a message, unless none can. */
+int vct_group_prepare(vct_group *group, const vct_scene *scene, const vct_group_build *build,
+                      vct_error *err);
+
+/* Renders `job` over the group's devices, with each device's own structures
+ * (the job's accel and voxels are not read; its aovs must be NULL, its band
+ * empty). The image is the one a single device of the same kind gives. */
+int vct_group_render(vct_group *group, const vct_render_job *job, vct_image *image,
+                     vct_render_result *result, vct_error *err);
+
+typedef struct vct_group_device {
+    vct_device_info info;
+    int active;         /* 0 once dropped */
+    char dropped[2048]; /* why it was dropped */
+    double build_ms;    /* its structures: build time and device memory */
+    double build_mib;
+    double share;     /* row methods: its share of the next render's rows */
+    double speed;     /* rows (or samples) per second it last measured, 0 unknown */
+    double last_ms;   /* its part of the last render: wall time */
+    double last_work; /* and rows or samples */
+} vct_group_device;
+
+/* The devices, in the order the list named them. */
+int vct_group_devices(const vct_group *group, const vct_group_device **devices);
+/* Failures seen so far (each reported once, on stderr, when it happened). */
+int vct_group_faults(const vct_group *group);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,76 @@
+/* Proportional shares, damped and with a dead band, as work-balancing
+ * schedulers do, with a floor below which a device is not worth its
+ * overhead. */
+#include <math.h>
+
+#include "multi/balance.h"
+
+static void normalise(int n, double *share) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i)
+        sum += share[i];
+    for (int i = 0; i < n; ++i)
+        share[i] = sum > 0.0 ? share[i] / sum : 0.0;
+}
+
+void vct_balance_shares(int n, const int *active, const double *speed, double *share) {
+    double known = 0.0, measured = 0.0;
+    int live = 0;
+    for (int i = 0; i < n; ++i)
+        if (active[i]) {
+            ++live;
+            if (speed[i] > 0.0)
+                known += speed[i], measured += 1.0;
+        }
+    if (live == 0)
+        return;
+    double target[64], prior_sum = 0.0;
+    for (int i = 0; i < n && i < 64; ++i) {
+        target[i] = !active[i]       ? 0.0
+                    : speed[i] > 0.0 ? speed[i]
+                    : measured       ? known / measured
+                                     : 1.0;
+        prior_sum += share[i];
+    }
+    normalise(n, target);
+    for (int i = 0; i < n; ++i)
+        if (target[i] < VCT_BALANCE_MIN_SHARE)
+            target[i] = 0.0;
+    normalise(n, target);
+    int moved = !(prior_sum > 0.0);
+    for (int i = 0; i < n; ++i)
+        if (!active[i] || fabs(target[i] - share[i]) >= VCT_BALANCE_DEAD_BAND ||
+            (target[i] == 0.0 && share[i] > 0.0))
+            moved = 1;
+    if (!moved)
+        return;
+    for (int i = 0; i < n; ++i)
+        share[i] = target[i] == 0.0 || !(prior_sum > 0.0)
+                       ? target[i]
+                       : share[i] + (target[i] - share[i]) * VCT_BALANCE_DAMPING;
+    normalise(n, share);
+}
+
+void vct_balance_split(int n, const double *share, int units, int *counts) {
+    int with_share = 0;
+    for (int i = 0; i < n; ++i)
+        with_share += share[i] > 0.0;
+    double cumulative = 0.0;
+    int given = 0, seen = 0;
+    for (int i = 0; i < n; ++i) {
+        counts[i] = 0;
+        if (!(share[i] > 0.0))
+            continue;
+        ++seen;
+        cumulative += share[i];
+        int end = seen == with_share ? units : (int)lround(cumulative * units);
+        /* one unit at least for each device with a share, while units last */
+        const int later = with_share - seen;
+        if (end <= given && given < units - later)
+            end = given + 1;
+        if (end > units - later)
+            end = units - later > given ? units - later : given;
+        counts[i] = end - given;
+        given = end;
+    }
+}

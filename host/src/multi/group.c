@@ -1,0 +1,232 @@
+/* Device groups: their contexts, the structures each device builds, the
+ * threads that drive them, and devices dropped when they fail. */
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "multi/device_list.h"
+#include "multi/group.h"
+
+vct_group *vct_group_create(const char *list, vct_error *err) {
+    int indices[VCT_GROUP_MAX];
+    const int n = vct_device_list_parse(list, indices, VCT_GROUP_MAX, err);
+    if (n < 0)
+        return NULL;
+    vct_group *g = calloc(1, sizeof *g);
+    if (!g) {
+        vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+        return NULL;
+    }
+    for (int i = 0; i < n; ++i) {
+        char selector[16];
+        snprintf(selector, sizeof selector, "%d", indices[i]);
+        g->ctx[i] = vct_context_create(selector, err);
+        if (!g->ctx[i]) {
+            vct_group_destroy(g);
+            return NULL;
+        }
+        g->count = i + 1;
+        vct_group_device *d = &g->devices[i];
+        d->info = *vct_context_device(g->ctx[i]);
+        d->active = 1;
+        d->share = 1.0 / n;
+    }
+    return g;
+}
+
+static void structures_free(vct_group *g, int i) {
+    vct_voxels_free(g->voxels[i]);
+    vct_accel_free(g->accel[i]);
+    g->voxels[i] = NULL;
+    g->accel[i] = NULL;
+}
+
+void vct_group_destroy(vct_group *g) {
+    if (!g)
+        return;
+    for (int i = 0; i < g->count; ++i) {
+        structures_free(g, i);
+        vct_context_destroy(g->ctx[i]);
+    }
+    free(g);
+}
+
+int vct_group_size(const vct_group *g) {
+    return g->count;
+}
+
+vct_context *vct_group_context(vct_group *g, int i) {
+    return i >= 0 && i < g->count ? g->ctx[i] : NULL;
+}
+
+int vct_group_devices(const vct_group *g, const vct_group_device **devices) {
+    *devices = g->devices;
+    return g->count;
+}
+
+int vct_group_faults(const vct_group *g) {
+    return g->faults;
+}
+
+int vct_group_active(const vct_group *g) {
+    int n = 0;
+    for (int i = 0; i < g->count; ++i)
+        n += g->devices[i].active;
+    return n;
+}
+
+void vct_group_drop(vct_group *g, int i, const vct_error *why) {
+    vct_group_device *d = &g->devices[i];
+    if (!d->active)
+        return;
+    d->active = 0;
+    d->share = 0.0;
+    snprintf(d->dropped, sizeof d->dropped, "%s", why->message);
+    ++g->faults;
+    fprintf(stderr, "vct: device %d (%s) dropped: %s; the others take its work\n", d->info.index,
+            d->info.name, d->dropped);
+}
+
+typedef struct worker {
+    vct_group *g;
+    int device;
+    vct_group_work work;
+    void *arg;
+} worker;
+
+static void *worker_main(void *p) {
+    worker *w = p;
+    w->work(w->g, w->device, w->arg);
+    return NULL;
+}
+
+int vct_group_each(vct_group *g, vct_group_work work, void *arg, vct_error *err) {
+    pthread_t threads[VCT_GROUP_MAX];
+    worker workers[VCT_GROUP_MAX];
+    int started[VCT_GROUP_MAX] = {0};
+    for (int i = 0; i < g->count; ++i) {
+        if (!g->devices[i].active)
+            continue;
+        workers[i] = (worker){g, i, work, arg};
+        started[i] = pthread_create(&threads[i], NULL, worker_main, &workers[i]) == 0;
+    }
+    /* A device that got no thread works on this one, after the others started. */
+    for (int i = 0; i < g->count; ++i)
+        if (g->devices[i].active && !started[i])
+            work(g, i, arg);
+    for (int i = 0; i < g->count; ++i)
+        if (started[i])
+            pthread_join(threads[i], NULL);
+    (void)err;
+    return VCT_OK;
+}
+
+/* ---- structures ------------------------------------------------------------------ */
+
+typedef struct prepare_job {
+    const vct_scene *scene;
+    const vct_group_build *build;
+    vct_error errors[VCT_GROUP_MAX];
+    int rc[VCT_GROUP_MAX];
+} prepare_job;
+
+static void prepare_one(vct_group *g, int i, void *arg) {
+    prepare_job *p = arg;
+    vct_context *ctx = g->ctx[i];
+    vct_error *err = &p->errors[i];
+    const double t0 = vct_now_ms();
+    structures_free(g, i);
+    g->accel[i] = vct_accel_build(ctx, p->scene, &p->build->accel, err);
+    int rc = g->accel[i] ? VCT_OK : (int)err->status;
+    const vct_group_build *b = p->build;
+    if (rc == VCT_OK && b->plan && vct_plan_needs_voxels(b->plan))
+        rc = vct_vct_prepare(ctx, p->scene, g->accel[i], b->plan, &b->voxel, &b->bricks, b->bounces,
+                             &b->cones, &g->voxels[i], err);
+    p->rc[i] = rc;
+    g->devices[i].build_ms = vct_now_ms() - t0;
+    g->devices[i].build_mib = ctx->bytes_live / 1048576.0;
+    if (rc != VCT_OK)
+        structures_free(g, i);
+}
+
+int vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_group_build *build,
+                      vct_error *err) {
+    prepare_job p;
+    memset(&p, 0, sizeof p);
+    p.scene = scene;
+    p.build = build;
+    int rc = vct_group_each(g, prepare_one, &p, err);
+    if (rc != VCT_OK)
+        return rc;
+    int first_failure = -1;
+    for (int i = 0; i < g->count; ++i)
+        if (g->devices[i].active && p.rc[i] != VCT_OK) {
+            if (first_failure < 0)
+                first_failure = i;
+            /* a device that cannot hold the structures is left out, not the frame */
+            vct_group_drop(g, i, &p.errors[i]);
+        }
+    if (vct_group_active(g) == 0) {
+        *err = p.errors[first_failure >= 0 ? first_failure : 0];
+        return err->status ? (int)err->status : VCT_ERR_INPUT;
+    }
+    for (int i = 0; i < g->count; ++i)
+        g->devices[i].share = g->devices[i].active ? 1.0 / vct_group_active(g) : 0.0;
+    return VCT_OK;
+}
+
+/* ---- rendering ------------------------------------------------------------------- */
+
+/* Photon mapping's per-pixel radii and its grids' cells follow every pixel
+ * of the image, pass after pass: it runs whole on the fastest device (a
+ * failure moves it to the next). */
+static int render_on_one(vct_group *g, const vct_render_job *job, vct_image *image,
+                         vct_render_result *result, vct_error *err) {
+    for (;;) {
+        int best = -1;
+        for (int i = 0; i < g->count; ++i)
+            if (g->devices[i].active && g->accel[i] &&
+                (best < 0 || g->devices[i].share > g->devices[best].share))
+                best = i;
+        if (best < 0)
+            return err->status ? (int)err->status : VCT_ERR_OPENCL;
+        vct_render_job own = *job;
+        own.accel = g->accel[best];
+        own.voxels = g->voxels[best];
+        const double t0 = vct_now_ms();
+        int rc = vct_render(g->ctx[best], &own, image, result, err);
+        if (rc == VCT_OK) {
+            for (int i = 0; i < g->count; ++i)
+                g->devices[i].last_ms = g->devices[i].last_work = 0.0;
+            g->devices[best].last_ms = vct_now_ms() - t0;
+            g->devices[best].last_work = 1.0;
+            return VCT_OK;
+        }
+        if (rc == VCT_ERR_INPUT)
+            return rc; /* the job, not the device */
+        vct_group_drop(g, best, err);
+    }
+}
+
+int vct_group_render(vct_group *g, const vct_render_job *job, vct_image *image,
+                     vct_render_result *result, vct_error *err) {
+    memset(image, 0, sizeof *image);
+    if (job->aovs)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "devices: AOVs come from one device: render them without a group");
+    if (job->band.height)
+        return vct_fail(err, VCT_ERR_INPUT, "devices: a group renders whole images, not bands");
+    int active = 0;
+    for (int i = 0; i < g->count; ++i)
+        active += g->devices[i].active && g->accel[i];
+    if (active == 0)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "devices: no device holds the scene's structures: call "
+                        "vct_group_prepare first");
+    if (job->method == VCT_METHOD_PATHTRACE)
+        return vct_group_render_samples(g, job, image, result, err);
+    if (job->method == VCT_METHOD_PM)
+        return render_on_one(g, job, image, result, err);
+    return vct_group_render_rows(g, job, image, result, err);
+}

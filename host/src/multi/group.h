@@ -1,0 +1,37 @@
+/* The device group's state, shared by its files: one context per device
+ * with its structures, and what the scheduler has measured. */
+#ifndef VCT_MULTI_GROUP_H
+#define VCT_MULTI_GROUP_H
+
+#include "runtime/runtime.h"
+
+#define VCT_GROUP_MAX 16
+
+struct vct_group {
+    int count;
+    vct_group_device devices[VCT_GROUP_MAX];
+    vct_context *ctx[VCT_GROUP_MAX];
+    vct_accel *accel[VCT_GROUP_MAX];
+    vct_voxels *voxels[VCT_GROUP_MAX];
+    int faults;
+    uint32_t pt_done; /* samples of the path tracer's running sums (resume) */
+};
+
+/* Runs work(group, device, arg) for every active device at once, one host
+ * thread each, and waits for all of them. */
+typedef void (*vct_group_work)(vct_group *g, int device, void *arg);
+int vct_group_each(vct_group *g, vct_group_work work, void *arg, vct_error *err);
+
+/* Drops a device that failed with `why`: said once on stderr. */
+void vct_group_drop(vct_group *g, int device, const vct_error *why);
+
+/* The number of active devices. */
+int vct_group_active(const vct_group *g);
+
+/* Row methods and the path tracer, over the active devices. */
+int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,
+                          vct_render_result *result, vct_error *err);
+int vct_group_render_samples(vct_group *g, const vct_render_job *job, vct_image *image,
+                             vct_render_result *result, vct_error *err);
+
+#endif

@@ -1,0 +1,183 @@
+/* Row bands: each active device renders a band of the image, its height
+ * set by the device's share; bands start on the method's alignment and
+ * carry the rows past their end that their last rows read (a halo), so
+ * that every row equals the whole image's. A band whose device fails is
+ * split again among the others. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "multi/balance.h"
+#include "multi/group.h"
+
+typedef struct band {
+    int first, rows;
+} band;
+
+typedef struct rows_round {
+    const vct_render_job *job;
+    int width, height, halo;
+    band bands[VCT_GROUP_MAX];
+    vct_image images[VCT_GROUP_MAX];
+    vct_render_result results[VCT_GROUP_MAX];
+    vct_error errors[VCT_GROUP_MAX];
+    int rc[VCT_GROUP_MAX];
+    double ms[VCT_GROUP_MAX];
+} rows_round;
+
+/* Subsampled methods refine squares of N rows whose corners lie on the next
+ * square's first row; sparse cone tracing fills odd rows from the even row
+ * below. */
+static void band_shape(const vct_render_job *job, int *align, int *halo) {
+    uint32_t subsample = 0;
+    if (job->method == VCT_METHOD_WHITTED)
+        subsample = job->whitted.subsample;
+    else if (job->method == VCT_METHOD_RAYCAST)
+        subsample = job->raycast.subsample;
+    *align = 1, *halo = 0;
+    if (subsample > 1)
+        *align = (int)subsample, *halo = 1;
+    else if (job->method == VCT_METHOD_VCT && job->vct.sparse_diffuse)
+        *align = 2, *halo = 2;
+}
+
+static void render_band(vct_group *g, int i, void *arg) {
+    rows_round *r = arg;
+    const band b = r->bands[i];
+    r->rc[i] = VCT_OK;
+    if (b.rows == 0)
+        return;
+    vct_render_job job = *r->job;
+    job.accel = g->accel[i];
+    job.voxels = g->voxels[i];
+    const int rows =
+        b.rows + r->halo < r->height - b.first ? b.rows + r->halo : r->height - b.first;
+    vct_render_job_set_size(&job, r->width, rows);
+    job.band = (vct_band){b.first, r->height};
+    const double t0 = vct_now_ms();
+    r->rc[i] = vct_render(g->ctx[i], &job, &r->images[i], &r->results[i], &r->errors[i]);
+    r->ms[i] = vct_now_ms() - t0;
+}
+
+/* Shares of the active devices, equal when none has one left. */
+static void active_shares(const vct_group *g, double *share) {
+    int with_share = 0;
+    for (int i = 0; i < g->count; ++i) {
+        share[i] = g->devices[i].active ? g->devices[i].share : 0.0;
+        with_share += share[i] > 0.0;
+    }
+    for (int i = 0; i < g->count && !with_share; ++i)
+        share[i] = g->devices[i].active ? 1.0 : 0.0;
+}
+
+/* Renders rows [first, first + rows) of the image into `image`; measure:
+ * this round's times set the devices' speeds. */
+static int render_range(vct_group *g, const vct_render_job *job, int first, int rows,
+                        vct_image *image, vct_render_result *result, int measure, vct_error *err) {
+    int align, halo;
+    band_shape(job, &align, &halo);
+    rows_round *r = calloc(1, sizeof *r);
+    if (!r)
+        return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+    r->job = job;
+    r->width = image->width;
+    r->height = image->height;
+    r->halo = halo;
+    double share[VCT_GROUP_MAX];
+    int units[VCT_GROUP_MAX];
+    active_shares(g, share);
+    vct_balance_split(g->count, share, (rows + align - 1) / align, units);
+    int at = first;
+    for (int i = 0; i < g->count; ++i) {
+        const int take =
+            units[i] * align < first + rows - at ? units[i] * align : first + rows - at;
+        r->bands[i] = (band){at, take};
+        at += take;
+    }
+    int rc = vct_group_each(g, render_band, r, err);
+    /* A refused job is the caller's to fix, not the device's fault. */
+    for (int i = 0; rc == VCT_OK && i < g->count; ++i)
+        if (r->bands[i].rows && r->rc[i] == VCT_ERR_INPUT) {
+            *err = r->errors[i];
+            rc = VCT_ERR_INPUT;
+        }
+    band failed[VCT_GROUP_MAX];
+    int failures = 0, last_failure = -1;
+    for (int i = 0; rc == VCT_OK && i < g->count; ++i) {
+        const band b = r->bands[i];
+        if (b.rows == 0)
+            continue;
+        if (r->rc[i] != VCT_OK) {
+            vct_group_drop(g, i, &r->errors[i]);
+            failed[failures++] = b;
+            last_failure = i;
+            continue;
+        }
+        const size_t row_floats = 4 * (size_t)r->width;
+        memcpy(image->rgba + (size_t)b.first * row_floats, r->images[i].rgba,
+               (size_t)b.rows * row_floats * sizeof(float));
+        result->traced += r->results[i].traced;
+        if (measure) {
+            vct_group_device *d = &g->devices[i];
+            d->last_ms = r->ms[i];
+            d->last_work = b.rows;
+            /* averaged with the last measurement: one slow frame (a page
+             * fault, a busy host) does not swing the shares */
+            const double speed = r->ms[i] > 0.0 ? b.rows / (r->ms[i] * 1e-3) : 0.0;
+            d->speed = d->speed > 0.0 ? 0.5 * (d->speed + speed) : speed;
+        }
+    }
+    for (int i = 0; i < g->count; ++i)
+        vct_image_free(&r->images[i]);
+    if (failures && vct_group_active(g) == 0)
+        *err = r->errors[last_failure];
+    free(r);
+    if (failures && vct_group_active(g) == 0)
+        return err->status ? (int)err->status : VCT_ERR_OPENCL;
+    for (int k = 0; rc == VCT_OK && k < failures; ++k)
+        rc = render_range(g, job, failed[k].first, failed[k].rows, image, result, 0, err);
+    return rc;
+}
+
+int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,
+                          vct_render_result *result, vct_error *err) {
+    vct_render_result sum;
+    memset(&sum, 0, sizeof sum);
+    int width, height;
+    vct_render_job_size(job, &width, &height);
+    if (width <= 0 || height <= 0 || width > 32768 || height > 32768)
+        return vct_fail(err, VCT_ERR_INPUT, "render: image size %dx%d is outside 1..32768", width,
+                        height);
+    const double t0 = vct_now_ms();
+    image->width = width;
+    image->height = height;
+    image->rgba = malloc(16 * (size_t)width * (size_t)height);
+    int rc = image->rgba ? VCT_OK : vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+    for (int i = 0; i < g->count; ++i)
+        g->devices[i].last_ms = g->devices[i].last_work = 0.0;
+    if (rc == VCT_OK)
+        rc = render_range(g, job, 0, height, image, &sum, 1, err);
+    if (rc != VCT_OK) {
+        vct_image_free(image);
+        return rc;
+    }
+    double speed[VCT_GROUP_MAX], share[VCT_GROUP_MAX];
+    int active[VCT_GROUP_MAX];
+    for (int i = 0; i < g->count; ++i) {
+        active[i] = g->devices[i].active;
+        speed[i] = g->devices[i].speed;
+        share[i] = g->devices[i].share;
+    }
+    vct_balance_shares(g->count, active, speed, share);
+    for (int i = 0; i < g->count; ++i)
+        g->devices[i].share = share[i];
+    if (result) {
+        *result = sum;
+        result->method = job->method;
+        result->width = width;
+        result->height = height;
+        result->seconds = (vct_now_ms() - t0) * 1e-3;
+        if (result->traced > (uint64_t)width * height)
+            result->traced = (uint64_t)width * height; /* halo rows traced twice */
+    }
+    return VCT_OK;
+}

@@ -1,0 +1,238 @@
+/* Several devices render one frame (PoCL exposing two: POCL_DEVICES="pthread
+ * pthread", one thread each). Every method's image equals one device's, bit
+ * for bit: with equal shares, with the shares a slowed device earns, and
+ * with a device that fails mid-frame. Device lists are read as written and
+ * refused with the devices there are. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "runtime/runtime.h"
+
+#define WIDTH 40
+#define HEIGHT 37 /* neither a multiple of the subsampling nor even */
+
+typedef struct method_case {
+    const char *name;
+    vct_method method;
+    uint32_t subsample;
+    int sparse;
+} method_case;
+
+static const method_case cases[] = {
+    {"raycast", VCT_METHOD_RAYCAST, 0, 0}, {"raycast, subsample 4", VCT_METHOD_RAYCAST, 4, 0},
+    {"whitted", VCT_METHOD_WHITTED, 0, 0}, {"whitted, subsample 8", VCT_METHOD_WHITTED, 8, 0},
+    {"vct", VCT_METHOD_VCT, 0, 0},         {"vct, sparse diffuse", VCT_METHOD_VCT, 0, 1},
+    {"pt", VCT_METHOD_PATHTRACE, 0, 0},    {"voxels", VCT_METHOD_VOXELS, 0, 0},
+    {"pm", VCT_METHOD_PM, 0, 0},
+};
+#define CASES (int)(sizeof cases / sizeof *cases)
+
+static vct_plan plan;
+
+static vct_group_build build_options(const vct_scene *s) {
+    vct_group_build b;
+    memset(&b, 0, sizeof b);
+    b.accel.kind = VCT_ACCEL_BVH;
+    vct_plan_make(s, NULL, &plan);
+    b.plan = &plan;
+    b.voxel.resolution = 32;
+    b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 1, 0};
+    b.bounces = 1;
+    b.cones = vct_vct_options_default().cones;
+    return b;
+}
+
+static vct_render_job job_of(const method_case *c, const vct_scene *s) {
+    vct_render_job job = vct_render_job_default(c->method, WIDTH, HEIGHT);
+    job.scene = s;
+    job.pathtrace.spp = 16;
+    job.pathtrace.seed = 5;
+    job.pm.passes = 3;
+    job.pm.photons_per_pass = 20000;
+    job.raycast.subsample = job.whitted.subsample = c->subsample;
+    job.vct.sparse_diffuse = c->sparse;
+    job.voxel_view.level = 4;
+    return job;
+}
+
+/* One device's image: a group of one, built as a single context would. */
+static vct_image single(const method_case *c, const vct_scene *s) {
+    vct_error err = {0};
+    vct_context *ctx = vct_context_create("0", &err);
+    REQUIRE_OK(ctx ? VCT_OK : err.status, err);
+    const vct_group_build b = build_options(s);
+    vct_accel *a = vct_accel_build(ctx, s, &b.accel, &err);
+    REQUIRE_OK(a ? VCT_OK : err.status, err);
+    vct_voxels *v = NULL;
+    REQUIRE_OK(
+        vct_vct_prepare(ctx, s, a, b.plan, &b.voxel, &b.bricks, b.bounces, &b.cones, &v, &err),
+        err);
+    vct_render_job job = job_of(c, s);
+    job.accel = a;
+    job.voxels = v;
+    vct_image im;
+    REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
+    vct_voxels_free(v);
+    vct_accel_free(a);
+    vct_context_destroy(ctx);
+    return im;
+}
+
+static size_t differing(const vct_image *a, const vct_image *b) {
+    if (a->width != b->width || a->height != b->height)
+        return (size_t)-1;
+    size_t n = 0;
+    for (size_t i = 0; i < (size_t)a->width * a->height * 4; ++i)
+        n += memcmp(&a->rgba[i], &b->rgba[i], sizeof(float)) != 0;
+    return n;
+}
+
+static double mean(const vct_image *a) {
+    double sum = 0.0;
+    for (size_t i = 0; i < (size_t)a->width * a->height * 4; ++i)
+        sum += a->rgba[i];
+    return sum / ((double)a->width * a->height * 4);
+}
+
+static vct_group *group_for(const vct_scene *s) {
+    vct_error err = {0};
+    vct_group *g = vct_group_create("0,1", &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_group_build b = build_options(s);
+    REQUIRE_OK(vct_group_prepare(g, s, &b, &err), err);
+    return g;
+}
+
+static void check_lists(void) {
+    vct_error err = {0};
+    vct_group *g = vct_group_create("all", &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    CHECK(vct_group_size(g) == 2, "\"all\": %d devices, expected the 2 PoCL exposes",
+          vct_group_size(g));
+    vct_group_destroy(g);
+    g = vct_group_create("1", &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_group_device *d;
+    CHECK(vct_group_devices(g, &d) == 1 && d[0].info.index == 1, "\"1\" is device 1 alone");
+    vct_group_destroy(g);
+    const char *bad[] = {"0,0", "0,7", "gpu", "0,,nothing-like-this"};
+    const char *why[] = {"named twice", "no device \"7\"", "no device is a GPU", "no device"};
+    for (int i = 0; i < 4; ++i) {
+        memset(&err, 0, sizeof err);
+        g = vct_group_create(bad[i], &err);
+        CHECK(!g && strstr(err.message, why[i]) && strstr(err.message, "the devices are: [0]"),
+              "list \"%s\" refused with the devices there are: %s", bad[i], err.message);
+        vct_group_destroy(g);
+    }
+}
+
+/* Every method on two devices equals one device, over several frames while
+ * the shares move. */
+static void check_methods(const char *scene_name, const vct_scene *s) {
+    vct_group *g = group_for(s);
+    for (int m = 0; m < CASES; ++m) {
+        const method_case *c = &cases[m];
+        vct_image one = single(c, s);
+        for (int frame = 0; frame < 2; ++frame) {
+            vct_render_job job = job_of(c, s);
+            vct_image two;
+            vct_render_result result;
+            vct_error err = {0};
+            REQUIRE_OK(vct_group_render(g, &job, &two, &result, &err), err);
+            const size_t d = differing(&one, &two);
+            CHECK(d == 0, "%s, %s, frame %d: %zu values differ between 1 and 2 devices", scene_name,
+                  c->name, frame, d);
+            CHECK(mean(&one) > 0.0, "%s, %s: a black image proves nothing", scene_name, c->name);
+            vct_image_free(&two);
+        }
+        const vct_group_device *dev;
+        vct_group_devices(g, &dev);
+        printf("%s, %s: identical on 2 devices; work %.0f + %.0f, shares %.2f/%.2f\n", scene_name,
+               c->name, dev[0].last_work, dev[1].last_work, dev[0].share, dev[1].share);
+        vct_image_free(&one);
+    }
+    vct_group_destroy(g);
+}
+
+/* Device 1 made 4x slower: its share of rows falls towards 1/5 and the
+ * image stays the same. */
+static void check_slowed(const vct_scene *s) {
+    const method_case *c = &cases[2]; /* whitted */
+    vct_image one = single(c, s);
+    vct_group *g = group_for(s);
+    setenv("VCT_SLOW_LAUNCH", "1:4", 1);
+    const vct_group_device *dev;
+    vct_group_devices(g, &dev);
+    double shares[8];
+    for (int frame = 0; frame < 8; ++frame) {
+        vct_render_job job = job_of(c, s);
+        job.whitted.width = job.whitted.height = 256; /* work enough to measure */
+        vct_image two;
+        vct_error err = {0};
+        REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
+        vct_image_free(&two);
+        shares[frame] = dev[1].share;
+        printf("slowed device: frame %d, share %.3f (%.1f ms for %.0f rows; device 0 %.1f ms "
+               "for %.0f)\n",
+               frame, dev[1].share, dev[1].last_ms, dev[1].last_work, dev[0].last_ms,
+               dev[0].last_work);
+    }
+    CHECK(shares[7] > 0.05 && shares[7] < 0.4,
+          "the 4x slower device's share %.3f is not near the 0.2 its speed predicts", shares[7]);
+    CHECK(fabs(shares[7] - shares[6]) < 0.06, "shares still moving after 8 frames: %.3f, %.3f",
+          shares[6], shares[7]);
+    vct_render_job job = job_of(c, s);
+    vct_image two;
+    vct_error err = {0};
+    REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
+    CHECK(differing(&one, &two) == 0, "uneven shares changed the image");
+    unsetenv("VCT_SLOW_LAUNCH");
+    vct_image_free(&two);
+    vct_image_free(&one);
+    vct_group_destroy(g);
+}
+
+/* Device 1 fails a few launches into the frame: the other completes it,
+ * unchanged, and the failure is counted once. */
+static void check_failure(const vct_scene *s, int method_index) {
+    const method_case *c = &cases[method_index];
+    vct_image one = single(c, s);
+    vct_group *g = group_for(s);
+    char at[32];
+    snprintf(at, sizeof at, "1:%ld", vct_group_context(g, 1)->launch_count + 3);
+    setenv("VCT_FAIL_LAUNCH", at, 1);
+    for (int frame = 0; frame < 2; ++frame) {
+        vct_render_job job = job_of(c, s);
+        vct_image two;
+        vct_error err = {0};
+        REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
+        CHECK(differing(&one, &two) == 0, "%s, frame %d: a failed device changed the image",
+              c->name, frame);
+        vct_image_free(&two);
+    }
+    unsetenv("VCT_FAIL_LAUNCH");
+    const vct_group_device *dev;
+    vct_group_devices(g, &dev);
+    CHECK(vct_group_faults(g) == 1 && !dev[1].active && dev[0].active,
+          "%s: %d failures reported, device 1 %s", c->name, vct_group_faults(g),
+          dev[1].active ? "still active" : "dropped");
+    CHECK(strstr(dev[1].dropped, "VCT_FAIL_LAUNCH") != NULL, "the reason names the failure: %s",
+          dev[1].dropped);
+    vct_image_free(&one);
+    vct_group_destroy(g);
+}
+
+int main(void) {
+    check_lists();
+    vct_scene *box = check_cornell_box_point_light();
+    check_methods("cornell box", box);
+    check_slowed(box);
+    check_failure(box, 3); /* whitted, subsampled: rows */
+    check_failure(box, 6); /* pt: samples */
+    vct_scene_free(box);
+    vct_scene *lit = check_cornell_box();
+    check_methods("emissive cornell box", lit);
+    vct_scene_free(lit);
+    return check_exit("test_multi");
+}
