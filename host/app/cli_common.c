@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 
 #include "cli_common.h"
@@ -171,4 +172,64 @@ void cli_print_pm(const vct_pm_result *r, FILE *out) {
     }
     fprintf(out, "  device time: photons %.1f ms, grids %.1f ms, gathers %.1f ms\n", r->trace_ms,
             r->grid_ms, r->gather_ms);
+}
+
+vct_render_job cli_render_job(const cli_options *opt, vct_method method, const vct_scene *s) {
+    vct_render_job job = vct_render_job_default(method, opt->width, opt->height);
+    job.scene = s;
+    job.pathtrace.spp = (uint32_t)(opt->spp ? opt->spp : (opt->time_limit > 0 ? 0 : 64));
+    job.pathtrace.time_limit_s = opt->time_limit;
+    job.pathtrace.max_depth = (uint32_t)(opt->max_depth ? opt->max_depth : 16);
+    if (opt->max_depth)
+        job.whitted.max_depth = (uint32_t)opt->max_depth;
+    job.whitted.subsample = (uint32_t)opt->subsample;
+    job.whitted.subsample_unguarded = (uint32_t)opt->subsample_plain;
+    job.raycast.subsample = job.whitted.subsample;
+    job.raycast.subsample_unguarded = job.whitted.subsample_unguarded;
+    job.whitted.subsample_contrast = job.raycast.subsample_contrast = opt->contrast;
+    job.pathtrace.seed = (uint32_t)opt->seed;
+    job.pathtrace.progress = 1;
+    cli_pm_options(opt, &job.pm);
+    vct_vct_options *vo = &job.vct;
+    vo->diffuse_cones = (uint32_t)opt->diffuse_cones;
+    vo->cones = opt->cones;
+    vo->sparse_diffuse = opt->sparse_diffuse;
+    vo->aovs = opt->aov_prefix != NULL;
+    return job;
+}
+
+void cli_print_result(const cli_options *opt, const vct_render_result *r) {
+    const double pixels = (double)opt->width * opt->height;
+    if (r->method == VCT_METHOD_WHITTED)
+        fprintf(stderr, "whitted: %llu of %.0f pixels traced (%.1f %% interpolated)\n",
+                (unsigned long long)r->traced, pixels, 100.0 * (1.0 - (double)r->traced / pixels));
+    if (r->method == VCT_METHOD_PATHTRACE)
+        fprintf(stderr,
+                "path tracing: %u spp in %.2f s (%.1f spp/s), %u samples discarded as "
+                "not finite\n",
+                r->spp, r->seconds, r->seconds > 0 ? r->spp / r->seconds : 0.0, r->discarded);
+}
+
+int cli_write_image(const cli_options *opt, const vct_image *image, const char *out,
+                    vct_error *err) {
+    int rc = cli_make_parent_dir(out, err);
+    const char *dot = strrchr(out, '.');
+    const int png = dot && strcmp(dot, ".png") == 0;
+    float stops = 0.0f;
+    if (rc == VCT_OK)
+        rc = png ? vct_image_write_png_tone(image, out, &opt->tone, &stops, err)
+                 : vct_image_write_pfm(image, out, err);
+    if (rc == VCT_OK && png)
+        printf("wrote %s (%dx%d, exposure %+.2f stops%s, %s curve, sRGB)\n", out, image->width,
+               image->height, stops, opt->tone.auto_exposure ? " from the image" : "",
+               vct_tone_curve_name(opt->tone.curve));
+    else if (rc == VCT_OK)
+        printf("wrote %s (%dx%d, linear radiance)\n", out, image->width, image->height);
+    return rc;
+}
+
+int cli_device_list(const cli_options *opt) {
+    const char *list = opt->device && *opt->device ? opt->device : getenv("VCT_DEVICE");
+    return list && (strchr(list, ',') || strcasecmp(list, "all") == 0 ||
+                    strcasecmp(list, "gpu") == 0 || strcasecmp(list, "cpu") == 0);
 }

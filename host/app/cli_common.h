@@ -23,5 +23,14 @@ vct_accel *cli_accel_build(vct_context *ctx, const vct_scene *s, const cli_optio
 void cli_pm_options(const cli_options *opt, vct_pm_options *pm);
 void cli_print_pm(const vct_pm_result *r, FILE *out);
 int cli_print_accel(vct_context *ctx, const vct_accel *accel, FILE *out, vct_error *err);
+/* The render job the options describe (no structures yet). */
+vct_render_job cli_render_job(const cli_options *opt, vct_method method, const vct_scene *s);
+/* What a render did (traced pixels, samples), on stderr. */
+void cli_print_result(const cli_options *opt, const vct_render_result *result);
+/* The image as PNG (tone mapped) or PFM, by the name's ending, and a line. */
+int cli_write_image(const cli_options *opt, const vct_image *image, const char *out,
+                    vct_error *err);
+/* 1 when --device (or $VCT_DEVICE) names several devices: "0,2", all, gpu, cpu. */
+int cli_device_list(const cli_options *opt);
 
 #endif

@@ -33,11 +33,6 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
     vct_plan_make(job->scene, opt->force, &plan);
     if (opt->print_plan)
         cli_print_plan(&plan, stdout);
-    vct_vct_options *vo = &job->vct;
-    vo->diffuse_cones = (uint32_t)opt->diffuse_cones;
-    vo->cones = opt->cones;
-    vo->sparse_diffuse = opt->sparse_diffuse;
-    vo->aovs = opt->aov_prefix != NULL;
     vct_voxel_options voxel;
     /* 128^3 by default: within 1 % of the best error measured on the Cornell
      * box (64^3) and on the heavy scene (256^3) (README, accuracy). */

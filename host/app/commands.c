@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include "cli_common.h"
+#include "cmd_render_group.h"
 #include "cmd_render_vct.h"
 #include "commands.h"
 
@@ -98,7 +99,6 @@ int cmd_render(const cli_options *opt) {
         fprintf(stderr, "vct: --subsample is for --method whitted and raycast\n");
         return 1;
     }
-    const int pt = method == VCT_METHOD_PATHTRACE;
     vct_scene *s = cli_load_scene(opt, &err);
     if (!s)
         return cli_fail(&err);
@@ -110,6 +110,11 @@ int cmd_render(const cli_options *opt) {
     if (s->light_count == 0 && !emissive)
         fprintf(stderr, "vct: the scene has no lights and nothing emits: only ambient light will "
                         "show (add --point-light, --dir-light or --ambient)\n");
+    if (cli_device_list(opt)) {
+        const int rc = cli_render_group(opt, s, (vct_method)method, out);
+        vct_scene_free(s);
+        return rc;
+    }
     vct_context *ctx = cli_open_context(opt, &err);
     if (!ctx) {
         vct_scene_free(s);
@@ -117,58 +122,24 @@ int cmd_render(const cli_options *opt) {
     }
     vct_image image = {0};
     vct_accel *accel = cli_accel_build(ctx, s, opt, &err);
-    vct_render_job job = vct_render_job_default((vct_method)method, opt->width, opt->height);
-    job.scene = s;
+    vct_render_job job = cli_render_job(opt, (vct_method)method, s);
     job.accel = accel;
-    job.pathtrace.spp = (uint32_t)(opt->spp ? opt->spp : (opt->time_limit > 0 ? 0 : 64));
-    job.pathtrace.time_limit_s = opt->time_limit;
-    job.pathtrace.max_depth = (uint32_t)(opt->max_depth ? opt->max_depth : 16);
-    if (opt->max_depth)
-        job.whitted.max_depth = (uint32_t)opt->max_depth;
-    job.whitted.subsample = (uint32_t)opt->subsample;
-    job.whitted.subsample_unguarded = (uint32_t)opt->subsample_plain;
-    job.raycast.subsample = job.whitted.subsample;
-    job.raycast.subsample_unguarded = job.whitted.subsample_unguarded;
-    job.whitted.subsample_contrast = job.raycast.subsample_contrast = opt->contrast;
-    job.pathtrace.seed = (uint32_t)opt->seed;
-    job.pathtrace.progress = 1;
-    cli_pm_options(opt, &job.pm);
     vct_render_result result = {0};
     vct_pm_result pm = {0};
     int rc = !accel                     ? (int)err.status
              : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &err)
              : method == VCT_METHOD_PM  ? vct_render_pm(ctx, s, accel, &job.pm, &image, &pm, &err)
                                         : vct_render(ctx, &job, &image, &result, &err);
-    if (rc == VCT_OK && method == VCT_METHOD_WHITTED)
-        fprintf(stderr, "whitted: %llu of %llu pixels traced (%.1f %% interpolated)\n",
-                (unsigned long long)result.traced,
-                (unsigned long long)opt->width * (unsigned long long)opt->height,
-                100.0 * (1.0 - (double)result.traced / ((double)opt->width * opt->height)));
     if (rc == VCT_OK && method == VCT_METHOD_PM)
         cli_print_pm(&pm, stderr);
-    if (rc == VCT_OK && pt)
-        fprintf(stderr,
-                "path tracing: %u spp in %.2f s (%.1f spp/s), %u samples discarded as "
-                "not finite\n",
-                result.spp, result.seconds, result.seconds > 0 ? result.spp / result.seconds : 0.0,
-                result.discarded);
     if (rc == VCT_OK)
-        rc = cli_make_parent_dir(out, &err);
-    const int png = strcmp(dot, ".png") == 0;
-    float stops = 0.0f;
+        cli_print_result(opt, &result);
     if (rc == VCT_OK)
-        rc = png ? vct_image_write_png_tone(&image, out, &opt->tone, &stops, &err)
-                 : vct_image_write_pfm(&image, out, &err);
+        rc = cli_write_image(opt, &image, out, &err);
     if (rc == VCT_OK) {
         rc = cli_print_accel(ctx, accel, stderr, &err);
         if (opt->stats)
             cli_print_stats(ctx);
-        if (png)
-            printf("wrote %s (%dx%d, exposure %+.2f stops%s, %s curve, sRGB)\n", out, image.width,
-                   image.height, stops, opt->tone.auto_exposure ? " from the image" : "",
-                   vct_tone_curve_name(opt->tone.curve));
-        else
-            printf("wrote %s (%dx%d, linear radiance)\n", out, image.width, image.height);
     }
     vct_image_free(&image);
     vct_accel_free(accel);

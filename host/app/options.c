@@ -93,7 +93,9 @@ void cli_usage(void) {
         "                                   filmic, an ACES fit; clip: 1 and above is white)\n"
         "  --stats                          per-stage device time and memory\n"
         "  --device N|NAME                  OpenCL device (default $VCT_DEVICE, else first GPU,\n"
-        "                                   else first CPU)\n",
+        "                                   else first CPU)\n"
+        "  --device 0,2|all|gpu|cpu         render: several devices, one frame (path tracing\n"
+        "                                   split by samples, the others by row bands)\n",
         stderr);
 }
 

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "multi/balance.h"
 #include "runtime/runtime.h"
 
 #define WIDTH 40
@@ -223,13 +224,80 @@ static void check_failure(const vct_scene *s, int method_index) {
     vct_group_destroy(g);
 }
 
+/* Device 1 cannot hold the structures: left out with a message, the frame
+ * made by device 0. */
+static void check_small_device(const vct_scene *s) {
+    setenv("VCT_MAX_ALLOC_MIB", "1:0.002", 1);
+    vct_error err = {0};
+    vct_group *g = vct_group_create("0,1", &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    unsetenv("VCT_MAX_ALLOC_MIB");
+    const vct_group_build b = build_options(s);
+    REQUIRE_OK(vct_group_prepare(g, s, &b, &err), err);
+    const vct_group_device *dev;
+    vct_group_devices(g, &dev);
+    CHECK(dev[0].active && !dev[1].active && strstr(dev[1].dropped, "MiB"),
+          "the small device is left out, saying why: %s", dev[1].dropped);
+    const method_case *c = &cases[0];
+    vct_image one = single(c, s);
+    vct_render_job job = job_of(c, s);
+    vct_image two;
+    REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
+    CHECK(differing(&one, &two) == 0, "the device left out changed the image");
+    vct_image_free(&two);
+    vct_image_free(&one);
+    vct_group_destroy(g);
+}
+
+/* The scheduler's arithmetic against values worked by hand. */
+static void check_balance(void) {
+    const int active[2] = {1, 1};
+    double share[2] = {0.5, 0.5};
+    const double speed[2] = {3.0, 1.0};
+    CHECK(vct_balance_shares(2, active, speed, share) && fabs(share[0] - 0.625) < 1e-12,
+          "half way from 0.5 to the 0.75 speeds 3:1 ask: %g", share[0]);
+    int frames = 1;
+    while (vct_balance_shares(2, active, speed, share) && frames < 20)
+        ++frames;
+    CHECK(frames <= 5 && fabs(share[0] - 0.75) < VCT_BALANCE_DEAD_BAND,
+          "settled within the dead band of 0.75 in %d frames: %g", frames, share[0]);
+    const double lopsided[2] = {100.0, 1.0};
+    vct_balance_shares(2, active, lopsided, share);
+    CHECK(share[1] == 0.0 && share[0] == 1.0, "a device worth under 3 %% gets nothing: %g",
+          share[1]);
+    const double split_share[3] = {0.625, 0.0, 0.375};
+    int counts[3];
+    vct_balance_split(3, split_share, 37, counts);
+    CHECK(counts[0] == 23 && counts[1] == 0 && counts[2] == 14, "37 rows split %d/%d/%d", counts[0],
+          counts[1], counts[2]);
+    const double tiny[2] = {0.999, 0.001};
+    vct_balance_split(2, tiny, 3, counts);
+    CHECK(counts[0] == 2 && counts[1] == 1, "a share gets a unit at least: %d/%d", counts[0],
+          counts[1]);
+    vct_solo solo = {0};
+    vct_solo_next(&solo, 10.0, 0, 0);
+    CHECK(solo.state == VCT_ALL_DEVICES, "no probe before the shares settle");
+    vct_solo_next(&solo, 10.0, 1, 1);
+    CHECK(solo.state == VCT_SOLO_PROBE && solo.device == 1, "settled: the fastest is tried alone");
+    vct_solo_next(&solo, 9.0, 1, 1);
+    CHECK(solo.state == VCT_SOLO, "alone 9 ms against 10 together: it stays alone");
+    for (int f = 0; f <= VCT_SOLO_RETRY; ++f)
+        vct_solo_next(&solo, 9.0, 1, 1);
+    CHECK(solo.state == VCT_ALL_DEVICES, "the devices together are tried again");
+    vct_solo_next(&solo, 8.0, 1, 1);
+    vct_solo_next(&solo, 8.5, 1, 1);
+    CHECK(solo.state == VCT_ALL_DEVICES, "together 8 ms, alone 8.5: together it is");
+}
+
 int main(void) {
+    check_balance();
     check_lists();
     vct_scene *box = check_cornell_box_point_light();
     check_methods("cornell box", box);
     check_slowed(box);
     check_failure(box, 3); /* whitted, subsampled: rows */
     check_failure(box, 6); /* pt: samples */
+    check_small_device(box);
     vct_scene_free(box);
     vct_scene *lit = check_cornell_box();
     check_methods("emissive cornell box", lit);

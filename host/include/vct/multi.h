@@ -68,6 +68,8 @@ typedef struct vct_group_device {
 
 /* The devices, in the order the list named them. */
 int vct_group_devices(const vct_group *group, const vct_group_device **devices);
+/* Devices not dropped. */
+int vct_group_active_count(const vct_group *group);
 /* Failures seen so far (each reported once, on stderr, when it happened). */
 int vct_group_faults(const vct_group *group);
 

@@ -13,7 +13,7 @@ static void normalise(int n, double *share) {
         share[i] = sum > 0.0 ? share[i] / sum : 0.0;
 }
 
-void vct_balance_shares(int n, const int *active, const double *speed, double *share) {
+int vct_balance_shares(int n, const int *active, const double *speed, double *share) {
     double known = 0.0, measured = 0.0;
     int live = 0;
     for (int i = 0; i < n; ++i)
@@ -23,7 +23,7 @@ void vct_balance_shares(int n, const int *active, const double *speed, double *s
                 known += speed[i], measured += 1.0;
         }
     if (live == 0)
-        return;
+        return 0;
     double target[64], prior_sum = 0.0;
     for (int i = 0; i < n && i < 64; ++i) {
         target[i] = !active[i]       ? 0.0
@@ -43,12 +43,42 @@ void vct_balance_shares(int n, const int *active, const double *speed, double *s
             (target[i] == 0.0 && share[i] > 0.0))
             moved = 1;
     if (!moved)
-        return;
+        return 0;
     for (int i = 0; i < n; ++i)
         share[i] = target[i] == 0.0 || !(prior_sum > 0.0)
                        ? target[i]
                        : share[i] + (target[i] - share[i]) * VCT_BALANCE_DAMPING;
     normalise(n, share);
+    return 1;
+}
+
+void vct_solo_next(vct_solo *solo, double frame_ms, int settled, int fastest) {
+    ++solo->frames;
+    switch (solo->state) {
+    case VCT_ALL_DEVICES:
+        solo->all_ms = frame_ms;
+        /* after the shares settle, or a few frames of noise that keeps them moving */
+        if ((settled || solo->frames >= VCT_SOLO_AFTER) && fastest >= 0 &&
+            (solo->solo_ms == 0.0 || solo->frames > VCT_SOLO_RETRY)) {
+            solo->state = VCT_SOLO_PROBE;
+            solo->device = fastest;
+            solo->frames = 0;
+        }
+        break;
+    case VCT_SOLO_PROBE:
+        solo->solo_ms = frame_ms;
+        /* within 2 %: the devices together, which stay measured */
+        solo->state = frame_ms < 0.98 * solo->all_ms ? VCT_SOLO : VCT_ALL_DEVICES;
+        solo->frames = 0;
+        break;
+    case VCT_SOLO:
+        solo->solo_ms = frame_ms;
+        if (solo->frames > VCT_SOLO_RETRY) {
+            solo->state = VCT_ALL_DEVICES;
+            solo->frames = 0;
+        }
+        break;
+    }
 }
 
 void vct_balance_split(int n, const double *share, int units, int *counts) {

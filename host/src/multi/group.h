@@ -3,6 +3,7 @@
 #ifndef VCT_MULTI_GROUP_H
 #define VCT_MULTI_GROUP_H
 
+#include "multi/balance.h"
 #include "runtime/runtime.h"
 
 #define VCT_GROUP_MAX 16
@@ -15,6 +16,7 @@ struct vct_group {
     vct_voxels *voxels[VCT_GROUP_MAX];
     int faults;
     uint32_t pt_done; /* samples of the path tracer's running sums (resume) */
+    vct_solo solo;    /* row methods: the devices together, or the fastest alone */
 };
 
 /* Runs work(group, device, arg) for every active device at once, one host
@@ -24,9 +26,6 @@ int vct_group_each(vct_group *g, vct_group_work work, void *arg, vct_error *err)
 
 /* Drops a device that failed with `why`: said once on stderr. */
 void vct_group_drop(vct_group *g, int device, const vct_error *why);
-
-/* The number of active devices. */
-int vct_group_active(const vct_group *g);
 
 /* Row methods and the path tracer, over the active devices. */
 int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,

@@ -58,11 +58,15 @@ static void render_band(vct_group *g, int i, void *arg) {
     r->ms[i] = vct_now_ms() - t0;
 }
 
-/* Shares of the active devices, equal when none has one left. */
+/* Shares of the active devices (the fastest alone, when it is measured to
+ * beat them all), equal when none has one left. */
 static void active_shares(const vct_group *g, double *share) {
     int with_share = 0;
+    const int solo = g->solo.state != VCT_ALL_DEVICES && g->devices[g->solo.device].active;
     for (int i = 0; i < g->count; ++i) {
-        share[i] = g->devices[i].active ? g->devices[i].share : 0.0;
+        share[i] = !g->devices[i].active ? 0.0
+                   : solo                ? (i == g->solo.device ? 1.0 : 0.0)
+                                         : g->devices[i].share;
         with_share += share[i] > 0.0;
     }
     for (int i = 0; i < g->count && !with_share; ++i)
@@ -116,10 +120,12 @@ static int render_range(vct_group *g, const vct_render_job *job, int first, int 
         memcpy(image->rgba + (size_t)b.first * row_floats, r->images[i].rgba,
                (size_t)b.rows * row_floats * sizeof(float));
         result->traced += r->results[i].traced;
+        vct_group_device *d = &g->devices[i];
         if (measure) {
-            vct_group_device *d = &g->devices[i];
             d->last_ms = r->ms[i];
             d->last_work = b.rows;
+        }
+        if (measure && g->solo.state == VCT_ALL_DEVICES) {
             /* averaged with the last measurement: one slow frame (a page
              * fault, a busy host) does not swing the shares */
             const double speed = r->ms[i] > 0.0 ? b.rows / (r->ms[i] * 1e-3) : 0.0;
@@ -128,10 +134,10 @@ static int render_range(vct_group *g, const vct_render_job *job, int first, int 
     }
     for (int i = 0; i < g->count; ++i)
         vct_image_free(&r->images[i]);
-    if (failures && vct_group_active(g) == 0)
+    if (failures && vct_group_active_count(g) == 0)
         *err = r->errors[last_failure];
     free(r);
-    if (failures && vct_group_active(g) == 0)
+    if (failures && vct_group_active_count(g) == 0)
         return err->status ? (int)err->status : VCT_ERR_OPENCL;
     for (int k = 0; rc == VCT_OK && k < failures; ++k)
         rc = render_range(g, job, failed[k].first, failed[k].rows, image, result, 0, err);
@@ -161,15 +167,22 @@ int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *im
         return rc;
     }
     double speed[VCT_GROUP_MAX], share[VCT_GROUP_MAX];
-    int active[VCT_GROUP_MAX];
+    int active[VCT_GROUP_MAX], fastest = -1;
     for (int i = 0; i < g->count; ++i) {
         active[i] = g->devices[i].active;
         speed[i] = g->devices[i].speed;
         share[i] = g->devices[i].share;
+        if (active[i] && (fastest < 0 || speed[i] > speed[fastest]))
+            fastest = i;
     }
-    vct_balance_shares(g->count, active, speed, share);
-    for (int i = 0; i < g->count; ++i)
-        g->devices[i].share = share[i];
+    int settled = 1;
+    if (g->solo.state == VCT_ALL_DEVICES) {
+        settled = !vct_balance_shares(g->count, active, speed, share);
+        for (int i = 0; i < g->count; ++i)
+            g->devices[i].share = share[i];
+    }
+    if (vct_group_active_count(g) > 1)
+        vct_solo_next(&g->solo, vct_now_ms() - t0, settled, fastest);
     if (result) {
         *result = sum;
         result->method = job->method;

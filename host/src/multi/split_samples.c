@@ -166,7 +166,7 @@ static int run_rounds(sample_run *s, vct_error *err) {
             if (g->devices[i].active && s->rc[i] != VCT_OK)
                 failed = i;
         }
-        if (failed >= 0 && vct_group_active(g) == 1) {
+        if (failed >= 0 && vct_group_active_count(g) == 1) {
             *err = s->errors[failed];
             drop_failed(s);
             return err->status ? (int)err->status : VCT_ERR_OPENCL;
@@ -198,7 +198,7 @@ int vct_group_render_samples(vct_group *g, const vct_render_job *job, vct_image 
     s->next = g->pt_done;
     s->end = g->pt_done + opt->spp;
     s->deadline_ms = opt->spp ? 0.0 : t0 + opt->time_limit_s * 1e3;
-    const uint32_t share = opt->spp / (8u * (uint32_t)vct_group_active(g));
+    const uint32_t share = opt->spp / (8u * (uint32_t)vct_group_active_count(g));
     s->chunk_size = share > per_pass ? share / per_pass * per_pass : per_pass;
     for (int i = 0; i < g->count; ++i) {
         s->opt[i] = *opt;

@@ -30,11 +30,19 @@ static void choose_tuning(vct_context *ctx) {
     const char *bits = getenv("VCT_RADIX_BITS");
     if (bits && atoi(bits) >= 1 && atoi(bits) <= 12)
         ctx->radix_bits = atoi(bits);
-    /* VCT_MAX_ALLOC_MIB lowers the per-buffer limit, to see how a smaller
-     * device would fail without one at hand. */
+    /* VCT_MAX_ALLOC_MIB=M (every device) or D:M (device D only) lowers the
+     * per-buffer limit, to see how a smaller device would fail without one
+     * at hand. */
     const char *limit = getenv("VCT_MAX_ALLOC_MIB");
-    if (limit && atof(limit) > 0.0 && atof(limit) * 1048576.0 < (double)ctx->info.max_alloc)
-        ctx->info.max_alloc = (uint64_t)(atof(limit) * 1048576.0);
+    int only = -1;
+    double mib = 0.0;
+    if (limit && sscanf(limit, "%d:%lf", &only, &mib) != 2) {
+        only = -1;
+        mib = atof(limit);
+    }
+    if (mib > 0.0 && (only < 0 || only == ctx->info.index) &&
+        mib * 1048576.0 < (double)ctx->info.max_alloc)
+        ctx->info.max_alloc = (uint64_t)(mib * 1048576.0);
     if (ctx->scan_groups < 4)
         ctx->scan_groups = 4;
     if (ctx->scan_groups > 1024)

@@ -34,15 +34,27 @@ static int launch_switches(vct_context *ctx, const char *stage, double *slow_fac
     return VCT_OK;
 }
 
-/* VCT_SLOW_LAUNCH's wait, after a launch queued at host time start_ms. */
-static void launch_slowdown(vct_context *ctx, double factor, double start_ms) {
-    if (!(factor > 1.0))
+/* VCT_SLOW_LAUNCH's wait, after launch `ev` queued at host time start_ms:
+ * its own run time from the event where the queue profiles (a device that
+ * shares its cores with another would count the other's work too). */
+static void launch_slowdown(vct_context *ctx, cl_event ev, double factor, double start_ms) {
+    if (!(factor > 1.0) || !ev)
         return;
-    clFinish(ctx->queue);
-    const double wait_ms = (vct_now_ms() - start_ms) * (factor - 1.0);
+    clWaitForEvents(1, &ev);
+    double run_ms = vct_now_ms() - start_ms;
+    cl_ulong t0 = 0, t1 = 0;
+    if (ctx->profiling &&
+        clGetEventProfilingInfo(ev, CL_PROFILING_COMMAND_START, sizeof t0, &t0, NULL) ==
+            CL_SUCCESS &&
+        clGetEventProfilingInfo(ev, CL_PROFILING_COMMAND_END, sizeof t1, &t1, NULL) == CL_SUCCESS &&
+        t1 >= t0)
+        run_ms = (double)(t1 - t0) * 1e-6;
+    const double wait_ms = run_ms * (factor - 1.0);
     const struct timespec pause = {(time_t)(wait_ms / 1e3), (long)(fmod(wait_ms, 1e3) * 1e6)};
     nanosleep(&pause, NULL);
 }
+
+#define DEFAULT_LOCAL_SIZE 64
 
 static int kernel_name_of(cl_kernel kernel, char *name, size_t size) {
     name[0] = '\0';
@@ -54,8 +66,18 @@ int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, 
     kernel_name_of(kernel, name, sizeof name);
     if (global == 0)
         return VCT_OK; /* nothing to do; zero-sized NDRanges are invalid in OpenCL 1.2 */
-    if (local)
-        global = (global + local - 1) / local * local;
+    if (!local) {
+        /* A fixed work-group rather than the driver's pick: drivers that
+         * compile per work-group size (PoCL) would build a new one for every
+         * new count. Kernels check their bounds. */
+        size_t most = 0;
+        local = DEFAULT_LOCAL_SIZE;
+        if (clGetKernelWorkGroupInfo(kernel, ctx->device, CL_KERNEL_WORK_GROUP_SIZE, sizeof most,
+                                     &most, NULL) == CL_SUCCESS &&
+            most > 0 && most < local)
+            local = most;
+    }
+    global = (global + local - 1) / local * local;
     cl_event ev = NULL;
     const char *stage = ctx->current_stage >= 0 ? ctx->stages[ctx->current_stage].name : name;
     double slow = 0.0;
@@ -65,7 +87,7 @@ int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, 
     VCT_CL(err, stage,
            clEnqueueNDRangeKernel(ctx->queue, kernel, 1, NULL, &global, local ? &local : NULL, 0,
                                   NULL, &ev));
-    launch_slowdown(ctx, slow, start_ms);
+    launch_slowdown(ctx, ev, slow, start_ms);
     return vct_record_event(ctx, ev, name, err);
 }
 
@@ -86,7 +108,7 @@ int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global_in[2],
     const double start_ms = vct_now_ms();
     VCT_CL(err, stage,
            clEnqueueNDRangeKernel(ctx->queue, kernel, 2, NULL, global, local, 0, NULL, &ev));
-    launch_slowdown(ctx, slow, start_ms);
+    launch_slowdown(ctx, ev, slow, start_ms);
     return vct_record_event(ctx, ev, name, err);
 }
 

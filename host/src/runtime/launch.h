@@ -7,7 +7,9 @@
 #include "runtime/stats.h"
 
 /* Enqueues a 1D kernel over `global` work-items rounded up to `local`
- * (local 0 = let the runtime choose), records the event in the current stage. */
+ * (local 0: 64, or the kernel's largest work-group when smaller; never the
+ * driver's pick, which some compile anew per size), records the event in the
+ * current stage. */
 int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, vct_error *err);
 int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global[2], const size_t local[2],
                   vct_error *err);

@@ -1,0 +1,148 @@
+/* Frame time on one device and on several at once, per method, in one run:
+ * efficiency = the group's throughput / the sum of its devices' own, and
+ * the group's time against the fastest device alone. Shares settle over the
+ * frames (row methods); the median of the last frames is reported.
+ *
+ * Usage: bench_multi [LIST...] (default: "0" "1" "0,1"); the last list is
+ * the group, the others its devices alone. The scene is the Cornell box
+ * with its point light (or VCT_BENCH_HEAVY=1: the 102k-triangle scene). */
+#include "bench_util.h"
+#include "heavy_scene.h"
+
+#define SIZE 384
+#define FRAMES 7
+
+typedef struct method_row {
+    const char *name;
+    vct_method method;
+    uint32_t subsample;
+} method_row;
+
+static const method_row methods[] = {
+    {"raycast", VCT_METHOD_RAYCAST, 0},
+    {"whitted", VCT_METHOD_WHITTED, 0},
+    {"whitted, subsample 8", VCT_METHOD_WHITTED, 8},
+    {"vct", VCT_METHOD_VCT, 0},
+    {"pt, 16 spp", VCT_METHOD_PATHTRACE, 0},
+};
+
+static vct_plan plan;
+
+static int cmp_double(const void *a, const void *b) {
+    const double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* Median frame time (ms) of the last frames; *image: the last frame. */
+static double frames(vct_group *g, const vct_scene *s, const method_row *m, vct_image *image,
+                     double *share_last) {
+    double ms[FRAMES];
+    for (int f = 0; f < FRAMES; ++f) {
+        vct_render_job job = vct_render_job_default(m->method, SIZE, SIZE);
+        job.scene = s;
+        job.plan = &plan;
+        job.pathtrace.spp = 16;
+        job.pathtrace.max_depth = 8;
+        job.whitted.subsample = m->subsample;
+        vct_error err = {0};
+        vct_image_free(image);
+        const double t0 = vct_now_ms();
+        if (vct_group_render(g, &job, image, NULL, &err))
+            bench_die(&err);
+        ms[f] = vct_now_ms() - t0;
+        const vct_group_device *d;
+        const int n = vct_group_devices(g, &d);
+        if (getenv("VCT_BENCH_VERBOSE")) {
+            fprintf(stderr, "%s, frame %d: %.1f ms;", m->name, f, ms[f]);
+            for (int k = 0; k < n; ++k)
+                fprintf(stderr, " [%d] %.0f in %.1f ms, share %.2f", d[k].info.index,
+                        d[k].last_work, d[k].last_ms, d[k].share);
+            fprintf(stderr, "\n");
+        }
+    }
+    const vct_group_device *d;
+    vct_group_devices(g, &d);
+    *share_last = d[vct_group_size(g) - 1].share;
+    qsort(ms + FRAMES - 3, 3, sizeof(double), cmp_double);
+    return ms[FRAMES - 2];
+}
+
+int main(int argc, char **argv) {
+    const char *defaults[] = {"0", "1", "0,1"};
+    const char **lists = argc > 1 ? (const char **)argv + 1 : defaults;
+    const int count = argc > 1 ? argc - 1 : 3;
+    vct_error err = {0};
+    const char *src = getenv("VCT_SOURCE_DIR");
+    char path[1024];
+    snprintf(path, sizeof path, "%s/scenes/cornell_box.obj", src ? src : ".");
+    const char *heavy_env = getenv("VCT_BENCH_HEAVY");
+    vct_scene *s = heavy_env && atoi(heavy_env) ? heavy_scene_load(src ? src : ".", &err)
+                                                : vct_scene_load(path, &err);
+    if (!s)
+        bench_die(&err);
+    if (s->light_count == 0) {
+        vct_light light = {0};
+        light.type = VCT_LIGHT_POINT;
+        light.position[0] = 278.0f, light.position[1] = 448.8f, light.position[2] = 279.5f;
+        light.color[0] = light.color[1] = light.color[2] = 6e5f;
+        if (vct_scene_add_light(s, &light, &err))
+            bench_die(&err);
+    }
+    vct_plan_make(s, NULL, &plan);
+    vct_group *groups[8];
+    for (int i = 0; i < count && i < 8; ++i) {
+        groups[i] = vct_group_create(lists[i], &err);
+        vct_group_build b;
+        memset(&b, 0, sizeof b);
+        b.accel.kind = VCT_ACCEL_BVH;
+        b.plan = &plan;
+        b.voxel.resolution = 64;
+        b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 1, 0};
+        b.bounces = 1;
+        b.cones = vct_vct_options_default().cones;
+        if (!groups[i] || vct_group_prepare(groups[i], s, &b, &err))
+            bench_die(&err);
+        const vct_group_device *d;
+        const int n = vct_group_devices(groups[i], &d);
+        printf("\"%s\":", lists[i]);
+        for (int k = 0; k < n; ++k)
+            printf(" [%d] %s (%s, %.0f ms to build)", d[k].info.index, d[k].info.name,
+                   d[k].info.platform, d[k].build_ms);
+        printf("\n");
+    }
+    printf("\n%dx%d, %s, median of the last 3 of %d frames\n\n", SIZE, SIZE,
+           heavy_env && atoi(heavy_env) ? "heavy scene" : "Cornell box", FRAMES);
+    printf("| method |");
+    for (int i = 0; i < count; ++i)
+        printf(" \"%s\" (ms) |", lists[i]);
+    printf(" efficiency | fastest alone / group | last device's share | same image |\n|---|");
+    for (int i = 0; i < count + 4; ++i)
+        printf("---:|");
+    printf("\n");
+    for (size_t m = 0; m < sizeof methods / sizeof *methods; ++m) {
+        double ms[8], share = 0.0, throughput_sum = 0.0, fastest = 1e30;
+        vct_image images[8] = {{0}};
+        for (int i = 0; i < count; ++i) {
+            ms[i] = frames(groups[i], s, &methods[m], &images[i], &share);
+            if (i < count - 1) {
+                throughput_sum += 1.0 / ms[i];
+                fastest = ms[i] < fastest ? ms[i] : fastest;
+            }
+        }
+        int same = 1;
+        const size_t floats = 4 * (size_t)SIZE * SIZE;
+        for (int i = 1; i < count; ++i)
+            same &= memcmp(images[0].rgba, images[i].rgba, floats * sizeof(float)) == 0;
+        printf("| %s |", methods[m].name);
+        for (int i = 0; i < count; ++i)
+            printf(" %.1f |", ms[i]);
+        printf(" %.2f | %.2f | %.2f | %s |\n", (1.0 / ms[count - 1]) / throughput_sum,
+               fastest / ms[count - 1], share, same ? "yes" : "NO");
+        for (int i = 0; i < count; ++i)
+            vct_image_free(&images[i]);
+    }
+    for (int i = 0; i < count; ++i)
+        vct_group_destroy(groups[i]);
+    vct_scene_free(s);
+    return 0;
+}

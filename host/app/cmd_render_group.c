@@ -1,0 +1,69 @@
+/* vct render on a device group: every device builds the scene's structures,
+ * the frame is split between them, and --stats says what each held, built
+ * and did. */
+#include <stdio.h>
+
+#include "cli_common.h"
+#include "cmd_render_group.h"
+
+static void print_devices(const vct_group *g, FILE *out) {
+    const vct_group_device *d;
+    const int n = vct_group_devices(g, &d);
+    fprintf(out, "%-4s %-44s %6s %9s %9s %7s %9s %9s  %s\n", "dev", "name", "type", "build ms",
+            "MiB", "share", "last ms", "work", "state");
+    for (int i = 0; i < n; ++i)
+        fprintf(out, "%-4d %-44.44s %6s %9.1f %9.2f %7.3f %9.1f %9.0f  %s\n", d[i].info.index,
+                d[i].info.name, d[i].info.is_gpu ? "GPU" : "CPU", d[i].build_ms, d[i].build_mib,
+                d[i].share, d[i].last_ms, d[i].last_work, d[i].active ? "active" : d[i].dropped);
+}
+
+int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
+                     const char *out) {
+    vct_error err = {0};
+    if (opt->aov_prefix) {
+        fprintf(stderr, "vct: --aov comes from one device: give --device one device\n");
+        return 1;
+    }
+    vct_group *g = vct_group_create(opt->device, &err);
+    if (!g)
+        return cli_fail(&err);
+    const vct_group_device *d;
+    const int n = vct_group_devices(g, &d);
+    for (int i = 0; i < n; ++i)
+        fprintf(stderr, "device %d: %s (%s)\n", d[i].info.index, d[i].info.name,
+                d[i].info.platform);
+    vct_plan plan;
+    vct_plan_make(s, opt->force, &plan);
+    if (method == VCT_METHOD_VCT && opt->print_plan)
+        cli_print_plan(&plan, stdout);
+    vct_group_build build;
+    build.accel = opt->accel;
+    build.plan = method == VCT_METHOD_VCT ? &plan : NULL;
+    cli_voxel_options(opt, 128, &build.voxel);
+    build.bricks = (vct_brick_options){opt->bricks, opt->anisotropic != 0, 0};
+    build.bounces = (uint32_t)opt->bounces;
+    build.cones = opt->cones;
+    int rc = vct_group_prepare(g, s, &build, &err);
+    vct_render_job job = cli_render_job(opt, method, s);
+    job.plan = &plan;
+    vct_image image = {0};
+    vct_render_result result = {0};
+    if (rc == VCT_OK)
+        rc = vct_group_render(g, &job, &image, &result, &err);
+    if (rc == VCT_OK) {
+        cli_print_result(opt, &result);
+        fprintf(stderr, "devices: %d of %d active, frame in %.1f ms\n", vct_group_active_count(g),
+                n, result.seconds * 1e3);
+        rc = cli_write_image(opt, &image, out, &err);
+    }
+    if (rc == VCT_OK && opt->stats) {
+        print_devices(g, stdout);
+        for (int i = 0; i < n; ++i) {
+            printf("device %d:\n", d[i].info.index);
+            cli_print_stats(vct_group_context(g, i));
+        }
+    }
+    vct_image_free(&image);
+    vct_group_destroy(g);
+    return rc == VCT_OK ? 0 : cli_fail(&err);
+}
