@@ -2,6 +2,7 @@
  * kept in an on-disk binary cache so that a warm start never recompiles. */
 #include <errno.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -107,8 +108,12 @@ static void store_cached(cl_program p, const char *path) {
     unsigned char *bins[1] = {bin};
     if (clGetProgramInfo(p, CL_PROGRAM_BINARIES, sizeof bins, bins, NULL) == CL_SUCCESS) {
         mkdirs(vct_cache_dir());
+        /* a name of this process and this call: contexts on several threads
+         * may write the same program at once (devices of one kind share it) */
+        static atomic_uint writes;
         char tmp[1300];
-        snprintf(tmp, sizeof tmp, "%s.%d.tmp", path, (int)getpid());
+        snprintf(tmp, sizeof tmp, "%s.%d.%u.tmp", path, (int)getpid(),
+                 atomic_fetch_add(&writes, 1u));
         FILE *f = fopen(tmp, "wb");
         if (f) {
             int ok = fwrite(bin, 1, size, f) == size;
