@@ -7,6 +7,7 @@
  * the group, the others its devices alone. The scene is the Cornell box
  * with its point light (or VCT_BENCH_HEAVY=1: the 102k-triangle scene). */
 #include "bench_util.h"
+#include "check.h"
 #include "heavy_scene.h"
 
 #define SIZE 384
@@ -73,21 +74,11 @@ int main(int argc, char **argv) {
     const int count = argc > 1 ? argc - 1 : 3;
     vct_error err = {0};
     const char *src = getenv("VCT_SOURCE_DIR");
-    char path[1024];
-    snprintf(path, sizeof path, "%s/scenes/cornell_box.obj", src ? src : ".");
     const char *heavy_env = getenv("VCT_BENCH_HEAVY");
     vct_scene *s = heavy_env && atoi(heavy_env) ? heavy_scene_load(src ? src : ".", &err)
-                                                : vct_scene_load(path, &err);
+                                                : check_cornell_box_point_light();
     if (!s)
         bench_die(&err);
-    if (s->light_count == 0) {
-        vct_light light = {0};
-        light.type = VCT_LIGHT_POINT;
-        light.position[0] = 278.0f, light.position[1] = 448.8f, light.position[2] = 279.5f;
-        light.color[0] = light.color[1] = light.color[2] = 6e5f;
-        if (vct_scene_add_light(s, &light, &err))
-            bench_die(&err);
-    }
     vct_plan_make(s, NULL, &plan);
     vct_group *groups[8];
     for (int i = 0; i < count && i < 8; ++i) {

@@ -28,8 +28,9 @@ static vct_scene *load(const char *relative) {
     vct_error err = {0};
     vct_scene *s = vct_scene_load(path, &err);
     if (!s) {
-        fprintf(stderr, "bench_photons: %s (the suite's scenes are written by "
-                        "python3 scenes/suite/make_suite.py)\n",
+        fprintf(stderr,
+                "bench_photons: %s (the suite's scenes are written by "
+                "python3 scenes/suite/make_suite.py)\n",
                 err.message);
         exit(1);
     }

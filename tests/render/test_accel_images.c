@@ -52,7 +52,7 @@ static void check_scene(const char *name, const vct_scene *s) {
         double sum = 0.0;
         for (size_t i = 0; i < n; ++i) {
             differ += memcmp(&bvh.rgba[i], &grid.rgba[i], sizeof(float)) != 0;
-            sum += bvh.rgba[i];
+            sum += i % 4 == 3 ? 0.0 : bvh.rgba[i]; /* alpha is 1 everywhere */
         }
         const char *method = vct_method_name(methods[m]);
         CHECK(differ == 0, "%s, %s: %zu of %zu values differ between bvh and grid", name, method,

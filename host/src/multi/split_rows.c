@@ -1,7 +1,7 @@
 /* Row bands: each active device renders a band of the image, its height
  * set by the device's share; bands start on the method's alignment and
- * carry the rows past their end that their last rows read (a halo), so
- * that every row equals the whole image's. A band whose device fails is
+ * also render the rows around them that their own rows depend on (halos),
+ * so that every row equals the whole image's. A band whose device fails is
  * split again among the others. */
 #include <stdlib.h>
 #include <string.h>
@@ -15,7 +15,7 @@ typedef struct band {
 
 typedef struct rows_round {
     const vct_render_job *job;
-    int width, height, halo;
+    int width, height, halo_above, halo_below;
     band bands[VCT_GROUP_MAX];
     vct_image images[VCT_GROUP_MAX];
     vct_render_result results[VCT_GROUP_MAX];
@@ -24,20 +24,30 @@ typedef struct rows_round {
     double ms[VCT_GROUP_MAX];
 } rows_round;
 
-/* Subsampled methods refine squares of N rows whose corners lie on the next
- * square's first row; sparse cone tracing fills odd rows from the even row
- * below. */
-static void band_shape(const vct_render_job *job, int *align, int *halo) {
+/* Subsampling refines squares of N rows whose corners lie on the next
+ * square's first row, and a row of corners is an edge of the squares above
+ * and below it: the finer of the two writes it last. A band therefore also
+ * renders the square above it and the corner row below it. Sparse cone
+ * tracing fills odd rows from the even row below. */
+static void band_shape(const vct_render_job *job, int *align, int *above, int *below) {
     uint32_t subsample = 0;
     if (job->method == VCT_METHOD_WHITTED)
         subsample = job->whitted.subsample;
     else if (job->method == VCT_METHOD_RAYCAST)
         subsample = job->raycast.subsample;
-    *align = 1, *halo = 0;
+    *align = 1, *above = 0, *below = 0;
     if (subsample > 1)
-        *align = (int)subsample, *halo = 1;
+        *align = (int)subsample, *above = (int)subsample, *below = 1;
     else if (job->method == VCT_METHOD_VCT && job->vct.sparse_diffuse)
-        *align = 2, *halo = 2;
+        *align = 2, *below = 2;
+}
+
+/* The rows band b renders: its own and its halos, within the image. */
+static band rendered_rows(const rows_round *r, band b) {
+    const int first = b.first - r->halo_above > 0 ? b.first - r->halo_above : 0;
+    const int end =
+        b.first + b.rows + r->halo_below < r->height ? b.first + b.rows + r->halo_below : r->height;
+    return (band){first, end - first};
 }
 
 static void render_band(vct_group *g, int i, void *arg) {
@@ -49,19 +59,41 @@ static void render_band(vct_group *g, int i, void *arg) {
     vct_render_job job = *r->job;
     job.accel = g->accel[i];
     job.voxels = g->voxels[i];
-    const int rows =
-        b.rows + r->halo < r->height - b.first ? b.rows + r->halo : r->height - b.first;
-    vct_render_job_set_size(&job, r->width, rows);
-    job.band = (vct_band){b.first, r->height};
+    const band drawn = rendered_rows(r, b);
+    vct_render_job_set_size(&job, r->width, drawn.rows);
+    job.band = (vct_band){drawn.first, r->height};
     const double t0 = vct_now_ms();
     r->rc[i] = vct_render(g->ctx[i], &job, &r->images[i], &r->results[i], &r->errors[i]);
     r->ms[i] = vct_now_ms() - t0;
+}
+
+/* VCT_GROUP_SHARES=a,b,...: fixed shares, in the group's order, instead of
+ * measured ones: to test any split without depending on timing. */
+static int fixed_shares(const vct_group *g, double *share) {
+    const char *list = getenv("VCT_GROUP_SHARES");
+    if (!list || !*list)
+        return 0;
+    for (int i = 0; i < g->count; ++i) {
+        char *end = NULL;
+        share[i] = strtod(list, &end);
+        list = *end == ',' ? end + 1 : end;
+        if (!g->devices[i].active || !(share[i] > 0.0))
+            share[i] = 0.0;
+    }
+    return 1;
 }
 
 /* Shares of the active devices (the fastest alone, when it is measured to
  * beat them all), equal when none has one left. */
 static void active_shares(const vct_group *g, double *share) {
     int with_share = 0;
+    if (fixed_shares(g, share)) {
+        for (int i = 0; i < g->count; ++i)
+            with_share += share[i] > 0.0;
+        for (int i = 0; i < g->count && !with_share; ++i)
+            share[i] = g->devices[i].active ? 1.0 : 0.0;
+        return;
+    }
     const int solo = g->solo.state != VCT_ALL_DEVICES && g->devices[g->solo.device].active;
     for (int i = 0; i < g->count; ++i) {
         share[i] = !g->devices[i].active ? 0.0
@@ -77,26 +109,35 @@ static void active_shares(const vct_group *g, double *share) {
  * this round's times set the devices' speeds. */
 static int render_range(vct_group *g, const vct_render_job *job, int first, int rows,
                         vct_image *image, vct_render_result *result, int measure, vct_error *err) {
-    int align, halo;
-    band_shape(job, &align, &halo);
+    int align, above, below;
+    band_shape(job, &align, &above, &below);
     rows_round *r = calloc(1, sizeof *r);
     if (!r)
         return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
     r->job = job;
     r->width = image->width;
     r->height = image->height;
-    r->halo = halo;
+    r->halo_above = above;
+    r->halo_below = below;
     double share[VCT_GROUP_MAX];
     int units[VCT_GROUP_MAX];
     active_shares(g, share);
-    vct_balance_split(g->count, share, (rows + align - 1) / align, units);
-    int at = first;
+    /* The image's last row, when it is a row of square corners, is the
+     * bottom edge of the squares above it: it goes with them, never alone. */
+    const int edge_row = below == 1 && first + rows == image->height && rows > 1;
+    const int unit_count = (rows - edge_row + align - 1) / align;
+    vct_balance_split(g->count, share, unit_count, units);
+    int at = first, last = -1;
     for (int i = 0; i < g->count; ++i) {
         const int take =
             units[i] * align < first + rows - at ? units[i] * align : first + rows - at;
         r->bands[i] = (band){at, take};
         at += take;
+        if (take)
+            last = i;
     }
+    if (last >= 0)
+        r->bands[last].rows += first + rows - at; /* the remainder */
     int rc = vct_group_each(g, render_band, r, err);
     /* A refused job is the caller's to fix, not the device's fault. */
     for (int i = 0; rc == VCT_OK && i < g->count; ++i)
@@ -117,7 +158,9 @@ static int render_range(vct_group *g, const vct_render_job *job, int first, int 
             continue;
         }
         const size_t row_floats = 4 * (size_t)r->width;
-        memcpy(image->rgba + (size_t)b.first * row_floats, r->images[i].rgba,
+        const int skip = b.first - rendered_rows(r, b).first;
+        memcpy(image->rgba + (size_t)b.first * row_floats,
+               r->images[i].rgba + (size_t)skip * row_floats,
                (size_t)b.rows * row_floats * sizeof(float));
         result->traced += r->results[i].traced;
         vct_group_device *d = &g->devices[i];

@@ -10,7 +10,7 @@
 #define KERNEL_FILE "render/whitted.cl"
 #define STAGE "whitted"
 
-static int check_options(const vct_whitted_options *o, vct_error *err) {
+static int check_options(const vct_context *ctx, const vct_whitted_options *o, vct_error *err) {
     if (o->max_depth < 1 || o->max_depth > VCT_WHITTED_MAX_DEPTH)
         return vct_fail(err, VCT_ERR_INPUT, "whitted: a depth of %u is outside 1..%d", o->max_depth,
                         VCT_WHITTED_MAX_DEPTH);
@@ -18,7 +18,10 @@ static int check_options(const vct_whitted_options *o, vct_error *err) {
         return vct_fail(err, VCT_ERR_INPUT, "whitted: the subsampling contrast must be 0 or more");
     if (!(o->min_throughput >= 0.0f))
         return vct_fail(err, VCT_ERR_INPUT, "whitted: the throughput cut-off must be 0 or more");
-    const uint32_t n = o->subsample, side = (uint32_t)(o->width < o->height ? o->width : o->height);
+    /* A band of a taller image may be shorter than a square: the whole
+     * image's bottom squares are cut short the same way. */
+    const int height = ctx->band_height ? ctx->band_height : o->height;
+    const uint32_t n = o->subsample, side = (uint32_t)(o->width < height ? o->width : height);
     if (n && (n < 2 || (n & (n - 1)) || n > side))
         return vct_fail(err, VCT_ERR_INPUT,
                         "whitted: --subsample %u must be 0 or a power of two from 2 to the "
@@ -31,7 +34,7 @@ int vct_whitted_render_as(vct_context *ctx, const vct_scene *s, const vct_accel 
                           const vct_whitted_options *opt, int plain, vct_image *image,
                           vct_whitted_result *result, vct_error *err) {
     memset(image, 0, sizeof *image);
-    int rc = check_options(opt, err);
+    int rc = check_options(ctx, opt, err);
     if (rc)
         return rc;
     const float a = plain ? 0.0f : 1.0f;
