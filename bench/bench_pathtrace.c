@@ -3,6 +3,7 @@
  * Cornell box and on the 102k-triangle heavy scene, in one run: the ratio
  * is what the BVH saves a whole method, shading and sampling included. */
 #include "bench_util.h"
+#include "check.h"
 #include "heavy_scene.h"
 
 #define SIZE 256
@@ -32,10 +33,9 @@ static double render_best(vct_context *ctx, const vct_scene *s, vct_accel_kind k
 int main(void) {
     vct_error err = {0};
     const char *src = getenv("VCT_SOURCE_DIR");
-    char path[1024];
-    snprintf(path, sizeof path, "%s/scenes/cornell_box.obj", src ? src : ".");
-    vct_scene *box = vct_scene_load(path, &err);
-    vct_scene *heavy = box ? heavy_scene_load(src ? src : ".", &err) : NULL;
+    /* the glTF box: lit by its ceiling, seen through its open side */
+    vct_scene *box = check_cornell_box();
+    vct_scene *heavy = heavy_scene_load(src ? src : ".", &err);
     vct_context *ctx = heavy ? vct_context_create(NULL, &err) : NULL;
     if (!ctx)
         bench_die(&err);
