@@ -66,7 +66,28 @@ int view_app_attach(view_app *app, vct_context *ctx, vct_error *err) {
     return app->accel ? VCT_OK : (int)err->status;
 }
 
+/* What every device of the group builds: the acceleration structure, and
+ * the voxels when cone tracing's plan reads them. */
+static int group_prepare(view_app *app, int with_voxels, vct_error *err) {
+    vct_group_build b;
+    memset(&b, 0, sizeof b);
+    b.accel = app->opt.accel;
+    b.plan = with_voxels ? &app->plan : NULL;
+    cli_voxel_options(&app->opt, 128, &b.voxel);
+    b.bricks = (vct_brick_options){app->opt.bricks, app->opt.anisotropic != 0, 0};
+    b.bounces = (uint32_t)app->opt.bounces;
+    b.cones = app->opt.cones;
+    return vct_group_prepare(app->group, app->scene, &b, err);
+}
+
+int view_app_attach_group(view_app *app, vct_group *group, vct_error *err) {
+    app->group = group;
+    app->ctx = vct_group_context(group, 0);
+    return group_prepare(app, 0, err);
+}
+
 void view_app_free(view_app *app) {
+    vct_image_free(&app->group_frame);
     vct_voxels_free(app->voxels);
     vct_accel_free(app->accel);
     vct_scene_free(app->scene);
@@ -97,6 +118,21 @@ static void note_levels(view_app *app) {
 /* What the method and plan read: the cone-traced hierarchy, or for the
  * voxel view at least the octree. */
 static int ensure_voxels(view_app *app, vct_error *err) {
+    if (app->group) {
+        if (app->method == VIEW_VOXELS)
+            return input_error(err, "%s: the voxel view runs on one device: give --device one",
+                               "voxels");
+        const int needed = app->method == VIEW_VCT && vct_plan_needs_voxels(&app->plan);
+        const int lit = vct_plan_needs_voxel_light(&app->plan);
+        if (!needed || (app->voxels_for_plan && (app->voxels_lit || !lit) && !app->light_moved))
+            return VCT_OK;
+        /* every device rebuilds its own: there is no relighting across them yet */
+        int rc = group_prepare(app, 1, err);
+        app->voxels_for_plan = rc == VCT_OK;
+        app->voxels_lit = rc == VCT_OK && lit;
+        app->light_moved = 0;
+        return rc;
+    }
     vct_voxel_options vo;
     cli_voxel_options(&app->opt, 128, &vo);
     if (app->method == VIEW_VCT && vct_plan_needs_voxels(&app->plan)) {
@@ -140,7 +176,26 @@ static int update_light(view_app *app, vct_error *err) {
     return rc;
 }
 
+/* Several devices: each one's share of the rows and its time. */
+static void summarise_devices(view_app *app) {
+    const vct_group_device *d;
+    const int n = vct_group_devices(app->group, &d);
+    size_t used = 0;
+    app->stages[0] = '\0';
+    for (int i = 0; i < n && used + 48 < sizeof app->stages; ++i)
+        used += (size_t)snprintf(app->stages + used, sizeof app->stages - used,
+                                 "%sdevice %d %s %.0f ms", i ? ", " : "", d[i].info.index,
+                                 !d[i].active           ? "dropped"
+                                 : d[i].last_work > 0.0 ? "working"
+                                                        : "idle",
+                                 d[i].last_ms);
+}
+
 static void summarise_stages(view_app *app) {
+    if (app->group) {
+        summarise_devices(app);
+        return;
+    }
     const vct_stage_stat *st = NULL;
     const int n = vct_stats(app->ctx, &st);
     size_t used = 0;
@@ -187,7 +242,10 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     job.pm.progress = 0;
     job.pm.resume = app->pt_spp > 0;
     vct_render_result result;
-    const int rc = vct_render(app->ctx, &job, image, &result, err);
+    if (app->group) /* a sample per device per frame */
+        job.pathtrace.spp = (uint32_t)vct_group_active_count(app->group);
+    const int rc = app->group ? vct_group_render(app->group, &job, image, &result, err)
+                              : vct_render(app->ctx, &job, image, &result, err);
     if (view_app_progressive(app))
         app->pt_spp = rc == VCT_OK ? result.spp : 0;
     return rc;
@@ -207,7 +265,12 @@ int view_app_render(view_app *app, vct_error *err) {
     vct_image image = {0};
     if (rc == VCT_OK)
         rc = render_method(app, &image, err);
-    vct_image_free(&image);
+    if (rc == VCT_OK && app->group) { /* the display takes it from the host */
+        vct_image_free(&app->group_frame);
+        app->group_frame = image;
+    } else {
+        vct_image_free(&image);
+    }
     summarise_stages(app);
     app->frame_ms = now_ms() - t0;
     if (rc == VCT_OK)

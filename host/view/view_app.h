@@ -22,6 +22,10 @@ typedef enum view_method {
 typedef struct view_app {
     cli_options opt;
     vct_context *ctx;
+    /* Several devices (--device 0,1): they hold their own structures and
+     * the frame comes back to the host. NULL: ctx alone. */
+    vct_group *group;
+    vct_image group_frame;
     vct_scene *scene;
     vct_accel *accel;
     vct_voxels *voxels;
@@ -46,6 +50,8 @@ const char *view_method_name(view_method m);
 int view_app_init(view_app *app, const cli_options *opt, vct_error *err);
 /* Builds the triangle grid on the caller's context, which renders from now on. */
 int view_app_attach(view_app *app, vct_context *ctx, vct_error *err);
+/* The same on every device of a group (the caller's), which renders from now on. */
+int view_app_attach_group(view_app *app, vct_group *group, vct_error *err);
 void view_app_free(view_app *app);
 /* Whether another frame is wanted now (changes, or a path tracer still converging). */
 int view_app_wants_frame(const view_app *app);

@@ -179,11 +179,19 @@ static void resize_targets(display *d, int width, int height) {
     d->texture_size[1] = height;
 }
 
-int display_upload(display *d, vct_context *ctx, int width, int height, vct_error *err) {
+int display_upload(display *d, vct_context *ctx, const vct_image *image, int width, int height,
+                   vct_error *err) {
     resize_targets(d, width, height);
     const size_t floats = 4 * (size_t)width * (size_t)height;
     int rc = VCT_OK;
-    if (d->interop) {
+    if (image && (!image->rgba || image->width != width || image->height != height)) {
+        rc = err->status = VCT_ERR_INPUT;
+        snprintf(err->message, sizeof err->message, "display: the frame is not %dx%d", width,
+                 height);
+    } else if (image) {
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, d->pbo);
+        glBufferSubData(GL_PIXEL_UNPACK_BUFFER, 0, (GLsizeiptr)(4 * floats), image->rgba);
+    } else if (d->interop) {
         glFinish(); /* GL is done with the buffer before OpenCL acquires it */
         rc = vct_frame_to_gl_buffer(ctx, d->pbo, err);
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, d->pbo);
@@ -201,13 +209,14 @@ int display_upload(display *d, vct_context *ctx, int width, int height, vct_erro
     d->applied_stops = d->tone.exposure;
     if (rc == VCT_OK && d->tone.auto_exposure) {
         /* from the frame itself, as the PNG writer takes it */
-        float *frame = malloc(4 * floats);
-        rc = frame ? vct_frame_read(ctx, frame, floats, err) : VCT_ERR_MEMORY;
+        float *frame = image ? image->rgba : malloc(4 * floats);
+        rc = !frame ? VCT_ERR_MEMORY : image ? VCT_OK : vct_frame_read(ctx, frame, floats, err);
         if (rc == VCT_OK)
             d->applied_stops = vct_tone_exposure(&d->tone, frame, floats / 4);
         else if (!frame)
             snprintf(err->message, sizeof err->message, "display: out of host memory");
-        free(frame);
+        if (!image)
+            free(frame);
     }
     if (rc == VCT_OK) {
         glBindTexture(GL_TEXTURE_2D, d->texture);

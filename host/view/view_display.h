@@ -33,9 +33,11 @@ void display_close(display *d);
 /* The OpenCL context for this window: sharing with its GL context where
  * `mode` allows and the device can, else a plain one; d->path says which. */
 vct_context *display_context(display *d, display_mode mode, const char *device, vct_error *err);
-/* Takes the context's frame (width x height) into the texture, and its
- * exposure from it when the tone is automatic. */
-int display_upload(display *d, vct_context *ctx, int width, int height, vct_error *err);
+/* Takes the frame (width x height) into the texture, and its exposure from
+ * it when the tone is automatic: `image` when given (a device group's frame
+ * on the host), else the context's frame. */
+int display_upload(display *d, vct_context *ctx, const vct_image *image, int width, int height,
+                   vct_error *err);
 /* Draws the texture over the framebuffer (the caller swaps). */
 int display_draw(display *d, vct_error *err);
 /* What display_draw drew, before the swap, as 8-bit RGB with rows top to

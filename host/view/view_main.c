@@ -9,6 +9,7 @@
 #include <GLFW/glfw3.h>
 #include <stb/stb_image_write.h>
 
+#include "cli_common.h"
 #include "view_app.h"
 #include "view_display.h"
 
@@ -194,7 +195,8 @@ static int render_frame(viewer *v, int print) {
     char title[512];
     int rc = view_app_render(app, &err);
     if (rc == VCT_OK)
-        rc = display_upload(&v->display, app->ctx, app->width, app->height, &err);
+        rc = display_upload(&v->display, app->ctx, app->group ? &app->group_frame : NULL,
+                            app->width, app->height, &err);
     if (rc == VCT_OK) {
         view_app_status(app, v->display.path, title, sizeof title);
         if (print)
@@ -297,6 +299,37 @@ static int take_view_options(int *argc, char **argv, view_args *va) {
     return 0;
 }
 
+static int run(viewer *v, const view_args *va);
+
+/* Several devices: their frames reach GL through the host. */
+static int run_group(viewer *v, const view_args *va, const cli_options *opt) {
+    vct_error err = {0};
+    if (va->mode == DISPLAY_INTEROP) {
+        fprintf(stderr, "vct-view: --display interop takes one device; several devices "
+                        "display through the host\n");
+        return 1;
+    }
+    vct_group *group = vct_group_create(opt->device, &err);
+    int status = 1;
+    if (group && view_app_attach_group(&v->app, group, &err) == VCT_OK) {
+        const vct_group_device *d;
+        const int n = vct_group_devices(group, &d);
+        for (int i = 0; i < n; ++i)
+            printf("device %d: %s (%s)\n", d[i].info.index, d[i].info.name, d[i].info.platform);
+        snprintf(v->display.path, sizeof v->display.path, "display: host (%d devices)", n);
+        v->display.interop = 0;
+        printf("%s\n", v->display.path);
+        print_plan(&v->app.plan);
+        if (!va->capture)
+            help();
+        status = run(v, va);
+    } else {
+        fprintf(stderr, "vct-view: %s\n", err.message);
+    }
+    vct_group_destroy(group);
+    return status;
+}
+
 static int run(viewer *v, const view_args *va) {
     const char *capture = va->capture;
     display *d = &v->display;
@@ -393,8 +426,14 @@ int main(int argc, char **argv) {
         return EXIT_NO_DISPLAY;
     }
     v.display.tone = opt.tone; /* as `vct render` writes PNG files */
-    vct_context *ctx = display_context(&v.display, va.mode, opt.device, &err);
     int status = 1;
+    if (cli_device_list(&opt)) {
+        status = run_group(&v, &va, &opt);
+        view_app_free(&v.app);
+        display_close(&v.display);
+        return status;
+    }
+    vct_context *ctx = display_context(&v.display, va.mode, opt.device, &err);
     if (ctx && view_app_attach(&v.app, ctx, &err) == VCT_OK) {
         printf("device: %s (%s)\n%s\n", vct_context_device(ctx)->name,
                vct_context_device(ctx)->platform, v.display.path);

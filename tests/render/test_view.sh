@@ -91,6 +91,17 @@ case_compare clip-tone "--size 48 48 --tone clip" "--size 48 48 --tone clip"
 case_compare soft-shadows "--size 48 48 --light-radius 60" "--size 48 48 --light-radius 60"
 case_compare soft-off "--size 48 48 --light-radius 60 --keys F5" "--size 48 48 --light-radius 60 --effect soft_shadows=off"
 
+# Two PoCL devices render each frame (row bands; the path tracer a sample
+# each per frame): the window shows what one device renders offline.
+export POCL_DEVICES="pthread pthread"
+case_compare devices-vct "--size 64 48 --device 0,1" "--size 64 48 --device 0"
+case_compare devices-whitted "--size 64 48 --method whitted --subsample 4 --device 0,1" \
+    "--size 64 48 --method whitted --subsample 4 --device 0"
+case_compare devices-pt "--size 48 48 --keys 3 --device 0,1" "--size 48 48 --method pt --spp 2 --device 0"
+grep -q "device 0 working.*device 1 working" "$TMP/devices-vct.view.log" ||
+    { echo "FAIL devices: both devices did not work on the frame"; cat "$TMP/devices-vct.view.log"; failed=1; }
+unset POCL_DEVICES
+
 # The voxel view at a coarse level: a window of octree cells, not black.
 "$VIEW" "$SCENE" --voxel-res 32 --display host --size 64 64 --keys "4,[,[" \
     --capture "$TMP/voxels.png" >"$TMP/voxels.log" 2>&1 ||
