@@ -96,7 +96,8 @@ sppm_visible(ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *
     const uint pixel = y * cam.size.x + x;
     uint rng = rng_start(seed, camera_pixel_id(&cam, x, y), pass);
     const float jx = rng_next(&rng), jy = rng_next(&rng);
-    float3 org = cam.position.xyz, dir = camera_ray_dir(&cam, (float)x + jx, (float)camera_row(&cam, y) + jy);
+    float3 org = cam.position.xyz,
+           dir = camera_ray_dir(&cam, (float)x + jx, (float)camera_row(&cam, y) + jy);
     float3 beta = (float3)(1.0f), radiance = (float3)(0.0f);
     float4 vp_pos = (float4)(0.0f), vp_n = vp_pos, vp_wo = vp_pos, vp_beta = vp_pos,
            vp_mat = vp_pos;
@@ -195,10 +196,10 @@ __kernel void sppm_gather(__global const float4 *vp, uint pixels,
  * shadow rays' and the caustic map's. fg_sum gains the pass's estimate. */
 __kernel void sppm_final_gather(ACCEL_ARGS, __global const vct_material_desc *materials,
                                 __global const uint *tri_material, TEXTURE_ARGS,
-                                __global const float4 *vp, uint pixels, PHOTON_GRID_ARGS(glob),
-                                PHOTON_GRID_ARGS(caus), uint caustics, float radius,
-                                float inv_emitted, uint rays, uint seed, uint pass, uint flags,
-                                float normal_cos, __global float4 *fg_sum) {
+                                __global const float4 *vp, uint pixels, uint first_pixel,
+                                PHOTON_GRID_ARGS(glob), PHOTON_GRID_ARGS(caus), uint caustics,
+                                float radius, float inv_emitted, uint rays, uint seed, uint pass,
+                                uint flags, float normal_cos, __global float4 *fg_sum) {
     const uint i = get_global_id(0);
     if (i >= pixels)
         return;
@@ -209,7 +210,7 @@ __kernel void sppm_final_gather(ACCEL_ARGS, __global const vct_material_desc *ma
     const texture_view tv = TEXTURE_VIEW();
     const photon_grid gg = PHOTON_GRID_VIEW(glob), gc = PHOTON_GRID_VIEW(caus);
     const float norm = inv_emitted / (SPPM_PI * radius * radius);
-    uint rng = rng_start(seed ^ 0x6667u, i, pass);
+    uint rng = rng_start(seed ^ 0x6667u, first_pixel + i, pass); /* the whole image's pixel */
     float3 sum = (float3)(0.0f);
     for (uint k = 0; k < rays; ++k) {
         bsdf_sample bs;

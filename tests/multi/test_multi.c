@@ -3,11 +3,13 @@
  * for bit: with equal shares, with the shares a slowed device earns, and
  * with a device that fails mid-frame. Device lists are read as written and
  * refused with the devices there are. */
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
 #include "multi/balance.h"
+#include "multi/pass_sync.h"
 #include "runtime/runtime.h"
 
 #define WIDTH 40
@@ -158,14 +160,15 @@ static void check_methods(const char *scene_name, const vct_scene *s) {
 }
 
 /* Fixed splits, the smallest bands included: every row method's image is
- * one device's whatever the shares. */
+ * one device's whatever the shares (photon mapping's bands agree on their
+ * grids pass by pass). */
 static void check_fixed_splits(const vct_scene *s) {
     const char *splits[] = {"0.95,0.05", "0.05,0.95", "0.5,0.5", "0.7,0.3"};
     vct_group *g = group_for(s);
     for (int m = 0; m < CASES; ++m) {
         const method_case *c = &cases[m];
-        if (c->method == VCT_METHOD_PATHTRACE || c->method == VCT_METHOD_PM)
-            continue;
+        if (c->method == VCT_METHOD_PATHTRACE)
+            continue; /* split by samples, not rows */
         vct_image one = single(c, s);
         for (int k = 0; k < 4; ++k) {
             setenv("VCT_GROUP_SHARES", splits[k], 1);
@@ -278,6 +281,61 @@ static void check_small_device(const vct_scene *s) {
     vct_group_destroy(g);
 }
 
+/* Photon mapping's barrier: three bands report radii per pass; each gets
+ * the largest of the three, pass after pass; a band that fails releases
+ * the others, which learn the frame stopped. */
+typedef struct sync_member {
+    vct_pass_sync *sync;
+    int id, fail_at;
+    uint32_t got[4][2];
+    int stopped_at;
+} sync_member;
+
+static void *sync_member_run(void *p) {
+    sync_member *m = p;
+    m->stopped_at = -1;
+    for (uint32_t pass = 0; pass < 4; ++pass) {
+        if ((int)pass == m->fail_at) {
+            vct_pass_sync_fail(m->sync, m->id);
+            return NULL;
+        }
+        uint32_t bits[2] = {100u * pass + (uint32_t)m->id, (uint32_t)(7 - m->id)};
+        if (vct_pass_sync_wait(m->sync, pass, bits)) {
+            m->stopped_at = (int)pass;
+            return NULL;
+        }
+        m->got[pass][0] = bits[0], m->got[pass][1] = bits[1];
+    }
+    return NULL;
+}
+
+static void check_pass_sync(int fail_at) {
+    vct_pass_sync sync;
+    vct_pass_sync_init(&sync, 3);
+    sync_member members[3];
+    pthread_t threads[3];
+    for (int i = 0; i < 3; ++i) {
+        members[i] = (sync_member){&sync, i, i == 1 ? fail_at : -1, {{0}}, -1};
+        pthread_create(&threads[i], NULL, sync_member_run, &members[i]);
+    }
+    for (int i = 0; i < 3; ++i)
+        pthread_join(threads[i], NULL);
+    for (int i = 0; i < 3; i += 2) {
+        const int passes = fail_at < 0 ? 4 : fail_at;
+        for (int pass = 0; pass < passes; ++pass)
+            CHECK(members[i].got[pass][0] == 100u * (uint32_t)pass + 2u &&
+                      members[i].got[pass][1] == 7u,
+                  "band %d, pass %d: got %u, %u, the largest are %u, 7", i, pass,
+                  members[i].got[pass][0], members[i].got[pass][1], 100u * pass + 2u);
+        CHECK(members[i].stopped_at == (fail_at < 0 ? -1 : fail_at),
+              "band %d stopped at pass %d, the failure came at %d", i, members[i].stopped_at,
+              fail_at);
+    }
+    CHECK(fail_at < 0 || (sync.culprit[1] && !sync.culprit[0] && !sync.culprit[2]),
+          "the band that failed is the one to blame");
+    vct_pass_sync_destroy(&sync);
+}
+
 /* The scheduler's arithmetic against values worked by hand. */
 static void check_balance(void) {
     const int active[2] = {1, 1};
@@ -320,6 +378,8 @@ static void check_balance(void) {
 
 int main(void) {
     check_balance();
+    check_pass_sync(-1);
+    check_pass_sync(2);
     check_lists();
     vct_scene *box = check_cornell_box_point_light();
     check_methods("cornell box", box);
@@ -327,6 +387,7 @@ int main(void) {
     check_slowed(box);
     check_failure(box, 3); /* whitted, subsampled: rows */
     check_failure(box, 6); /* pt: samples */
+    check_failure(box, 8); /* pm: bands in lockstep, started again */
     check_small_device(box);
     vct_scene_free(box);
     vct_scene *lit = check_cornell_box();

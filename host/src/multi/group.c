@@ -124,37 +124,6 @@ int vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_group_buil
 
 /* ---- rendering ------------------------------------------------------------------- */
 
-/* Photon mapping's per-pixel radii and its grids' cells follow every pixel
- * of the image, pass after pass: it runs whole on the fastest device (a
- * failure moves it to the next). */
-static int render_on_one(vct_group *g, const vct_render_job *job, vct_image *image,
-                         vct_render_result *result, vct_error *err) {
-    for (;;) {
-        int best = -1;
-        for (int i = 0; i < g->count; ++i)
-            if (g->devices[i].active && g->accel[i] &&
-                (best < 0 || g->devices[i].share > g->devices[best].share))
-                best = i;
-        if (best < 0)
-            return err->status ? (int)err->status : VCT_ERR_OPENCL;
-        vct_render_job own = *job;
-        own.accel = g->accel[best];
-        own.voxels = g->voxels[best];
-        const double t0 = vct_now_ms();
-        int rc = vct_render(g->ctx[best], &own, image, result, err);
-        if (rc == VCT_OK) {
-            for (int i = 0; i < g->count; ++i)
-                g->devices[i].last_ms = g->devices[i].last_work = 0.0;
-            g->devices[best].last_ms = vct_now_ms() - t0;
-            g->devices[best].last_work = 1.0;
-            return VCT_OK;
-        }
-        if (rc == VCT_ERR_INPUT)
-            return rc; /* the job, not the device */
-        vct_group_drop(g, best, err);
-    }
-}
-
 int vct_group_render(vct_group *g, const vct_render_job *job, vct_image *image,
                      vct_render_result *result, vct_error *err) {
     memset(image, 0, sizeof *image);
@@ -172,7 +141,9 @@ int vct_group_render(vct_group *g, const vct_render_job *job, vct_image *image,
                         "vct_group_prepare first");
     if (job->method == VCT_METHOD_PATHTRACE)
         return vct_group_render_samples(g, job, image, result, err);
-    if (job->method == VCT_METHOD_PM)
-        return render_on_one(g, job, image, result, err);
+    if (job->method == VCT_METHOD_PM && job->pm.passes == 0)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "devices: photon mapping on several devices takes a pass count (--spp), "
+                        "not a time: its bands agree on their grids pass by pass");
     return vct_group_render_rows(g, job, image, result, err);
 }

@@ -8,6 +8,7 @@
 
 #include "multi/balance.h"
 #include "multi/group.h"
+#include "multi/pass_sync.h"
 
 typedef struct band {
     int first, rows;
@@ -16,6 +17,7 @@ typedef struct band {
 typedef struct rows_round {
     const vct_render_job *job;
     int width, height, halo_above, halo_below;
+    vct_pass_sync *sync; /* photon mapping: the bands' barrier per pass */
     band bands[VCT_GROUP_MAX];
     vct_image images[VCT_GROUP_MAX];
     vct_render_result results[VCT_GROUP_MAX];
@@ -62,9 +64,30 @@ static void render_band(vct_group *g, int i, void *arg) {
     const band drawn = rendered_rows(r, b);
     vct_render_job_set_size(&job, r->width, drawn.rows);
     job.band = (vct_band){drawn.first, r->height};
+    if (r->sync) {
+        g->ctx[i]->band_sync = vct_pass_sync_wait;
+        g->ctx[i]->band_sync_user = r->sync;
+    }
     const double t0 = vct_now_ms();
     r->rc[i] = vct_render(g->ctx[i], &job, &r->images[i], &r->results[i], &r->errors[i]);
     r->ms[i] = vct_now_ms() - t0;
+    g->ctx[i]->band_sync = NULL;
+    g->ctx[i]->band_sync_user = NULL;
+    if (r->sync && r->rc[i] != VCT_OK)
+        vct_pass_sync_fail(r->sync, i);
+}
+
+/* Photon mapping resumed: the bands of the frames before (the statistics
+ * of each band's pixels live on its device). */
+static int reuse_pm_bands(const vct_group *g, const vct_render_job *job, rows_round *r) {
+    if (job->method != VCT_METHOD_PM || !job->pm.resume || g->pm_height != r->height)
+        return 0;
+    for (int i = 0; i < g->count; ++i) {
+        if (g->pm_rows[i] && !g->devices[i].active)
+            return 0;
+        r->bands[i] = (band){g->pm_first[i], g->pm_rows[i]};
+    }
+    return 1;
 }
 
 /* VCT_GROUP_SHARES=a,b,...: fixed shares, in the group's order, instead of
@@ -105,6 +128,59 @@ static void active_shares(const vct_group *g, double *share) {
         share[i] = g->devices[i].active ? 1.0 : 0.0;
 }
 
+static int render_range(vct_group *g, const vct_render_job *job, int first, int rows,
+                        vct_image *image, vct_render_result *result, int measure, vct_error *err);
+
+/* Photon mapping's bands after their round: all complete, or a failure
+ * stopped them all and the frame starts again without the device that
+ * failed (the bands' grids must agree, pass after pass). */
+static int lockstep_outcome(vct_group *g, const vct_render_job *job, rows_round *r,
+                            vct_image *image, vct_render_result *result, vct_error *err) {
+    int failed = -1;
+    for (int i = 0; i < g->count; ++i)
+        if (r->bands[i].rows && r->rc[i] != VCT_OK && (failed < 0 || r->sync->culprit[i]))
+            failed = i;
+    if (failed >= 0 && r->rc[failed] == VCT_ERR_INPUT) {
+        *err = r->errors[failed];
+        return VCT_ERR_INPUT; /* the caller's to fix, not the device's fault */
+    }
+    if (failed >= 0) {
+        for (int i = 0; i < g->count; ++i)
+            if (r->bands[i].rows && r->rc[i] != VCT_OK && (r->sync->culprit[i] || i == failed))
+                vct_group_drop(g, i, &r->errors[i]);
+        for (int i = 0; i < g->count; ++i)
+            vct_image_free(&r->images[i]);
+        g->pm_height = 0; /* the statistics of every band are gone */
+        if (vct_group_active_count(g) == 0) {
+            *err = r->errors[failed];
+            return err->status ? (int)err->status : VCT_ERR_OPENCL;
+        }
+        vct_render_job fresh = *job;
+        fresh.pm.resume = 0;
+        return render_range(g, &fresh, 0, image->height, image, result, 0, err);
+    }
+    g->pm_height = image->height;
+    for (int i = 0; i < g->count; ++i) {
+        const band b = r->bands[i];
+        g->pm_first[i] = b.first;
+        g->pm_rows[i] = b.rows;
+        if (!b.rows)
+            continue;
+        const size_t row_floats = 4 * (size_t)r->width;
+        memcpy(image->rgba + (size_t)b.first * row_floats, r->images[i].rgba,
+               (size_t)b.rows * row_floats * sizeof(float));
+        vct_group_device *d = &g->devices[i];
+        d->last_ms = r->ms[i];
+        d->last_work = b.rows;
+        const double speed = r->ms[i] > 0.0 ? b.rows / (r->ms[i] * 1e-3) : 0.0;
+        d->speed = d->speed > 0.0 ? 0.5 * (d->speed + speed) : speed;
+        result->spp = r->results[i].spp;
+        result->photons = r->results[i].photons;
+        vct_image_free(&r->images[i]);
+    }
+    return VCT_OK;
+}
+
 /* Renders rows [first, first + rows) of the image into `image`; measure:
  * this round's times set the devices' speeds. */
 static int render_range(vct_group *g, const vct_render_job *job, int first, int rows,
@@ -121,6 +197,8 @@ static int render_range(vct_group *g, const vct_render_job *job, int first, int 
     r->halo_below = below;
     double share[VCT_GROUP_MAX];
     int units[VCT_GROUP_MAX];
+    if (reuse_pm_bands(g, job, r))
+        goto render;
     active_shares(g, share);
     /* The image's last row, when it is a row of square corners, is the
      * bottom edge of the squares above it: it goes with them, never alone. */
@@ -138,7 +216,22 @@ static int render_range(vct_group *g, const vct_render_job *job, int first, int 
     }
     if (last >= 0)
         r->bands[last].rows += first + rows - at; /* the remainder */
+render:;
+    vct_pass_sync sync;
+    if (job->method == VCT_METHOD_PM) {
+        int members = 0;
+        for (int i = 0; i < g->count; ++i)
+            members += r->bands[i].rows > 0;
+        vct_pass_sync_init(&sync, members);
+        r->sync = &sync;
+    }
     int rc = vct_group_each(g, render_band, r, err);
+    if (r->sync) {
+        vct_pass_sync_destroy(&sync);
+        rc = rc == VCT_OK ? lockstep_outcome(g, job, r, image, result, err) : rc;
+        free(r);
+        return rc;
+    }
     /* A refused job is the caller's to fix, not the device's fault. */
     for (int i = 0; rc == VCT_OK && i < g->count; ++i)
         if (r->bands[i].rows && r->rc[i] == VCT_ERR_INPUT) {

@@ -102,10 +102,6 @@ static int job_check(const vct_render_job *job, vct_error *err) {
             err, VCT_ERR_INPUT,
             "render (%s): the job has no acceleration structure: build one with vct_accel_build",
             name);
-    if (job->band.height && job->method == VCT_METHOD_PM)
-        return vct_fail(err, VCT_ERR_INPUT,
-                        "render (pm): photon mapping renders whole images, not bands (its grids "
-                        "follow the radii of every pixel)");
     if (job->method == VCT_METHOD_VOXELS && !job->voxels)
         return vct_fail(err, VCT_ERR_INPUT,
                         "render (voxels): the job has no voxels: build them with vct_voxelize "

@@ -248,6 +248,10 @@ static int photon_pass(vct_context *ctx, sppm_run *r, cl_uint pass, float fg_rad
     sppm_state *st = r->st;
     cl_uint bits[MAPS] = {0, 0};
     int rc = vct_buffer_read(ctx, STAGE, st->radius_max, 0, sizeof bits, bits, err);
+    /* A band takes the whole image's largest radii, so that its grids are
+     * the whole image's (the order photons are summed in follows the cells). */
+    if (rc == VCT_OK && ctx->band_sync && ctx->band_sync(ctx->band_sync_user, pass, bits) != 0)
+        rc = vct_fail(err, VCT_ERR_OPENCL, "%s: the other bands of the image stopped", STAGE);
     double t0 = vct_now_ms();
     const vct_photon_trace_job job = {r->scene,     r->accel, &r->sb,       &r->sources,
                                       r->opt->seed, pass,     r->store_mask};
@@ -315,15 +319,17 @@ static int gather_pass(vct_context *ctx, sppm_run *r, cl_uint pass, float fg_rad
                           VCT_ARG_OF(r->sb.tri_material));
     if (rc == VCT_OK)
         rc = vct_scene_texture_args(k, 7, &r->sb, STAGE, err);
+    const cl_uint first_pixel = r->cam.size.s[2] * r->cam.size.s[0]; /* a band's first */
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 10, 2, VCT_ARG_OF(st->vp), VCT_ARG_OF(pixels));
+        rc = vct_set_args(err, STAGE, k, 10, 3, VCT_ARG_OF(st->vp), VCT_ARG_OF(pixels),
+                          VCT_ARG_OF(first_pixel));
     if (rc == VCT_OK)
-        rc = vct_photon_grid_args(k, 12, &r->grid[GLOBAL], STAGE, err);
+        rc = vct_photon_grid_args(k, 13, &r->grid[GLOBAL], STAGE, err);
     /* Without a caustic map its arguments are the global map's, never read. */
     if (rc == VCT_OK)
-        rc = vct_photon_grid_args(k, 16, &r->grid[caustics ? CAUSTIC : GLOBAL], STAGE, err);
+        rc = vct_photon_grid_args(k, 17, &r->grid[caustics ? CAUSTIC : GLOBAL], STAGE, err);
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 20, 9, VCT_ARG_OF(caustics), VCT_ARG_OF(fg_radius),
+        rc = vct_set_args(err, STAGE, k, 21, 9, VCT_ARG_OF(caustics), VCT_ARG_OF(fg_radius),
                           VCT_ARG_OF(inv_emitted), VCT_ARG_OF(rays), VCT_ARG_OF(seed),
                           VCT_ARG_OF(pass), VCT_ARG_OF(flags), VCT_ARG_OF(normal_cos),
                           VCT_ARG_OF(st->fg_sum));

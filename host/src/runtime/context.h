@@ -60,6 +60,11 @@ struct vct_context {
     /* The band of a taller image the current render draws (vct_render_job
      * band): its first row and the whole image's height, 0 for none. */
     int band_first, band_height;
+    /* Photon mapping in bands: the largest radii of pass `pass` (float
+     * bits, per map) in, the whole image's out; non-zero when the other
+     * bands stopped. NULL: the band stands alone. */
+    int (*band_sync)(void *user, uint32_t pass, uint32_t radius_bits[2]);
+    void *band_sync_user;
     long launch_count; /* kernels launched on this context (runtime/launch.c) */
     /* What higher stages keep in the context, released with it: each stage
      * registers its own release, so the runtime calls up into none of them. */
