@@ -9,12 +9,14 @@
 static void print_devices(const vct_group *g, FILE *out) {
     const vct_group_device *d;
     const int n = vct_group_devices(g, &d);
-    fprintf(out, "%-4s %-44s %6s %9s %9s %7s %9s %9s  %s\n", "dev", "name", "type", "build ms",
-            "MiB", "share", "last ms", "work", "state");
+    fprintf(out, "%-4s %-40s %5s %9s %10s %9s %7s %9s %9s  %s\n", "dev", "name", "type", "build ms",
+            "voxels ms", "MiB", "share", "last ms", "work", "state");
     for (int i = 0; i < n; ++i)
-        fprintf(out, "%-4d %-44.44s %6s %9.1f %9.2f %7.3f %9.1f %9.0f  %s\n", d[i].info.index,
-                d[i].info.name, d[i].info.is_gpu ? "GPU" : "CPU", d[i].build_ms, d[i].build_mib,
-                d[i].share, d[i].last_ms, d[i].last_work, d[i].active ? "active" : d[i].dropped);
+        fprintf(out, "%-4d %-40.40s %5s %9.1f %9.1f%s %9.2f %7.3f %9.1f %9.0f  %s\n",
+                d[i].info.index, d[i].info.name, d[i].info.is_gpu ? "GPU" : "CPU", d[i].build_ms,
+                d[i].voxels_ms, d[i].voxels_copied ? "c" : " ", d[i].build_mib, d[i].share,
+                d[i].last_ms, d[i].last_work, d[i].active ? "active" : d[i].dropped);
+    fprintf(out, "(voxels ms: c = copied from another device)\n");
 }
 
 int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
@@ -43,6 +45,7 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
     build.bricks = (vct_brick_options){opt->bricks, opt->anisotropic != 0, 0};
     build.bounces = (uint32_t)opt->bounces;
     build.cones = opt->cones;
+    build.copy_voxels = opt->copy_voxels;
     int rc = vct_group_prepare(g, s, &build, &err);
     vct_render_job job = cli_render_job(opt, method, s);
     job.plan = &plan;

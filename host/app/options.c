@@ -95,7 +95,9 @@ void cli_usage(void) {
         "  --device N|NAME                  OpenCL device (default $VCT_DEVICE, else first GPU,\n"
         "                                   else first CPU)\n"
         "  --device 0,2|all|gpu|cpu         render: several devices, one frame (path tracing\n"
-        "                                   split by samples, the others by row bands)\n",
+        "                                   split by samples, the others by row bands)\n"
+        "  --copy-voxels                    several devices: the first builds the voxels, the\n"
+        "                                   others copy them (default: each builds its own)\n",
         stderr);
 }
 
@@ -438,6 +440,8 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 fprintf(stderr, "vct: --cone-levels takes blend or nearest, not '%s'\n", how);
                 return 1;
             }
+        } else if (strcmp(a, "--copy-voxels") == 0) {
+            opt->copy_voxels = 1;
         } else if (strcmp(a, "--sparse-diffuse") == 0) {
             opt->sparse_diffuse = 1;
         } else if (strcmp(a, "--cone-offset") == 0) {

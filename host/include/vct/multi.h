@@ -41,6 +41,9 @@ typedef struct vct_group_build {
     vct_brick_options bricks;
     uint32_t bounces;
     vct_cone_settings cones;
+    /* 1: the first device builds the voxels and the others receive a copy
+     * (vct_voxels_copy); 0: every device builds its own. */
+    int copy_voxels;
 } vct_group_build;
 
 /* Builds `scene`'s structures on every device, at once; a device that cannot
@@ -60,6 +63,8 @@ typedef struct vct_group_device {
     char dropped[2048]; /* why it was dropped */
     double build_ms;    /* its structures: build time and device memory */
     double build_mib;
+    double voxels_ms;   /* of which its voxels: built, or copied from another device */
+    int voxels_copied;
     double share;     /* row methods: its share of the next render's rows */
     double speed;     /* rows (or samples) per second it last measured, 0 unknown */
     double last_ms;   /* its part of the last render: wall time */

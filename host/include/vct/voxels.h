@@ -42,6 +42,10 @@ typedef struct vct_voxel_info {
     uint64_t fragment_bytes;  /* transient: fragments and their sort */
 } vct_voxel_info;
 
+/* A copy on `ctx` of voxels built on another device (octree, bricks and
+ * light as they are): instead of building them there again. */
+vct_voxels *vct_voxels_copy(vct_context *ctx, const vct_voxels *voxels, vct_error *err);
+
 /* Triangle-parallel voxelization. Voxels are sorted by Morton key (bit 3k =
  * x bit k); each holds the mean of its fragments. Zero-area triangles make no
  * voxels; geometry outside the bounds is cut off at the cube's faces. */

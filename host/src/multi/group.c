@@ -75,25 +75,68 @@ typedef struct prepare_job {
     const vct_group_build *build;
     vct_error errors[VCT_GROUP_MAX];
     int rc[VCT_GROUP_MAX];
+    int builder; /* the device whose voxels the others copy; -1: each builds */
 } prepare_job;
 
+static int voxels_wanted(const vct_group_build *b) {
+    return b->plan && vct_plan_needs_voxels(b->plan);
+}
+
+/* The acceleration structure, and the voxels unless another device builds
+ * them for this one. */
 static void prepare_one(vct_group *g, int i, void *arg) {
     prepare_job *p = arg;
     vct_context *ctx = g->ctx[i];
     vct_error *err = &p->errors[i];
     const double t0 = vct_now_ms();
-    structures_free(g, i);
-    g->accel[i] = vct_accel_build(ctx, p->scene, &p->build->accel, err);
-    int rc = g->accel[i] ? VCT_OK : (int)err->status;
     const vct_group_build *b = p->build;
-    if (rc == VCT_OK && b->plan && vct_plan_needs_voxels(b->plan))
+    vct_group_device *d = &g->devices[i];
+    int rc = VCT_OK;
+    if (!g->accel[i]) {
+        g->accel[i] = vct_accel_build(ctx, p->scene, &b->accel, err);
+        rc = g->accel[i] ? VCT_OK : (int)err->status;
+    }
+    const double t1 = vct_now_ms();
+    if (rc == VCT_OK && voxels_wanted(b) && (p->builder < 0 || p->builder == i)) {
         rc = vct_vct_prepare(ctx, p->scene, g->accel[i], b->plan, &b->voxel, &b->bricks, b->bounces,
                              &b->cones, &g->voxels[i], err);
+        d->voxels_ms = vct_now_ms() - t1;
+        d->voxels_copied = 0;
+    }
     p->rc[i] = rc;
-    g->devices[i].build_ms = vct_now_ms() - t0;
-    g->devices[i].build_mib = ctx->bytes_live / 1048576.0;
+    d->build_ms += vct_now_ms() - t0;
+    d->build_mib = ctx->bytes_live / 1048576.0;
     if (rc != VCT_OK)
         structures_free(g, i);
+}
+
+/* Devices that failed to build are left out with a message. */
+static void drop_failed_builds(vct_group *g, prepare_job *p, int *first_failure) {
+    for (int i = 0; i < g->count; ++i)
+        if (g->devices[i].active && p->rc[i] != VCT_OK) {
+            if (*first_failure < 0)
+                *first_failure = i;
+            /* a device that cannot hold the structures is left out, not the frame */
+            vct_group_drop(g, i, &p->errors[i]);
+        }
+}
+
+/* The builder's voxels copied to every other device, one after the other
+ * (the builder's context serves one caller at a time). */
+static void copy_voxels(vct_group *g, prepare_job *p) {
+    const vct_voxels *from = g->voxels[p->builder];
+    for (int i = 0; i < g->count; ++i) {
+        if (i == p->builder || !g->devices[i].active)
+            continue;
+        const double t0 = vct_now_ms();
+        g->voxels[i] = vct_voxels_copy(g->ctx[i], from, &p->errors[i]);
+        p->rc[i] = g->voxels[i] ? VCT_OK : (int)p->errors[i].status;
+        vct_group_device *d = &g->devices[i];
+        d->voxels_ms = vct_now_ms() - t0;
+        d->voxels_copied = 1;
+        d->build_ms += d->voxels_ms;
+        d->build_mib = g->ctx[i]->bytes_live / 1048576.0;
+    }
 }
 
 int vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_group_build *build,
@@ -102,17 +145,27 @@ int vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_group_buil
     memset(&p, 0, sizeof p);
     p.scene = scene;
     p.build = build;
+    p.builder = -1;
+    for (int i = 0; i < g->count; ++i) {
+        structures_free(g, i);
+        g->devices[i].build_ms = g->devices[i].voxels_ms = 0.0;
+        if (build->copy_voxels && p.builder < 0 && g->devices[i].active)
+            p.builder = i;
+    }
     int rc = vct_group_each(g, prepare_one, &p, err);
     if (rc != VCT_OK)
         return rc;
     int first_failure = -1;
-    for (int i = 0; i < g->count; ++i)
-        if (g->devices[i].active && p.rc[i] != VCT_OK) {
-            if (first_failure < 0)
-                first_failure = i;
-            /* a device that cannot hold the structures is left out, not the frame */
-            vct_group_drop(g, i, &p.errors[i]);
+    drop_failed_builds(g, &p, &first_failure);
+    if (p.builder >= 0 && voxels_wanted(build)) {
+        if (g->devices[p.builder].active) {
+            copy_voxels(g, &p);
+        } else { /* the builder could not: every device builds its own */
+            p.builder = -1;
+            rc = vct_group_each(g, prepare_one, &p, err);
         }
+        drop_failed_builds(g, &p, &first_failure);
+    }
     if (vct_group_active_count(g) == 0) {
         *err = p.errors[first_failure >= 0 ? first_failure : 0];
         return err->status ? (int)err->status : VCT_ERR_INPUT;
