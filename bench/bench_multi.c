@@ -142,8 +142,8 @@ int main(int argc, char **argv) {
     const int n = vct_group_devices(g, &d);
     printf("\nvoxels of \"%s\" (64^3, bricks, 1 bounce), ms per device:\n\n", lists[count - 1]);
     printf("| device | each builds its own | first builds, others copy |\n|---|---:|---:|\n");
-    double own[VCT_GROUP_MAX];
-    for (int k = 0; k < n; ++k)
+    double own[16];
+    for (int k = 0; k < n && k < 16; ++k)
         own[k] = d[k].voxels_ms;
     vct_group_build b;
     memset(&b, 0, sizeof b);
@@ -156,7 +156,7 @@ int main(int argc, char **argv) {
     b.copy_voxels = 1;
     if (vct_group_prepare(g, s, &b, &err))
         bench_die(&err);
-    for (int k = 0; k < n; ++k)
+    for (int k = 0; k < n && k < 16; ++k)
         printf("| [%d] %s | %.1f | %.1f %s |\n", d[k].info.index, d[k].info.name, own[k],
                d[k].voxels_ms, d[k].voxels_copied ? "(copy)" : "(build)");
     for (int i = 0; i < count; ++i)
