@@ -75,6 +75,9 @@ typedef struct vct_group_device {
 int vct_group_devices(const vct_group *group, const vct_group_device **devices);
 /* Devices not dropped. */
 int vct_group_active_count(const vct_group *group);
+/* The device rendering the row methods alone, having measured faster than
+ * the devices together (-1: they render together). */
+int vct_group_alone(const vct_group *group);
 /* Failures seen so far (each reported once, on stderr, when it happened). */
 int vct_group_faults(const vct_group *group);
 

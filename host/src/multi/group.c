@@ -64,6 +64,10 @@ int vct_group_devices(const vct_group *g, const vct_group_device **devices) {
     return g->count;
 }
 
+int vct_group_alone(const vct_group *g) {
+    return g->solo.state == VCT_SOLO && g->devices[g->solo.device].active ? g->solo.device : -1;
+}
+
 int vct_group_faults(const vct_group *g) {
     return g->faults;
 }

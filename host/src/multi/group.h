@@ -17,6 +17,7 @@ struct vct_group {
     int faults;
     uint32_t pt_done; /* samples of the path tracer's running sums (resume) */
     vct_solo solo;    /* row methods: the devices together, or the fastest alone */
+    uint64_t solo_job; /* what solo's frame times were measured on */
     /* Photon mapping: the bands of the last render, kept while it resumes. */
     int pm_first[VCT_GROUP_MAX], pm_rows[VCT_GROUP_MAX], pm_height;
 };

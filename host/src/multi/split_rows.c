@@ -280,6 +280,16 @@ render:;
     return rc;
 }
 
+/* What frame times of the devices together and alone may be compared
+ * over: the same method, size and subsampling. */
+static uint64_t job_signature(const vct_render_job *job, int width, int height) {
+    const uint64_t subsample = job->method == VCT_METHOD_WHITTED   ? job->whitted.subsample
+                               : job->method == VCT_METHOD_RAYCAST ? job->raycast.subsample
+                                                                   : 0;
+    return (uint64_t)job->method | (uint64_t)width << 8 | (uint64_t)height << 24 |
+           subsample << 40 | (uint64_t)(job->vct.sparse_diffuse != 0) << 56;
+}
+
 int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,
                           vct_render_result *result, vct_error *err) {
     vct_render_result sum;
@@ -290,6 +300,11 @@ int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *im
         return vct_fail(err, VCT_ERR_INPUT, "render: image size %dx%d is outside 1..32768", width,
                         height);
     const double t0 = vct_now_ms();
+    const uint64_t signature = job_signature(job, width, height);
+    if (signature != g->solo_job) { /* times of another job say nothing of this one */
+        memset(&g->solo, 0, sizeof g->solo);
+        g->solo_job = signature;
+    }
     image->width = width;
     image->height = height;
     image->rgba = malloc(16 * (size_t)width * (size_t)height);
