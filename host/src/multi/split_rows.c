@@ -131,6 +131,32 @@ static void active_shares(const vct_group *g, double *share) {
 static int render_range(vct_group *g, const vct_render_job *job, int first, int rows,
                         vct_image *image, vct_render_result *result, int measure, vct_error *err);
 
+/* Band i's own rows into the image, what it did into the result, and with
+ * `measure` its time into its speed. */
+static void take_band(vct_group *g, const rows_round *r, int i, vct_image *image,
+                      vct_render_result *result, int measure) {
+    const band b = r->bands[i];
+    const size_t row_floats = 4 * (size_t)r->width;
+    const int skip = b.first - rendered_rows(r, b).first;
+    memcpy(image->rgba + (size_t)b.first * row_floats,
+           r->images[i].rgba + (size_t)skip * row_floats,
+           (size_t)b.rows * row_floats * sizeof(float));
+    result->traced += r->results[i].traced;
+    result->spp = r->results[i].spp; /* photon mapping: the passes every band made */
+    result->photons = r->results[i].photons;
+    if (!measure)
+        return;
+    vct_group_device *d = &g->devices[i];
+    d->last_ms = r->ms[i];
+    d->last_work = b.rows;
+    if (g->solo.state == VCT_ALL_DEVICES) {
+        /* averaged with the last measurement: one slow frame (a page
+         * fault, a busy host) does not swing the shares */
+        const double speed = r->ms[i] > 0.0 ? b.rows / (r->ms[i] * 1e-3) : 0.0;
+        d->speed = d->speed > 0.0 ? 0.5 * (d->speed + speed) : speed;
+    }
+}
+
 /* Photon mapping's bands after their round: all complete, or a failure
  * stopped them all and the frame starts again without the device that
  * failed (the bands' grids must agree, pass after pass). */
@@ -164,18 +190,8 @@ static int lockstep_outcome(vct_group *g, const vct_render_job *job, rows_round 
         const band b = r->bands[i];
         g->pm_first[i] = b.first;
         g->pm_rows[i] = b.rows;
-        if (!b.rows)
-            continue;
-        const size_t row_floats = 4 * (size_t)r->width;
-        memcpy(image->rgba + (size_t)b.first * row_floats, r->images[i].rgba,
-               (size_t)b.rows * row_floats * sizeof(float));
-        vct_group_device *d = &g->devices[i];
-        d->last_ms = r->ms[i];
-        d->last_work = b.rows;
-        const double speed = r->ms[i] > 0.0 ? b.rows / (r->ms[i] * 1e-3) : 0.0;
-        d->speed = d->speed > 0.0 ? 0.5 * (d->speed + speed) : speed;
-        result->spp = r->results[i].spp;
-        result->photons = r->results[i].photons;
+        if (b.rows)
+            take_band(g, r, i, image, result, 1);
         vct_image_free(&r->images[i]);
     }
     return VCT_OK;
@@ -250,23 +266,7 @@ render:;
             last_failure = i;
             continue;
         }
-        const size_t row_floats = 4 * (size_t)r->width;
-        const int skip = b.first - rendered_rows(r, b).first;
-        memcpy(image->rgba + (size_t)b.first * row_floats,
-               r->images[i].rgba + (size_t)skip * row_floats,
-               (size_t)b.rows * row_floats * sizeof(float));
-        result->traced += r->results[i].traced;
-        vct_group_device *d = &g->devices[i];
-        if (measure) {
-            d->last_ms = r->ms[i];
-            d->last_work = b.rows;
-        }
-        if (measure && g->solo.state == VCT_ALL_DEVICES) {
-            /* averaged with the last measurement: one slow frame (a page
-             * fault, a busy host) does not swing the shares */
-            const double speed = r->ms[i] > 0.0 ? b.rows / (r->ms[i] * 1e-3) : 0.0;
-            d->speed = d->speed > 0.0 ? 0.5 * (d->speed + speed) : speed;
-        }
+        take_band(g, r, i, image, result, measure);
     }
     for (int i = 0; i < g->count; ++i)
         vct_image_free(&r->images[i]);
@@ -286,8 +286,8 @@ static uint64_t job_signature(const vct_render_job *job, int width, int height) 
     const uint64_t subsample = job->method == VCT_METHOD_WHITTED   ? job->whitted.subsample
                                : job->method == VCT_METHOD_RAYCAST ? job->raycast.subsample
                                                                    : 0;
-    return (uint64_t)job->method | (uint64_t)width << 8 | (uint64_t)height << 24 |
-           subsample << 40 | (uint64_t)(job->vct.sparse_diffuse != 0) << 56;
+    return (uint64_t)job->method | (uint64_t)width << 8 | (uint64_t)height << 24 | subsample << 40 |
+           (uint64_t)(job->vct.sparse_diffuse != 0) << 56;
 }
 
 int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,
