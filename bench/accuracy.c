@@ -193,59 +193,70 @@ static int pm_rows(vct_context *ctx, const vct_scene *s, const settings *cfg, co
     return n;
 }
 
-/* Whitted ray tracing, subsampled at n (0: every pixel), guarded or not;
- * writes the pixels traced. */
+/* Whitted ray tracing, subsampled at n (0: every pixel), guarded or not,
+ * with a contrast test or not; writes the pixels traced and the rays cast. */
 static vct_image render_whitted(vct_context *ctx, const vct_scene *s, const settings *cfg,
-                                uint32_t n, int guarded, uint64_t *traced, run *r) {
+                                uint32_t n, int guarded, float contrast, uint64_t *traced,
+                                uint64_t *rays, run *r) {
     vct_error err = {0};
     double t0;
     vct_accel *g = run_begin(ctx, s, cfg, &t0);
-    const vct_whitted_options o = {cfg->width, cfg->height, 8, 1e-3f, n, (uint32_t)!guarded, 0.0f};
-    vct_whitted_result res = {0, 0, NULL};
+    const vct_whitted_options o = {cfg->width, cfg->height,        8,       1e-3f,
+                                   n,          (uint32_t)!guarded, contrast};
+    vct_whitted_result res = {0, 0, NULL, 0};
     vct_image im;
     if (vct_render_whitted(ctx, s, g, &o, &im, &res, &err))
         bench_die(&err);
     *traced = res.traced_pixels;
+    *rays = res.camera_rays;
     r->render_ms = stage_device_ms(ctx, "whitted");
     r->build_ms = 0.0;
     run_end(ctx, g, t0, r);
     if (n)
-        snprintf(r->name, sizeof r->name, "whitted, subsample %u%s", n,
-                 guarded ? "" : " (no guard)");
+        snprintf(r->name, sizeof r->name, "whitted, subsample %u%s%s", n,
+                 guarded ? "" : " (no guard)", contrast > 0.0f ? ", contrast 0.05" : "");
     else
         snprintf(r->name, sizeof r->name, "whitted");
     return im;
 }
 
 /* Whitted at every pixel and subsampled at 4, 8 and 16, with and without
- * the guard: rows against the reference, and whitted.md with each setting's
- * error against full Whitted and the share of pixels it traced. */
+ * the guard, and guarded with the contrast test at 0.05: rows against the
+ * reference, and whitted.md with each setting's error against full Whitted
+ * and the shares of pixels it traced and rays it cast. */
 static int whitted_rows(vct_context *ctx, const vct_scene *s, const settings *cfg,
                         const vct_image *ref, run *runs, int n) {
     char path[1200];
     snprintf(path, sizeof path, "%s/whitted.md", cfg->out);
     FILE *md = fopen(path, "w");
     if (md)
-        fprintf(md, "| setting | pixels traced | time (ms, device) | NRMSE against full Whitted "
-                    "| NRMSE against the reference |\n|---|---:|---:|---:|---:|\n");
+        fprintf(md,
+                "| setting | pixels traced | rays cast | time (ms, device) | NRMSE against "
+                "full Whitted | NRMSE against the reference |\n|---|---:|---:|---:|---:|---:|\n");
     vct_image full = {0};
     static const uint32_t sizes[] = {0, 4, 8, 16};
     for (size_t i = 0; i < sizeof sizes / sizeof *sizes; ++i)
-        for (int guarded = 1; guarded >= (sizes[i] ? 0 : 1) && n < MAX_RUNS; --guarded) {
+        for (int variant = 0; variant < (sizes[i] ? 3 : 1) && n < MAX_RUNS; ++variant) {
+            /* guarded; unguarded; guarded with the contrast test */
+            const int guarded = variant != 1;
+            const float contrast = variant == 2 ? 0.05f : 0.0f;
             vct_error err = {0};
-            uint64_t traced = 0;
-            vct_image im = render_whitted(ctx, s, cfg, sizes[i], guarded, &traced, &runs[n]);
+            uint64_t traced = 0, rays = 0;
+            vct_image im =
+                render_whitted(ctx, s, cfg, sizes[i], guarded, contrast, &traced, &rays, &runs[n]);
             vct_image_metrics own = {0};
             if (vct_image_compare(&im, ref, &runs[n].m, &err) ||
                 (full.rgba && vct_image_compare(&im, &full, &own, &err)))
                 bench_die(&err);
-            const double share = (double)traced / ((double)cfg->width * cfg->height);
+            const double pixels = (double)cfg->width * cfg->height;
+            const double share = (double)traced / pixels, ray_share = (double)rays / pixels;
             fprintf(stderr,
                     "%-48s %9.1f ms  NRMSE %.4f, against full Whitted %.4f, %.1f %% traced\n",
                     runs[n].name, runs[n].total_ms, runs[n].m.nrmse, own.nrmse, 100.0 * share);
             if (md)
-                fprintf(md, "| %s | %.1f %% | %.1f | %.4f | %.4f |\n", runs[n].name, 100.0 * share,
-                        runs[n].total_ms, own.nrmse, runs[n].m.nrmse);
+                fprintf(md, "| %s | %.1f %% | %.1f %% | %.1f | %.4f | %.4f |\n", runs[n].name,
+                        100.0 * share, 100.0 * ray_share, runs[n].total_ms, own.nrmse,
+                        runs[n].m.nrmse);
             if (!full.rgba)
                 full = im;
             else

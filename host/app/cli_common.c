@@ -201,8 +201,11 @@ vct_render_job cli_render_job(const cli_options *opt, vct_method method, const v
 void cli_print_result(const cli_options *opt, const vct_render_result *r) {
     const double pixels = (double)opt->width * opt->height;
     if (r->method == VCT_METHOD_WHITTED)
-        fprintf(stderr, "whitted: %llu of %.0f pixels traced (%.1f %% interpolated)\n",
-                (unsigned long long)r->traced, pixels, 100.0 * (1.0 - (double)r->traced / pixels));
+        fprintf(stderr,
+                "whitted: %llu of %.0f pixels traced (%.1f %% interpolated), %llu camera rays "
+                "(%.1f %% of a full render's)\n",
+                (unsigned long long)r->traced, pixels, 100.0 * (1.0 - (double)r->traced / pixels),
+                (unsigned long long)r->camera_rays, 100.0 * (double)r->camera_rays / pixels);
     if (r->method == VCT_METHOD_PATHTRACE)
         fprintf(stderr,
                 "path tracing: %u spp in %.2f s (%.1f spp/s), %u samples discarded as "

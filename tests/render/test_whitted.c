@@ -221,12 +221,50 @@ static vct_image render_sub(const vct_scene *s, int w, int h, uint32_t n, float 
     vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
     vct_whitted_options o = {w, h, 8, 1e-3f, n, 0, contrast};
-    vct_whitted_result r = {0, 0, mask};
+    vct_whitted_result r = {0, 0, mask, 0};
     vct_image im;
     REQUIRE_OK(vct_render_whitted(ctx, s, a, &o, &im, &r, &err), err);
     *traced = r.traced_pixels;
     vct_accel_free(a);
     return im;
+}
+
+/* A point light just in front of a plane, on the view axis: its bright spot
+ * lies at the centre of the one 8-pixel square of a 9x9 image, whose four
+ * corners are alike by symmetry. Keys alone interpolate the spot away; the
+ * contrast test traces the centre, finds it far from the corners' bilinear
+ * value, and refines the square, so the spot is traced. */
+static void check_centre_peak(void) {
+    const float plane[12] = {-L, -L, 0.0f, L, -L, 0.0f, L, L, 0.0f, -L, L, 0.0f};
+    const vct_material m = matte(0.8f);
+    vct_scene *s = quads_scene(plane, 1, &m);
+    const vct_camera camera = {{0.0f, 0.0f, 100.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 40.0f};
+    s->camera = camera;
+    vct_light light = {0};
+    light.type = VCT_LIGHT_POINT;
+    light.position[2] = 3.0f;
+    light.color[0] = light.color[1] = light.color[2] = 100.0f;
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &light, &err), err);
+    uint8_t mask[81];
+    uint64_t traced = 0;
+    vct_image full = render_sub(s, 9, 9, 0, 0.0f, mask, &traced);
+    vct_image keys = render_sub(s, 9, 9, 8, 0.0f, mask, &traced);
+    const size_t centre = 4 * (4 * 9 + 4);
+    const float by_keys = keys.rgba[centre];
+    CHECK(!mask[4 * 9 + 4] && by_keys < 0.5f * full.rgba[centre],
+          "keys alone should miss the spot: centre %g against %g", by_keys, full.rgba[centre]);
+    vct_image_free(&keys);
+    vct_image contrast = render_sub(s, 9, 9, 8, 0.05f, mask, &traced);
+    CHECK(mask[4 * 9 + 4] && contrast.rgba[centre] == full.rgba[centre],
+          "the contrast test traces the spot: centre %g against %g", contrast.rgba[centre],
+          full.rgba[centre]);
+    printf("a spot between symmetric corners: keys alone give %g at its centre, the contrast "
+           "test traces it (%g)\n",
+           by_keys, contrast.rgba[centre]);
+    vct_image_free(&contrast);
+    vct_image_free(&full);
+    vct_scene_free(s);
 }
 
 /* Subsampling: every traced pixel equals the full render bit for bit; on a
@@ -275,7 +313,7 @@ static void check_subsampling(void) {
     const vct_render_options ro = {W, H, 0, 0, 0.0f};
     REQUIRE_OK(vct_render_raycast(ctx, box, acc, &ro, &full, &err), err);
     const vct_whitted_options wo = {W, H, 1, 0.0f, 8, 0, 0.0f};
-    vct_whitted_result wr = {0, 0, mask};
+    vct_whitted_result wr = {0, 0, mask, 0};
     REQUIRE_OK(vct_whitted_render_as(ctx, box, acc, &wo, 1, &sub, &wr, &err), err);
     differ = marked = 0;
     for (size_t i = 0; i < (size_t)W * H; ++i)
@@ -407,7 +445,7 @@ static void check_small_objects(void) {
     uint64_t traced[3], small = 0;
     for (int i = 0; i < 3; ++i) {
         vct_whitted_options o = {W, H, 8, 1e-3f, i ? 16u : 0u, i == 1, 0.0f};
-        vct_whitted_result r = {0, 0, NULL};
+        vct_whitted_result r = {0, 0, NULL, 0};
         REQUIRE_OK(vct_render_whitted(ctx, s, a, &o, &im[i], &r, &err), err);
         traced[i] = r.traced_pixels;
         if (i == 2)
@@ -455,6 +493,7 @@ int main(void) {
 
     check_mirror();
     check_subsampling();
+    check_centre_peak();
     check_small_objects();
 
     /* Depth counts surface interactions: the wall is the third of the

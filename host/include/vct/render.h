@@ -176,6 +176,7 @@ typedef struct vct_whitted_result {
     uint64_t traced_pixels; /* pixels whose ray tree was traced (all without subsampling) */
     uint64_t small_objects; /* pieces of the mesh smaller than a square on screen (guarded) */
     uint8_t *traced_mask;   /* in: NULL, or width x height bytes to receive 1 where traced */
+    uint64_t camera_rays;   /* ray trees started: pixels traced, some twice (contrast centres) */
 } vct_whitted_result;
 
 /* result may be NULL. */
@@ -285,6 +286,7 @@ typedef struct vct_render_result {
     uint32_t spp;       /* path tracing: samples per pixel; photon mapping: passes */
     uint32_t discarded; /* path tracing: non-finite samples dropped */
     uint64_t traced;    /* Whitted: pixels traced (the rest interpolated) */
+    uint64_t camera_rays; /* Whitted: ray trees started (pixels traced, some twice) */
     uint64_t photons;   /* photon mapping: photon paths emitted */
 } vct_render_result;
 

@@ -142,6 +142,7 @@ static void take_band(vct_group *g, const rows_round *r, int i, vct_image *image
            r->images[i].rgba + (size_t)skip * row_floats,
            (size_t)b.rows * row_floats * sizeof(float));
     result->traced += r->results[i].traced;
+    result->camera_rays += r->results[i].camera_rays;
     result->spp = r->results[i].spp; /* photon mapping: the passes every band made */
     result->photons = r->results[i].photons;
     if (!measure)

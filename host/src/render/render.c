@@ -127,7 +127,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
     memset(image, 0, sizeof *image);
     int rc = job_check(job, err);
     vct_pathtrace_result pt = {0};
-    vct_whitted_result wr = {0, 0, NULL};
+    vct_whitted_result wr = {0, 0, NULL, 0};
     vct_pm_result pm = {0};
     if (rc == VCT_OK && job->band.height) {
         ctx->band_first = job->band.first;
@@ -174,6 +174,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
         result->photons = pm.photons_emitted;
         result->discarded = pt.discarded;
         result->traced = wr.traced_pixels;
+        result->camera_rays = wr.camera_rays;
     }
     return rc;
 }

@@ -8,11 +8,12 @@
 
 typedef struct sub_buffers {
     cl_mem keys, traced, guard, points, squares, refining, flags;
+    cl_mem wanted, listed, split_map; /* the pixels to trace, compacted; the squares split */
 } sub_buffers;
 
 static void release_all(vct_context *ctx, sub_buffers *b) {
-    cl_mem *m[] = {&b->keys,    &b->traced,   &b->guard, &b->points,
-                   &b->squares, &b->refining, &b->flags};
+    cl_mem *m[] = {&b->wanted, &b->listed, &b->split_map, &b->keys,     &b->traced,
+                   &b->guard,  &b->points, &b->squares,   &b->refining, &b->flags};
     for (size_t i = 0; i < sizeof m / sizeof *m; ++i)
         vct_buffer_release(ctx, *m[i]);
 }
@@ -31,6 +32,9 @@ static int allocate(vct_context *ctx, const char *stage, size_t pixels, size_t s
         {&b->squares, "subsample squares", 4 * 4 * squares},
         {&b->refining, "subsample squares to split", 4 * 4 * squares},
         {&b->flags, "subsample split flags", 4 * 4 * squares},
+        {&b->wanted, "subsample pixels wanted", 4 * 5 * squares},
+        {&b->listed, "subsample pixels to trace", 4 * 5 * squares},
+        {&b->split_map, "subsample split squares", 4 * squares},
     };
     for (size_t i = 0; i < sizeof list / sizeof *list; ++i) {
         *list[i].mem = vct_buffer_create(ctx, stage, list[i].what, list[i].bytes, CL_MEM_READ_WRITE,
@@ -38,7 +42,8 @@ static int allocate(vct_context *ctx, const char *stage, size_t pixels, size_t s
         if (!*list[i].mem)
             return (int)err->status;
     }
-    return vct_buffer_fill_u32(ctx, stage, b->traced, 0, pixels, err);
+    int rc = vct_buffer_fill_u32(ctx, stage, b->traced, 0, pixels, err);
+    return rc == VCT_OK ? vct_buffer_fill_u32(ctx, stage, b->split_map, 0, squares, err) : rc;
 }
 
 /* The corners of every square of the first level, and the squares. */
@@ -68,16 +73,27 @@ static int first_level(vct_shaded *sh, uint32_t size, sub_buffers *b, uint32_t *
     return rc;
 }
 
-static int trace(vct_shaded *sh, cl_kernel k, int first_arg, sub_buffers *b, uint32_t n,
-                 vct_error *err) {
-    int rc = vct_set_args(err, sh->stage, k, first_arg, 5, VCT_ARG_OF(b->points), VCT_ARG_OF(n),
+/* Traces the n pixels listed in `list`. */
+static int trace(vct_shaded *sh, cl_kernel k, int first_arg, sub_buffers *b, cl_mem list,
+                 uint32_t n, uint64_t *rays, vct_error *err) {
+    *rays += n;
+    int rc = vct_set_args(err, sh->stage, k, first_arg, 5, VCT_ARG_OF(list), VCT_ARG_OF(n),
                           VCT_ARG_OF(b->keys), VCT_ARG_OF(b->traced), VCT_ARG_OF(sh->frame));
     return rc == VCT_OK ? vct_launch(sh->ctx, k, n, 64, err) : rc;
 }
 
+/* Traces the wanted ones of the n pixels in b->points (b->wanted: 0 or 1). */
+static int trace_wanted(vct_shaded *sh, cl_kernel k, int first_arg, sub_buffers *b, uint32_t n,
+                        uint64_t *rays, vct_error *err) {
+    uint32_t count = 0;
+    int rc = vct_compact_u32(sh->ctx, b->points, b->wanted, b->listed, n, &count, err);
+    return rc == VCT_OK && count ? trace(sh, k, first_arg, b, b->listed, count, rays, err) : rc;
+}
+
 int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_arg *own,
                   int own_count, uint32_t size, const uint16_t *guard, float contrast_in,
-                  uint64_t *traced, uint8_t *traced_mask, vct_error *err) {
+                  uint64_t *traced, uint64_t *rays, uint8_t *traced_mask, vct_error *err) {
+    *rays = 0;
     vct_context *ctx = sh->ctx;
     const char *stage = sh->stage;
     const uint32_t w = (uint32_t)sh->width, h = (uint32_t)sh->height;
@@ -101,23 +117,36 @@ int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_ar
     if (rc == VCT_OK)
         rc = first_level(sh, size, &b, &n_points, &m, err);
     if (rc == VCT_OK)
-        rc = trace(sh, k, first_arg, &b, n_points, err);
+        rc = trace(sh, k, first_arg, &b, b.points, n_points, rays, err);
     const cl_uint cw = w, ch = h;
     for (cl_uint s = size; rc == VCT_OK && m > 0 && s >= 2; s /= 2) {
-        rc = vct_run_kernel(ctx, p, "sub_fill", stage, m, err, 10, VCT_ARG_OF(b.squares),
-                            VCT_ARG_OF(m), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
-                            VCT_ARG_OF(b.keys), VCT_ARG_OF(b.guard), VCT_ARG_OF(contrast),
-                            VCT_ARG_OF(sh->frame), VCT_ARG_OF(b.flags));
+        /* the contrast test also reads each square's centre (sub_fill) */
+        if (contrast > 0.0f && s > 2) {
+            rc = vct_run_kernel(ctx, p, "sub_centres", stage, m, err, 8, VCT_ARG_OF(b.squares),
+                                VCT_ARG_OF(m), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
+                                VCT_ARG_OF(b.traced), VCT_ARG_OF(b.points), VCT_ARG_OF(b.wanted));
+            if (rc == VCT_OK)
+                rc = trace_wanted(sh, k, first_arg, &b, m, rays, err);
+        }
+        if (rc == VCT_OK)
+            rc = vct_run_kernel(ctx, p, "sub_fill", stage, m, err, 10, VCT_ARG_OF(b.squares),
+                                VCT_ARG_OF(m), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
+                                VCT_ARG_OF(b.keys), VCT_ARG_OF(b.guard), VCT_ARG_OF(contrast),
+                                VCT_ARG_OF(sh->frame), VCT_ARG_OF(b.flags));
         uint32_t r = 0;
         if (rc == VCT_OK)
             rc = vct_compact_u32(ctx, b.squares, b.flags, b.refining, m, &r, err);
         if (rc != VCT_OK || r == 0)
             break;
-        rc = vct_run_kernel(ctx, p, "sub_points", stage, r, err, 6, VCT_ARG_OF(b.refining),
-                            VCT_ARG_OF(r), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
-                            VCT_ARG_OF(b.points));
+        rc = vct_run_kernel(ctx, p, "sub_mark", stage, r, err, 5, VCT_ARG_OF(b.refining),
+                            VCT_ARG_OF(r), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(b.split_map));
         if (rc == VCT_OK)
-            rc = trace(sh, k, first_arg, &b, 5 * r, err);
+            rc = vct_run_kernel(ctx, p, "sub_points", stage, r, err, 9, VCT_ARG_OF(b.refining),
+                                VCT_ARG_OF(r), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
+                                VCT_ARG_OF(b.split_map), VCT_ARG_OF(b.traced), VCT_ARG_OF(b.points),
+                                VCT_ARG_OF(b.wanted));
+        if (rc == VCT_OK)
+            rc = trace_wanted(sh, k, first_arg, &b, 5 * r, rays, err);
         if (rc == VCT_OK && s > 2)
             rc = vct_run_kernel(ctx, p, "sub_split", stage, r, err, 4, VCT_ARG_OF(b.refining),
                                 VCT_ARG_OF(r), VCT_ARG_OF(s), VCT_ARG_OF(b.squares));

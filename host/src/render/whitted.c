@@ -45,7 +45,7 @@ int vct_whitted_render_as(vct_context *ctx, const vct_scene *s, const vct_accel 
                                    {sizeof depth, &depth},
                                    {sizeof cut, &cut},
                                    {sizeof plain_arg, &plain_arg}};
-    uint64_t traced = (uint64_t)opt->width * (uint64_t)opt->height;
+    uint64_t traced = (uint64_t)opt->width * (uint64_t)opt->height, rays = traced;
     if (!opt->subsample) {
         rc = vct_shaded_frame(ctx, s, g, KERNEL_FILE, "whitted", STAGE, opt->width, opt->height,
                               own, 4, image, err);
@@ -68,13 +68,15 @@ int vct_whitted_render_as(vct_context *ctx, const vct_scene *s, const vct_accel 
         }
         if (rc == VCT_OK)
             rc = vct_subsample(&sh, "whitted_points", own, 4, opt->subsample, guard,
-                               opt->subsample_contrast, &traced,
+                               opt->subsample_contrast, &traced, &rays,
                                result ? result->traced_mask : NULL, err);
         free(guard);
         rc = vct_shaded_end(&sh, rc, image, err);
     }
-    if (rc == VCT_OK && result)
+    if (rc == VCT_OK && result) {
         result->traced_pixels = traced;
+        result->camera_rays = rays;
+    }
     return rc;
 }
 
