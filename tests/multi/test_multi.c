@@ -20,14 +20,20 @@ typedef struct method_case {
     vct_method method;
     uint32_t subsample;
     int sparse;
+    float contrast;
 } method_case;
 
 static const method_case cases[] = {
-    {"raycast", VCT_METHOD_RAYCAST, 0, 0}, {"raycast, subsample 4", VCT_METHOD_RAYCAST, 4, 0},
-    {"whitted", VCT_METHOD_WHITTED, 0, 0}, {"whitted, subsample 8", VCT_METHOD_WHITTED, 8, 0},
-    {"vct", VCT_METHOD_VCT, 0, 0},         {"vct, sparse diffuse", VCT_METHOD_VCT, 0, 1},
-    {"pt", VCT_METHOD_PATHTRACE, 0, 0},    {"voxels", VCT_METHOD_VOXELS, 0, 0},
-    {"pm", VCT_METHOD_PM, 0, 0},
+    {"raycast", VCT_METHOD_RAYCAST, 0, 0, 0.0f},
+    {"raycast, subsample 4", VCT_METHOD_RAYCAST, 4, 0, 0.0f},
+    {"whitted", VCT_METHOD_WHITTED, 0, 0, 0.0f},
+    {"whitted, subsample 8", VCT_METHOD_WHITTED, 8, 0, 0.0f},
+    {"vct", VCT_METHOD_VCT, 0, 0, 0.0f},
+    {"vct, sparse diffuse", VCT_METHOD_VCT, 0, 1, 0.0f},
+    {"pt", VCT_METHOD_PATHTRACE, 0, 0, 0.0f},
+    {"voxels", VCT_METHOD_VOXELS, 0, 0, 0.0f},
+    {"pm", VCT_METHOD_PM, 0, 0, 0.0f},
+    {"whitted, subsample 8, contrast 0.05", VCT_METHOD_WHITTED, 8, 0, 0.05f},
 };
 #define CASES (int)(sizeof cases / sizeof *cases)
 
@@ -54,6 +60,7 @@ static vct_render_job job_of(const method_case *c, const vct_scene *s) {
     job.pm.passes = 3;
     job.pm.photons_per_pass = 20000;
     job.raycast.subsample = job.whitted.subsample = c->subsample;
+    job.whitted.subsample_contrast = c->contrast;
     job.vct.sparse_diffuse = c->sparse;
     job.voxel_view.level = 4;
     return job;
