@@ -53,7 +53,11 @@ int vct_group_prepare(vct_group *group, const vct_scene *scene, const vct_group_
 
 /* Renders `job` over the group's devices, with each device's own structures
  * (the job's accel and voxels are not read; its aovs must be NULL, its band
- * empty). The image is the one a single device of the same kind gives. */
+ * empty). The image is the one a single device of the same kind gives.
+ * Resuming (pathtrace.resume, pm.resume) continues each device's own sums
+ * or statistics; a device dropped then loses what it held from earlier
+ * calls (the path tracer averages the samples that remain; photon mapping
+ * starts over). Photon mapping takes a pass count, not a time. */
 int vct_group_render(vct_group *group, const vct_render_job *job, vct_image *image,
                      vct_render_result *result, vct_error *err);
 
