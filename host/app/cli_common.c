@@ -102,6 +102,10 @@ void cli_print_plan(const vct_plan *plan, FILE *out) {
     for (int e = 0; e < VCT_EFFECTS; ++e)
         fprintf(out, "  %-12s %-3s  %s\n", vct_effect_name((vct_effect)e),
                 plan->on[e] ? "on" : "off", plan->why[e]);
+    fprintf(out, "  %-12s %-5s%s\n", "emitters", plan->emitters_by_cones ? "cones" : "rays",
+            plan->emitters_by_cones ? "their emission stays in the voxels; cones gather it"
+                                    : "sampled as lights with shadow rays (--emitters cones: by "
+                                      "the voxels alone)");
 }
 
 vct_accel *cli_accel_build(vct_context *ctx, const vct_scene *s, const cli_options *opt,

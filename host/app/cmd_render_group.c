@@ -36,6 +36,7 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
                 d[i].info.platform);
     vct_plan plan;
     vct_plan_make(s, opt->force, &plan);
+    plan.emitters_by_cones = opt->emitters_by_cones;
     if (method == VCT_METHOD_VCT && opt->print_plan)
         cli_print_plan(&plan, stdout);
     vct_group_build build;

@@ -31,6 +31,7 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
                    vct_error *err) {
     vct_plan plan;
     vct_plan_make(job->scene, opt->force, &plan);
+    plan.emitters_by_cones = opt->emitters_by_cones;
     if (opt->print_plan)
         cli_print_plan(&plan, stdout);
     vct_voxel_options voxel;

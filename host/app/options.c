@@ -96,6 +96,8 @@ void cli_usage(void) {
         "                                   else first CPU)\n"
         "  --device 0,2|all|gpu|cpu         render: several devices, one frame (path tracing\n"
         "                                   split by samples, the others by row bands)\n"
+        "  --emitters rays|cones            vct: emissive triangles as lights sampled with shadow\n"
+        "                                   rays (default), or through the voxels' cones alone\n"
         "  --copy-voxels                    several devices: the first builds the voxels, the\n"
         "                                   others copy them (default: each builds its own)\n",
         stderr);
@@ -440,6 +442,13 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 fprintf(stderr, "vct: --cone-levels takes blend or nearest, not '%s'\n", how);
                 return 1;
             }
+        } else if (strcmp(a, "--emitters") == 0) {
+            const char *how = i + 1 < argc ? argv[++i] : "";
+            if (strcmp(how, "rays") != 0 && strcmp(how, "cones") != 0) {
+                fprintf(stderr, "vct: --emitters takes rays or cones, not '%s'\n", how);
+                return 1;
+            }
+            opt->emitters_by_cones = strcmp(how, "cones") == 0;
         } else if (strcmp(a, "--copy-voxels") == 0) {
             opt->copy_voxels = 1;
         } else if (strcmp(a, "--sparse-diffuse") == 0) {

@@ -48,6 +48,7 @@ typedef struct cli_options {
     vct_effect_force force[VCT_EFFECTS];
     int diffuse_cones, bounces, sparse_diffuse;
     int copy_voxels; /* several devices: one builds the voxels, the others copy them */
+    int emitters_by_cones; /* --emitters cones */
     vct_cone_settings cones;
     const char *aov_prefix;
     cli_pm pm;

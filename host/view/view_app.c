@@ -55,6 +55,7 @@ int view_app_init(view_app *app, const cli_options *opt, vct_error *err) {
     if (!app->scene)
         return err->status;
     vct_plan_make(app->scene, app->force, &app->plan);
+    app->plan.emitters_by_cones = app->opt.emitters_by_cones;
     view_camera_init(&app->camera, &app->scene->camera, scene_extent(app->scene));
     app->dirty = 1;
     return VCT_OK;
@@ -289,6 +290,7 @@ void view_app_set_method(view_app *app, view_method m) {
 void view_app_toggle_effect(view_app *app, vct_effect e) {
     app->force[e] = app->plan.on[e] ? VCT_FORCE_OFF : VCT_FORCE_ON;
     vct_plan_make(app->scene, app->force, &app->plan);
+    app->plan.emitters_by_cones = app->opt.emitters_by_cones;
     app->dirty = 1;
 }
 

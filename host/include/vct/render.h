@@ -85,6 +85,10 @@ typedef struct vct_plan {
     int on[VCT_EFFECTS];
     int forced[VCT_EFFECTS]; /* 1 where a flag decided, not the scene */
     char why[VCT_EFFECTS][160];
+    /* 1: emissive triangles light the scene through the voxels alone (their
+     * emission stays in the voxels and cones gather it), not as lights
+     * sampled with shadow rays at pixels and voxels (0, vct_plan_make's). */
+    int emitters_by_cones;
 } vct_plan;
 
 const char *vct_effect_name(vct_effect effect);

@@ -116,6 +116,8 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
         return vct_fail(err, VCT_ERR_INPUT, "%u bounces: give 1 (direct light in the voxels) to 4",
                         bounces);
     vct_voxels *v = vct_voxelize(ctx, s, vo, err);
+    if (v)
+        v->emitters_by_cones = plan->emitters_by_cones;
     int rc = v ? vct_octree_build(ctx, v, err) : (int)err->status;
     /* Light first, into the voxels: the bricks then build and filter every
      * channel in one pass (1.2x faster than re-filtering radiance after). */
@@ -313,7 +315,8 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, con
     if (f.v)
         vct_cone_desc_make(f.v, &opt->cones, s->ambient, &f.desc);
     char own[256], options[320];
-    program_options(plan, vct_scene_emissive_triangles(s) > 0, f.v, &opt->cones, own, sizeof own);
+    program_options(plan, vct_scene_emissive_triangles(s) > 0 && !plan->emitters_by_cones, f.v,
+                    &opt->cones, own, sizeof own);
     vct_accel_options_join(g, own, options, sizeof options);
     const size_t pixels = (size_t)opt->width * opt->height;
 

@@ -29,8 +29,8 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     vct_scene_buffers sb = {0};
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
-    vct_emitters em = {0};
-    if (rc == VCT_OK)
+    vct_emitters em = {0}; /* none: the voxels keep their emission for the cones */
+    if (rc == VCT_OK && !v->emitters_by_cones)
         rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_POWER, STAGE, &em, err);
     vct_light_bins bins = {0};
     if (rc == VCT_OK && n)

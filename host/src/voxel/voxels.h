@@ -8,6 +8,9 @@
 
 struct vct_voxels {
     vct_context *ctx;
+    /* vct_plan.emitters_by_cones: light injection leaves emitters out as
+     * lights, and the voxels keep their emission for the cones. */
+    int emitters_by_cones;
     vct_voxel_info info;
     /* Per voxel, sorted by Morton key. */
     cl_mem keys, albedo, normal, emission;
