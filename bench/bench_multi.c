@@ -31,6 +31,19 @@ static const method_row methods[] = {
 
 static vct_plan plan;
 
+/* What every group builds: the BVH, and 64^3 voxels with bricks and one bounce. */
+static vct_group_build build_options(void) {
+    vct_group_build b;
+    memset(&b, 0, sizeof b);
+    b.accel.kind = VCT_ACCEL_BVH;
+    b.plan = &plan;
+    b.voxel.resolution = 64;
+    b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 1, 0};
+    b.bounces = 1;
+    b.cones = vct_vct_options_default().cones;
+    return b;
+}
+
 static int cmp_double(const void *a, const void *b) {
     const double x = *(const double *)a, y = *(const double *)b;
     return x < y ? -1 : x > y;
@@ -87,14 +100,7 @@ int main(int argc, char **argv) {
     vct_group *groups[8];
     for (int i = 0; i < count && i < 8; ++i) {
         groups[i] = vct_group_create(lists[i], &err);
-        vct_group_build b;
-        memset(&b, 0, sizeof b);
-        b.accel.kind = VCT_ACCEL_BVH;
-        b.plan = &plan;
-        b.voxel.resolution = 64;
-        b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 1, 0};
-        b.bounces = 1;
-        b.cones = vct_vct_options_default().cones;
+        const vct_group_build b = build_options();
         if (!groups[i] || vct_group_prepare(groups[i], s, &b, &err))
             bench_die(&err);
         const vct_group_device *d;
@@ -150,14 +156,7 @@ int main(int argc, char **argv) {
     const int n = vct_group_devices(g, &d);
     printf("\nvoxels of \"%s\" (64^3, bricks, 1 bounce), ms per device:\n\n", lists[count - 1]);
     printf("| device | each builds its own | first builds, others copy |\n|---|---:|---:|\n");
-    vct_group_build b;
-    memset(&b, 0, sizeof b);
-    b.accel.kind = VCT_ACCEL_BVH;
-    b.plan = &plan;
-    b.voxel.resolution = 64;
-    b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 1, 0};
-    b.bounces = 1;
-    b.cones = vct_vct_options_default().cones;
+    vct_group_build b = build_options();
     /* again, warm (the first prepare compiled the kernels) */
     if (vct_group_prepare(g, s, &b, &err))
         bench_die(&err);

@@ -109,21 +109,16 @@ static int fixed_shares(const vct_group *g, double *share) {
 /* Shares of the active devices (the fastest alone, when it is measured to
  * beat them all), equal when none has one left. */
 static void active_shares(const vct_group *g, double *share) {
-    int with_share = 0;
-    if (fixed_shares(g, share)) {
+    if (!fixed_shares(g, share)) {
+        const int solo = g->solo.state != VCT_ALL_DEVICES && g->devices[g->solo.device].active;
         for (int i = 0; i < g->count; ++i)
-            with_share += share[i] > 0.0;
-        for (int i = 0; i < g->count && !with_share; ++i)
-            share[i] = g->devices[i].active ? 1.0 : 0.0;
-        return;
+            share[i] = !g->devices[i].active ? 0.0
+                       : solo                ? (i == g->solo.device ? 1.0 : 0.0)
+                                             : g->devices[i].share;
     }
-    const int solo = g->solo.state != VCT_ALL_DEVICES && g->devices[g->solo.device].active;
-    for (int i = 0; i < g->count; ++i) {
-        share[i] = !g->devices[i].active ? 0.0
-                   : solo                ? (i == g->solo.device ? 1.0 : 0.0)
-                                         : g->devices[i].share;
+    int with_share = 0;
+    for (int i = 0; i < g->count; ++i)
         with_share += share[i] > 0.0;
-    }
     for (int i = 0; i < g->count && !with_share; ++i)
         share[i] = g->devices[i].active ? 1.0 : 0.0;
 }

@@ -44,50 +44,40 @@ vct_render_job vct_render_job_default(vct_method method, int width, int height) 
     return job;
 }
 
-void vct_render_job_size(const vct_render_job *job, int *width, int *height) {
+/* The job's image size, in its method's options. */
+static int *job_size_fields(vct_render_job *job, int **height) {
     switch (job->method) {
     case VCT_METHOD_RAYCAST:
-        *width = job->raycast.width, *height = job->raycast.height;
-        break;
+        *height = &job->raycast.height;
+        return &job->raycast.width;
     case VCT_METHOD_PATHTRACE:
-        *width = job->pathtrace.width, *height = job->pathtrace.height;
-        break;
+        *height = &job->pathtrace.height;
+        return &job->pathtrace.width;
     case VCT_METHOD_WHITTED:
-        *width = job->whitted.width, *height = job->whitted.height;
-        break;
+        *height = &job->whitted.height;
+        return &job->whitted.width;
     case VCT_METHOD_PM:
-        *width = job->pm.width, *height = job->pm.height;
-        break;
+        *height = &job->pm.height;
+        return &job->pm.width;
     case VCT_METHOD_VOXELS:
-        *width = job->voxel_view.width, *height = job->voxel_view.height;
-        break;
+        *height = &job->voxel_view.height;
+        return &job->voxel_view.width;
     default:
-        *width = job->vct.width, *height = job->vct.height;
-        break;
+        *height = &job->vct.height;
+        return &job->vct.width;
     }
 }
 
+void vct_render_job_size(const vct_render_job *job, int *width, int *height) {
+    int *h;
+    *width = *job_size_fields((vct_render_job *)job, &h);
+    *height = *h;
+}
+
 void vct_render_job_set_size(vct_render_job *job, int width, int height) {
-    switch (job->method) {
-    case VCT_METHOD_RAYCAST:
-        job->raycast.width = width, job->raycast.height = height;
-        break;
-    case VCT_METHOD_PATHTRACE:
-        job->pathtrace.width = width, job->pathtrace.height = height;
-        break;
-    case VCT_METHOD_WHITTED:
-        job->whitted.width = width, job->whitted.height = height;
-        break;
-    case VCT_METHOD_PM:
-        job->pm.width = width, job->pm.height = height;
-        break;
-    case VCT_METHOD_VOXELS:
-        job->voxel_view.width = width, job->voxel_view.height = height;
-        break;
-    default:
-        job->vct.width = width, job->vct.height = height;
-        break;
-    }
+    int *h;
+    *job_size_fields(job, &h) = width;
+    *h = height;
 }
 
 /* What the job's method reads, present. */
