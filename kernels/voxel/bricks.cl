@@ -14,7 +14,8 @@
  *   brick_leaf       level L-1: a sample is the mean of the up to 8 voxels
  *                    around its corner (those with geometry; none gives 0),
  *                    for channels channel_from .. channel_to - 1 (0 albedo,
- *                    1 normal, 2 radiance, whose w is the voxel's opacity).
+ *                    1 normal, 2 radiance, whose w is the voxel's opacity,
+ *                    3 shade and 4 plane: the voxel's sides, voxel_side.h).
  *   brick_filter     level l from level l+1: each sample is the 3x3x3
  *                    Gaussian (1/4, 1/2, 1/4 per axis; the inverse
  *                    multiplicity of corner-centred samples) of the child
@@ -24,7 +25,10 @@
  *                    back (thicknesses 1/2, 1, 1/2 child samples), the nine
  *                    columns averaged with the same Gaussian weights. With
  *                    one_source, all six read one pool (the leaves', which
- *                    have no directions), each value loaded once per axis.
+ *                    have no directions), each value loaded once per axis;
+ *                    with `dark` too, the leaves' darker sides (radiance
+ *                    less shade): the directions of what a cone sees from
+ *                    behind the surfaces (voxel_side.h).
  *
  * A sample depends only on its lattice point, never on the brick asking, and
  * sums run in a fixed world order: samples on faces shared by neighbouring
@@ -104,12 +108,37 @@ inline void brick_window(__global const uint *child, __global const uint *around
     }
 }
 
+/* Voxel v's value of `channel`, premultiplied by its opacity. Injected
+ * radiance carries the opacity in w (so radiance alone reads one array);
+ * before any injection the radiance channels are 0 with the opacity. */
+inline float4 leaf_value(uint channel, uint v, float alpha, int has_radiance,
+                         __global const float4 *albedo, __global const float4 *normal,
+                         __global const float4 *radiance, __global const float4 *side) {
+    if (v == OCT_NULL)
+        return (float4)(0.0f);
+    if (channel < 2u) {
+        const float3 x = (channel == 0u ? albedo : normal)[v].xyz;
+        return (float4)(alpha * x, alpha);
+    }
+    if (!has_radiance)
+        return channel == 2u ? (float4)(0.0f, 0.0f, 0.0f, alpha) : (float4)(0.0f);
+    const float a = radiance[v].w;
+    if (channel == 2u)
+        return (float4)(a * radiance[v].xyz, a);
+    __global const float4 *sides = side + VCT_VOXEL_SIDE_FLOAT4S * v;
+    if (channel == 3u)
+        return a * sides[0];
+    return (a * sides[0].w) * sides[1]; /* the plane */
+}
+
 __kernel void brick_leaf(__global const uint *child, __global const uint *around,
                          __global uint *window, uint window_ready, uint first_brick, uint count,
                          __global const float4 *albedo, __global const float4 *normal,
-                         __global const float4 *radiance, uint has_radiance, uint channel_from,
-                         uint channel_to, uint2 pool, __global half *albedo_pool,
-                         __global half *normal_pool, __global half *radiance_pool) {
+                         __global const float4 *radiance, __global const float4 *side,
+                         uint has_radiance, uint channel_from, uint channel_to, uint2 pool,
+                         __global half *albedo_pool, __global half *normal_pool,
+                         __global half *radiance_pool, __global half *shade_pool,
+                         __global half *plane_pool) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
@@ -128,29 +157,17 @@ __kernel void brick_leaf(__global const uint *child, __global const uint *around
                                    (v[20] != OCT_NULL) + (v[21] != OCT_NULL);
                 inv_found[(z * 3u + y) * 3u + x] = found ? 1.0f / (float)found : 0.0f;
             }
-    /* Injected radiance carries the opacity in w: radiance alone reads
-     * one array. */
-    const int radiance_only = channel_from == 2u && has_radiance;
+    const int lit = has_radiance != 0u;
     float alpha[64];
-    for (uint c = 0; c < 64u && !radiance_only; ++c)
-        alpha[c] = voxel[c] == OCT_NULL ? 0.0f : albedo[voxel[c]].w;
+    for (uint c = 0; c < 64u; ++c)
+        alpha[c] = voxel[c] == OCT_NULL || (channel_from >= 2u && lit) ? 0.0f : albedo[voxel[c]].w;
+    __global half *pools[5] = {albedo_pool, normal_pool, radiance_pool, shade_pool, plane_pool};
     for (uint channel = channel_from; channel < channel_to; ++channel) {
-        __global const float4 *value = channel == 0u ? albedo : channel == 1u ? normal : radiance;
-        const int has_value = channel < 2u || has_radiance;
         float4 premultiplied[64];
-        for (uint c = 0; c < 64u; ++c) {
-            const uint v = voxel[c];
-            if (radiance_only) {
-                const float4 r = v == OCT_NULL ? (float4)(0.0f) : radiance[v];
-                premultiplied[c] = (float4)(r.w * r.xyz, r.w);
-                continue;
-            }
-            const float3 x = v == OCT_NULL || !has_value ? (float3)(0.0f) : value[v].xyz;
-            premultiplied[c] = (float4)(alpha[c] * x, alpha[c]);
-        }
-        __global half *dst = channel == 0u   ? albedo_pool
-                             : channel == 1u ? normal_pool
-                                             : radiance_pool;
+        for (uint c = 0; c < 64u; ++c)
+            premultiplied[c] =
+                leaf_value(channel, voxel[c], alpha[c], lit, albedo, normal, radiance, side);
+        __global half *dst = pools[channel];
         const uint base = brick_base(pool, b);
         for (uint z = 0; z < 3u; ++z)
             for (uint y = 0; y < 3u; ++y)
@@ -307,19 +324,26 @@ inline void store_layer(const float8 column[7][7], uint2 pool, uint base, uint a
         }
 }
 
+/* A leaf texel's darker side: its radiance less its shade. */
+inline float4 dark_load(__global const half *radiance, __global const half *shade, uint texel) {
+    const float4 r = texel_load(radiance, texel), s = texel_load(shade, texel);
+    return (float4)(r.xyz - s.xyz, r.w);
+}
+
 /* Both directions along `axis` (0..2) of brick b: `up` travels +axis and
  * reads its child values from src_up, `down` travels -axis from src_down.
  * Lattice points 2g, 2g + 1, 2g + 2 along the axis composite into output g,
  * the end points over half their thickness; with one_source both read
- * src_up, and each point is loaded once for the two. */
+ * src_up, and each point is loaded once for the two (less `shade` when
+ * `dark`). */
 inline void filter_axis(const uint *texel, uint2 pool, uint b, uint axis,
                         __global const half *src_up, __global const half *src_down, uint one_source,
-                        __global half *up, __global half *down) {
+                        __global const half *shade, uint dark, __global half *up,
+                        __global half *down) {
     const uint stride[3] = {1u, LATTICE_STRIDE_Y, LATTICE_STRIDE_Z};
     const uint step = stride[axis], u_step = stride[(axis + 1u) % 3u];
     const uint v_step = stride[(axis + 2u) % 3u];
     const uint base = brick_base(pool, b);
-    __global const half *src_back = one_source ? src_up : src_down;
     for (uint g = 0; g < 3u; ++g) {
         float8 column[7][7];
         for (uint q = 0; q < 7u; ++q)
@@ -334,9 +358,19 @@ inline void filter_axis(const uint *texel, uint2 pool, uint b, uint axis,
                     continue;
                 }
                 /* (up's sample, down's sample) at each point */
-                const float8 v0 = (float8)(texel_load(src_up, t0), texel_load(src_back, t0));
-                const float8 v1 = (float8)(texel_load(src_up, t1), texel_load(src_back, t1));
-                const float8 v2 = (float8)(texel_load(src_up, t2), texel_load(src_back, t2));
+                float8 v0, v1, v2;
+                if (one_source) {
+                    const float4 a0 = dark ? dark_load(src_up, shade, t0) : texel_load(src_up, t0);
+                    const float4 a1 = dark ? dark_load(src_up, shade, t1) : texel_load(src_up, t1);
+                    const float4 a2 = dark ? dark_load(src_up, shade, t2) : texel_load(src_up, t2);
+                    v0 = (float8)(a0, a0);
+                    v1 = (float8)(a1, a1);
+                    v2 = (float8)(a2, a2);
+                } else {
+                    v0 = (float8)(texel_load(src_up, t0), texel_load(src_down, t0));
+                    v1 = (float8)(texel_load(src_up, t1), texel_load(src_down, t1));
+                    v2 = (float8)(texel_load(src_up, t2), texel_load(src_down, t2));
+                }
                 const float8 h0 = half_thickness(v0), h2 = half_thickness(v2);
                 /* up meets 0, 1, 2; down meets 2, 1, 0 */
                 column[q][p] = composite3((float8)(h0.lo, h2.hi), v1, (float8)(h2.lo, h0.hi));
@@ -355,14 +389,15 @@ __kernel void brick_filter_dir(__global const uint *child, __global const uint *
                                __global const half *s3, __global const half *s4,
                                __global const half *s5, __global half *d0, __global half *d1,
                                __global half *d2, __global half *d3, __global half *d4,
-                               __global half *d5, uint one_source) {
+                               __global half *d5, uint one_source, __global const half *shade,
+                               uint dark) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
     const uint b = first_brick + i;
     uint texel[LATTICE_ENTRIES];
     lattice_texels(child, around, window, window_ready, b, pool, texel);
-    filter_axis(texel, pool, b, 0u, s0, s3, one_source, d0, d3);
-    filter_axis(texel, pool, b, 1u, s1, s4, one_source, d1, d4);
-    filter_axis(texel, pool, b, 2u, s2, s5, one_source, d2, d5);
+    filter_axis(texel, pool, b, 0u, s0, s3, one_source, shade, dark, d0, d3);
+    filter_axis(texel, pool, b, 1u, s1, s4, one_source, shade, dark, d1, d4);
+    filter_axis(texel, pool, b, 2u, s2, s5, one_source, shade, dark, d2, d5);
 }

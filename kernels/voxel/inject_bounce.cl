@@ -6,14 +6,16 @@
  * light of paths up to k + 1 bounces. The same cones, weights and march as
  * the renderer's indirect diffuse light.
  *
- * Surfaces are two-sided and a voxel's normal is an axis (either sign), so
- * the cones gather on both sides of it, and the voxel sends out what the
- * brighter side receives: the side a wall faces into its room, whichever
- * way it is wound (behind a closed room's wall is dark). A voxel whose
- * fragments face every way (no mean normal) gathers about z. */
+ * Surfaces are two-sided and each side of a voxel keeps its own light
+ * (voxel_side.h): the cones gather on both sides of its plane, each side adds
+ * what it receives to its own direct light, and the brighter of the two
+ * becomes the voxel's radiance. Behind a closed room's wall it stays dark,
+ * whichever way the wall is wound. A voxel whose fragments face every way
+ * (no normal) gathers on both sides of z and sends the brighter both ways. */
 #include "scene/bsdf.h"
 #include "voxel/cone_trace.h"
 #include "voxel/octree.h"
+#include "voxel/voxel_side.h"
 #include "vct_types.h"
 
 /* The cosine-weighted radiance arriving at `centre` from the side n faces. */
@@ -37,20 +39,23 @@ inline float3 gather_side(CONE_POOLS, __global const uint *child, const vct_cone
 __kernel void inject_bounce(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                             __global const vct_cone_dir *cones, uint cone_count,
                             __global const uint *keys, uint voxels, __global const float4 *albedo,
-                            __global const float4 *normal, __global const float4 *direct,
-                            __global float4 *voxel_radiance) {
+                            __global const float4 *direct, __global const float4 *direct_side,
+                            __global float4 *voxel_radiance, __global float4 *side) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
     const float voxel = cd.volume.w / (float)cd.res.x;
     const float3 centre = cd.volume.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * voxel;
-    const float3 mean = normal[v].xyz;
-    const float len = length(mean);
-    const float3 n = len > 1e-3f ? mean / len : (float3)(0.0f, 0.0f, 1.0f);
+    __global const float4 *sides = direct_side + VCT_VOXEL_SIDE_FLOAT4S * v;
+    const float4 bright = direct[v], shade = sides[0], plane = sides[1];
+    const int has_normal = any(plane.xyz != 0.0f);
+    const float3 n = has_normal ? plane.xyz : (float3)(0.0f, 0.0f, 1.0f);
     const float3 front = gather_side(CONE_POOLS_PASS, child, &cd, cones, cone_count, centre, n);
     const float3 back = gather_side(CONE_POOLS_PASS, child, &cd, cones, cone_count, centre, -n);
-    const float3 gathered = front.x + front.y + front.z >= back.x + back.y + back.z ? front : back;
-    float4 out = direct[v];
-    out.xyz += albedo[v].xyz * gathered;
-    voxel_radiance[v] = out;
+    const float3 rho = albedo[v].xyz;
+    /* without a normal both sides send what the brighter side receives */
+    const float3 more = side_luminance(front) >= side_luminance(back) ? front : back;
+    const float3 toward = has_normal ? front : more, away = has_normal ? back : more;
+    voxel_side_store(bright.xyz + rho * toward, bright.xyz - shade.xyz + rho * away, plane.xyz,
+                     plane.w * plane.xyz, bright.w, voxel_radiance, side, v);
 }

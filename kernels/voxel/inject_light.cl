@@ -4,8 +4,9 @@
  * The same conventions as the ray caster and the path tracer.
  *
  * Surfaces are two-sided, whatever their winding: each fragment of a voxel
- * (one triangle crossing it) is lit from the side its light is on, and the
- * voxel sends out the mean of what its fragments reflect. A fragment is
+ * (one triangle crossing it) is lit from the side its light is on, and each
+ * side of the voxel (about its normal axis) sends out the mean of what its
+ * fragments reflect to that side (voxel_side.h). A fragment is
  * shaded at the voxel's centre with its triangle's normal (and its albedo
  * averaged over the voxel, fragment_albedo.h), and seen from the light at
  * the point of its triangle nearest that centre, lifted by a relative
@@ -25,6 +26,7 @@
 #include "voxel/fragment_albedo.h"
 #include "light/light_bins.h"
 #include "voxel/octree.h"
+#include "voxel/voxel_side.h"
 #include "vct_types.h"
 
 #define INJECT_EXTENT_SAMPLES 8u
@@ -79,10 +81,13 @@ typedef struct shared_rays {
 
 /* Irradiance at centre p from every light onto one fragment: triangle t,
  * unit normal n (either sign), seen from its point q nearest p, or with the
- * visibility `shared` holds when `reuse`; else what it traces is kept there. */
+ * visibility `shared` holds when `reuse`; else what it traces is kept there.
+ * Returns what arrives on the side n points to, and adds what arrives on
+ * the other to *behind. */
 inline float3 fragment_irradiance(const accel_view *g, const light_bins_view *bins,
                                   __global const vct_light_desc *lights, uint light_count, float3 p,
-                                  float3 q, float3 n, shared_rays *shared, int reuse) {
+                                  float3 q, float3 n, float3 *behind, shared_rays *shared,
+                                  int reuse) {
     const float lift = surface_epsilon(g, q);
     const int keep = !reuse && light_count <= SHARED_LIGHTS;
     float3 irradiance = (float3)(0.0f);
@@ -107,19 +112,23 @@ inline float3 fragment_irradiance(const accel_view *g, const light_bins_view *bi
             if (keep)
                 shared->seen[i] = seen;
         }
-        irradiance += radiant * cos_theta * seen;
+        if (dot(n, wi) >= 0.0f)
+            irradiance += radiant * cos_theta * seen;
+        else
+            *behind += radiant * cos_theta * seen;
     }
     return irradiance;
 }
 
 /* Irradiance at centre p onto one fragment (triangle normal n, nearest
  * point q) from the emitters: e->samples samples of stream `seed`, each seen
- * from q, lifted off the triangle on the sample's side and towards it. */
+ * from q, lifted off the triangle on the sample's side and towards it. Split
+ * by side as fragment_irradiance does. */
 inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
                                 __global const vct_material_desc *materials,
                                 __global const uint *tri_material, float3 p, float3 q, float3 n,
-                                uint seed, shared_rays *shared, int reuse) {
-    float3 irradiance = (float3)(0.0f);
+                                float3 *behind, uint seed, shared_rays *shared, int reuse) {
+    float3 irradiance = (float3)(0.0f), back = (float3)(0.0f);
     const float lift = surface_epsilon(g, q);
     const int keep = !reuse && e->samples <= SHARED_LIGHTS;
     for (uint s = 0; s < e->samples; ++s) {
@@ -127,7 +136,7 @@ inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
         uint tri;
         const float3 radiant =
             emitter_sample(e, g, materials, tri_material, p, seed, s, &target, &tri);
-        const float cos_theta = fabs(dot(n, normalize(target - p)));
+        const float cos_n = dot(n, normalize(target - p)), cos_theta = fabs(cos_n);
         float seen = 0.0f;
         if (reuse) {
             seen = shared->seen[s];
@@ -138,8 +147,12 @@ inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
         }
         if (keep)
             shared->seen[s] = seen;
-        irradiance += radiant * cos_theta * seen;
+        if (cos_n >= 0.0f)
+            irradiance += radiant * cos_theta * seen;
+        else
+            back += radiant * cos_theta * seen;
     }
+    *behind += back / (float)e->samples;
     return irradiance / (float)e->samples;
 }
 
@@ -149,8 +162,8 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                             uint fragments, __global const vct_material_desc *materials,
                             __global const uint *tri_material, __global const float4 *albedo,
                             __global const float4 *emission, __global const vct_light_desc *lights,
-                            uint light_count, EMITTER_ARGS, TEXTURE_ARGS,
-                            __global float4 *radiance) {
+                            uint light_count, EMITTER_ARGS, TEXTURE_ARGS, __global float4 *radiance,
+                            __global const float4 *normal, __global float4 *side) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
@@ -161,12 +174,14 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
     const float size = vol.origin.w / (float)vol.res.x;
     const float3 p = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * size;
     const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
-    float3 reflected = (float3)(0.0f);
+    const float3 axis = normal[v].xyz;
+    side_cube sides = side_cube_empty();
+    float3 q_sum = (float3)(0.0f);
     uint surfaces = 0;
     /* lights and emitters keep apart: each has its own shared rays */
     shared_rays lit = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0},
                 glow = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0};
-    for (uint f = begin; f < end && (light_count > 0 || emitter_count > 0); ++f) {
+    for (uint f = begin; f < end; ++f) {
         const uint t = fragment_tri[f];
         const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
                      c = tri_vertices[3u * t + 2u].xyz;
@@ -176,10 +191,15 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
             continue; /* zero area: never hit, never lit */
         ++surfaces;
         const float3 q = triangle_nearest(p, a, b, c), n = cr / len;
+        q_sum += q;
+        if (light_count == 0u && emitter_count == 0u)
+            continue;
+        float3 behind = (float3)(0.0f);
         const float plane = SHARED_PLANE * size;
         const int reuse_lit =
             lit.valid && dot(n, lit.n) > SHARED_FACING && fabs(dot(q - lit.q, n)) < plane;
-        float3 e = fragment_irradiance(&g, &bins, lights, light_count, p, q, n, &lit, reuse_lit);
+        float3 front =
+            fragment_irradiance(&g, &bins, lights, light_count, p, q, n, &behind, &lit, reuse_lit);
         if (!reuse_lit) {
             lit.n = n;
             lit.q = q;
@@ -189,8 +209,8 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
             /* the first fragment's stream: shared samples are the same samples */
             const int reuse_glow =
                 glow.valid && dot(n, glow.n) > SHARED_FACING && fabs(dot(q - glow.q, n)) < plane;
-            e += fragment_emitters(&g, &ev, materials, tri_material, p, q, n,
-                                   reuse_glow ? glow.seed : f, &glow, reuse_glow);
+            front += fragment_emitters(&g, &ev, materials, tri_material, p, q, n, &behind,
+                                       reuse_glow ? glow.seed : f, &glow, reuse_glow);
             if (!reuse_glow) {
                 glow.n = n;
                 glow.q = q;
@@ -199,13 +219,24 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
             }
         }
         const vct_material_desc m = materials[tri_material[t]];
-        reflected += fragment_albedo(&tv, &m, t, a, b, c, p, size) * e;
+        const float3 rho = fragment_albedo(&tv, &m, t, a, b, c, p, size);
+        side_cube_add(&sides, n, rho * front);
+        side_cube_add(&sides, -n, rho * behind);
     }
-    if (surfaces > 0u)
-        reflected *= VCT_INV_PI / (float)surfaces;
+    const float scale = surfaces > 0u ? VCT_INV_PI / (float)surfaces : 0.0f;
+    /* the plane between the sides: across the way most light leaves, else
+     * the normal axis (or none) */
+    const float lean = length(sides.lean);
+    const float3 n = lean > 0.0f ? sides.lean / lean : axis;
+    float3 toward, away;
+    side_cube_split(&sides, n, &toward, &away);
     /* Emitters sampled as lights light the voxels (and the camera's hits)
      * directly, so the voxels leave their emission out: cones would count
-     * it a second time. w: the opacity, so that re-filtering reads one array. */
-    radiance[v] =
-        (float4)(reflected + (emitter_count > 0u ? (float3)(0.0f) : emission[v].xyz), albedo[v].w);
+     * it a second time. */
+    const float3 glows = emitter_count > 0u ? (float3)(0.0f) : emission[v].xyz;
+    const float3 centre =
+        ((surfaces > 0u ? q_sum / (float)surfaces : p) - vol.origin.xyz) / vol.origin.w - 0.5f;
+    /* w: the opacity, so that re-filtering reads one array */
+    voxel_side_store(toward * scale + glows, away * scale + glows, n, centre, albedo[v].w, radiance,
+                     side, v);
 }

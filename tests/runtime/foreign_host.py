@@ -198,7 +198,10 @@ render = build("render/vct_render.cl")
 cones = load("cones.f32", np.float32)
 n_cones = cones.size // 8
 result = empty(32 * n_cones)
+# CONE_POOLS without VCT_ANISOTROPIC: radiance, its shade and its plane
 render.cone_probe(queue, (n_cones,), None, buf(load("bricks_radiance.f16", np.uint16)),
+                  buf(load("bricks_shade.f16", np.uint16)),
+                  buf(load("bricks_plane.f16", np.uint16)),
                   buf(load("octree_child.u32", np.uint32)), load("cone.desc", np.uint8),
                   buf(cones), np.uint32(n_cones), result)
 mine = read(result, np.float32, 8 * n_cones)

@@ -109,6 +109,10 @@ int main(int argc, char **argv) {
     void *radiance =
         device_copy(ctx, v->brick_buffer[VCT_BRICK_RADIANCE], v->brick_info.channel_bytes);
     put("bricks_radiance.f16", radiance, v->brick_info.channel_bytes);
+    void *shade = device_copy(ctx, v->brick_buffer[VCT_BRICK_SHADE], v->brick_info.channel_bytes);
+    put("bricks_shade.f16", shade, v->brick_info.channel_bytes);
+    void *plane = device_copy(ctx, v->brick_buffer[VCT_BRICK_PLANE], v->brick_info.channel_bytes);
+    put("bricks_plane.f16", plane, v->brick_info.channel_bytes);
     void *child = device_copy(ctx, v->child, 4ull * v->info.nodes);
     put("octree_child.u32", child, 4ull * v->info.nodes);
     /* Cones from points inside the box towards every direction of a grid. */
@@ -134,7 +138,7 @@ int main(int argc, char **argv) {
     put("cone_results.f32", result, 32ull * CONES);
     printf("foreign_ref: scan, %u voxels from %u fragments, %d cones written to %s\n", nv,
            v->info.fragments, CONES, dir);
-    free(cones), free(result), free(radiance), free(child);
+    free(cones), free(result), free(radiance), free(shade), free(plane), free(child);
     free(keys), free(albedo), free(normal), free(emission);
     vct_voxels_free(v);
     vct_accel_free(g);

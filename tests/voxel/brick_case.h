@@ -24,6 +24,7 @@ typedef struct brick_case {
     uint32_t *child, *cell; /* per node: child pointer, cell (x | y << 10 | z << 20) */
     int32_t *voxel_of;      /* dense res^3 -> voxel */
     float *albedo, *normal, *radiance;
+    float *sides; /* 8 per voxel: vct_voxels_read_sides (0 before light injection) */
 } brick_case;
 
 static void case_free(brick_case *c) {
@@ -36,6 +37,7 @@ static void case_free(brick_case *c) {
     free(c->albedo);
     free(c->normal);
     free(c->radiance);
+    free(c->sides);
 }
 
 static void decode(uint32_t key, uint32_t cell[3]) {
@@ -73,9 +75,12 @@ static brick_case make_case(const char *name, vct_scene *scene, uint32_t res, fl
     c.albedo = malloc(16ull * nv + 16);
     c.normal = malloc(16ull * nv + 16);
     c.radiance = calloc(4ull * nv + 4, sizeof(float));
+    c.sides = calloc(8ull * nv + 8, sizeof(float));
     REQUIRE_OK(vct_voxels_read(ctx, c.voxels, keys, c.albedo, c.normal, NULL, &err), err);
-    if (scene->light_count)
+    if (scene->light_count) {
         REQUIRE_OK(vct_voxels_read_radiance(ctx, c.voxels, c.radiance, &err), err);
+        REQUIRE_OK(vct_voxels_read_sides(ctx, c.voxels, c.sides, &err), err);
+    }
     c.voxel_of = malloc(4ull * res * res * res);
     memset(c.voxel_of, 0xff, 4ull * res * res * res);
     for (uint32_t v = 0; v < nv; ++v) {

@@ -67,6 +67,48 @@ static inline ref_lattice ref_leaf_lattice(uint32_t res, const int32_t *voxel_of
     return l;
 }
 
+/* The same mean for values given premultiplied, all four channels: value4
+ * per voxel. */
+static inline ref_lattice ref_leaf_lattice4(uint32_t res, const int32_t *voxel_of,
+                                            const double *value4) {
+    ref_lattice l = ref_lattice_new(res + 1);
+    for (int64_t z = 0; z <= res; ++z)
+        for (int64_t y = 0; y <= res; ++y)
+            for (int64_t x = 0; x <= res; ++x) {
+                double sum[4] = {0, 0, 0, 0};
+                int found = 0;
+                for (int64_t vz = z - 1; vz <= z; ++vz)
+                    for (int64_t vy = y - 1; vy <= y; ++vy)
+                        for (int64_t vx = x - 1; vx <= x; ++vx) {
+                            if (vx < 0 || vy < 0 || vz < 0 || vx >= res || vy >= res || vz >= res)
+                                continue;
+                            const int32_t v = voxel_of[(vz * res + vy) * res + vx];
+                            if (v < 0)
+                                continue;
+                            for (int k = 0; k < 4; ++k)
+                                sum[k] += value4[4 * v + k];
+                            ++found;
+                        }
+                float *p = ref_at(&l, x, y, z);
+                for (int k = 0; k < 4 && found; ++k)
+                    p[k] = ref_half((float)(sum[k] / found));
+            }
+    return l;
+}
+
+/* The darker sides of a leaf lattice: radiance less shade, opacity kept
+ * (not rounded again: the kernel composites them as loaded). */
+static inline ref_lattice ref_dark_lattice(const ref_lattice *radiance, const ref_lattice *shade) {
+    ref_lattice d = ref_lattice_new(radiance->n);
+    const size_t points = (size_t)d.n * d.n * d.n;
+    for (size_t i = 0; i < points; ++i) {
+        for (int k = 0; k < 3; ++k)
+            d.v[4 * i + k] = radiance->v[4 * i + k] - shade->v[4 * i + k];
+        d.v[4 * i + 3] = radiance->v[4 * i + 3];
+    }
+    return d;
+}
+
 static inline double ref_weight(int d) {
     return d == 0 ? 0.5 : 0.25;
 }

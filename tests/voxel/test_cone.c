@@ -12,34 +12,91 @@
 typedef struct ref_pyramid {
     uint32_t levels;
     ref_lattice iso[11];
-    ref_lattice dir[6][11]; /* levels 0 .. L-2 */
+    ref_lattice shade[11], plane[11]; /* the sides (kernels/voxel/voxel_side.h) */
+    ref_lattice dir[6][11];           /* levels 0 .. L-2 */
+    ref_lattice dark[6][11];          /* the same of the darker sides */
 } ref_pyramid;
 
+/* The sides' leaf values, premultiplied as the bricks hold them: shade
+ * (opacity (brighter - darker), opacity k), plane opacity k (n, h). */
+static void side_values(const brick_case *c, double *shade, double *plane) {
+    for (uint32_t v = 0; v < c->info.voxels; ++v) {
+        const double a = c->radiance[4 * v + 3], k = c->sides[8 * v + 3];
+        for (int i = 0; i < 4; ++i) {
+            shade[4 * v + i] = a * c->sides[8 * v + i];
+            plane[4 * v + i] = a * k * c->sides[8 * v + 4 + i];
+        }
+    }
+}
+
 static ref_pyramid pyramid_of(const brick_case *c, int directional) {
-    ref_pyramid p = {c->info.levels, {{0}}, {{{0}}}};
+    ref_pyramid p;
+    memset(&p, 0, sizeof p);
+    p.levels = c->info.levels;
     float *alpha = opacities(c);
+    double *shade = malloc(32ull * c->info.voxels + 32),
+           *plane = malloc(32ull * c->info.voxels + 32);
+    side_values(c, shade, plane);
     const int top = (int)c->info.levels - 1;
     p.iso[top] = ref_leaf_lattice(c->info.resolution, c->voxel_of, c->radiance, alpha);
+    p.shade[top] = ref_leaf_lattice4(c->info.resolution, c->voxel_of, shade);
+    p.plane[top] = ref_leaf_lattice4(c->info.resolution, c->voxel_of, plane);
+    ref_lattice dark_leaf = ref_dark_lattice(&p.iso[top], &p.shade[top]);
     for (int l = top - 1; l >= 0; --l) {
         p.iso[l] = ref_filter(&p.iso[l + 1]);
-        for (int d = 0; d < 6 && directional; ++d)
+        p.shade[l] = ref_filter(&p.shade[l + 1]);
+        p.plane[l] = ref_filter(&p.plane[l + 1]);
+        for (int d = 0; d < 6 && directional; ++d) {
             p.dir[d][l] = ref_filter_dir(l == top - 1 ? &p.iso[l + 1] : &p.dir[d][l + 1], d);
+            p.dark[d][l] = ref_filter_dir(l == top - 1 ? &dark_leaf : &p.dark[d][l + 1], d);
+        }
     }
+    free(dark_leaf.v);
     free(alpha);
+    free(shade);
+    free(plane);
     return p;
 }
 
 static void pyramid_free(ref_pyramid *p) {
     for (int l = 0; l < 11; ++l) {
         free(p->iso[l].v);
-        for (int d = 0; d < 6; ++d)
+        free(p->shade[l].v);
+        free(p->plane[l].v);
+        for (int d = 0; d < 6; ++d) {
             free(p->dir[d][l].v);
+            free(p->dark[d][l].v);
+        }
     }
 }
 
-/* A level's value at volume point at ([0,1)^3), 0 in nodes without a brick. */
+/* How far a sample of level `level` at lattice point lp is seen from its
+ * darker side by a cone from o (volume units less 0.5), and its shade:
+ * cone_trace.h's rule, written out. */
+static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3], const double o[3],
+                       double shade[4]) {
+    double pl[4];
+    ref_trilinear(&p->plane[level], lp, pl);
+    for (int k = 0; k < 4; ++k)
+        shade[k] = 0.0;
+    const double len = sqrt(pl[0] * pl[0] + pl[1] * pl[1] + pl[2] * pl[2]);
+    if (!(len > 1e-6))
+        return 0.0;
+    const double tolerance = 0.05, spacing = 0.5 / (double)(1u << level);
+    const double dist = (pl[0] * o[0] + pl[1] * o[1] + pl[2] * o[2] - pl[3]) / len;
+    if (!(dist < tolerance * spacing))
+        return 0.0;
+    ref_trilinear(&p->shade[level], lp, shade);
+    const double behind = fmin(fmax(0.5 - dist / (2.0 * tolerance * spacing), 0.0), 1.0);
+    const double coherent = fmin(fmax((len / fmax(shade[3], 1e-6) - 0.3) / 0.4, 0.0), 1.0);
+    return behind * coherent;
+}
+
+/* A level's value at volume point at ([0,1)^3) seen along d from o (volume
+ * units less 0.5), 0 in nodes without a brick. */
 static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int directional,
-                             uint32_t level, const double at[3], const double d[3], double out[4]) {
+                             uint32_t level, const double at[3], const double d[3],
+                             const double o[3], double out[4]) {
     const double cells = (double)(1u << level);
     uint32_t cell[3];
     double lp[3];
@@ -52,16 +109,22 @@ static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int dire
     const uint32_t node = node_at(c, cell, level);
     if (node == VCT_NODE_NULL || c->child[node] == VCT_NODE_NULL)
         return;
+    double shade[4];
+    const double turn = ref_turn(p, level, lp, o, shade);
     if (!directional || level + 1 >= p->levels) {
         ref_trilinear(&p->iso[level], lp, out);
+        for (int k = 0; k < 3; ++k)
+            out[k] -= turn * shade[k];
         return;
     }
     const double w[3] = {d[0] * d[0], d[1] * d[1], d[2] * d[2]};
     for (int axis = 0; axis < 3; ++axis) {
-        double s[4];
-        ref_trilinear(&p->dir[d[axis] >= 0 ? axis : axis + 3][level], lp, s);
+        const int dir = d[axis] >= 0 ? axis : axis + 3;
+        double s[4], dark[4];
+        ref_trilinear(&p->dir[dir][level], lp, s);
+        ref_trilinear(&p->dark[dir][level], lp, dark);
         for (int k = 0; k < 4; ++k)
-            out[k] += w[axis] * s[k] / (w[0] + w[1] + w[2]);
+            out[k] += w[axis] * (s[k] + turn * (dark[k] - s[k])) / (w[0] + w[1] + w[2]);
     }
 }
 
@@ -87,6 +150,9 @@ static ref_cone ref_march(const brick_case *c, const ref_pyramid *p, int directi
             exit = fmin(exit, (lo - o[k]) / d[k]);
     }
     double t = voxel, last = 0.0; /* last: the final sample's thickness */
+    double from[3];               /* the origin as the bricks' planes measure it */
+    for (int k = 0; k < 3; ++k)
+        from[k] = (o[k] - c->info.origin[k]) / side - 0.5;
     for (int i = 0; i < 4096 && t <= reach; ++i) {
         double at[3];
         int outside = 0;
@@ -105,8 +171,8 @@ static ref_cone ref_march(const brick_case *c, const ref_pyramid *p, int directi
         const uint32_t coarse = (uint32_t)level,
                        fine = coarse + 1 < p->levels ? coarse + 1 : coarse;
         double a[4], b[4], v[4];
-        ref_level_sample(c, p, directional, coarse, at, d, a);
-        ref_level_sample(c, p, directional, fine, at, d, b);
+        ref_level_sample(c, p, directional, coarse, at, d, from, a);
+        ref_level_sample(c, p, directional, fine, at, d, from, b);
         for (int k = 0; k < 4; ++k)
             v[k] = a[k] + (level - coarse) * (b[k] - a[k]);
         const double step = s->step * diameter, spacing = voxel * exp2(finest - level);
@@ -402,6 +468,40 @@ static void hard_cases(void) {
         if (directional)
             CHECK(wide_out[3] >= 0.9f, "%s: a wide cone sees through the wall (opacity %g)", c.name,
                   wide_out[3]);
+        /* Lit on its x < 0.5 face only: cones from behind it, narrow and
+         * wide, head-on and at 45 degrees, see its dark face; from before
+         * it, its lit face. */
+        enum { SIDED = 8 };
+        float sided[8 * SIDED], sided_out[8 * SIDED];
+        for (int i = 0; i < SIDED; ++i) {
+            const int lit_side = i < SIDED / 2;
+            const float slant = (i & 1) ? 0.70710678f : 0.0f, ahead = (i & 1) ? 0.70710678f : 1.0f;
+            const float q[8] = {lit_side ? 0.3f : 0.7f,
+                                0.5f - 0.1f * slant,
+                                0.5f,
+                                (i & 2) ? 0.577f : 0.05f,
+                                lit_side ? ahead : -ahead,
+                                slant,
+                                0.0f,
+                                INFINITY};
+            memcpy(sided + 8 * i, q, sizeof q);
+        }
+        const float none[3] = {0, 0, 0};
+        trace(&c, none, sided, SIDED, sided_out);
+        float seen_lit = INFINITY, seen_dark = 0.0f;
+        for (int i = 0; i < SIDED; ++i) {
+            const float y = sided_out[8 * i + 1];
+            if (i < SIDED / 2)
+                seen_lit = fminf(seen_lit, y);
+            else
+                seen_dark = fmaxf(seen_dark, y);
+        }
+        printf("%-28s seen from its lit side at least %.4f, from behind at most %.5f\n", c.name,
+               seen_lit, seen_dark);
+        CHECK(seen_lit > 0.0f && seen_dark <= 0.01f * seen_lit,
+              "%s: lit on one face, seen from behind %g against %g from before: light leaks "
+              "through",
+              c.name, seen_dark, seen_lit);
         case_free(&c);
     }
     /* A lit wall in the last voxel layer of the volume, on its face: wide
@@ -465,13 +565,20 @@ static void gather_side(const brick_case *c, const ref_pyramid *p, const vct_con
     }
 }
 
-/* Checks one bounce: every checked voxel's radiance `after` must be
- * `direct` plus albedo times the preset's weighted cones, marched from its
- * centre on each side of its mean normal axis through pyramid p (the
- * radiance the bounce read), the brighter side kept, and a quarter of them at least must gain light
- * over `direct`. */
+static double luminance(const double c[3]) {
+    return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+}
+
+/* Checks one bounce: each side of every checked voxel (vct_voxels_read_sides)
+ * must be its direct light plus albedo times the preset's weighted cones,
+ * marched from its centre on that side of its plane through pyramid p (the
+ * light the bounce read); the brighter side becomes its radiance `after`,
+ * the difference its shade in `after_sides`. A voxel without a normal
+ * gathers on both sides of z and sends the brighter both ways. A quarter of
+ * the voxels at least must gain light over `direct`. */
 static void check_bounce(const char *what, const brick_case *c, const ref_pyramid *p,
-                         const float *direct, const float *after) {
+                         const float *direct, const float *direct_sides, const float *after,
+                         const float *after_sides) {
     const uint32_t nv = c->info.voxels;
     uint32_t *keys = malloc(4ull * nv);
     float dirs[64], tan_half[16];
@@ -479,28 +586,35 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
     const vct_cone_settings s = vct_cone_settings_default();
     REQUIRE_OK(vct_voxels_read(ctx, c->voxels, keys, NULL, NULL, NULL, &err), err);
     REQUIRE_OK(vct_cone_preset(6, dirs, tan_half, &err), err);
-    uint32_t off = 0, checked = 0, brighter = 0;
+    uint32_t off = 0, checked = 0, brighter = 0, two_sided = 0;
     for (uint32_t v = 0; v < nv; v += 7, ++checked) {
         uint32_t cell[3];
         decode(keys[v], cell);
-        double n[3] = {c->normal[4 * v], c->normal[4 * v + 1], c->normal[4 * v + 2]};
-        const double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        for (int k = 0; k < 3; ++k)
-            n[k] = len > 1e-3 ? n[k] / len : (k == 2);
-        double front[3], back[3], gathered[3];
+        const float *plane = direct_sides + 8 * v + 4;
+        const int has_normal = plane[0] != 0.0f || plane[1] != 0.0f || plane[2] != 0.0f;
+        double n[3] = {has_normal ? plane[0] : 0.0, has_normal ? plane[1] : 0.0,
+                       has_normal ? plane[2] : 1.0};
+        double front[3], back[3], toward[3], away[3];
         gather_side(c, p, &s, cell, n, dirs, tan_half, front);
         for (int k = 0; k < 3; ++k)
             n[k] = -n[k];
         gather_side(c, p, &s, cell, n, dirs, tan_half, back);
-        /* two-sided: the brighter side's light */
-        const int use_front = front[0] + front[1] + front[2] >= back[0] + back[1] + back[2];
-        for (int k = 0; k < 3; ++k)
-            gathered[k] = use_front ? front[k] : back[k];
+        const int front_more = luminance(front) >= luminance(back);
+        for (int k = 0; k < 3; ++k) {
+            const double lit = direct[4 * v + k], rho = c->albedo[4 * v + k];
+            const double more = front_more ? front[k] : back[k];
+            toward[k] = lit + rho * (has_normal ? front[k] : more);
+            away[k] = lit - (has_normal ? direct_sides[8 * v + k] : 0.0) +
+                      rho * (has_normal ? back[k] : more);
+        }
+        const int flip = luminance(away) > luminance(toward);
         double e = 0.0;
         for (int k = 0; k < 3; ++k) {
-            const double want = direct[4 * v + k] + c->albedo[4 * v + k] * gathered[k];
-            e = fmax(e, fabs(after[4 * v + k] - want) / (1.0 + want));
+            const double bright = flip ? away[k] : toward[k], dark = flip ? toward[k] : away[k];
+            e = fmax(e, fabs(after[4 * v + k] - bright) / (1.0 + bright));
+            e = fmax(e, fabs(after_sides[8 * v + k] - (bright - dark)) / (1.0 + bright));
         }
+        two_sided += !has_normal;
         brighter += after[4 * v] > direct[4 * v] + 1e-4f;
         if (!(e <= 2e-3) && off++ < 3)
             fprintf(stderr, "%s: voxel %u off by %g\n", what, v, e);
@@ -508,21 +622,26 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
     CHECK(off <= checked / 100 && brighter > checked / 4,
           "%s: %u of %u voxels differ from the reference, %u gained light", what, off, checked,
           brighter);
-    printf("%s 32^3: %u voxels checked, %u off, %u gained light\n", what, checked, off, brighter);
+    printf("%s 32^3: %u voxels checked (%u without a normal), %u off, %u gained light\n", what,
+           checked, two_sided, off, brighter);
     free(keys);
 }
 
 /* One bounce on c's voxels, checked against the reference pyramid of
- * `reads` (the radiance the bounce gathers): the result lands in `after`. */
+ * `reads` and `reads_sides` (the light the bounce gathers): the result lands
+ * in `after` and `after_sides`. */
 static void bounce_against_reference(const char *what, brick_case *c, const vct_scene *scene,
                                      const vct_cone_settings *s, const float *reads,
-                                     const float *direct, float *after) {
+                                     const float *reads_sides, const float *direct,
+                                     const float *direct_sides, float *after, float *after_sides) {
     vct_error err = {0};
     memmove(c->radiance, reads, 16ull * c->info.voxels);
+    memmove(c->sides, reads_sides, 32ull * c->info.voxels);
     ref_pyramid p = pyramid_of(c, 1);
     REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c->voxels, s, 6, &err), err);
     REQUIRE_OK(vct_voxels_read_radiance(ctx, c->voxels, after, &err), err);
-    check_bounce(what, c, &p, direct, after);
+    REQUIRE_OK(vct_voxels_read_sides(ctx, c->voxels, after_sides, &err), err);
+    check_bounce(what, c, &p, direct, direct_sides, after, after_sides);
     pyramid_free(&p);
 }
 
@@ -543,17 +662,24 @@ static void bounces(void) {
     brick_case c = make_case("bounces 32^3", scene, 32, 1.0f, &opt);
     const uint32_t nv = c.info.voxels;
     float *direct = malloc(16ull * nv), *after = malloc(16ull * nv);
+    float *direct_sides = malloc(32ull * nv), *after_sides = malloc(32ull * nv);
     memcpy(direct, c.radiance, 16ull * nv);
+    memcpy(direct_sides, c.sides, 32ull * nv);
     vct_error err = {0};
     const vct_cone_settings s = vct_cone_settings_default();
-    bounce_against_reference("second bounce", &c, scene, &s, direct, direct, after);
+    bounce_against_reference("second bounce", &c, scene, &s, direct, direct_sides, direct,
+                             direct_sides, after, after_sides);
     /* The third bounce reads the second's radiance. */
-    bounce_against_reference("third bounce", &c, scene, &s, after, direct, after);
+    bounce_against_reference("third bounce", &c, scene, &s, after, after_sides, direct,
+                             direct_sides, after, after_sides);
     /* Light injection starts over: one bounce after it is the second again. */
     REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
-    bounce_against_reference("second bounce again", &c, scene, &s, direct, direct, after);
+    bounce_against_reference("second bounce again", &c, scene, &s, direct, direct_sides, direct,
+                             direct_sides, after, after_sides);
     free(direct);
     free(after);
+    free(direct_sides);
+    free(after_sides);
     case_free(&c);
 }
 

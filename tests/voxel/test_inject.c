@@ -20,6 +20,7 @@ typedef struct inject_case {
     vct_voxel_info info;
     uint32_t *keys;
     float *radiance;
+    float *sides; /* vct_voxels_read_sides: 8 per voxel */
 } inject_case;
 
 static void case_free(inject_case *c) {
@@ -28,12 +29,14 @@ static void case_free(inject_case *c) {
     vct_scene_free(c->scene);
     free(c->keys);
     free(c->radiance);
+    free(c->sides);
 }
 
 static void inject(inject_case *c) {
     vct_error err = {0};
     REQUIRE_OK(vct_voxels_inject_light(ctx, c->scene, c->accel, c->voxels, &err), err);
     REQUIRE_OK(vct_voxels_read_radiance(ctx, c->voxels, c->radiance, &err), err);
+    REQUIRE_OK(vct_voxels_read_sides(ctx, c->voxels, c->sides, &err), err);
 }
 
 /* The grid and the voxels of c.scene in [0, 16]^3, its voxel keys read
@@ -44,6 +47,7 @@ static void case_build(inject_case *c) {
     vct_voxels_free(c->voxels);
     free(c->keys);
     free(c->radiance);
+    free(c->sides);
     c->accel = vct_accel_build(ctx, c->scene, NULL, &err);
     REQUIRE_OK(c->accel ? VCT_OK : err.status, err);
     vct_voxel_options o = {0};
@@ -55,6 +59,7 @@ static void case_build(inject_case *c) {
     vct_voxels_info_get(c->voxels, &c->info);
     c->keys = malloc(4ull * c->info.voxels);
     c->radiance = malloc(16ull * c->info.voxels);
+    c->sides = malloc(32ull * c->info.voxels);
     REQUIRE_OK(vct_voxels_read(ctx, c->voxels, c->keys, NULL, NULL, NULL, &err), err);
 }
 
@@ -155,7 +160,10 @@ static void check_point_light(const char *name, inject_case *c, const double lig
  * 1 say, and the light above it. Voxels holding only the dark face, and the
  * floor in the slab's shadow, get nothing; voxels holding the lit face get
  * the analytic light at their centres, or half of it when they hold both
- * faces (the mean of a lit and a dark surface). Returns the radiance. */
+ * faces (the mean of a lit and a dark surface). That light is one-sided: it
+ * leaves upwards only (vct_voxels_read_sides: the difference to the dark
+ * side is all of it, the brighter side's normal +z, its plane the lit faces'
+ * mean height). Returns the radiance. */
 static float *thin_slab(const char *name, float bottom, float top, unsigned winding,
                         uint32_t *voxels) {
     const float pos[] = {0, 0, 4.5f,   16, 0, 4.5f,   16, 16, 4.5f,   0, 16, 4.5f,
@@ -207,7 +215,20 @@ static float *thin_slab(const char *name, float bottom, float top, unsigned wind
         }
         if (expected < 0.0)
             continue;
-        const int ok = expected > 0.0 ? fabs(got - expected) < 1e-4 * expected : got == 0.0;
+        int ok = expected > 0.0 ? fabs(got - expected) < 1e-4 * expected : got == 0.0;
+        const float *side = c.sides + 8 * v;
+        if (inner && cell[2] == lit_layer) {
+            /* the faces in the voxel: the lit one, and the dark one too when they share it */
+            const double height = share < 1.0 ? 0.5 * (bottom + top) : top;
+            const double plane = height / RES - 0.5;
+            ok &= fabs(side[0] - expected) < 1e-4 * expected && side[6] > 0.9999f &&
+                  fabs(side[7] - plane) < 1e-5;
+            if (!ok && bad < 3)
+                fprintf(stderr, "%s: sides %g (normal z %g, plane %g), expected %g (+1, %g)\n",
+                        name, side[0], side[6], side[7], expected, plane);
+        } else if (expected == 0.0) {
+            ok &= side[0] == 0.0f && side[3] == 0.0f;
+        }
         if (!ok && bad++ < 3)
             CHECK(0, "%s: voxel (%u %u %u) radiance %g, expected %g", name, cell[0], cell[1],
                   cell[2], got, expected);
@@ -222,6 +243,70 @@ static float *thin_slab(const char *name, float bottom, float top, unsigned wind
     *voxels = c.info.voxels;
     case_free(&c);
     return out;
+}
+
+/* The plane lit on both faces, by a light above (intensity 100) and a
+ * dimmer one below (30, elsewhere): each face sends out its own light's
+ * I cos / d^2 * albedo / pi, the brighter one as the radiance, and the
+ * sides hold the difference, the upper face's normal and the plane's
+ * height. Both windings. */
+static void two_faces(void) {
+    const double above[3] = {8.3, 7.7, 14.5}, below[3] = {5.2, 9.9, 3.0};
+    const double power[2] = {100.0, 30.0};
+    const double plane = PLANE_Z / RES - 0.5;
+    for (int wound = 0; wound < 2; ++wound) {
+        vct_material white = vct_material_default();
+        inject_case c = make_case(0, &white);
+        for (uint32_t t = 0; t < c.scene->triangle_count && wound; ++t) {
+            const uint32_t keep = c.scene->triangles[3 * t + 1];
+            c.scene->triangles[3 * t + 1] = c.scene->triangles[3 * t + 2];
+            c.scene->triangles[3 * t + 2] = keep;
+        }
+        case_build(&c);
+        vct_error err = {0};
+        for (int i = 0; i < 2; ++i) {
+            const double *at = i ? below : above;
+            vct_light l = {VCT_LIGHT_POINT, {0}, {0, 0, 0}, {0}, 0, 0, 0};
+            for (int k = 0; k < 3; ++k) {
+                l.position[k] = (float)at[k];
+                l.color[k] = (float)power[i];
+            }
+            REQUIRE_OK(vct_scene_add_light(c.scene, &l, &err), err);
+        }
+        inject(&c);
+        const double albedo = white.albedo[0];
+        double worst = 0.0;
+        int bad = 0;
+        for (uint32_t v = 0; v < c.info.voxels; ++v) {
+            uint32_t cell[3];
+            decode(c.keys[v], cell);
+            const double p[3] = {cell[0] + 0.5, cell[1] + 0.5, PLANE_Z};
+            double face[2];
+            for (int i = 0; i < 2; ++i) {
+                const double *at = i ? below : above;
+                const double d[3] = {at[0] - p[0], at[1] - p[1], at[2] - p[2]};
+                const double dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                face[i] = albedo / CHECK_PI * power[i] * (fabs(d[2]) / dist) / (dist * dist);
+            }
+            const double up = fmax(face[0], face[1]), down = fmin(face[0], face[1]);
+            const float *side = c.sides + 8 * v;
+            const double e =
+                fmax(fabs(c.radiance[4 * v] - up) / up, fabs(side[0] - (up - down)) / up);
+            worst = fmax(worst, e);
+            const int normal_up = face[0] >= face[1] ? side[6] > 0.9999f : side[6] < -0.9999f;
+            const int ok = e < 1e-4 && normal_up && fabs(fabs(side[7]) - fabs(plane)) < 1e-5;
+            if (!ok && bad++ < 3)
+                CHECK(0,
+                      "two faces, wound %d: voxel (%u %u) radiance %g shade %g normal z %g "
+                      "plane %g, expected %g %g (facing the brighter light) %g",
+                      wound, cell[0], cell[1], c.radiance[4 * v], side[0], side[6], side[7], up,
+                      up - down, plane);
+        }
+        CHECK(bad == 0, "two faces, wound %d: %d voxels wrong", wound, bad);
+        printf("plane lit on both faces, wound %d  %u voxels, worst relative error %.2g\n", wound,
+               c.info.voxels, worst);
+        case_free(&c);
+    }
 }
 
 /* Thin walls lit from one side stay dark on the other, for every winding
@@ -322,6 +407,7 @@ int main(void) {
     CHECK(wrong == 0, "emissive voxels hold no emission (%d wrong)", wrong);
     case_free(&c);
     thin_walls();
+    two_faces();
     vct_context_destroy(ctx);
     return check_exit("test_inject");
 }

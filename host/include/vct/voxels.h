@@ -67,17 +67,24 @@ int vct_octree_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *child,
  * coordinates at that level, the node covering it or VCT_NODE_NULL. */
 int vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels, const uint32_t *queries,
                       uint32_t n, uint32_t *nodes, vct_error *err);
-/* Injects direct light into the voxels: per voxel, the outgoing radiance
- * albedo / pi * irradiance (every light of the scene, shadows through the
- * grid, or for point and spot lights without a radius through triangle bins
- * around the light: the same answer) + emission, at the voxel centre with
- * its mean normal. Call again after moving lights: nothing is re-voxelized. */
+/* Injects direct light into the voxels: per voxel and per side of its
+ * surfaces, the outgoing radiance albedo / pi * irradiance (every light of
+ * the scene, shadows through the acceleration structure, or for point and
+ * spot lights without a radius through triangle bins around the light: the
+ * same answer) + emission, at the voxel centre. A wall lit on one face keeps
+ * its other face dark (vct_voxels_read_sides). Call again after moving
+ * lights: nothing is re-voxelized. */
 int vct_voxels_inject_light(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
                             vct_voxels *voxels, vct_error *err);
-/* Per voxel: injected radiance rgb and the voxel's opacity (as in its
- * albedo's w), in voxel order. */
+/* Per voxel: injected radiance rgb (its brighter side's) and the voxel's
+ * opacity (as in its albedo's w), in voxel order. */
 int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *voxels, float *radiance,
                              vct_error *err);
+/* Per voxel, 8 floats (kernels/voxel/voxel_side.h): the brighter side's
+ * radiance less the darker side's, and that difference's luminance; the
+ * brighter side's unit normal (0 without one) and its plane's offset
+ * (normal . (p - 0.5), p in volume units [0, 1)^3). */
+int vct_voxels_read_sides(vct_context *ctx, const vct_voxels *voxels, float *sides, vct_error *err);
 void vct_voxels_free(vct_voxels *voxels);
 
 /* Every octree node with geometry below it (levels 0 .. L-1) owns a brick of
@@ -97,7 +104,8 @@ typedef struct vct_brick_options {
     vct_brick_storage storage;
     /* Also 6 directional radiance values per sample (+x, +y, +z, -x, -y, -z,
      * the way a cone travels) at levels 0 .. L-2: the child lattice
-     * composited front to back along the axis, then averaged. */
+     * composited front to back along the axis, then averaged; and the same
+     * six of the surfaces' darker sides, seen by cones from behind them. */
     int anisotropic;
     /* 1: light injection follows (vct_voxels_inject_light), so the radiance
      * channels are left for it to build: the build fills albedo and normal
@@ -108,13 +116,20 @@ typedef struct vct_brick_options {
 } vct_brick_options;
 
 typedef enum vct_brick_channel {
-    VCT_BRICK_ALBEDO,       /* albedo * opacity, opacity */
-    VCT_BRICK_NORMAL,       /* mean normal * opacity (its length is coherence), opacity */
-    VCT_BRICK_RADIANCE,     /* injected outgoing radiance * opacity, opacity; with
-                               anisotropic bricks at level L-1 only */
-    VCT_BRICK_RADIANCE_DIR0 /* + direction 0..5, anisotropic only, levels 0 .. L-2 */
+    VCT_BRICK_ALBEDO,        /* albedo * opacity, opacity */
+    VCT_BRICK_NORMAL,        /* mean normal * opacity (its length is coherence), opacity */
+    VCT_BRICK_RADIANCE,      /* injected outgoing radiance * opacity, opacity; with
+                                anisotropic bricks at level L-1 only. A surface lit on
+                                one side sends out its brighter side's radiance here */
+    VCT_BRICK_SHADE,         /* (brighter side - darker side) * opacity, opacity * k, k the
+                                difference's luminance (kernels/voxel/voxel_side.h) */
+    VCT_BRICK_PLANE,         /* the brighter side's unit normal, and the plane's offset
+                                (normal . (p - 0.5), p in volume units), * opacity * k */
+    VCT_BRICK_RADIANCE_DIR0, /* + direction 0..5, anisotropic only, levels 0 .. L-2 */
+    VCT_BRICK_DARK_DIR0 = VCT_BRICK_RADIANCE_DIR0 + 6 /* + direction 0..5: the same, of the
+                                                          surfaces' darker sides */
 } vct_brick_channel;
-#define VCT_BRICK_CHANNELS 9
+#define VCT_BRICK_CHANNELS 17
 
 typedef struct vct_brick_info {
     uint32_t bricks;                            /* one per node with children */

@@ -54,6 +54,25 @@ static cl_mem cone_buffer(vct_context *ctx, uint32_t count, const char *stage, v
                              cones, err);
 }
 
+/* A copy of `from` in *to (made once): what the bounces add to. */
+static int keep_copy(vct_context *ctx, cl_mem from, cl_mem *to, uint64_t bytes, const char *what,
+                     vct_error *err) {
+    if (!*to)
+        *to = vct_buffer_create(ctx, BOUNCE_STAGE, what, bytes, CL_MEM_READ_WRITE, NULL, err);
+    if (!*to)
+        return err->status;
+    return vct_cl_check(err, clEnqueueCopyBuffer(ctx->queue, from, *to, 0, 0, bytes, 0, NULL, NULL),
+                        BOUNCE_STAGE, "clEnqueueCopyBuffer");
+}
+
+static int keep_direct(vct_context *ctx, vct_voxels *v, vct_error *err) {
+    const uint64_t n = v->info.voxels;
+    int rc = keep_copy(ctx, v->radiance, &v->direct_radiance, 16 * n, "direct voxel radiance", err);
+    return rc ? rc
+              : keep_copy(ctx, v->side, &v->direct_side, 16 * VCT_VOXEL_SIDE_FLOAT4S * n,
+                          "direct voxel sides", err);
+}
+
 int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v,
                              const vct_cone_settings *cs, uint32_t diffuse_cones, vct_error *err) {
     if (!v->radiance || !v->has_bricks)
@@ -66,17 +85,8 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v
     if (rc || n == 0)
         return rc;
     vct_stage_begin(ctx, BOUNCE_STAGE);
-    if (v->bounces == 0) { /* keep the direct light that every bounce adds to */
-        if (!v->direct_radiance)
-            v->direct_radiance = vct_buffer_create(ctx, BOUNCE_STAGE, "direct voxel radiance",
-                                                   16ull * n, CL_MEM_READ_WRITE, NULL, err);
-        rc = v->direct_radiance ? VCT_OK : (int)err->status;
-        if (rc == VCT_OK)
-            rc = vct_cl_check(err,
-                              clEnqueueCopyBuffer(ctx->queue, v->radiance, v->direct_radiance, 0, 0,
-                                                  16ull * n, 0, NULL, NULL),
-                              BOUNCE_STAGE, "clEnqueueCopyBuffer");
-    }
+    if (v->bounces == 0) /* keep the direct light that every bounce adds to */
+        rc = keep_direct(ctx, v, err);
     cl_program p;
     char options[128];
     vct_cone_options(v, cs, options, sizeof options);
@@ -89,10 +99,10 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v
     int next = 0;
     rc = k ? vct_cone_set_args(k, v, &desc, BOUNCE_STAGE, &next, err) : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, BOUNCE_STAGE, k, next, 8, VCT_ARG_OF(cones),
+        rc = vct_set_args(err, BOUNCE_STAGE, k, next, 9, VCT_ARG_OF(cones),
                           VCT_ARG_OF(diffuse_cones), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
-                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
-                          VCT_ARG_OF(v->direct_radiance), VCT_ARG_OF(v->radiance));
+                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->direct_radiance),
+                          VCT_ARG_OF(v->direct_side), VCT_ARG_OF(v->radiance), VCT_ARG_OF(v->side));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k, n, 64, err);
     if (rc == VCT_OK)

@@ -112,7 +112,7 @@ static int choose_storage(vct_context *ctx, vct_brick_storage storage, vct_brick
 }
 
 static int channel_count(const vct_brick_info *b) {
-    return b->anisotropic ? VCT_BRICK_CHANNELS : VCT_BRICK_RADIANCE + 1;
+    return b->anisotropic ? VCT_BRICK_CHANNELS : VCT_BRICK_PLANE + 1;
 }
 
 /* Channel c has bricks [channel_first, channel_bricks): the directions at
@@ -137,9 +137,11 @@ static void channel_shape(const vct_brick_info *b, int c, uint32_t shape[3]) {
 static int allocate_buffers(vct_context *ctx, vct_voxels *v, vct_error *err) {
     vct_brick_info *b = &v->brick_info;
     static const char *names[VCT_BRICK_CHANNELS] = {
-        "albedo bricks",      "normal bricks",      "radiance bricks",
-        "+x radiance bricks", "+y radiance bricks", "+z radiance bricks",
-        "-x radiance bricks", "-y radiance bricks", "-z radiance bricks"};
+        "albedo bricks",      "normal bricks",      "radiance bricks",    "shade bricks",
+        "plane bricks",       "+x radiance bricks", "+y radiance bricks", "+z radiance bricks",
+        "-x radiance bricks", "-y radiance bricks", "-z radiance bricks", "+x dark bricks",
+        "+y dark bricks",     "+z dark bricks",     "-x dark bricks",     "-y dark bricks",
+        "-z dark bricks"};
     b->pool_bytes = 0;
     for (int c = 0; c < channel_count(b); ++c) {
         uint32_t shape[3];
@@ -200,28 +202,74 @@ static int run_around(level_run *r, vct_error *err) {
 #define BRICK_GROUP 64
 
 /* Level L-1 bricks from the voxels: albedo and normal when `geometry`,
- * radiance when `radiance`. */
+ * radiance and its sides when `radiance_too`. */
 static int run_leaf(const level_run *r, int geometry, int radiance_too, vct_error *err) {
     vct_voxels *v = r->v;
     const uint32_t level = v->info.levels - 1, first = v->brick_info.level_first[level];
     const uint32_t count = v->brick_info.level_bricks[level];
-    const cl_uint has_radiance = v->radiance != NULL;
-    const cl_uint from = geometry ? 0 : 2, to = radiance_too ? 3 : 2;
+    const cl_uint has_radiance = v->radiance != NULL && v->side != NULL;
+    const cl_uint from = geometry ? VCT_BRICK_ALBEDO : VCT_BRICK_RADIANCE;
+    const cl_uint to = radiance_too ? VCT_BRICK_PLANE + 1 : VCT_BRICK_RADIANCE;
+    /* unused arrays stand in for what is not read or written */
     cl_mem radiance = has_radiance ? v->radiance : v->albedo;
-    cl_mem *pool = v->brick_buffer;
-    cl_mem albedo_pool = geometry ? pool[VCT_BRICK_ALBEDO] : pool[VCT_BRICK_RADIANCE];
-    cl_mem normal_pool = geometry ? pool[VCT_BRICK_NORMAL] : pool[VCT_BRICK_RADIANCE];
+    cl_mem side = has_radiance ? v->side : v->albedo;
+    cl_mem pools[VCT_BRICK_PLANE + 1];
+    for (int c = 0; c <= VCT_BRICK_PLANE; ++c)
+        pools[c] = v->brick_buffer[c] ? v->brick_buffer[c] : v->brick_buffer[VCT_BRICK_RADIANCE];
     return vct_run_kernel_grouped(
-        r->ctx, r->program, "brick_leaf", r->stage, count, BRICK_GROUP, err, 16,
+        r->ctx, r->program, "brick_leaf", r->stage, count, BRICK_GROUP, err, 19,
         VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
         VCT_ARG_OF(r->window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(v->albedo),
-        VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance), VCT_ARG_OF(from),
-        VCT_ARG_OF(to), VCT_ARG_OF(r->pool), VCT_ARG_OF(albedo_pool), VCT_ARG_OF(normal_pool),
-        VCT_ARG_OF(pool[VCT_BRICK_RADIANCE]));
+        VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance), VCT_ARG_OF(side), VCT_ARG_OF(has_radiance),
+        VCT_ARG_OF(from), VCT_ARG_OF(to), VCT_ARG_OF(r->pool), VCT_ARG_OF(pools[0]),
+        VCT_ARG_OF(pools[1]), VCT_ARG_OF(pools[2]), VCT_ARG_OF(pools[3]), VCT_ARG_OF(pools[4]));
+}
+
+/* brick_filter over `channels` pools of one level, three at a time. */
+static int run_filter_channels(const level_run *r, cl_uint first, cl_uint count, const cl_mem *list,
+                               cl_uint channels, vct_error *err) {
+    vct_voxels *v = r->v;
+    int rc = VCT_OK;
+    for (cl_uint done = 0; done < channels && rc == VCT_OK; done += 3) {
+        const cl_uint n = channels - done < 3 ? channels - done : 3;
+        const cl_mem *c = list + done;
+        rc = vct_run_kernel_grouped(
+            r->ctx, r->program, "brick_filter", r->stage, count, BRICK_GROUP, err, 11,
+            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
+            VCT_ARG_OF(r->window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
+            VCT_ARG_OF(n), VCT_ARG_OF(c[0]), VCT_ARG_OF(c[n > 1 ? 1 : 0]),
+            VCT_ARG_OF(c[n > 2 ? 2 : 0]));
+    }
+    return rc;
+}
+
+/* The six directions of level `level`'s bricks, of the brighter sides or
+ * (dark) the darker ones, from the level below: from the leaves' one
+ * isotropic value (less their shade when dark), or from its directions. */
+static int run_filter_dir(const level_run *r, int level, int dark, vct_error *err) {
+    vct_voxels *v = r->v;
+    const vct_brick_info *b = &v->brick_info;
+    cl_mem *pool = v->brick_buffer;
+    const cl_uint first = b->level_first[level], count = b->level_bricks[level];
+    const cl_uint one_source = level + 2 == (int)v->info.levels, use_dark = dark;
+    cl_mem *dir = pool + (dark ? VCT_BRICK_DARK_DIR0 : VCT_BRICK_RADIANCE_DIR0);
+    cl_mem src[6];
+    for (int d = 0; d < 6; ++d)
+        src[d] = one_source ? pool[VCT_BRICK_RADIANCE] : dir[d];
+    /* the geometry's brick_filter found this level's windows */
+    const cl_uint window_ready = 1;
+    return vct_run_kernel_grouped(
+        r->ctx, r->program, "brick_filter_dir", r->stage, count, BRICK_GROUP, err, 22,
+        VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
+        VCT_ARG_OF(window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
+        VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
+        VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]), VCT_ARG_OF(dir[1]),
+        VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]),
+        VCT_ARG_OF(one_source), VCT_ARG_OF(pool[VCT_BRICK_SHADE]), VCT_ARG_OF(use_dark));
 }
 
 /* Levels L-2 .. 0, each from the level below: albedo and normal when
- * `geometry`; radiance, and its directions when anisotropic, when
+ * `geometry`; radiance (its directions when anisotropic) and its sides when
  * `radiance_too`. */
 static int run_filters(const level_run *r, int geometry, int radiance_too, vct_error *err) {
     vct_voxels *v = r->v;
@@ -231,7 +279,7 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
     for (int level = (int)v->info.levels - 2; level >= 0 && rc == VCT_OK; --level) {
         const cl_uint first = b->level_first[level], count = b->level_bricks[level];
         /* the channels to filter, first to last: (albedo, normal), radiance */
-        cl_mem list[3];
+        cl_mem list[5];
         cl_uint channels = 0;
         if (geometry) {
             list[channels++] = pool[VCT_BRICK_ALBEDO];
@@ -241,32 +289,15 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
          * isotropic radiance there. */
         if (radiance_too && !b->anisotropic)
             list[channels++] = pool[VCT_BRICK_RADIANCE];
-        cl_mem c0 = list[0], c1 = list[channels > 1 ? 1 : 0], c2 = list[channels > 2 ? 2 : 0];
-        if (channels)
-            rc = vct_run_kernel_grouped(
-                r->ctx, r->program, "brick_filter", r->stage, count, BRICK_GROUP, err, 11,
-                VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
-                VCT_ARG_OF(r->window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count),
-                VCT_ARG_OF(r->pool), VCT_ARG_OF(channels), VCT_ARG_OF(c0), VCT_ARG_OF(c1),
-                VCT_ARG_OF(c2));
+        if (radiance_too) {
+            list[channels++] = pool[VCT_BRICK_SHADE];
+            list[channels++] = pool[VCT_BRICK_PLANE];
+        }
+        rc = run_filter_channels(r, first, count, list, channels, err);
         if (rc != VCT_OK || !b->anisotropic || !radiance_too)
             continue;
-        /* children at level L-1 have one isotropic value for every direction */
-        const cl_uint from_leaf = level + 2 == (int)v->info.levels, one_source = from_leaf;
-        cl_mem *dir = pool + VCT_BRICK_RADIANCE_DIR0;
-        cl_mem src[6];
-        for (int d = 0; d < 6; ++d)
-            src[d] = from_leaf ? pool[VCT_BRICK_RADIANCE] : dir[d];
-        /* the geometry's brick_filter above found this level's windows */
-        const cl_uint window_ready = 1;
-        rc = vct_run_kernel_grouped(
-            r->ctx, r->program, "brick_filter_dir", r->stage, count, BRICK_GROUP, err, 20,
-            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
-            VCT_ARG_OF(window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
-            VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
-            VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]), VCT_ARG_OF(dir[1]),
-            VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]),
-            VCT_ARG_OF(one_source));
+        for (int dark = 0; dark < 2 && rc == VCT_OK; ++dark)
+            rc = run_filter_dir(r, level, dark, err);
     }
     return rc;
 }

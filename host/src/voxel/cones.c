@@ -140,7 +140,8 @@ int vct_cone_set_args(cl_kernel k, const vct_voxels *v, const void *desc, const 
     const vct_brick_info *b = &v->brick_info;
     if (vct_bricks_radiance_check(v, stage, err))
         return err->status;
-    const int pools = b->anisotropic ? 7 : 1;
+    /* radiance, its shade and plane, then the directions of both sides */
+    const int pools = b->anisotropic ? 15 : 3;
     for (int i = 0; i < pools; ++i) {
         const int c = VCT_BRICK_RADIANCE + i;
         cl_mem m = b->image ? v->brick_image[c] : v->brick_buffer[c];

@@ -26,6 +26,11 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
                                         NULL, err);
         rc = v->radiance ? VCT_OK : (int)err->status;
     }
+    if (rc == VCT_OK && !v->side) {
+        v->side = vct_buffer_create(ctx, STAGE, "voxel sides", 16ull * VCT_VOXEL_SIDE_FLOAT4S * n,
+                                    CL_MEM_READ_WRITE, NULL, err);
+        rc = v->side ? VCT_OK : (int)err->status;
+    }
     vct_scene_buffers sb = {0};
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, STAGE, &sb, err);
@@ -56,7 +61,8 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     if (k && rc == VCT_OK)
         rc = vct_scene_texture_args(k, 26, &sb, STAGE, err);
     if (k && rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 29, 1, VCT_ARG_OF(v->radiance));
+        rc = vct_set_args(err, STAGE, k, 29, 3, VCT_ARG_OF(v->radiance), VCT_ARG_OF(v->normal),
+                          VCT_ARG_OF(v->side));
     if (k && rc == VCT_OK)
         rc = vct_launch(ctx, k, n, 64, err);
     if (rc == VCT_OK)
@@ -71,6 +77,14 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     if (rc == VCT_OK)
         rc = vct_bricks_refresh_radiance(ctx, v, err);
     return rc;
+}
+
+int vct_voxels_read_sides(vct_context *ctx, const vct_voxels *v, float *sides, vct_error *err) {
+    if (!v->side)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "voxel sides: inject light first (vct_voxels_inject_light)");
+    return vct_buffer_read(ctx, "voxel read", v->side, 0,
+                           16ull * VCT_VOXEL_SIDE_FLOAT4S * v->info.voxels, sides, err);
 }
 
 int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *v, float *radiance,

@@ -31,10 +31,10 @@ uint32_t vct_voxel_res_that_fits(uint32_t res, double bytes, double limit) {
 void vct_voxels_free(vct_voxels *v) {
     if (!v)
         return;
-    cl_mem *mems[] = {&v->keys,           &v->albedo,      &v->normal,
-                      &v->emission,       &v->child,       &v->neighbours,
-                      &v->tile_parent,    &v->radiance,    &v->direct_radiance,
-                      &v->fragment_start, &v->fragment_tri};
+    cl_mem *mems[] = {
+        &v->keys,         &v->albedo,      &v->normal,     &v->emission,        &v->child,
+        &v->neighbours,   &v->tile_parent, &v->radiance,   &v->direct_radiance, &v->fragment_start,
+        &v->fragment_tri, &v->side,        &v->direct_side};
     for (size_t i = 0; i < sizeof mems / sizeof mems[0]; ++i)
         vct_buffer_release(v->ctx, *mems[i]);
     vct_bricks_release(v);

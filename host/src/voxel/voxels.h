@@ -18,10 +18,14 @@ struct vct_voxels {
      * triangle: light injection lights each surface in a voxel on its own. */
     cl_mem fragment_start, fragment_tri;
     cl_mem radiance; /* outgoing radiance, after vct_voxels_inject_light */
+    /* Per voxel, two float4 beside radiance (which holds the brighter side's):
+     * (brighter - darker side's radiance, 0), then the brighter side's unit
+     * normal and its plane's offset (kernels/voxel/voxel_side.h). */
+    cl_mem side;
     /* The direct part of radiance, copied by the first bounce so that each
      * bounce adds to it, not to the bounces before. Valid while bounces > 0;
      * light injection sets bounces back to 0. */
-    cl_mem direct_radiance;
+    cl_mem direct_radiance, direct_side;
     uint32_t bounces;
     /* Octree: built by vct_octree_build (child is NULL before). */
     cl_mem child, neighbours, tile_parent;

@@ -1,0 +1,84 @@
+/* The two sides of a voxel's surface.
+ *
+ * A wall lit on one face must not light what lies behind it, however thin
+ * it is. So a voxel keeps, beside its radiance (the brighter side's), the
+ * difference to its darker side and the plane between them: the brighter
+ * side's unit normal n and offset h = n . c, c a point of its surfaces in
+ * volume units less 0.5 (centred, for half precision in the bricks):
+ *     radiance[v]    = (brighter side's radiance, opacity)
+ *     side[2v]       = (brighter - darker side's radiance, k)
+ *     side[2v + 1]   = (n, h), n = 0 where the voxel has no normal
+ * k is the difference's luminance: how much light the side a cone is on
+ * decides. Bricks filter the difference premultiplied by opacity, like
+ * radiance, and the plane by opacity times k, so that where surfaces meet,
+ * the plane is the one that matters (a dark floor has no say in which side
+ * of a sunlit wall a cone is on): VCT_BRICK_SHADE holds (opacity (brighter -
+ * darker), opacity k), VCT_BRICK_PLANE opacity k (n, h).
+ * A cone whose origin lies behind a sample's plane sees the darker side
+ * (cone_trace.h). */
+#ifndef VCT_VOXEL_SIDE_H
+#define VCT_VOXEL_SIDE_H
+
+#include "vct_types.h"
+
+inline float side_luminance(float3 c) {
+    return dot(c, (float3)(0.2126f, 0.7152f, 0.0722f));
+}
+
+/* The light a voxel's surfaces send out, by the way it leaves: per axis
+ * direction (+x, +y, +z, -x, -y, -z), what leaves towards it, weighted by
+ * the squared components of each surface side's normal; and the direction
+ * most of it leaves along (the lit sides' normals weighted by their
+ * luminance). The two sides of the voxel's plane follow from them, for any
+ * plane, without keeping each fragment. */
+typedef struct side_cube {
+    float3 out[6];
+    float3 lean;
+} side_cube;
+
+inline side_cube side_cube_empty(void) {
+    side_cube c;
+    for (uint k = 0; k < 6u; ++k)
+        c.out[k] = (float3)(0.0f);
+    c.lean = (float3)(0.0f);
+    return c;
+}
+
+/* Light l leaving a surface side of unit normal m. */
+inline void side_cube_add(side_cube *c, float3 m, float3 l) {
+    const float3 w = m * m;
+    c->out[m.x >= 0.0f ? 0 : 3] += w.x * l;
+    c->out[m.y >= 0.0f ? 1 : 4] += w.y * l;
+    c->out[m.z >= 0.0f ? 2 : 5] += w.z * l;
+    c->lean += side_luminance(l) * m;
+}
+
+/* What leaves on the side n points to (*toward) and on the other (*away):
+ * each axis direction's light by how far it faces n, all of it from 60
+ * degrees on, half where it lies in the plane. */
+inline void side_cube_split(const side_cube *c, float3 n, float3 *toward, float3 *away) {
+    const float3 axes[6] = {(float3)(1.0f, 0.0f, 0.0f),  (float3)(0.0f, 1.0f, 0.0f),
+                            (float3)(0.0f, 0.0f, 1.0f),  (float3)(-1.0f, 0.0f, 0.0f),
+                            (float3)(0.0f, -1.0f, 0.0f), (float3)(0.0f, 0.0f, -1.0f)};
+    *toward = *away = (float3)(0.0f);
+    for (uint k = 0; k < 6u; ++k) {
+        const float w = clamp(0.5f + dot(axes[k], n), 0.0f, 1.0f);
+        *toward += w * c->out[k];
+        *away += (1.0f - w) * c->out[k];
+    }
+}
+
+/* Stores voxel v: `toward` is what it sends along +n, `away` along -n;
+ * centre: a point of its surfaces. */
+inline void voxel_side_store(float3 toward, float3 away, float3 n, float3 centre, float opacity,
+                             __global float4 *radiance, __global float4 *side, uint v) {
+    const int flip = side_luminance(away) > side_luminance(toward);
+    const float3 bright = flip ? away : toward, dark = flip ? toward : away;
+    const float3 up = flip ? -n : n;
+    radiance[v] = (float4)(bright, opacity);
+    __global float4 *out = side + VCT_VOXEL_SIDE_FLOAT4S * v;
+    out[0] = (float4)(bright - dark, side_luminance(bright - dark));
+    out[1] = (float4)(up, dot(up, centre));
+}
+
+#endif
