@@ -605,6 +605,61 @@ static void default_tone_clips_little(void) {
     vct_scene_free(box);
 }
 
+/* A closed room of single quads (7 x 3 x 6, with a block on its floor) lit
+ * by the sun from outside: nothing reaches the inside, which the path
+ * tracer renders black. Cone tracing, isotropic and directional, must keep
+ * it below 1% of the light the sunlit walls send out: their outer faces'
+ * light must not show through them. */
+static void closed_room_lit_outside(void) {
+    const float walls[] = {0, 0,    0, 0, 0,    6, 7, 0,    6, 7, 0,    0, /* floor */
+                           0, 3,    0, 7, 3,    0, 7, 3,    6, 0, 3,    6, /* ceiling */
+                           0, 0,    0, 7, 0,    0, 7, 3,    0, 0, 3,    0, /* z = 0 */
+                           0, 0,    6, 0, 3,    6, 7, 3,    6, 7, 0,    6, /* z = 6 */
+                           0, 0,    0, 0, 3,    0, 0, 3,    6, 0, 0,    6, /* x = 0 */
+                           7, 0,    0, 7, 0,    6, 7, 3,    6, 7, 3,    0, /* x = 7 */
+                           3, 0.5f, 2, 4, 0.5f, 2, 4, 0.5f, 3, 3, 0.5f, 3};
+    vct_material m = vct_material_default();
+    vct_scene *s = one_material_scene(walls, 7, m);
+    /* travelling down, towards -x and +z: the ceiling, the x = 7 and z = 0 walls are lit */
+    const vct_light sun = {
+        VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.75f, -0.45f, 0.3f}, {6, 6, 6}, 0, 0, 0};
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
+    s->camera = (vct_camera){{0.4f, 1.6f, 5.6f}, {6.0f, 1.0f, 1.5f}, {0, 1, 0}, 65.0f};
+    s->has_camera = 1;
+    /* what the ceiling's outer face sends out: albedo / pi * E cos */
+    const double outside =
+        m.albedo[1] / CHECK_PI * 6.0 * 0.45 / sqrt(0.75 * 0.75 + 0.45 * 0.45 + 0.3 * 0.3);
+    vct_plan p;
+    vct_plan_make(s, NULL, &p);
+    for (int directional = 0; directional < 2; ++directional) {
+        vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+        REQUIRE_OK(g ? VCT_OK : err.status, err);
+        vct_voxel_options vo = {0};
+        vo.resolution = 64;
+        const vct_brick_options bo = {VCT_BRICKS_AUTO, directional, 0};
+        vct_vct_options o = vct_vct_options_default();
+        o.width = o.height = 48;
+        vct_voxels *v = NULL;
+        REQUIRE_OK(vct_vct_prepare(ctx, s, g, &p, &vo, &bo, 2, &o.cones, &v, &err), err);
+        vct_image im;
+        REQUIRE_OK(vct_render_vct(ctx, s, g, v, &p, &o, &im, NULL, &err), err);
+        double sum = 0.0;
+        for (int px = 0; px < 48 * 48; ++px)
+            sum += im.rgba[4 * px + 1];
+        const double mean = sum / (48 * 48);
+        CHECK(mean < 0.01 * outside,
+              "closed room lit outside, %s: inside mean %g, %.2f%% of the outer faces' %g",
+              directional ? "directional" : "isotropic", mean, 100.0 * mean / outside, outside);
+        printf("closed room lit outside, %-11s inside %.2g (%.3f%% of the outer faces' light)\n",
+               directional ? "directional" : "isotropic", mean, 100.0 * mean / outside);
+        vct_image_free(&im);
+        vct_voxels_free(v);
+        vct_accel_free(g);
+    }
+    vct_scene_free(s);
+}
+
 int main(void) {
     ctx = check_context();
     plans();
@@ -613,6 +668,7 @@ int main(void) {
     empty_volume();
     sparse_diffuse();
     glass_pane();
+    closed_room_lit_outside();
     cornell_against_path_tracer();
     glossy_cornell_against_path_tracer();
     default_tone_clips_little();
