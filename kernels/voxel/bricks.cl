@@ -26,9 +26,9 @@
  *                    columns averaged with the same Gaussian weights. With
  *                    one_source, all six read one pool (the leaves', which
  *                    have no directions), each value loaded once per axis;
- *                    with `dark` too, the leaves' darker sides (radiance
- *                    less shade): the directions of what a cone sees from
- *                    behind the surfaces (voxel_side.h).
+ *                    and the same of the surfaces' darker sides (from the
+ *                    leaves, radiance less shade): the directions of what
+ *                    a cone sees from behind them (voxel_side.h).
  *
  * A sample depends only on its lattice point, never on the brick asking, and
  * sums run in a fixed world order: samples on faces shared by neighbouring
@@ -261,11 +261,11 @@ inline void filter_channel(const uint *texel, uint2 pool, uint b, __global half 
     }
 }
 
-/* Channels c0, c1, c2 (`channels` of them, 1..3) of the level's bricks. */
+/* Channels c0 .. c3 (`channels` of them, 1..4) of the level's bricks. */
 __kernel void brick_filter(__global const uint *child, __global const uint *around,
                            __global uint *window, uint window_ready, uint first_brick, uint count,
                            uint2 pool, uint channels, __global half *c0, __global half *c1,
-                           __global half *c2) {
+                           __global half *c2, __global half *c3) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
@@ -277,6 +277,8 @@ __kernel void brick_filter(__global const uint *child, __global const uint *arou
         filter_channel(texel, pool, b, c1);
     if (channels > 2u)
         filter_channel(texel, pool, b, c2);
+    if (channels > 3u)
+        filter_channel(texel, pool, b, c3);
 }
 
 /* Each half's opacity (w) across its half: the directional filter carries
@@ -382,22 +384,29 @@ inline void filter_axis(const uint *texel, uint2 pool, uint b, uint axis,
 /* All six directions of the level's bricks: the three samples along the
  * axis composited front to back (the end ones half as thick), the nine
  * columns averaged with the Gaussian weights. */
-__kernel void brick_filter_dir(__global const uint *child, __global const uint *around,
-                               __global uint *window, uint window_ready, uint first_brick,
-                               uint count, uint2 pool, __global const half *s0,
-                               __global const half *s1, __global const half *s2,
-                               __global const half *s3, __global const half *s4,
-                               __global const half *s5, __global half *d0, __global half *d1,
-                               __global half *d2, __global half *d3, __global half *d4,
-                               __global half *d5, uint one_source, __global const half *shade,
-                               uint dark) {
+__kernel void
+brick_filter_dir(__global const uint *child, __global const uint *around, __global uint *window,
+                 uint window_ready, uint first_brick, uint count, uint2 pool,
+                 __global const half *s0, __global const half *s1, __global const half *s2,
+                 __global const half *s3, __global const half *s4, __global const half *s5,
+                 __global half *d0, __global half *d1, __global half *d2, __global half *d3,
+                 __global half *d4, __global half *d5, uint one_source, __global const half *shade,
+                 __global const half *e0, __global const half *e1, __global const half *e2,
+                 __global const half *e3, __global const half *e4, __global const half *e5,
+                 __global half *f0, __global half *f1, __global half *f2, __global half *f3,
+                 __global half *f4, __global half *f5) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
     const uint b = first_brick + i;
     uint texel[LATTICE_ENTRIES];
     lattice_texels(child, around, window, window_ready, b, pool, texel);
-    filter_axis(texel, pool, b, 0u, s0, s3, one_source, shade, dark, d0, d3);
-    filter_axis(texel, pool, b, 1u, s1, s4, one_source, shade, dark, d1, d4);
-    filter_axis(texel, pool, b, 2u, s2, s5, one_source, shade, dark, d2, d5);
+    /* the brighter sides from s into d, the darker from e into f (or, from
+     * the leaves, from radiance less shade) */
+    filter_axis(texel, pool, b, 0u, s0, s3, one_source, shade, 0u, d0, d3);
+    filter_axis(texel, pool, b, 1u, s1, s4, one_source, shade, 0u, d1, d4);
+    filter_axis(texel, pool, b, 2u, s2, s5, one_source, shade, 0u, d2, d5);
+    filter_axis(texel, pool, b, 0u, one_source ? s0 : e0, e3, one_source, shade, 1u, f0, f3);
+    filter_axis(texel, pool, b, 1u, one_source ? s1 : e1, e4, one_source, shade, 1u, f1, f4);
+    filter_axis(texel, pool, b, 2u, one_source ? s2 : e2, e5, one_source, shade, 1u, f2, f5);
 }

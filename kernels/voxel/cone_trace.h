@@ -100,37 +100,44 @@ VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, u
     const brick_lerp l = brick_lerp_at(pool, b, at); /* shared by every pool */
 #define CONE_POOL_READ(p) brick_lerp_read(p, l)
 #endif
-    const float4 pl = CONE_POOL_READ(plane_pool);
-    const float len = length(pl.xyz);
-    float turn = 0.0f; /* how far to the darker side */
-    float4 shade = (float4)(0.0f);
-    if (len > 1e-6f) { /* a sided surface */
-        const float dist = (dot(pl.xyz, o) - pl.w) / len;
-        if (dist < SIDE_TOLERANCE * spacing) {
-            shade = CONE_POOL_READ(shade_pool);
-            turn = side_behind(dist, spacing) * side_coherence(shade, pl);
-        }
-    }
+    float4 s;
 #ifdef VCT_ANISOTROPIC
-    if (level + 1u < levels) {
-        const float3 w = d * d;
+    const int directional = level + 1u < levels;
+    const float3 w = d * d;
+    if (directional) {
         const float4 sx = d.x >= 0.0f ? CONE_POOL_READ(dir0) : CONE_POOL_READ(dir3);
         const float4 sy = d.y >= 0.0f ? CONE_POOL_READ(dir1) : CONE_POOL_READ(dir4);
         const float4 sz = d.z >= 0.0f ? CONE_POOL_READ(dir2) : CONE_POOL_READ(dir5);
-        float4 s = (w.x * sx + w.y * sy + w.z * sz) / (w.x + w.y + w.z);
-        if (turn > 0.0f) {
-            const float4 dx = d.x >= 0.0f ? CONE_POOL_READ(dark0) : CONE_POOL_READ(dark3);
-            const float4 dy = d.y >= 0.0f ? CONE_POOL_READ(dark1) : CONE_POOL_READ(dark4);
-            const float4 dz = d.z >= 0.0f ? CONE_POOL_READ(dark2) : CONE_POOL_READ(dark5);
-            s = mix(s, (w.x * dx + w.y * dy + w.z * dz) / (w.x + w.y + w.z), turn);
-        }
-        return s;
-    }
+        s = (w.x * sx + w.y * sy + w.z * sz) / (w.x + w.y + w.z);
+    } else
 #endif
+    {
+        s = CONE_POOL_READ(radiance);
+    }
     (void)level;
     (void)levels;
     (void)d;
-    const float4 s = CONE_POOL_READ(radiance);
+    if (!(s.w > 0.0f))
+        return s; /* empty here: no side to see */
+    const float4 pl = CONE_POOL_READ(plane_pool);
+    const float len = length(pl.xyz);
+    if (!(len > 1e-6f))
+        return s; /* no one-sided surface */
+    const float dist = (dot(pl.xyz, o) - pl.w) / len;
+    if (!(dist < SIDE_TOLERANCE * spacing))
+        return s; /* before the plane */
+    const float4 shade = CONE_POOL_READ(shade_pool);
+    const float turn = side_behind(dist, spacing) * side_coherence(shade, pl);
+    if (!(turn > 0.0f))
+        return s;
+#ifdef VCT_ANISOTROPIC
+    if (directional) {
+        const float4 dx = d.x >= 0.0f ? CONE_POOL_READ(dark0) : CONE_POOL_READ(dark3);
+        const float4 dy = d.y >= 0.0f ? CONE_POOL_READ(dark1) : CONE_POOL_READ(dark4);
+        const float4 dz = d.z >= 0.0f ? CONE_POOL_READ(dark2) : CONE_POOL_READ(dark5);
+        return mix(s, (w.x * dx + w.y * dy + w.z * dz) / (w.x + w.y + w.z), turn);
+    }
+#endif
     /* one isotropic value: its darker side is itself less the shade */
     return (float4)(s.xyz - turn * shade.xyz, s.w);
 #undef CONE_POOL_READ

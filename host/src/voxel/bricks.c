@@ -225,47 +225,52 @@ static int run_leaf(const level_run *r, int geometry, int radiance_too, vct_erro
         VCT_ARG_OF(pools[1]), VCT_ARG_OF(pools[2]), VCT_ARG_OF(pools[3]), VCT_ARG_OF(pools[4]));
 }
 
-/* brick_filter over `channels` pools of one level, three at a time. */
+/* brick_filter over `channels` pools of one level, four at a time. */
 static int run_filter_channels(const level_run *r, cl_uint first, cl_uint count, const cl_mem *list,
                                cl_uint channels, vct_error *err) {
     vct_voxels *v = r->v;
     int rc = VCT_OK;
-    for (cl_uint done = 0; done < channels && rc == VCT_OK; done += 3) {
-        const cl_uint n = channels - done < 3 ? channels - done : 3;
+    for (cl_uint done = 0; done < channels && rc == VCT_OK; done += 4) {
+        const cl_uint n = channels - done < 4 ? channels - done : 4;
         const cl_mem *c = list + done;
         rc = vct_run_kernel_grouped(
-            r->ctx, r->program, "brick_filter", r->stage, count, BRICK_GROUP, err, 11,
+            r->ctx, r->program, "brick_filter", r->stage, count, BRICK_GROUP, err, 12,
             VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
             VCT_ARG_OF(r->window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
             VCT_ARG_OF(n), VCT_ARG_OF(c[0]), VCT_ARG_OF(c[n > 1 ? 1 : 0]),
-            VCT_ARG_OF(c[n > 2 ? 2 : 0]));
+            VCT_ARG_OF(c[n > 2 ? 2 : 0]), VCT_ARG_OF(c[n > 3 ? 3 : 0]));
     }
     return rc;
 }
 
-/* The six directions of level `level`'s bricks, of the brighter sides or
- * (dark) the darker ones, from the level below: from the leaves' one
- * isotropic value (less their shade when dark), or from its directions. */
-static int run_filter_dir(const level_run *r, int level, int dark, vct_error *err) {
+/* The six directions of level `level`'s bricks, of the brighter sides and
+ * of the darker ones, from the level below: from the leaves' one isotropic
+ * value (less their shade for the darker sides), or from its directions. */
+static int run_filter_dir(const level_run *r, int level, vct_error *err) {
     vct_voxels *v = r->v;
     const vct_brick_info *b = &v->brick_info;
     cl_mem *pool = v->brick_buffer;
     const cl_uint first = b->level_first[level], count = b->level_bricks[level];
-    const cl_uint one_source = level + 2 == (int)v->info.levels, use_dark = dark;
-    cl_mem *dir = pool + (dark ? VCT_BRICK_DARK_DIR0 : VCT_BRICK_RADIANCE_DIR0);
-    cl_mem src[6];
-    for (int d = 0; d < 6; ++d)
-        src[d] = one_source ? pool[VCT_BRICK_RADIANCE] : dir[d];
+    const cl_uint one_source = level + 2 == (int)v->info.levels;
+    cl_mem *bright = pool + VCT_BRICK_RADIANCE_DIR0, *dark = pool + VCT_BRICK_DARK_DIR0;
+    cl_mem src[6], dark_src[6];
+    for (int d = 0; d < 6; ++d) {
+        src[d] = one_source ? pool[VCT_BRICK_RADIANCE] : bright[d];
+        dark_src[d] = one_source ? pool[VCT_BRICK_RADIANCE] : dark[d];
+    }
     /* the geometry's brick_filter found this level's windows */
     const cl_uint window_ready = 1;
     return vct_run_kernel_grouped(
-        r->ctx, r->program, "brick_filter_dir", r->stage, count, BRICK_GROUP, err, 22,
+        r->ctx, r->program, "brick_filter_dir", r->stage, count, BRICK_GROUP, err, 33,
         VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
         VCT_ARG_OF(window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
         VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
-        VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(dir[0]), VCT_ARG_OF(dir[1]),
-        VCT_ARG_OF(dir[2]), VCT_ARG_OF(dir[3]), VCT_ARG_OF(dir[4]), VCT_ARG_OF(dir[5]),
-        VCT_ARG_OF(one_source), VCT_ARG_OF(pool[VCT_BRICK_SHADE]), VCT_ARG_OF(use_dark));
+        VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(bright[0]), VCT_ARG_OF(bright[1]),
+        VCT_ARG_OF(bright[2]), VCT_ARG_OF(bright[3]), VCT_ARG_OF(bright[4]), VCT_ARG_OF(bright[5]),
+        VCT_ARG_OF(one_source), VCT_ARG_OF(pool[VCT_BRICK_SHADE]), VCT_ARG_OF(dark_src[0]),
+        VCT_ARG_OF(dark_src[1]), VCT_ARG_OF(dark_src[2]), VCT_ARG_OF(dark_src[3]),
+        VCT_ARG_OF(dark_src[4]), VCT_ARG_OF(dark_src[5]), VCT_ARG_OF(dark[0]), VCT_ARG_OF(dark[1]),
+        VCT_ARG_OF(dark[2]), VCT_ARG_OF(dark[3]), VCT_ARG_OF(dark[4]), VCT_ARG_OF(dark[5]));
 }
 
 /* Levels L-2 .. 0, each from the level below: albedo and normal when
@@ -296,8 +301,7 @@ static int run_filters(const level_run *r, int geometry, int radiance_too, vct_e
         rc = run_filter_channels(r, first, count, list, channels, err);
         if (rc != VCT_OK || !b->anisotropic || !radiance_too)
             continue;
-        for (int dark = 0; dark < 2 && rc == VCT_OK; ++dark)
-            rc = run_filter_dir(r, level, dark, err);
+        rc = run_filter_dir(r, level, err);
     }
     return rc;
 }
