@@ -170,8 +170,8 @@ static int update_light(view_app *app, vct_error *err) {
         return VCT_OK;
     int rc = vct_voxels_inject_light(app->ctx, app->scene, app->accel, app->voxels, err);
     for (int b = 1; rc == VCT_OK && b < app->opt.bounces; ++b)
-        rc = vct_voxels_inject_bounce(app->ctx, app->scene, app->voxels, &app->opt.cones,
-                                      BOUNCE_CONES, err);
+        rc = vct_voxels_inject_bounce(app->ctx, app->scene, app->accel, app->voxels,
+                                      &app->opt.cones, BOUNCE_CONES, err);
     if (rc == VCT_OK)
         app->light_moved = 0;
     return rc;

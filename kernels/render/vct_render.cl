@@ -34,6 +34,7 @@
 #include "light/emitters.h"
 #include "scene/texture.h"
 #include "accel/accel.h"
+#include "voxel/cone_sky.h"
 #include "vct_types.h"
 
 #define VCT_MAX_INTERFACES 8u
@@ -267,9 +268,9 @@ typedef struct diffuse_light {
     float open, level;
 } diffuse_light;
 
-inline diffuse_light diffuse_trace(CONE_POOLS, __global const uint *child, const vct_cone_desc *cd,
-                                   __global const vct_cone_dir *cones, uint cone_count,
-                                   const gbuffer_surface *g) {
+inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global const uint *child,
+                                   const vct_cone_desc *cd, __global const vct_cone_dir *cones,
+                                   uint cone_count, const gbuffer_surface *g) {
     const float3 n = g->n;
     float3 t, b;
     basis_of(n, &t, &b);
@@ -287,7 +288,7 @@ inline diffuse_light diffuse_trace(CONE_POOLS, __global const uint *child, const
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
         const cone_result r =
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
-        l.radiance += c.dir.w * r.radiance;
+        l.radiance += c.dir.w * cone_sky_checked(acc, cd, origin, d, r);
         l.open += c.dir.w * (1.0f - r.ao_alpha);
         level_sum += r.level_sum;
         samples += r.samples;
@@ -310,16 +311,17 @@ inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pix
         aov[AOV_SLOTS * pixel + 3u] = (float4)(l.open, l.level, 0.0f, 1.0f);
 }
 
-__kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
-                                __global const vct_cone_dir *cones, uint cone_count,
-                                __global const float4 *gbuf,
+__kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *child,
+                                vct_cone_desc cd, __global const vct_cone_dir *cones,
+                                uint cone_count, __global const float4 *gbuf,
                                 __global const vct_material_desc *materials, uint2 size,
                                 __global float4 *image, __global float4 *aov) {
+    const accel_view acc = ACCEL_VIEW();
     uint pixel;
     gbuffer_surface g;
     if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
         return;
-    const diffuse_light l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+    const diffuse_light l = diffuse_trace(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
     diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }
 
@@ -339,12 +341,13 @@ __kernel void vct_diffuse_cones(CONE_POOLS, __global const uint *child, vct_cone
 #define SPARSE_PLANE_VOXELS 0.25f
 #define SPARSE_MIN_REACH 2.0f
 
-__kernel void vct_diffuse_sparse(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
-                                 __global const vct_cone_dir *cones, uint cone_count,
-                                 __global const float4 *gbuf,
+__kernel void vct_diffuse_sparse(ACCEL_ARGS, CONE_POOLS, __global const uint *child,
+                                 vct_cone_desc cd, __global const vct_cone_dir *cones,
+                                 uint cone_count, __global const float4 *gbuf,
                                  __global const vct_material_desc *materials, uint2 size,
                                  __global float4 *image, __global float4 *aov,
                                  __global float4 *sparse) {
+    const accel_view acc = ACCEL_VIEW();
     const uint i = get_global_id(0), j = get_global_id(1);
     const uint2 cells = (size + 1u) / 2u;
     if (i >= cells.x || j >= cells.y)
@@ -353,7 +356,7 @@ __kernel void vct_diffuse_sparse(CONE_POOLS, __global const uint *child, vct_con
     gbuffer_surface g;
     diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
     if (gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &pixel, &g))
-        l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+        l = diffuse_trace(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
     const uint cell = j * cells.x + i;
     sparse[2u * cell] = (float4)(l.radiance, l.open);
     sparse[2u * cell + 1u] = (float4)(l.level, 0.0f, 0.0f, 0.0f);
@@ -368,12 +371,13 @@ inline int sparse_agrees(const vct_cone_desc *cd, const gbuffer_surface *g,
            fabs(dot(g->n, off)) <= SPARSE_PLANE_VOXELS * voxel && dot(off, off) <= reach * reach;
 }
 
-__kernel void vct_diffuse_fill(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+__kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                                __global const vct_cone_dir *cones, uint cone_count,
                                __global const float4 *gbuf,
                                __global const vct_material_desc *materials, uint2 size,
                                __global float4 *image, __global float4 *aov,
                                __global const float4 *sparse) {
+    const accel_view acc = ACCEL_VIEW();
     uint pixel;
     gbuffer_surface g;
     if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
@@ -400,7 +404,7 @@ __kernel void vct_diffuse_fill(CONE_POOLS, __global const uint *child, vct_cone_
         l.open /= agree;
         l.level /= agree;
     } else {
-        l = diffuse_trace(CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+        l = diffuse_trace(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
     }
     diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }

@@ -14,14 +14,15 @@
  * (no normal) gathers on both sides of z and sends the brighter both ways. */
 #include "scene/bsdf.h"
 #include "voxel/cone_trace.h"
+#include "voxel/cone_sky.h"
 #include "voxel/octree.h"
 #include "voxel/voxel_side.h"
 #include "vct_types.h"
 
 /* The cosine-weighted radiance arriving at `centre` from the side n faces. */
-inline float3 gather_side(CONE_POOLS, __global const uint *child, const vct_cone_desc *cd,
-                          __global const vct_cone_dir *cones, uint cone_count, float3 centre,
-                          float3 n) {
+inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint *child,
+                          const vct_cone_desc *cd, __global const vct_cone_dir *cones,
+                          uint cone_count, float3 centre, float3 n) {
     float3 t, b;
     basis_of(n, &t, &b);
     const float3 origin = cone_origin(cd, centre, n);
@@ -29,18 +30,19 @@ inline float3 gather_side(CONE_POOLS, __global const uint *child, const vct_cone
     for (uint i = 0; i < cone_count; ++i) {
         const vct_cone_dir c = cones[i];
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
-        gathered +=
-            c.dir.w *
-            cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, INFINITY).radiance;
+        const cone_result r =
+            cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, INFINITY);
+        gathered += c.dir.w * cone_sky_checked(acc, cd, origin, d, r);
     }
     return gathered;
 }
 
-__kernel void inject_bounce(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
+__kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                             __global const vct_cone_dir *cones, uint cone_count,
                             __global const uint *keys, uint voxels, __global const float4 *albedo,
                             __global const float4 *direct, __global const float4 *direct_side,
                             __global float4 *voxel_radiance, __global float4 *side) {
+    const accel_view acc = ACCEL_VIEW();
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
@@ -50,8 +52,10 @@ __kernel void inject_bounce(CONE_POOLS, __global const uint *child, vct_cone_des
     const float4 bright = direct[v], shade = sides[0], plane = sides[1];
     const int has_normal = any(plane.xyz != 0.0f);
     const float3 n = has_normal ? plane.xyz : (float3)(0.0f, 0.0f, 1.0f);
-    const float3 front = gather_side(CONE_POOLS_PASS, child, &cd, cones, cone_count, centre, n);
-    const float3 back = gather_side(CONE_POOLS_PASS, child, &cd, cones, cone_count, centre, -n);
+    const float3 front =
+        gather_side(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, centre, n);
+    const float3 back =
+        gather_side(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, centre, -n);
     const float3 rho = albedo[v].xyz;
     /* without a normal both sides send what the brighter side receives */
     const float3 more = side_luminance(front) >= side_luminance(back) ? front : back;

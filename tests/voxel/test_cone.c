@@ -638,7 +638,7 @@ static void bounce_against_reference(const char *what, brick_case *c, const vct_
     memmove(c->radiance, reads, 16ull * c->info.voxels);
     memmove(c->sides, reads_sides, 32ull * c->info.voxels);
     ref_pyramid p = pyramid_of(c, 1);
-    REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c->voxels, s, 6, &err), err);
+    REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c->accel, c->voxels, s, 6, &err), err);
     REQUIRE_OK(vct_voxels_read_radiance(ctx, c->voxels, after, &err), err);
     REQUIRE_OK(vct_voxels_read_sides(ctx, c->voxels, after_sides, &err), err);
     check_bounce(what, c, &p, direct, direct_sides, after, after_sides);

@@ -200,10 +200,12 @@ int vct_cone_trace(vct_context *ctx, const vct_voxels *voxels, const vct_cone_se
  * gather the filtered radiance, the voxel's radiance becomes its injected
  * direct radiance plus albedo times that, and the radiance bricks are
  * filtered again. After k calls the voxels hold paths of up to k + 1
- * bounces, each counted once; vct_voxels_inject_light starts over. */
-int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene, vct_voxels *voxels,
-                             const vct_cone_settings *cones, uint32_t diffuse_cones,
-                             vct_error *err);
+ * bounces, each counted once; vct_voxels_inject_light starts over. A cone
+ * that leaves the volume sees the scene's ambient light only where a ray
+ * along its axis through `accel` meets nothing. */
+int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                             vct_voxels *voxels, const vct_cone_settings *settings,
+                             uint32_t diffuse_cones, vct_error *err);
 
 #ifdef __cplusplus
 }

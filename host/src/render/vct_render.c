@@ -73,8 +73,9 @@ static int keep_direct(vct_context *ctx, vct_voxels *v, vct_error *err) {
                           "direct voxel sides", err);
 }
 
-int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v,
-                             const vct_cone_settings *cs, uint32_t diffuse_cones, vct_error *err) {
+int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                             vct_voxels *v, const vct_cone_settings *cs, uint32_t diffuse_cones,
+                             vct_error *err) {
     if (!v->radiance || !v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT,
                         "%s: inject light into built bricks first (vct_bricks_build, "
@@ -88,16 +89,21 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, vct_voxels *v
     if (v->bounces == 0) /* keep the direct light that every bounce adds to */
         rc = keep_direct(ctx, v, err);
     cl_program p;
-    char options[128];
+    char options[256];
     vct_cone_options(v, cs, options, sizeof options);
+    /* the accel's options too: rays test the sky */
+    snprintf(options + strlen(options), sizeof options - strlen(options), " %s",
+             vct_accel_program_options(g));
     if (rc == VCT_OK)
         rc = vct_program_get(ctx, "voxel/inject_bounce.cl", options, &p, err);
     cl_mem cones = rc == VCT_OK ? cone_buffer(ctx, diffuse_cones, BOUNCE_STAGE, err) : NULL;
     cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
     vct_cone_desc desc;
     vct_cone_desc_make(v, cs, s->ambient, &desc);
-    int next = 0;
-    rc = k ? vct_cone_set_args(k, v, &desc, BOUNCE_STAGE, &next, err) : (int)err->status;
+    int next = 5; /* after ACCEL_ARGS */
+    rc = k ? vct_accel_set_args(k, g, BOUNCE_STAGE, err) : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_cone_set_args(k, v, &desc, BOUNCE_STAGE, &next, err);
     if (rc == VCT_OK)
         rc = vct_set_args(err, BOUNCE_STAGE, k, next, 9, VCT_ARG_OF(cones),
                           VCT_ARG_OF(diffuse_cones), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
@@ -141,7 +147,7 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
     if (rc == VCT_OK)
         rc = vct_bricks_build(ctx, v, &bricks, err);
     for (uint32_t b = 1; rc == VCT_OK && lit && b < bounces; ++b)
-        rc = vct_voxels_inject_bounce(ctx, s, v, cs, 6, err);
+        rc = vct_voxels_inject_bounce(ctx, s, g, v, cs, 6, err);
     if (rc != VCT_OK) {
         vct_voxels_free(v);
         return rc;
@@ -170,6 +176,7 @@ static void program_options(const vct_plan *plan, int emitters, const vct_voxels
 typedef struct frame {
     vct_context *ctx;
     const vct_voxels *v;
+    const vct_accel *accel; /* the diffuse cones' sky rays */
     cl_program program;
     cl_mem gbuf, image, aov;
     cl_mem reflection;       /* glass reflections, when refraction and specular are planned */
@@ -214,16 +221,21 @@ static int primary(frame *f, const vct_scene *s, const vct_accel *g, const vct_c
     return rc;
 }
 
-/* One cone kernel over the G-buffer: CONE_POOLS, child, desc, then, if
- * given, a buffer and a count (cones, lights, or glass reflections and
- * float4 per pixel), then gbuf, materials, size, image, aov, and the sparse
- * diffuse cells if given (which the kernel runs over, one per 2x2 pixels,
- * when `over_cells`). */
-static int cone_pass_with(frame *f, const char *stage, const char *name, cl_mem list,
+/* One cone kernel over the G-buffer: ACCEL_ARGS when `rays` (the diffuse
+ * cones test the sky with them), CONE_POOLS, child, desc, then, if given, a
+ * buffer and a count (cones, lights, or glass reflections and float4 per
+ * pixel), then gbuf, materials, size, image, aov, and the sparse diffuse
+ * cells if given (which the kernel runs over, one per 2x2 pixels, when
+ * `over_cells`). */
+static int cone_pass_with(frame *f, const char *stage, const char *name, int rays, cl_mem list,
                           cl_uint list_count, cl_mem sparse, int over_cells, vct_error *err) {
     cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
-    int next = 0;
-    int rc = k ? vct_cone_set_args(k, f->v, &f->desc, stage, &next, err) : (int)err->status;
+    int next = rays ? 5 : 0;
+    int rc = k ? VCT_OK : (int)err->status;
+    if (rc == VCT_OK && rays)
+        rc = vct_accel_set_args(k, f->accel, stage, err);
+    if (rc == VCT_OK)
+        rc = vct_cone_set_args(k, f->v, &f->desc, stage, &next, err);
     if (rc == VCT_OK && list) {
         rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_OF(list), VCT_ARG_OF(list_count));
         next += 2;
@@ -245,22 +257,22 @@ static int cone_pass_with(frame *f, const char *stage, const char *name, cl_mem 
 
 static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list, cl_uint list_count,
                      vct_error *err) {
-    return cone_pass_with(f, stage, name, list, list_count, NULL, 0, err);
+    return cone_pass_with(f, stage, name, 0, list, list_count, NULL, 0, err);
 }
 
 /* Indirect diffuse light (or AO): every pixel's cones, or with sparse
  * diffuse, those of every other pixel per axis and the rest filled in. */
 static int diffuse_pass(frame *f, cl_mem cones, cl_uint count, int sparse, vct_error *err) {
     if (!sparse)
-        return cone_pass(f, DIFFUSE_STAGE, "vct_diffuse_cones", cones, count, err);
+        return cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_cones", 1, cones, count, NULL, 0, err);
     const size_t cells = (size_t)((f->size[0] + 1) / 2) * ((f->size[1] + 1) / 2);
     cl_mem buffer = vct_buffer_create(f->ctx, DIFFUSE_STAGE, "sparse diffuse cells", 32 * cells,
                                       CL_MEM_READ_WRITE, NULL, err);
-    int rc = buffer ? cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_sparse", cones, count, buffer,
-                                     1, err)
+    int rc = buffer ? cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_sparse", 1, cones, count,
+                                     buffer, 1, err)
                     : (int)err->status;
     if (rc == VCT_OK)
-        rc = cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_fill", cones, count, buffer, 0, err);
+        rc = cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_fill", 1, cones, count, buffer, 0, err);
     vct_buffer_release(f->ctx, buffer);
     return rc;
 }
@@ -320,6 +332,7 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, con
     memset(&f, 0, sizeof f);
     f.ctx = ctx;
     f.v = cones_on ? v : NULL;
+    f.accel = g;
     f.size[0] = (cl_uint)opt->width;
     f.size[1] = (cl_uint)opt->height;
     if (f.v)

@@ -141,17 +141,17 @@ int vct_cone_set_args(cl_kernel k, const vct_voxels *v, const void *desc, const 
     if (vct_bricks_radiance_check(v, stage, err))
         return err->status;
     /* radiance, its shade and plane, then the directions of both sides */
-    const int pools = b->anisotropic ? 15 : 3;
+    const int pools = b->anisotropic ? 15 : 3, first = *next;
     for (int i = 0; i < pools; ++i) {
         const int c = VCT_BRICK_RADIANCE + i;
         cl_mem m = b->image ? v->brick_image[c] : v->brick_buffer[c];
-        int rc = vct_set_args(err, stage, k, i, 1, VCT_ARG_OF(m));
+        int rc = vct_set_args(err, stage, k, first + i, 1, VCT_ARG_OF(m));
         if (rc)
             return rc;
     }
-    int rc =
-        vct_set_args(err, stage, k, pools, 2, VCT_ARG_OF(v->child), sizeof(vct_cone_desc), desc);
-    *next = pools + 2;
+    int rc = vct_set_args(err, stage, k, first + pools, 2, VCT_ARG_OF(v->child),
+                          sizeof(vct_cone_desc), desc);
+    *next = first + pools + 2;
     return rc;
 }
 

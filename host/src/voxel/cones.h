@@ -13,7 +13,8 @@ void vct_cone_desc_make(const vct_voxels *voxels, const vct_cone_settings *setti
 void vct_cone_options(const vct_voxels *voxels, const vct_cone_settings *settings, char *out,
                       size_t size);
 /* Sets CONE_POOLS, the octree's child pointers and the cone description as
- * a cone kernel's first arguments; *next receives the next argument index. */
+ * a cone kernel's arguments from index *next on (0: its first); *next
+ * receives the index after them. */
 int vct_cone_set_args(cl_kernel kernel, const vct_voxels *voxels, const void *desc,
                       const char *stage, int *next, vct_error *err);
 
