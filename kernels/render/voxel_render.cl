@@ -1,6 +1,7 @@
 /* A look at the voxels: primary rays marched through the octree, skipping
  * each empty node's whole cell. At the leaf level (show_level = levels) a
  * voxel shows its injected radiance when `radiance` holds it (has_radiance),
+ * the side facing the camera (voxel_side.h),
  * else its albedo under a headlight on the averaged normal, plus emission.
  * At a coarser level every node with geometry below it is a grey cube lit
  * by a headlight on the face the ray enters. */
@@ -11,8 +12,8 @@
 __kernel void voxel_render(vct_camera_desc cam, vct_volume_desc vol, __global const uint *child,
                            __global const float4 *voxel_albedo, __global const float4 *voxel_normal,
                            __global const float4 *voxel_emission,
-                           __global const float4 *voxel_radiance, uint has_radiance,
-                           uint show_level, __global float4 *image) {
+                           __global const float4 *voxel_radiance, __global const float4 *voxel_side,
+                           uint has_radiance, uint show_level, __global float4 *image) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
@@ -45,8 +46,14 @@ __kernel void voxel_render(vct_camera_desc cam, vct_volume_desc vol, __global co
             const uint v = child[node];
             const float facing = fabs(dot(voxel_normal[v].xyz, dir));
             const float shade = voxel_normal[v].w > 0.0f ? 0.2f + 0.8f * facing : 0.6f;
-            colour.xyz = has_radiance ? voxel_radiance[v].xyz
-                                      : voxel_albedo[v].xyz * shade + voxel_emission[v].xyz;
+            if (has_radiance) {
+                /* a ray travelling along the brighter side's normal sees the darker side */
+                __global const float4 *sides = voxel_side + VCT_VOXEL_SIDE_FLOAT4S * v;
+                const int behind = dot(sides[1].xyz, dir) > 0.0f;
+                colour.xyz = voxel_radiance[v].xyz - (behind ? sides[0].xyz : (float3)(0.0f));
+            } else {
+                colour.xyz = voxel_albedo[v].xyz * shade + voxel_emission[v].xyz;
+            }
             break;
         }
         /* Empty at `level` (or an empty leaf): leave that node's cell. */

@@ -303,6 +303,30 @@ static void two_faces(void) {
                       up - down, plane);
         }
         CHECK(bad == 0, "two faces, wound %d: %d voxels wrong", wound, bad);
+        /* The voxel view shows each face from its own side: from above the
+         * upper light's, from below the lower's (at the voxel (8, 7) the
+         * centre rays meet). */
+        REQUIRE_OK(vct_octree_build(ctx, c.voxels, &err), err);
+        for (int from_below = 0; from_below < 2; ++from_below) {
+            const float eye[3] = {8.5f, 7.5f, from_below ? 2.0f : 15.0f};
+            const float look[3] = {8.5f, 7.5f, (float)PLANE_Z}, up[3] = {0, 1, 0};
+            memcpy(c.scene->camera.position, eye, sizeof eye);
+            memcpy(c.scene->camera.look_at, look, sizeof look);
+            memcpy(c.scene->camera.up, up, sizeof up);
+            c.scene->camera.fov_y_deg = 20.0f;
+            vct_image im = {0};
+            REQUIRE_OK(vct_render_voxels(ctx, c.scene, c.voxels, 9, 9, &im, &err), err);
+            const double *at = from_below ? below : above;
+            const double d[3] = {at[0] - 8.5, at[1] - 7.5, at[2] - PLANE_Z};
+            const double dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            const double want =
+                albedo / CHECK_PI * power[from_below] * (fabs(d[2]) / dist) / (dist * dist);
+            const float got = im.rgba[4 * (4 * 9 + 4)];
+            CHECK(fabs(got - want) < 1e-4 * want,
+                  "two faces, wound %d: the voxel view from %s shows %g, expected %g", wound,
+                  from_below ? "below" : "above", got, want);
+            vct_image_free(&im);
+        }
         printf("plane lit on both faces, wound %d  %u voxels, worst relative error %.2g\n", wound,
                c.info.voxels, worst);
         case_free(&c);

@@ -34,13 +34,14 @@ int vct_render_voxels_level(vct_context *ctx, const vct_scene *s, const vct_voxe
     rc = vct_program_get(ctx, "render/voxel_render.cl", "", &p, err);
     cl_mem img = rc == VCT_OK ? vct_frame_get(ctx, stage, width, height, err) : NULL;
     cl_kernel k = img ? vct_kernel_create(ctx, p, "voxel_render", err) : NULL;
-    const cl_uint has_radiance = v->radiance != NULL;
+    const cl_uint has_radiance = v->radiance != NULL && v->side != NULL;
     cl_mem radiance = has_radiance ? v->radiance : v->emission;
+    cl_mem side = has_radiance ? v->side : v->emission; /* unread without radiance */
     const cl_uint show_level = level;
-    rc = k ? vct_set_args(err, stage, k, 0, 10, VCT_ARG_OF(cam), VCT_ARG_OF(vol),
+    rc = k ? vct_set_args(err, stage, k, 0, 11, VCT_ARG_OF(cam), VCT_ARG_OF(vol),
                           VCT_ARG_OF(v->child), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
-                          VCT_ARG_OF(v->emission), VCT_ARG_OF(radiance), VCT_ARG_OF(has_radiance),
-                          VCT_ARG_OF(show_level), VCT_ARG_OF(img))
+                          VCT_ARG_OF(v->emission), VCT_ARG_OF(radiance), VCT_ARG_OF(side),
+                          VCT_ARG_OF(has_radiance), VCT_ARG_OF(show_level), VCT_ARG_OF(img))
            : (int)err->status;
     const size_t global[2] = {(size_t)width, (size_t)height}, local[2] = {8, 8};
     if (rc == VCT_OK)
