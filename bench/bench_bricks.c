@@ -162,7 +162,7 @@ int main(void) {
                                "voxel fragments (transient)",
                                "sparse voxel octree (child pointers, tile parents)",
                                "neighbour links",
-                               "brick pool (isotropic: albedo, normal, radiance)",
+                               "brick pool (isotropic: albedo, normal, radiance, shade, plane)",
                                "full voxel octree (thesis only; not built here)"};
     for (int row = 0; row < 6; ++row) {
         printf("| %s |", mem_rows[row]);
@@ -193,14 +193,15 @@ int main(void) {
 
     printf("\n\nTime (Table 5.2), device ms; thesis in brackets\n\n");
     printf("| stage | 128^3 | 256^3 | 512^3 |\n|---|---:|---:|---:|\n");
-    const char *rows[7] = {"voxelization [thesis]",
-                           "octree with neighbour links [1st + 2nd SVO build + neighbours]",
-                           "brick creation, radiance included [brick creation]",
-                           "brick filtering (albedo, normal, radiance) [brick MIP mapping]",
-                           "light injection into the voxels [shadow map + photon storage "
-                           "+ distribution + photon MIP mapping]",
-                           "bricks + filtering + injection (goal at 256^3: < 500)",
-                           "light update: re-inject + re-filter (goal at 256^3: < 200)"};
+    const char *rows[7] = {
+        "voxelization [thesis]",
+        "octree with neighbour links [1st + 2nd SVO build + neighbours]",
+        "brick creation, radiance included [brick creation]",
+        "brick filtering (albedo, normal, radiance, shade, plane) [brick MIP mapping]",
+        "light injection into the voxels [shadow map + photon storage "
+        "+ distribution + photon MIP mapping]",
+        "bricks + filtering + injection (goal at 256^3: < 500)",
+        "light update: re-inject + re-filter (goal at 256^3: < 200)"};
     const double thesis[7][3] = {
         {30, 30, 110},
         {478 + 454 + 2, 207 + 169 + 10, 1944 + 111 + 76},
@@ -221,7 +222,8 @@ int main(void) {
         }
         printf("\n");
     }
-    printf("\nAnisotropic (6 directional radiance values at levels 0..L-2), 256^3: brick "
+    printf("\nAnisotropic (6 directional radiance values of each side at levels 0..L-2), 256^3: "
+           "brick "
            "creation %.0f ms, filtering %.0f ms, injection %.0f ms, light update "
            "%.0f ms; bricks %.1f MiB (isotropic %.1f MiB)\n",
            aniso.create, aniso.filter, aniso.inject, aniso.update, mib(aniso.bricks.pool_bytes),
