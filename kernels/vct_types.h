@@ -73,7 +73,9 @@ typedef struct vct_material_desc {
     vct_f4 albedo;   /* rgb; w = metallic */
     vct_f4 emission; /* rgb; w = roughness */
     vct_f4 specular; /* rgb; w = transmission */
-    vct_f4 extra;    /* x = ior */
+    vct_f4 extra;    /* x = ior, y = 1 + base-colour texture (0: none), z = its wrap, w = the
+                        alpha mask's threshold on the texture's alpha (cutoff / alpha
+                        factor; 0: no mask; an untextured surface's alpha is 1) */
 } vct_material_desc;
 
 /* Ray for vct_trace_rays: origin.w = tmin, direction.w = tmax. */

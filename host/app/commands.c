@@ -67,6 +67,9 @@ int cmd_info(const cli_options *opt) {
                    s->textures[m->albedo_texture - 1].height,
                    m->texture_wrap & VCT_WRAP_CLAMP_S ? "clamped" : "repeated",
                    m->texture_wrap & VCT_WRAP_CLAMP_T ? "clamped" : "repeated");
+        if (m->alpha_cutoff > 0.0f)
+            printf("  alpha mask: rays pass where %g x %s is below %g\n", m->alpha,
+                   m->albedo_texture ? "the texture's alpha" : "1", m->alpha_cutoff);
     }
     if (s->texture_count)
         printf("%u texture%s, texture coordinates %s\n", s->texture_count,

@@ -9,6 +9,7 @@
 
 /* Shared headers first: the host's include expansion takes each file once,
  * wherever it first appears, even inside a branch that is not compiled. */
+#include "accel/alpha_mask.h"
 #include "accel/bvh_node.h"
 #include "accel/hit.h"
 #include "accel/ray_tri.h"

@@ -78,7 +78,7 @@ __attribute__((always_inline)) inline int accel_trace(const accel_view *g, float
                 if (ray_triangle(&shear, g->tri_vertices[3 * tri].xyz,
                                  g->tri_vertices[3 * tri + 1].xyz, g->tri_vertices[3 * tri + 2].xyz,
                                  tmin, best, &t, &u, &v) &&
-                    t <= cell_exit + slack) {
+                    t <= cell_exit + slack && !accel_masked(g->tri_vertices, tri, u, v)) {
                     best = t;
                     found = 1;
                     hit->t = t;

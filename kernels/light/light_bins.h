@@ -110,7 +110,8 @@ inline int light_segment_visible_bins(const light_bins_view *b, const accel_view
         const uint t = b->tris[k];
         float th, u, v;
         if (ray_triangle(&shear, tri_vertices[3 * t].xyz, tri_vertices[3 * t + 1].xyz,
-                         tri_vertices[3 * t + 2].xyz, 0.0f, end, &th, &u, &v))
+                         tri_vertices[3 * t + 2].xyz, 0.0f, end, &th, &u, &v) &&
+            !accel_masked(tri_vertices, t, u, v))
             return 0;
     }
     return 1;

@@ -3,7 +3,9 @@
  * FRAGMENT_ALBEDO_SIDE^2 stratified points about the voxel's centre, in the
  * triangle's plane, is projected onto the plane; the points that land inside
  * both the triangle and the voxel are read. A fragment that none lands on
- * (a sliver through a corner) reads the point nearest the centre. */
+ * (a sliver through a corner) reads the point nearest the centre. With an
+ * alpha mask (accel/alpha_mask.h), only the points the mask keeps count for
+ * the albedo, and how many of them it keeps is the fragment's coverage. */
 #ifndef VCT_FRAGMENT_ALBEDO_H
 #define VCT_FRAGMENT_ALBEDO_H
 
@@ -14,17 +16,27 @@
 
 #define FRAGMENT_ALBEDO_SIDE 8
 
+/* Whether m's mask keeps its surface where the texture reads `texel`. */
+inline int fragment_kept(const vct_material_desc *m, float4 texel) {
+    return !(texel.w < m->extra.w);
+}
+
 /* The sum of m's albedo over the samples of triangle tri that land inside
- * it and the voxel, and their count in *inside; where none does, the albedo
- * at the triangle's point nearest the centre, with *inside 0. */
+ * it and the voxel and that its mask keeps, their count in *inside, and the
+ * share of the samples inside the mask keeps in *coverage; where none lands
+ * inside, the albedo at the triangle's point nearest the centre, with
+ * *inside 0 and *coverage whether the mask keeps that point. */
 inline float3 fragment_albedo_sum(const texture_view *tv, const vct_material_desc *m, uint tri,
                                   float3 a, float3 b, float3 c, float3 centre, float voxel,
-                                  uint *inside) {
+                                  uint *inside, float *coverage) {
     *inside = 0u;
     const float3 cr = cross(b - a, c - a);
     const float len = length(cr);
-    if ((uint)m->extra.y == 0u || !(len > 0.0f))
+    const uint texture = (uint)m->extra.y;
+    if (texture == 0u || !(len > 0.0f)) {
+        *coverage = fragment_kept(m, (float4)(1.0f)) ? 1.0f : 0.0f;
         return m->albedo.xyz;
+    }
     /* the plane's frame from its normal turned one fixed way, so that the
      * samples do not depend on the winding */
     const float3 n = axis_canonical(cr / len);
@@ -33,6 +45,7 @@ inline float3 fragment_albedo_sum(const texture_view *tv, const vct_material_des
     const float3 on_plane = centre - n * dot(centre - a, n);
     const float half_voxel = 0.5f * voxel * (1.0f + 1e-5f);
     float3 sum = (float3)(0.0f);
+    uint landed = 0u;
     for (int j = 0; j < FRAGMENT_ALBEDO_SIDE; ++j)
         for (int i = 0; i < FRAGMENT_ALBEDO_SIDE; ++i) {
             const float s = ((float)i + 0.5f) / FRAGMENT_ALBEDO_SIDE - 0.5f;
@@ -42,20 +55,33 @@ inline float3 fragment_albedo_sum(const texture_view *tv, const vct_material_des
             if (uv.x < 0.0f || uv.y < 0.0f || uv.x + uv.y > 1.0f ||
                 any(fabs(q - centre) > half_voxel))
                 continue;
-            sum += texture_albedo(tv, m, tri, uv.x, uv.y);
+            ++landed;
+            const float4 texel = texture_bilinear(tv, texture - 1u, texture_uv(tv, tri, uv.x, uv.y),
+                                                  (uint)m->extra.z);
+            if (!fragment_kept(m, texel))
+                continue;
+            sum += m->albedo.xyz * texel.xyz;
             ++*inside;
         }
-    if (*inside > 0u)
-        return sum;
+    if (landed > 0u) {
+        *coverage = (float)*inside / (float)landed;
+        if (*inside > 0u)
+            return sum;
+    }
     const float2 uv = triangle_barycentrics(triangle_nearest(centre, a, b, c), a, b, c);
-    return texture_albedo(tv, m, tri, uv.x, uv.y);
+    const float4 texel =
+        texture_bilinear(tv, texture - 1u, texture_uv(tv, tri, uv.x, uv.y), (uint)m->extra.z);
+    if (landed == 0u)
+        *coverage = fragment_kept(m, texel) ? 1.0f : 0.0f;
+    return m->albedo.xyz * texel.xyz;
 }
 
 /* The fragment's own mean (light injection shades each fragment alone). */
 inline float3 fragment_albedo(const texture_view *tv, const vct_material_desc *m, uint tri,
                               float3 a, float3 b, float3 c, float3 centre, float voxel) {
     uint inside;
-    const float3 sum = fragment_albedo_sum(tv, m, tri, a, b, c, centre, voxel, &inside);
+    float coverage;
+    const float3 sum = fragment_albedo_sum(tv, m, tri, a, b, c, centre, voxel, &inside, &coverage);
     return inside > 0u ? sum / (float)inside : sum;
 }
 

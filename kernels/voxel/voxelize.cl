@@ -228,7 +228,8 @@ inline float3 tensor_axis(normal_tensor m) {
 
 /* Averages each voxel's fragments in sorted order (deterministic): albedo
  * (each fragment's mean over its part of the voxel where its material has a
- * texture, fragment_albedo.h) and opacity (1 - transmission), emission, and the normal axis.
+ * texture, fragment_albedo.h) and opacity (1 - transmission, times the share of the fragment
+ * an alpha mask keeps), emission, and the normal axis.
  * Surfaces are two-sided, so a fragment's normal counts for its line, not its sign: the voxel's
  * normal is the axis that fits its fragments' normals best (tensor_axis), and a surface wound
  * either way, or a mix, gives it bit for bit. normal.w: how well it fits, sqrt(mean of (n .
@@ -257,20 +258,22 @@ __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_st
         const vct_material_desc mat = materials[(uint)tn.w];
         if ((uint)mat.extra.y != 0u) {
             uint inside;
+            float coverage;
             const float3 sum = fragment_albedo_sum(
                 &tv, &mat, t, vol.origin.xyz + convert_float3(tris[3u * t].xyz) * unit,
                 vol.origin.xyz + convert_float3(tris[3u * t + 1u].xyz) * unit,
                 vol.origin.xyz + convert_float3(tris[3u * t + 2u].xyz) * unit, centre, voxel,
-                &inside);
+                &inside, &coverage);
             if (inside > 0u)
                 textured += sum;
             else
                 touching += sum;
             covered += inside;
             ++textured_fragments;
-            albedo.w += 1.0f - mat.specular.w;
+            albedo.w += (1.0f - mat.specular.w) * coverage;
         } else {
-            albedo += (float4)(mat.albedo.xyz, 1.0f - mat.specular.w);
+            const float kept = fragment_kept(&mat, (float4)(1.0f)) ? 1.0f : 0.0f;
+            albedo += (float4)(mat.albedo.xyz, (1.0f - mat.specular.w) * kept);
         }
         emission += mat.emission.xyz;
         m.d += tn.xyz * tn.xyz;

@@ -119,7 +119,8 @@ static void check_hierarchy(void) {
 
 /* glTF materials as authored: emissiveFactor times
  * KHR_materials_emissive_strength (which assimp 5.2 leaves out), and
- * transmission with its ior, metallic and roughness factors. */
+ * transmission with its ior, metallic and roughness factors; alpha masks
+ * (alphaMode MASK with its cutoff, BLEND read as MASK at 0.5, OPAQUE none). */
 static const char *gltf_materials =
     "{\"asset\":{\"version\":\"2.0\"},"
     "\"extensionsUsed\":[\"KHR_materials_emissive_strength\",\"KHR_materials_transmission\","
@@ -131,12 +132,17 @@ static const char *gltf_materials =
     "\"extensions\":{\"KHR_materials_transmission\":{\"transmissionFactor\":1},"
     "\"KHR_materials_ior\":{\"ior\":1.33}}},"
     "{\"name\":\"gold\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[1,0.8,0.3,1],"
-    "\"metallicFactor\":1,\"roughnessFactor\":0.35}}],"
-    "\"scene\":0,\"scenes\":[{\"nodes\":[0,1,2]}],"
-    "\"nodes\":[{\"mesh\":0},{\"mesh\":1},{\"mesh\":2}],"
+    "\"metallicFactor\":1,\"roughnessFactor\":0.35}},"
+    "{\"name\":\"leaves\",\"alphaMode\":\"MASK\",\"alphaCutoff\":0.3,"
+    "\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.2,0.6,0.1,0.8]}},"
+    "{\"name\":\"veil\",\"alphaMode\":\"BLEND\"}],"
+    "\"scene\":0,\"scenes\":[{\"nodes\":[0,1,2,3,4]}],"
+    "\"nodes\":[{\"mesh\":0},{\"mesh\":1},{\"mesh\":2},{\"mesh\":3},{\"mesh\":4}],"
     "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":0}]},"
     "{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":1}]},"
-    "{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":2}]}],"
+    "{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":2}]},"
+    "{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":3}]},"
+    "{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"material\":4}]}],"
     "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
     "\"min\":[0,0,0],\"max\":[1,1,0]}],"
     "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
@@ -166,6 +172,17 @@ static void check_materials(void) {
               near(gold->albedo[1], 0.8f, 1e-6f),
           "gold: metallic %g, roughness %g, base colour g %g", gold ? gold->metallic : -1,
           gold ? gold->roughness : -1, gold ? gold->albedo[1] : -1);
+    const vct_material *leaves = named(s, "leaves"), *veil = named(s, "veil");
+    CHECK(leaves && near(leaves->alpha_cutoff, 0.3f, 1e-6f) && near(leaves->alpha, 0.8f, 1e-6f) &&
+              near(leaves->transmission, 0.0f, 0.0f),
+          "leaves: alpha cutoff %g, alpha %g, transmission %g (a mask's alpha is no "
+          "transmission)",
+          leaves ? leaves->alpha_cutoff : -1, leaves ? leaves->alpha : -1,
+          leaves ? leaves->transmission : -1);
+    CHECK(veil && near(veil->alpha_cutoff, 0.5f, 1e-6f), "veil (BLEND): alpha cutoff %g",
+          veil ? veil->alpha_cutoff : -1);
+    CHECK(gold && gold->alpha_cutoff == 0.0f, "gold (OPAQUE): alpha cutoff %g",
+          gold ? gold->alpha_cutoff : -1);
     vct_scene_free(s);
 }
 

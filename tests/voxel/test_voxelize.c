@@ -12,9 +12,9 @@
 static vct_context *ctx;
 
 static const vct_material test_materials[3] = {
-    {"red", {0.9f, 0.1f, 0.1f}, {0, 0, 0}, {0, 0, 0}, 0, 1, 0, 1.5f, 0, 0},
-    {"lamp", {0.5f, 0.5f, 0.5f}, {4, 3, 2}, {0, 0, 0}, 0, 1, 0, 1.5f, 0, 0},
-    {"glass", {0.2f, 0.6f, 0.9f}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0.75f, 1.5f, 0, 0},
+    {"red", {0.9f, 0.1f, 0.1f}, {0, 0, 0}, {0, 0, 0}, 0, 1, 0, 1.5f, 0, 0, 1, 0},
+    {"lamp", {0.5f, 0.5f, 0.5f}, {4, 3, 2}, {0, 0, 0}, 0, 1, 0, 1.5f, 0, 0, 1, 0},
+    {"glass", {0.2f, 0.6f, 0.9f}, {0, 0, 0}, {0, 0, 0}, 0, 0, 0.75f, 1.5f, 0, 0, 1, 0},
 };
 
 static vct_scene *scene_of(const float *pos, uint32_t nv, const uint32_t *tri, uint32_t nt) {

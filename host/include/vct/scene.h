@@ -25,6 +25,12 @@ typedef struct vct_material {
      * multiplies `albedo` (glTF's baseColorFactor). */
     uint32_t albedo_texture;
     uint32_t texture_wrap; /* VCT_WRAP_CLAMP_S | VCT_WRAP_CLAMP_T; else repeat */
+    /* Alpha mask (glTF alphaMode MASK; BLEND, which is not blended, is read
+     * as MASK at 0.5): every ray passes the surface where `alpha` (glTF's
+     * baseColorFactor alpha) times the base-colour texture's alpha is below
+     * `alpha_cutoff`. 0: no mask, the surface is opaque. */
+    float alpha;
+    float alpha_cutoff;
 } vct_material;
 
 #define VCT_WRAP_CLAMP_S 1u

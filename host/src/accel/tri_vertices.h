@@ -14,7 +14,9 @@ typedef struct vct_scene_frame {
 
 void vct_scene_frame_of(const vct_scene *s, vct_scene_frame *f);
 
-/* 3 float4 per triangle (xyz; w = 0), in the scene's order. */
+/* 3 float4 per triangle (xyz; w: 0, or a masked triangle's mask record),
+ * in the scene's order, then the alpha masks' block when the scene has
+ * masked materials (kernels/accel/alpha_mask.h). */
 int vct_tri_vertices_upload(vct_context *ctx, const vct_scene *s, const char *stage, cl_mem *out,
                             vct_error *err);
 

@@ -14,6 +14,7 @@ vct_material vct_material_default(void) {
     m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.8f;
     m.roughness = 1.0f;
     m.ior = 1.5f;
+    m.alpha = 1.0f;
     return m;
 }
 
@@ -97,6 +98,12 @@ int vct_scene_validate(vct_scene *s, vct_error *err) {
             !isfinite(mat->roughness) || !isfinite(mat->ior))
             return vct_fail(err, VCT_ERR_INPUT, "scene %s: material %u (%s) has a non-finite value",
                             src, m, mat->name);
+        if (!(mat->alpha_cutoff >= 0.0f && mat->alpha_cutoff <= 1.0f) ||
+            (mat->alpha_cutoff > 0.0f && !(mat->alpha >= 0.0f && mat->alpha <= 1.0f)))
+            return vct_fail(err, VCT_ERR_INPUT,
+                            "scene %s: material %u (%s) has alpha %g and alpha cutoff %g: give "
+                            "both in [0, 1]",
+                            src, m, mat->name, mat->alpha, mat->alpha_cutoff);
         if (mat->albedo_texture > s->texture_count)
             return vct_fail(err, VCT_ERR_INPUT,
                             "scene %s: material %u (%s) uses texture %u but there are only %u", src,

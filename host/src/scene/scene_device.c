@@ -69,6 +69,9 @@ void vct_material_desc_make(const vct_material *m, vct_material_desc *d) {
     d->extra.s[0] = m->ior;
     d->extra.s[1] = (float)m->albedo_texture; /* exact: far below 2^24 */
     d->extra.s[2] = (float)m->texture_wrap;
+    /* masked where alpha * texture alpha < cutoff, that is texture alpha < cutoff / alpha */
+    if (m->alpha_cutoff > 0.0f)
+        d->extra.s[3] = m->alpha > 0.0f ? m->alpha_cutoff / m->alpha : INFINITY;
 }
 
 /* The texture buffers of b (see scene_device.h). */

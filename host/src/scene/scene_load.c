@@ -1,6 +1,7 @@
 /* Scene files through assimp: the node tree is flattened with its transforms
  * into flat arrays; materials, cameras and punctual lights are converted to
  * the engine's conventions (linear radiance, W/sr, irradiance). */
+#include <assimp/GltfMaterial.h>
 #include <assimp/cimport.h>
 #include <assimp/light.h>
 #include <assimp/material.h>
@@ -270,6 +271,15 @@ static int read_materials(const struct aiScene *sc, const char *path, vct_scene 
             m->albedo[0] = c.r;
             m->albedo[1] = c.g;
             m->albedo[2] = c.b;
+            m->alpha = c.a;
+        }
+        struct aiString mode;
+        if (aiGetMaterialString(am, AI_MATKEY_GLTF_ALPHAMODE, &mode) == aiReturn_SUCCESS &&
+            (strcmp(mode.data, "MASK") == 0 || strcmp(mode.data, "BLEND") == 0)) {
+            float cutoff = 0.5f;
+            if (strcmp(mode.data, "MASK") == 0)
+                aiGetMaterialFloatArray(am, AI_MATKEY_GLTF_ALPHACUTOFF, &cutoff, NULL);
+            m->alpha_cutoff = cutoff;
         }
         float scale = 1.0f;
         aiGetMaterialFloatArray(am, AI_MATKEY_EMISSIVE_INTENSITY, &scale, NULL);
@@ -297,8 +307,9 @@ static int read_materials(const struct aiScene *sc, const char *path, vct_scene 
         if (aiGetMaterialFloatArray(am, AI_MATKEY_TRANSMISSION_FACTOR, &f, NULL) ==
             aiReturn_SUCCESS)
             m->transmission = f;
-        else if (aiGetMaterialFloatArray(am, AI_MATKEY_OPACITY, &f, NULL) == aiReturn_SUCCESS &&
-                 f < 1.0f)
+        else if (m->alpha_cutoff == 0.0f &&
+                 aiGetMaterialFloatArray(am, AI_MATKEY_OPACITY, &f, NULL) == aiReturn_SUCCESS &&
+                 f < 1.0f) /* a mask's alpha is its own, not transmission */
             m->transmission = 1.0f - f;
         /* A missing texture of any kind is a broken scene (base colour is read
          * by scene_textures.c; the others are not used yet). */
