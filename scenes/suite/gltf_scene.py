@@ -1,28 +1,55 @@
 """A small glTF 2.0 writer for the scene suite: meshes made of quads and
 triangles, one material each (metallic-roughness, emission with
 KHR_materials_emissive_strength, KHR_materials_transmission and
-KHR_materials_ior), a perspective camera and KHR_lights_punctual lights, all
-in one .gltf file with its buffer embedded (base64)."""
+KHR_materials_ior, a base-colour texture with an alpha mask), a perspective
+camera and KHR_lights_punctual lights, all in one .gltf file with its buffer
+and images embedded (base64)."""
 import base64
 import json
 import math
 import struct
+import zlib
+
+
+def png_rgba(width, height, pixel):
+    """A PNG of width x height RGBA8 pixels, pixel(x, y) -> 4 ints, row 0 at the top."""
+    rows = bytearray()
+    for y in range(height):
+        rows.append(0)  # no filter
+        for x in range(width):
+            rows.extend(pixel(x, y))
+
+    def chunk(kind, data):
+        body = kind + data
+        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body))
+
+    return (b"\x89PNG\r\n\x1a\n"
+            + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(bytes(rows))) + chunk(b"IEND", b""))
 
 
 class Scene:
     def __init__(self):
         self.materials = []
-        self.meshes = []  # (material index, positions, indices)
+        self.images = []  # PNG bytes
+        self.meshes = []  # (material index, positions, indices, texture coordinates or None)
         self.lights = []
         self.camera = None
 
     def material(self, name, color, roughness=1.0, metallic=0.0, emission=None,
-                 strength=1.0, transmission=0.0, ior=1.5):
+                 strength=1.0, transmission=0.0, ior=1.5, texture=None, alpha_cutoff=None):
+        """texture: PNG bytes for the base colour; alpha_cutoff: alphaMode MASK."""
         m = {"name": name,
              "pbrMetallicRoughness": {"baseColorFactor": [*color, 1.0],
                                       "metallicFactor": metallic,
                                       "roughnessFactor": roughness},
              "doubleSided": True}
+        if texture is not None:
+            self.images.append(texture)
+            m["pbrMetallicRoughness"]["baseColorTexture"] = {"index": len(self.images) - 1}
+        if alpha_cutoff is not None:
+            m["alphaMode"] = "MASK"
+            m["alphaCutoff"] = alpha_cutoff
         ext = {}
         if emission:
             m["emissiveFactor"] = list(emission)
@@ -36,18 +63,21 @@ class Scene:
         self.materials.append(m)
         return len(self.materials) - 1
 
-    def mesh(self, material, positions, indices):
+    def mesh(self, material, positions, indices, uvs=None):
         if indices:
-            self.meshes.append((material, list(positions), list(indices)))
+            self.meshes.append((material, list(positions), list(indices),
+                                list(uvs) if uvs else None))
 
-    def quads(self, material, quads):
-        """Each quad: four corners in order around it."""
-        pos, idx = [], []
+    def quads(self, material, quads, textured=False):
+        """Each quad: four corners in order around it; textured: the texture
+        over it once, (0, 0) at its first corner, (1, 0) at its second."""
+        pos, idx, uvs = [], [], []
         for q in quads:
             base = len(pos)
             pos.extend(q)
+            uvs.extend([(0, 0), (1, 0), (1, 1), (0, 1)])
             idx.extend([base, base + 1, base + 2, base, base + 2, base + 3])
-        self.mesh(material, pos, idx)
+        self.mesh(material, pos, idx, uvs if textured else None)
 
     def box(self, material, lo, hi, skip=()):
         """An axis-aligned box as six quads (faces named -x +x -y +y -z +z
@@ -96,7 +126,7 @@ class Scene:
     def write(self, path):
         blob = bytearray()
         accessors, views, meshes, nodes = [], [], [], []
-        for material, pos, idx in self.meshes:
+        for material, pos, idx, uvs in self.meshes:
             lo = [min(p[k] for p in pos) for k in range(3)]
             hi = [max(p[k] for p in pos) for k in range(3)]
             offset = len(blob)
@@ -111,8 +141,18 @@ class Scene:
             views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
             accessors.append({"bufferView": len(views) - 1, "componentType": 5125,
                               "count": len(idx), "type": "SCALAR"})
-            meshes.append({"primitives": [{"attributes": {"POSITION": len(accessors) - 2},
-                                           "indices": len(accessors) - 1,
+            attributes = {"POSITION": len(accessors) - 2}
+            indices = len(accessors) - 1
+            if uvs:
+                offset = len(blob)
+                for uv in uvs:
+                    blob += struct.pack("<2f", *uv)
+                views.append({"buffer": 0, "byteOffset": offset,
+                              "byteLength": len(blob) - offset})
+                accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
+                                  "count": len(uvs), "type": "VEC2"})
+                attributes["TEXCOORD_0"] = len(accessors) - 1
+            meshes.append({"primitives": [{"attributes": attributes, "indices": indices,
                                            "material": material}]})
             nodes.append({"mesh": len(meshes) - 1})
         gltf = {"asset": {"version": "2.0", "generator": "vct scenes/suite"},
@@ -121,6 +161,10 @@ class Scene:
                 "buffers": [{"byteLength": len(blob),
                              "uri": "data:application/octet-stream;base64,"
                                     + base64.b64encode(bytes(blob)).decode()}]}
+        if self.images:
+            gltf["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}
+                              for png in self.images]
+            gltf["textures"] = [{"source": i} for i in range(len(self.images))]
         used = {"KHR_lights_punctual"} if self.lights else set()
         for m in self.materials:
             used |= set(m.get("extensions", {}).keys())

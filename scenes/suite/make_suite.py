@@ -8,7 +8,8 @@ glTF file cannot hold, is given as --ambient).
   window_room       a closed room lit through one window by the sun and sky
   glass_mirror_box  a box lit by its emissive ceiling panel alone, with a glass
                     sphere, a mirror sphere and a glossy block
-  blinds_fins       a room behind half-open blinds and thin fins, sun-lit
+  blinds_fins       a room behind half-open blinds, thin fins and a plant of
+                    cut-out leaves (an alpha-masked texture), sun-lit
   dense_hall        a 10^5-triangle bumpy sphere in a large hall, one lamp
   lamp_room         a living room lit by two emissive lamp shades and a
                     small point light, single-quad furniture wound either way
@@ -20,7 +21,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gltf_scene import Scene  # noqa: E402
+from gltf_scene import Scene, png_rgba  # noqa: E402
 
 OUT = os.path.dirname(os.path.abspath(__file__))
 STONE = (0.62, 0.58, 0.5)
@@ -144,9 +145,39 @@ def blinds_fins():
         x = 1.0 + 0.5 * i
         q = [(x, 0, 3.0), (x, 1.4, 3.0), (x, 1.4, 4.6), (x, 0, 4.6)]
         s.quads(fin, [q if i % 2 else q[::-1]])
+    # a plant of cut-out leaves: quads whose texture's alpha masks all but
+    # three leaf shapes (alphaMode MASK), crossing at its stem
+    leaves = s.material("leaves", (1.0, 1.0, 1.0), texture=leaf_texture(), alpha_cutoff=0.5)
+    cx, cz = 4.9, 1.9
+    sprites = []
+    for k in range(6):
+        a = math.pi * k / 6
+        dx, dz = 0.45 * math.cos(a), 0.45 * math.sin(a)
+        lo, hi = 0.25 + 0.1 * (k % 2), 1.25 + 0.1 * (k % 3)
+        sprites.append([(cx - dx, lo, cz - dz), (cx + dx, lo, cz + dz),
+                        (cx + dx, hi, cz + dz), (cx - dx, hi, cz - dz)])
+    s.quads(leaves, sprites, textured=True)
     s.sun((0.2, -0.5, 0.84), 7.0, (1.0, 0.95, 0.85))
     s.look((5.5, 2.2, 5.7), (2.5, 0.8, 1.5), 62)
     s.write(os.path.join(OUT, "blinds_fins.gltf"))
+
+
+def leaf_texture(size=64):
+    """Three leaves (ellipses) on nothing: green where a leaf is, alpha 0
+    elsewhere; row 0 at the top, v = 0 at the quad's foot."""
+    shapes = [(0.3, 0.35, 0.14, 0.3, 0.5), (0.68, 0.45, 0.13, 0.3, -0.4),
+              (0.5, 0.75, 0.12, 0.22, 0.1)]
+
+    def pixel(x, y):
+        u, v = (x + 0.5) / size, (y + 0.5) / size
+        for cu, cv, a, b, turn in shapes:
+            du, dv = u - cu, v - cv
+            ru = du * math.cos(turn) + dv * math.sin(turn)
+            rv = -du * math.sin(turn) + dv * math.cos(turn)
+            if (ru / a) ** 2 + (rv / b) ** 2 <= 1.0:
+                return (70, 140, 45, 255)
+        return (70, 140, 45, 0)
+    return png_rgba(size, size, pixel)
 
 
 def dense_hall():
