@@ -68,14 +68,16 @@ class Scene:
             self.meshes.append((material, list(positions), list(indices),
                                 list(uvs) if uvs else None))
 
-    def quads(self, material, quads, textured=False):
+    def quads(self, material, quads, textured=False, repeat=(1, 1)):
         """Each quad: four corners in order around it; textured: the texture
-        over it once, (0, 0) at its first corner, (1, 0) at its second."""
+        over it repeat[0] x repeat[1] times, (0, 0) at its first corner,
+        (repeat[0], 0) at its second."""
         pos, idx, uvs = [], [], []
+        ru, rv = repeat
         for q in quads:
             base = len(pos)
             pos.extend(q)
-            uvs.extend([(0, 0), (1, 0), (1, 1), (0, 1)])
+            uvs.extend([(0, 0), (ru, 0), (ru, rv), (0, rv)])
             idx.extend([base, base + 1, base + 2, base, base + 2, base + 3])
         self.mesh(material, pos, idx, uvs if textured else None)
 

@@ -15,6 +15,8 @@ glTF file cannot hold, is given as --ambient).
                     small point light, single-quad furniture wound either way
   small_objects     200 beads of 1.5 cm (diffuse, mirror and glass) before a
                     wall under a point light: a few pixels each on screen
+  textured_room     a room with a parquet floor and striped wallpaper
+                    (base-colour textures), a table and a lamp
 """
 import math
 import os
@@ -162,6 +164,49 @@ def blinds_fins():
     s.write(os.path.join(OUT, "blinds_fins.gltf"))
 
 
+def textured_room():
+    s = Scene()
+    parquet = s.material("parquet", (1.0, 1.0, 1.0), texture=parquet_texture())
+    paper = s.material("wallpaper", (1.0, 1.0, 1.0), texture=stripes_texture())
+    ceiling = s.material("ceiling", PLASTER)
+    wood = s.material("table", (0.45, 0.3, 0.2))
+    w, h, d = 5.0, 2.8, 4.0
+    s.quads(parquet, [[(0, 0, 0), (0, 0, d), (w, 0, d), (w, 0, 0)]], textured=True,
+            repeat=(4, 5))
+    s.quads(paper, [[(0, 0, 0), (w, 0, 0), (w, h, 0), (0, h, 0)],
+                    [(w, 0, d), (0, 0, d), (0, h, d), (w, h, d)],
+                    [(0, 0, d), (0, 0, 0), (0, h, 0), (0, h, d)],
+                    [(w, 0, 0), (w, 0, d), (w, h, d), (w, h, 0)]], textured=True,
+            repeat=(6, 2))
+    s.quads(ceiling, [[(0, h, 0), (w, h, 0), (w, h, d), (0, h, d)]])
+    s.box(wood, (1.8, 0.7, 1.4), (3.2, 0.76, 2.4))
+    for x, z in ((1.85, 1.45), (3.1, 1.45), (1.85, 2.3), (3.1, 2.3)):
+        s.box(wood, (x, 0, z), (x + 0.05, 0.7, z + 0.05))
+    s.point_light((2.5, 2.5, 2.0), 25.0, (1.0, 0.9, 0.75))
+    s.look((4.6, 1.6, 3.7), (1.2, 0.6, 0.6), 65)
+    s.write(os.path.join(OUT, "textured_room.gltf"))
+
+
+def parquet_texture(size=64):
+    """Planks: four rows of boards, each its own shade of brown."""
+    def pixel(x, y):
+        row = y * 4 // size
+        board = (x + (row % 2) * size // 4) * 2 // size
+        shade = 0.75 + 0.25 * (((row * 7 + board * 3) % 5) / 4.0)
+        grain = 0.92 + 0.08 * math.sin(0.9 * x + 3.0 * row)
+        edge = 0.6 if y % (size // 4) == 0 else 1.0
+        f = shade * grain * edge
+        return (int(180 * f), int(120 * f), int(70 * f), 255)
+    return png_rgba(size, size, pixel)
+
+
+def stripes_texture(size=64):
+    """Wallpaper: pale stripes of two colours."""
+    def pixel(x, y):
+        return (210, 200, 170, 255) if (x * 4 // size) % 2 else (150, 170, 190, 255)
+    return png_rgba(size, size, pixel)
+
+
 def leaf_texture(size=64):
     """Three leaves (ellipses) on nothing: green where a leaf is, alpha 0
     elsewhere; row 0 at the top, v = 0 at the quad's foot."""
@@ -258,6 +303,6 @@ def small_objects():
 
 if __name__ == "__main__":
     for make in (atrium, window_room, glass_mirror_box, blinds_fins, dense_hall, lamp_room,
-                 small_objects):
+                 small_objects, textured_room):
         make()
         print("wrote", make.__name__)
