@@ -66,9 +66,9 @@ typedef struct cone_result {
  *    no say about a sunlit wall beside it;
  *  - at an object's convex edge, a mean plane through both faces puts an
  *    origin that sees one face from before it, beside the other, behind:
- *    such views see the darker side (measured: the atrium's columns come
- *    out 0.83 of the reference's mean; a test of how deep the space behind
- *    reaches mended that, 0.90, but let more light into the window room). */
+ *    such views see the darker side: what darkens the atrium's columns and
+ *    the Cornell box's blocks (README, "The scene suite", with what was
+ *    tried against it). */
 #define SIDE_TOLERANCE 0.05f
 #define SIDE_COHERENT_MIN 0.3f
 #define SIDE_COHERENT_FULL 0.7f
