@@ -99,7 +99,7 @@ __kernel void bvh_leaves(__global const float4 *tri_vertices, __global const uin
     const uint t = ids[j];
     const float4 a = tri_vertices[3 * t], b = tri_vertices[3 * t + 1], c = tri_vertices[3 * t + 2];
     leaf_vertices[3 * j] = (float4)(a.xyz, as_float(t));
-    leaf_vertices[3 * j + 1] = (float4)(b.xyz, 0.0f);
+    leaf_vertices[3 * j + 1] = (float4)(b.xyz, a.w); /* the alpha-mask slot, alpha_mask.h */
     leaf_vertices[3 * j + 2] = (float4)(c.xyz, 0.0f);
     const uint slot = bvh_box_slot(BVH_LEAF | j, n);
     boxes[2 * slot] = (float4)(fmin(a.xyz, fmin(b.xyz, c.xyz)) - pad, 0.0f);

@@ -130,10 +130,11 @@ __attribute__((noinline)) int accel_trace(const accel_view *g, float3 org, float
                     continue;
                 /* In order, as one at a time would take them. */
                 const int4 ids = as_int4((float4)(a0.w, a1.w, a2.w, a3.w));
+                const int4 masks = as_int4((float4)(b0.w, b1.w, b2.w, b3.w));
                 for (int k = 0; k < 4; ++k) {
                     const float t = lane_get(h.t, k);
                     if (lane_geti(h.hit, k) && t <= best &&
-                        !accel_masked(g->tri_vertices, (uint)lane_geti(ids, k), lane_get(h.u, k),
+                        !accel_masked(g->tri_vertices, (uint)lane_geti(masks, k), lane_get(h.u, k),
                                       lane_get(h.v, k))) {
                         best = t;
                         found = 1;

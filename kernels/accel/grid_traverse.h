@@ -74,11 +74,11 @@ __attribute__((always_inline)) inline int accel_trace(const accel_view *g, float
             const uint2 range = vload2(index, g->cell_ranges);
             for (uint i = range.x; i < range.y; ++i) {
                 const uint tri = g->tri_ids[i];
+                const float4 a = g->tri_vertices[3 * tri]; /* w: the alpha-mask slot */
                 float t, u, v;
-                if (ray_triangle(&shear, g->tri_vertices[3 * tri].xyz,
-                                 g->tri_vertices[3 * tri + 1].xyz, g->tri_vertices[3 * tri + 2].xyz,
-                                 tmin, best, &t, &u, &v) &&
-                    t <= cell_exit + slack && !accel_masked(g->tri_vertices, tri, u, v)) {
+                if (ray_triangle(&shear, a.xyz, g->tri_vertices[3 * tri + 1].xyz,
+                                 g->tri_vertices[3 * tri + 2].xyz, tmin, best, &t, &u, &v) &&
+                    t <= cell_exit + slack && !accel_masked(g->tri_vertices, as_uint(a.w), u, v)) {
                     best = t;
                     found = 1;
                     hit->t = t;

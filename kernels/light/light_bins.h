@@ -109,9 +109,10 @@ inline int light_segment_visible_bins(const light_bins_view *b, const accel_view
             return 1; /* this triangle and all after it lie beyond o */
         const uint t = b->tris[k];
         float th, u, v;
-        if (ray_triangle(&shear, tri_vertices[3 * t].xyz, tri_vertices[3 * t + 1].xyz,
-                         tri_vertices[3 * t + 2].xyz, 0.0f, end, &th, &u, &v) &&
-            !accel_masked(tri_vertices, t, u, v))
+        const float4 a = tri_vertices[3 * t]; /* w: the alpha-mask slot */
+        if (ray_triangle(&shear, a.xyz, tri_vertices[3 * t + 1].xyz, tri_vertices[3 * t + 2].xyz,
+                         0.0f, end, &th, &u, &v) &&
+            !accel_masked(tri_vertices, as_uint(a.w), u, v))
             return 0;
     }
     return 1;
