@@ -54,8 +54,9 @@ inline void side_cube_add(side_cube *c, float3 m, float3 l) {
 }
 
 /* What leaves on the side n points to (*toward) and on the other (*away):
- * each axis direction's light by how far it faces n, all of it from 60
- * degrees on, half where it lies in the plane. */
+ * each axis direction's light by how far it faces n: all of it within 60
+ * degrees of n, half where it lies in the plane, none within 60 degrees of
+ * -n. */
 inline void side_cube_split(const side_cube *c, float3 n, float3 *toward, float3 *away) {
     const float3 axes[6] = {(float3)(1.0f, 0.0f, 0.0f),  (float3)(0.0f, 1.0f, 0.0f),
                             (float3)(0.0f, 0.0f, 1.0f),  (float3)(-1.0f, 0.0f, 0.0f),
