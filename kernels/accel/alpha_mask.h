@@ -13,34 +13,20 @@
  *   material m (2 float4)    uint4 (first alpha, width, height, wrap), (alpha, cutoff, 0, 0);
  *                            width 0: no texture, the alpha alone
  *   texels                   the textures' alpha, one float each, rows from the top
- * Texture coordinates and filtering are texture.h's: bilinear between texel
- * centres, repeat or clamp per axis. */
+ * Texture coordinates and filtering are texture.h's (texel_taps_at). */
 #ifndef VCT_ALPHA_MASK_H
 #define VCT_ALPHA_MASK_H
 
+#include "scene/texture.h"
 #include "vct_types.h"
-
-inline int mask_wrap(int i, int n, int clamp_axis) {
-    if (clamp_axis)
-        return clamp(i, 0, n - 1);
-    const int m = i % n;
-    return m < 0 ? m + n : m;
-}
 
 /* Bilinear alpha of a texture (first, width, height, wrap) at uv. */
 inline float mask_alpha_at(__global const float *alpha, uint4 tex, float2 uv) {
-    const int w = (int)tex.y, h = (int)tex.z;
-    const float x = uv.x * (float)w - 0.5f, y = uv.y * (float)h - 0.5f;
-    const float fx = floor(x), fy = floor(y);
-    const float ax = x - fx, ay = y - fy;
-    const int x0 = (int)fmod(fx, (float)(w * 1024)), y0 = (int)fmod(fy, (float)(h * 1024));
-    const int cs = (tex.w & 1u) != 0u, ct = (tex.w & 2u) != 0u;
-    const int xa = mask_wrap(x0, w, cs), xb = mask_wrap(x0 + 1, w, cs);
-    const int ya = mask_wrap(y0, h, ct), yb = mask_wrap(y0 + 1, h, ct);
+    const texel_taps k = texel_taps_at((int)tex.y, (int)tex.z, tex.w, uv);
     __global const float *p = alpha + tex.x;
-    const float top = mix(p[ya * w + xa], p[ya * w + xb], ax);
-    const float bottom = mix(p[yb * w + xa], p[yb * w + xb], ax);
-    return mix(top, bottom, ay);
+    const float top = mix(p[k.top_left], p[k.top_right], k.ax);
+    const float bottom = mix(p[k.bottom_left], p[k.bottom_right], k.ax);
+    return mix(top, bottom, k.ay);
 }
 
 /* accel_masked's test of a masked triangle. Not inlined: inside the

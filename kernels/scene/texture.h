@@ -26,23 +26,41 @@ inline int texel_wrap(int i, int n, int clamp_axis) {
     return m < 0 ? m + n : m;
 }
 
-/* Texture t (0-based) at uv: texel centres at (i + 1/2) / size, bilinear
- * between the four around uv. */
-inline float4 texture_bilinear(const texture_view *tv, uint t, float2 uv, uint wrap) {
-    const uint4 e = tv->table[t];
-    const int w = (int)e.y, h = (int)e.z;
+/* The four texels (row-major indices) a bilinear sample of a w x h texture
+ * at uv reads, and the fractions between them: texel centres at
+ * (i + 1/2) / size, wrapping by repeat or clamp per axis (wrap bits 1: s,
+ * 2: t). */
+typedef struct texel_taps {
+    int top_left, top_right, bottom_left, bottom_right;
+    float ax, ay;
+} texel_taps;
+
+inline texel_taps texel_taps_at(int w, int h, uint wrap, float2 uv) {
     const float x = uv.x * (float)w - 0.5f, y = uv.y * (float)h - 0.5f;
     const float fx = floor(x), fy = floor(y);
-    const float ax = x - fx, ay = y - fy;
     /* large uv: keep the integer part in range before converting */
     const int x0 = (int)fmod(fx, (float)(w * 1024)), y0 = (int)fmod(fy, (float)(h * 1024));
     const int cs = (wrap & 1u) != 0u, ct = (wrap & 2u) != 0u;
     const int xa = texel_wrap(x0, w, cs), xb = texel_wrap(x0 + 1, w, cs);
     const int ya = texel_wrap(y0, h, ct), yb = texel_wrap(y0 + 1, h, ct);
+    texel_taps t;
+    t.top_left = ya * w + xa;
+    t.top_right = ya * w + xb;
+    t.bottom_left = yb * w + xa;
+    t.bottom_right = yb * w + xb;
+    t.ax = x - fx;
+    t.ay = y - fy;
+    return t;
+}
+
+/* Texture t (0-based) at uv, bilinear between the four texels around it. */
+inline float4 texture_bilinear(const texture_view *tv, uint t, float2 uv, uint wrap) {
+    const uint4 e = tv->table[t];
+    const texel_taps k = texel_taps_at((int)e.y, (int)e.z, wrap, uv);
     __global const float4 *p = tv->texels + e.x;
-    const float4 top = mix(p[ya * w + xa], p[ya * w + xb], ax);
-    const float4 bottom = mix(p[yb * w + xa], p[yb * w + xb], ax);
-    return mix(top, bottom, ay);
+    const float4 top = mix(p[k.top_left], p[k.top_right], k.ax);
+    const float4 bottom = mix(p[k.bottom_left], p[k.bottom_right], k.ax);
+    return mix(top, bottom, k.ay);
 }
 
 /* The texture coordinates of triangle tri at barycentrics (u, v). */

@@ -36,39 +36,9 @@ static inline ref_lattice ref_lattice_new(uint32_t n) {
     return l;
 }
 
-/* voxel_of[(z * res + y) * res + x]: voxel index or -1. value: per voxel
- * xyz (not premultiplied); opacity: per voxel. */
-static inline ref_lattice ref_leaf_lattice(uint32_t res, const int32_t *voxel_of,
-                                           const float *value, const float *opacity) {
-    ref_lattice l = ref_lattice_new(res + 1);
-    for (int64_t z = 0; z <= res; ++z)
-        for (int64_t y = 0; y <= res; ++y)
-            for (int64_t x = 0; x <= res; ++x) {
-                double sum[4] = {0, 0, 0, 0};
-                int found = 0;
-                for (int64_t vz = z - 1; vz <= z; ++vz)
-                    for (int64_t vy = y - 1; vy <= y; ++vy)
-                        for (int64_t vx = x - 1; vx <= x; ++vx) {
-                            if (vx < 0 || vy < 0 || vz < 0 || vx >= res || vy >= res || vz >= res)
-                                continue;
-                            const int32_t v = voxel_of[(vz * res + vy) * res + vx];
-                            if (v < 0)
-                                continue;
-                            const double a = opacity[v];
-                            for (int k = 0; k < 3; ++k)
-                                sum[k] += a * (value ? value[4 * v + k] : 0.0f);
-                            sum[3] += a;
-                            ++found;
-                        }
-                float *p = ref_at(&l, x, y, z);
-                for (int k = 0; k < 4 && found; ++k)
-                    p[k] = ref_half((float)(sum[k] / found));
-            }
-    return l;
-}
-
-/* The same mean for values given premultiplied, all four channels: value4
- * per voxel. */
+/* voxel_of[(z * res + y) * res + x]: voxel index or -1. A point is the mean
+ * of value4 (4 doubles per voxel, premultiplied) over the voxels with
+ * geometry among the 8 around it. */
 static inline ref_lattice ref_leaf_lattice4(uint32_t res, const int32_t *voxel_of,
                                             const double *value4) {
     ref_lattice l = ref_lattice_new(res + 1);
@@ -93,6 +63,26 @@ static inline ref_lattice ref_leaf_lattice4(uint32_t res, const int32_t *voxel_o
                 for (int k = 0; k < 4 && found; ++k)
                     p[k] = ref_half((float)(sum[k] / found));
             }
+    return l;
+}
+
+/* The same of value (per voxel xyz, not premultiplied; NULL: 0) times
+ * opacity, with the opacity in w. */
+static inline ref_lattice ref_leaf_lattice(uint32_t res, const int32_t *voxel_of,
+                                           const float *value, const float *opacity) {
+    size_t voxels = 0;
+    for (size_t i = 0; i < (size_t)res * res * res; ++i)
+        if (voxel_of[i] >= 0 && (size_t)voxel_of[i] + 1 > voxels)
+            voxels = (size_t)voxel_of[i] + 1;
+    double *value4 = malloc(32 * (voxels ? voxels : 1));
+    for (size_t v = 0; v < voxels; ++v) {
+        const double a = opacity[v];
+        for (int k = 0; k < 3; ++k)
+            value4[4 * v + k] = a * (value ? value[4 * v + k] : 0.0f);
+        value4[4 * v + 3] = a;
+    }
+    ref_lattice l = ref_leaf_lattice4(res, voxel_of, value4);
+    free(value4);
     return l;
 }
 
