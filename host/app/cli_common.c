@@ -198,6 +198,7 @@ vct_render_job cli_render_job(const cli_options *opt, vct_method method, const v
     vo->diffuse_cones = (uint32_t)opt->diffuse_cones;
     vo->cones = opt->cones;
     vo->sparse_diffuse = opt->sparse_diffuse;
+    vo->edge_samples = (uint32_t)opt->edge_samples;
     vo->aovs = opt->aov_prefix != NULL;
     return job;
 }

@@ -33,6 +33,9 @@ void cli_usage(void) {
         "                                   --sparse-diffuse: diffuse cones at every other\n"
         "                                   pixel per axis, the rest filled in from the\n"
         "                                   traced neighbours on the same surface;\n"
+        "                                   --edge-samples N: N x N camera rays at pixels on\n"
+        "                                   an edge (surface, material, hard shadow), which\n"
+        "                                   show their mean (default 4; 1: pixel centres);\n"
         "                                   --ao-distance F (of the volume, 0.125);\n"
         "                                   --bounces 1..4 light bounces in the voxels (2);\n"
         "                                   --isotropic: one radiance per brick sample\n"
@@ -253,6 +256,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
     opt->max_depth = 0; /* each method its own default */
     opt->voxel_res = 0; /* each command's own default */
     opt->diffuse_cones = 6;
+    opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
     opt->bounces = 2;
     opt->anisotropic = -1; /* render: on, voxelize: off, unless given */
     opt->cones = vct_cone_settings_default();
@@ -425,6 +429,9 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
                 return 1;
         } else if (strcmp(a, "--cones") == 0) {
             if (parse_int(argc, argv, &i, 1, 16, &opt->diffuse_cones))
+                return 1;
+        } else if (strcmp(a, "--edge-samples") == 0) {
+            if (parse_int(argc, argv, &i, 1, (int)VCT_EDGE_SAMPLES_MAX, &opt->edge_samples))
                 return 1;
         } else if (strcmp(a, "--bounces") == 0) {
             if (parse_int(argc, argv, &i, 1, 4, &opt->bounces))

@@ -46,7 +46,7 @@ typedef struct cli_options {
     /* vct method */
     int print_plan;
     vct_effect_force force[VCT_EFFECTS];
-    int diffuse_cones, bounces, sparse_diffuse;
+    int diffuse_cones, bounces, sparse_diffuse, edge_samples;
     int copy_voxels; /* several devices: one builds the voxels, the others copy them */
     int emitters_by_cones; /* --emitters cones */
     vct_cone_settings cones;

@@ -105,16 +105,20 @@ inline int emitter_visible(const accel_view *g, float3 o, float3 q) {
 
 /* Adds the emitters' light at p (normal n facing the viewer) to `sum`, as
  * direct_gather adds a punctual light's: the irradiance, and the Phong lobe
- * of exponent e about r when e >= 0. */
-inline void direct_emitters(const accel_view *g, const emitter_view *e,
-                            __global const vct_material_desc *materials,
-                            __global const uint *tri_material, float3 p, float3 n, float3 r,
-                            float exponent, uint seed, direct_terms *sum) {
+ * of exponent e about r when e >= 0. Only samples first, first + stride, ...
+ * of the stream: the rays of one pixel share its stream that way, each
+ * taking its part (the pixel's mean is then the whole stratified sum). */
+inline void direct_emitters_part(const accel_view *g, const emitter_view *e,
+                                 __global const vct_material_desc *materials,
+                                 __global const uint *tri_material, float3 p, float3 n, float3 r,
+                                 float exponent, uint seed, uint first, uint stride,
+                                 direct_terms *sum) {
     if (e->count == 0u)
         return;
+    first %= e->samples;
     const float3 o = p + n * surface_epsilon(g, p);
-    const float inv = 1.0f / (float)e->samples;
-    for (uint s = 0; s < e->samples; ++s) {
+    const float inv = 1.0f / (float)((e->samples - first + stride - 1u) / stride);
+    for (uint s = first; s < e->samples; s += stride) {
         float3 q;
         uint tri;
         const float3 radiant = emitter_sample(e, g, materials, tri_material, p, seed, s, &q, &tri);
@@ -128,6 +132,14 @@ inline void direct_emitters(const accel_view *g, const emitter_view *e,
         ++sum->emitters_seen;
         direct_add(sum, radiant * inv, cos_theta, wi, r, exponent, 1.0f);
     }
+}
+
+/* All of the stream's samples. */
+inline void direct_emitters(const accel_view *g, const emitter_view *e,
+                            __global const vct_material_desc *materials,
+                            __global const uint *tri_material, float3 p, float3 n, float3 r,
+                            float exponent, uint seed, direct_terms *sum) {
+    direct_emitters_part(g, e, materials, tri_material, p, n, r, exponent, seed, 0u, 1u, sum);
 }
 
 #endif

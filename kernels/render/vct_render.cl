@@ -2,7 +2,12 @@
  * an effect the plan leaves out enqueues nothing:
  *   vct_primary        camera rays through the acceleration structure, direct light
  *                      exactly as the ray caster computes it, emission, and
- *                      refraction through dielectrics; writes the G-buffer
+ *                      refraction through dielectrics (render/primary_sample.h);
+ *                      writes the G-buffer
+ *   vct_edge_flags, vct_primary_refine  pixels on an edge (of a surface,
+ *                      a material or a shadow) traced again with n x n rays
+ *                      each, so that the image is the pixel's mean as a
+ *                      converged reference's is, not its centre's value
  *   vct_soft_shadows   direct light of the lights with a radius, through one
  *                      cone per light as wide as the light
  *   vct_diffuse_cones  indirect diffuse light and ambient occlusion
@@ -35,9 +40,9 @@
 #include "scene/texture.h"
 #include "accel/accel.h"
 #include "voxel/cone_sky.h"
+#include "render/primary_sample.h"
 #include "vct_types.h"
 
-#define VCT_MAX_INTERFACES 8u
 #define AOV_SLOTS 6u
 #define GBUF_SLOTS 5u
 /* Shadow cones step an eighth as far as the setting says, 1/8 of the
@@ -45,140 +50,144 @@
  * less often (measured: no leak into the umbra at 1/8 of the diameter, up
  * to 12% at 1/2). */
 #define SOFT_STEP_SCALE 0.125f
+/* Neighbours on one surface: normals within about 37 degrees, and each
+ * point within 0.25 of their distance from the other's plane. */
+#define EDGE_NORMAL_COS 0.8f
+#define EDGE_PLANE_SLOPE 0.25f
 
-#ifdef VCT_SHADOWS
-#define SHADOWS 1
-#else
-#define SHADOWS 0
-#endif
+#define PRIMARY_ARGS                                                                               \
+    ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,                  \
+        __global const uint *tri_material, TEXTURE_ARGS, __global const vct_light_desc *lights,    \
+        uint light_count, EMITTER_ARGS, float4 ambient, __global float4 *gbuf,                     \
+        __global float4 *image, __global float4 *aov, __global float4 *reflection
+#define PRIMARY_SCENE()                                                                            \
+    ((primary_scene){ACCEL_VIEW(), TEXTURE_VIEW(), EMITTER_VIEW(), materials, tri_material,        \
+                     lights, light_count, ambient.xyz})
 
-#ifdef VCT_SOFT_SHADOWS
-#define SOFT_SHADOWS 1
-#else
-#define SOFT_SHADOWS 0
-#endif
-
-/* The Phong exponent of m's glossy lobe and its mirror direction *r, or -1
- * where direct light has no glossy term. */
-inline float direct_lobe(const vct_material_desc *m, float3 wo, float3 n, float3 *r) {
-    *r = (float3)(0.0f);
-#ifdef VCT_SPECULAR
-    if (glossy_probability(m) > 0.0f && !is_mirror(m) && !is_dielectric(m)) {
-        *r = reflect_dir(wo, n);
-        return phong_exponent(m->emission.w);
-    }
-#endif
-    return -1.0f;
+/* A sample's surface into the G-buffer, with the throughput given. */
+inline void gbuffer_write(__global float4 *gbuf, uint pixel, const primary_sample *s,
+                          float3 throughput) {
+    gbuf[GBUF_SLOTS * pixel] = s->gpos;
+    gbuf[GBUF_SLOTS * pixel + 1u] = s->gnormal;
+    gbuf[GBUF_SLOTS * pixel + 2u] = s->gview;
+    gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(throughput, 0.0f);
+    gbuf[GBUF_SLOTS * pixel + 4u] = s->galbedo;
 }
 
-/* Radiance the direct terms reflect off m. */
-inline float3 direct_shade(const vct_material_desc *m, direct_terms d, float e) {
-    float3 out = diffuse_color(m) * VCT_INV_PI * d.irradiance;
-    if (e >= 0.0f)
-        out += glossy_color(m) * d.lobe;
-    return out;
+inline void reflection_write(__global float4 *reflection, uint pixel, float4 rpos, float4 rnormal,
+                             float4 rdir) {
+    reflection[3u * pixel] = rpos;
+    reflection[3u * pixel + 1u] = rnormal;
+    reflection[3u * pixel + 2u] = rdir;
 }
 
-__kernel void vct_primary(ACCEL_ARGS, vct_camera_desc cam,
-                          __global const vct_material_desc *materials,
-                          __global const uint *tri_material, TEXTURE_ARGS,
-                          __global const vct_light_desc *lights, uint light_count, EMITTER_ARGS,
-                          float4 ambient, __global float4 *gbuf, __global float4 *image,
-                          __global float4 *aov, __global float4 *reflection) {
+/* The camera ray through each pixel's centre. keys: what vct_edge_flags
+ * compares between neighbours. */
+__kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    const accel_view g = ACCEL_VIEW();
+    const primary_scene ps = PRIMARY_SCENE();
     const uint pixel = y * cam.size.x + x;
-    float3 org = cam.position.xyz,
-           dir = camera_ray_dir(&cam, (float)x + 0.5f, (float)camera_row(&cam, y) + 0.5f);
-    float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
-    float4 gpos = (float4)(0.0f), gnormal = (float4)(0.0f), gview = (float4)(0.0f),
-           galbedo = (float4)(0.0f);
-    float4 rpos = (float4)(0.0f), rnormal = (float4)(0.0f), rdir = (float4)(0.0f);
-    int reflected = 0;
-    for (uint depth = 0; depth < VCT_MAX_INTERFACES; ++depth) {
-        hit_record h;
-        if (!accel_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
-            radiance += throughput * ambient.xyz;
-            break;
-        }
-        float3 p, ng, n;
-        int front;
-        if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
-            break;
-        const uint mat = tri_material[h.tri];
-        vct_material_desc m = materials[mat];
-        const texture_view tv = TEXTURE_VIEW();
-        m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
-        const float3 wo = -dir;
-#ifdef VCT_REFRACTION
-        if (is_dielectric(&m)) {
-            /* Follow the transmitted ray exactly (total internal reflection
-             * where there is none). The reflected part of the first surface
-             * entered goes to vct_glass_reflection; later ones are left out. */
-            const float ior = fmax(m.extra.x, 1.0001f);
-            const float eta = front ? 1.0f / ior : ior;
-            const float cos_i = fmin(dot(n, wo), 1.0f);
-            const float F = fresnel_dielectric(cos_i, eta);
-            const float eps = surface_epsilon(&g, p);
-            if (F >= 1.0f) {
-                dir = reflect_dir(wo, n);
-                org = p + n * eps;
-            } else {
-                const float sin2_t = eta * eta * fmax(0.0f, 1.0f - cos_i * cos_i);
-                const float cos_t = sqrt(fmax(0.0f, 1.0f - sin2_t));
-                dir = normalize(-eta * wo + (eta * cos_i - cos_t) * n);
-#ifdef VCT_SPECULAR
-                if (front && !reflected) {
-                    reflected = 1;
-                    const float3 w = throughput * F;
-                    rpos = (float4)(p, w.x);
-                    rnormal = (float4)(n, w.y);
-                    rdir = (float4)(reflect_dir(wo, n), w.z);
-                }
-#endif
-                throughput *= (1.0f - F) * m.albedo.xyz;
-                org = p - n * eps;
-            }
-            continue;
-        }
-#endif
-#ifdef VCT_EMISSION
-        radiance += throughput * m.emission.xyz;
-#endif
-#ifdef VCT_DIRECT
-        float3 r;
-        const float e = direct_lobe(&m, wo, n, &r);
-        direct_terms d = direct_gather(&g, lights, light_count, p, n, SHADOWS, r, e, SOFT_SHADOWS);
-#ifdef VCT_EMITTERS
-        const emitter_view ev = EMITTER_VIEW();
-        direct_emitters(&g, &ev, materials, tri_material, p, n, r, e, camera_pixel_id(&cam, x, y),
-                        &d);
-#endif
-        radiance += throughput * direct_shade(&m, d, e);
-#endif
-        gpos = (float4)(p, as_float(mat));
-        galbedo = (float4)(m.albedo.xyz, 0.0f);
-        gnormal = (float4)(n, 1.0f);
-        gview = (float4)(wo, 0.0f);
-        break;
-    }
-    gbuf[GBUF_SLOTS * pixel] = gpos;
-    gbuf[GBUF_SLOTS * pixel + 1u] = gnormal;
-    gbuf[GBUF_SLOTS * pixel + 2u] = gview;
-    gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(throughput, 0.0f);
-    gbuf[GBUF_SLOTS * pixel + 4u] = galbedo;
-    image[pixel] = (float4)(radiance, 1.0f);
+    const primary_sample s =
+        primary_trace(&ps, &cam, (float)x + 0.5f, (float)camera_row(&cam, y) + 0.5f,
+                      camera_pixel_id(&cam, x, y), 0u, 1u);
+    gbuffer_write(gbuf, pixel, &s, s.throughput);
+    keys[pixel] = s.key;
+    image[pixel] = (float4)(s.radiance, 1.0f);
     if (aov) {
-        aov[AOV_SLOTS * pixel] = (float4)(radiance, 1.0f);
-        aov[AOV_SLOTS * pixel + 4u] = (float4)(gpos.xyz, gnormal.w);
-        aov[AOV_SLOTS * pixel + 5u] = gnormal;
+        aov[AOV_SLOTS * pixel] = (float4)(s.radiance, 1.0f);
+        aov[AOV_SLOTS * pixel + 4u] = (float4)(s.gpos.xyz, s.gnormal.w);
+        aov[AOV_SLOTS * pixel + 5u] = s.gnormal;
     }
-    if (reflection) {
-        reflection[3u * pixel] = rpos;
-        reflection[3u * pixel + 1u] = rnormal;
-        reflection[3u * pixel + 2u] = rdir;
+    if (reflection)
+        reflection_write(reflection, pixel, s.rpos, s.rnormal, s.rdir);
+}
+
+/* 1 where a pixel's 3x3 neighbourhood holds an edge: a neighbour with
+ * another key (material, dielectrics on the way, lights seen), or on
+ * another surface (its normal turned, or off this pixel's plane). */
+__kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *keys, uint2 size,
+                             __global uchar *flags) {
+    const uint pixel = get_global_id(0);
+    if (pixel >= size.x * size.y)
+        return;
+    const uint x = pixel % size.x, y = pixel / size.x;
+    const uint key = keys[pixel];
+    const float4 n = gbuf[GBUF_SLOTS * pixel + 1u];
+    const float3 p = gbuf[GBUF_SLOTS * pixel].xyz;
+    int edge = 0;
+    for (int dy = -1; dy <= 1 && !edge; ++dy)
+        for (int dx = -1; dx <= 1 && !edge; ++dx) {
+            const int nx = (int)x + dx, ny = (int)y + dy;
+            if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= (int)size.x || ny >= (int)size.y)
+                continue;
+            const uint q = (uint)ny * size.x + (uint)nx;
+            if (keys[q] != key) {
+                edge = 1;
+                continue;
+            }
+            const float4 nq = gbuf[GBUF_SLOTS * q + 1u];
+            if (n.w == 0.0f || nq.w == 0.0f)
+                continue;
+            const float3 d = gbuf[GBUF_SLOTS * q].xyz - p;
+            const float reach = EDGE_PLANE_SLOPE * length(d);
+            edge = dot(n.xyz, nq.xyz) < EDGE_NORMAL_COS || fabs(dot(n.xyz, d)) > reach ||
+                   fabs(dot(nq.xyz, d)) > reach;
+        }
+    flags[pixel] = (uchar)edge;
+}
+
+/* Pixels on an edge: n x n camera rays on a grid over the pixel. The image
+ * gets their mean; the G-buffer keeps the centre's surface (or the first
+ * sample's that found one) with the mean throughput of the samples that
+ * found a surface, so that the cone passes add light in proportion to the
+ * pixel's area that has it. Glass reflections likewise. */
+__kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint n) {
+    const uint x = get_global_id(0), y = get_global_id(1);
+    if (x >= cam.size.x || y >= cam.size.y)
+        return;
+    const uint pixel = y * cam.size.x + x;
+    if (!flags[pixel])
+        return;
+    const primary_scene ps = PRIMARY_SCENE();
+    const uint id = camera_pixel_id(&cam, x, y), row = camera_row(&cam, y);
+    const int centre_found = gbuf[GBUF_SLOTS * pixel + 1u].w != 0.0f;
+    int found = centre_found;
+    int reflected = reflection && any(reflection[3u * pixel + 2u].xyz != 0.0f);
+    float3 radiance = (float3)(0.0f), cover = (float3)(0.0f), rweight = (float3)(0.0f);
+    for (uint s = 0; s < n * n; ++s) {
+        const float px = (float)x + ((float)(s % n) + 0.5f) / (float)n;
+        const float py = (float)row + ((float)(s / n) + 0.5f) / (float)n;
+        const primary_sample t = primary_trace(&ps, &cam, px, py, id, s, n * n);
+        radiance += t.radiance;
+        rweight += (float3)(t.rpos.w, t.rnormal.w, t.rdir.w);
+        if (t.found) {
+            cover += t.throughput;
+            if (!found) {
+                found = 1;
+                gbuffer_write(gbuf, pixel, &t, t.throughput);
+                if (aov) {
+                    aov[AOV_SLOTS * pixel + 4u] = (float4)(t.gpos.xyz, t.gnormal.w);
+                    aov[AOV_SLOTS * pixel + 5u] = t.gnormal;
+                }
+            }
+        }
+        if (reflection && !reflected && any(t.rdir.xyz != 0.0f)) {
+            reflected = 1;
+            reflection_write(reflection, pixel, t.rpos, t.rnormal, t.rdir);
+        }
+    }
+    const float inv = 1.0f / (float)(n * n);
+    gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(cover * inv, 0.0f);
+    image[pixel] = (float4)(radiance * inv, 1.0f);
+    if (aov)
+        aov[AOV_SLOTS * pixel] = (float4)(radiance * inv, 1.0f);
+    if (reflection && reflected) {
+        rweight *= inv;
+        reflection[3u * pixel].w = rweight.x;
+        reflection[3u * pixel + 1u].w = rweight.y;
+        reflection[3u * pixel + 2u].w = rweight.z;
     }
 }
 

@@ -169,6 +169,7 @@ static void check_pixels(const mask_case *mc) {
     vct_vct_options o = vct_vct_options_default();
     o.width = o.height = 72;
     o.aovs = 1;
+    o.edge_samples = 1; /* the reference follows each pixel's centre */
     vct_image im;
     vct_aovs aovs;
     REQUIRE_OK(vct_render_vct(ctx, s, g, NULL, &plan, &o, &im, &aovs, &err), err);

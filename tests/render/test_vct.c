@@ -178,6 +178,7 @@ static void sky_floor(vct_material m, const uint32_t *presets, int count, int mi
         vct_vct_options o = vct_vct_options_default();
         o.width = o.height = 32;
         o.diffuse_cones = presets[i];
+        o.edge_samples = 1; /* a pixel is floor or sky */
         vct_voxels *v = NULL;
         REQUIRE_OK(vct_vct_prepare(ctx, s, g, &p, &vo, NULL, 1, &o.cones, &v, &err), err);
         vct_image im;

@@ -6,8 +6,8 @@
 
 #include "check.h"
 
-/* w x h at res^3 voxels and `bounces` light bounces; AOVs too when aovs is
- * not NULL. */
+/* w x h at res^3 voxels and `bounces` light bounces, pixel centres only;
+ * AOVs too when aovs is not NULL. */
 static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, const vct_plan *plan,
                                         uint32_t res, int w, int h, uint32_t bounces,
                                         vct_aovs *aovs) {
@@ -21,6 +21,9 @@ static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, co
     o.width = w;
     o.height = h;
     o.aovs = aovs != NULL;
+    /* One ray through each pixel's centre, where the tests' references (the
+     * ray caster, light at a point) look; test_edge_samples tests edges. */
+    o.edge_samples = 1;
     vct_voxels *v = NULL;
     REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, bounces, &o.cones, &v, &err), err);
     vct_image image;

@@ -108,10 +108,18 @@ typedef struct vct_vct_options {
      * others the mean of the traced neighbours on the same surface (a pixel
      * with none traces its own); 0: at every pixel */
     int sparse_diffuse;
+    /* Camera rays per axis at pixels on an edge (of a surface, a material or
+     * a hard shadow), which then show their mean: 1 traces pixel centres
+     * only; 0 means VCT_EDGE_SAMPLES_DEFAULT. At most VCT_EDGE_SAMPLES_MAX. */
+    uint32_t edge_samples;
     int aovs; /* also fill the AOV images */
 } vct_vct_options;
 
-/* 512 x 512, 6 diffuse cones, default cone settings, no AOVs. */
+#define VCT_EDGE_SAMPLES_DEFAULT 4u
+#define VCT_EDGE_SAMPLES_MAX 8u
+
+/* 512 x 512, 6 diffuse cones, default cone settings, 4 x 4 rays at edges,
+ * no AOVs. */
 vct_vct_options vct_vct_options_default(void);
 
 typedef struct vct_aovs {
@@ -286,12 +294,12 @@ typedef struct vct_render_job {
 typedef struct vct_render_result {
     vct_method method;
     int width, height;
-    double seconds;     /* host wall time of the call */
-    uint32_t spp;       /* path tracing: samples per pixel; photon mapping: passes */
-    uint32_t discarded; /* path tracing: non-finite samples dropped */
-    uint64_t traced;    /* Whitted: pixels traced (the rest interpolated) */
+    double seconds;       /* host wall time of the call */
+    uint32_t spp;         /* path tracing: samples per pixel; photon mapping: passes */
+    uint32_t discarded;   /* path tracing: non-finite samples dropped */
+    uint64_t traced;      /* Whitted: pixels traced (the rest interpolated) */
     uint64_t camera_rays; /* Whitted: ray trees started (pixels traced, some twice) */
-    uint64_t photons;   /* photon mapping: photon paths emitted */
+    uint64_t photons;     /* photon mapping: photon paths emitted */
 } vct_render_result;
 
 /* A job with every method's defaults (vct_vct_options_default, 64 spp,

@@ -30,7 +30,8 @@ typedef struct rows_round {
  * square's first row, and a row of corners is an edge of the squares above
  * and below it: the finer of the two writes it last. A band therefore also
  * renders the square above it and the corner row below it. Sparse cone
- * tracing fills odd rows from the even row below. */
+ * tracing fills odd rows from the even row below. Cone tracing finds edges
+ * by comparing a pixel with the rows above and below it. */
 static void band_shape(const vct_render_job *job, int *align, int *above, int *below) {
     uint32_t subsample = 0;
     if (job->method == VCT_METHOD_WHITTED)
@@ -42,6 +43,10 @@ static void band_shape(const vct_render_job *job, int *align, int *above, int *b
         *align = (int)subsample, *above = (int)subsample, *below = 1;
     else if (job->method == VCT_METHOD_VCT && job->vct.sparse_diffuse)
         *align = 2, *below = 2;
+    if (job->method == VCT_METHOD_VCT && job->vct.edge_samples != 1) {
+        *above = *above > *align ? *above : *align; /* keeps the sparse rows' parity */
+        *below = *below > 1 ? *below : 1;
+    }
 }
 
 /* The rows band b renders: its own and its halos, within the image. */
@@ -277,13 +282,14 @@ render:;
 }
 
 /* What frame times of the devices together and alone may be compared
- * over: the same method, size and subsampling. */
+ * over: the same method, size, subsampling and rays at edges. */
 static uint64_t job_signature(const vct_render_job *job, int width, int height) {
     const uint64_t subsample = job->method == VCT_METHOD_WHITTED   ? job->whitted.subsample
                                : job->method == VCT_METHOD_RAYCAST ? job->raycast.subsample
                                                                    : 0;
     return (uint64_t)job->method | (uint64_t)width << 8 | (uint64_t)height << 24 | subsample << 40 |
-           (uint64_t)(job->vct.sparse_diffuse != 0) << 56;
+           (uint64_t)(job->vct.sparse_diffuse != 0) << 56 |
+           (uint64_t)(job->vct.edge_samples & 15u) << 57;
 }
 
 int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,

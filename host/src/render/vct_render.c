@@ -26,6 +26,7 @@ vct_vct_options vct_vct_options_default(void) {
     o.height = 512;
     o.diffuse_cones = 6;
     o.cones = vct_cone_settings_default();
+    o.edge_samples = VCT_EDGE_SAMPLES_DEFAULT;
     return o;
 }
 
@@ -193,11 +194,11 @@ static int launch_frame_kernel(frame *f, cl_kernel k, cl_uint every, vct_error *
     return vct_launch_2d(f->ctx, k, global, local, err);
 }
 
-static int primary(frame *f, const vct_scene *s, const vct_accel *g, const vct_camera_desc *cam,
-                   vct_error *err) {
+/* vct_primary's arguments, which vct_primary_refine shares. */
+static int primary_args(frame *f, cl_kernel k, const vct_scene *s, const vct_accel *g,
+                        const vct_camera_desc *cam, vct_error *err) {
     const vct_scene_buffers sb = f->scene;
-    cl_kernel k = vct_kernel_create(f->ctx, f->program, "vct_primary", err);
-    int rc = k ? vct_accel_set_args(k, g, PRIMARY_STAGE, err) : (int)err->status;
+    int rc = vct_accel_set_args(k, g, PRIMARY_STAGE, err);
     const cl_float4 ambient = {{s->ambient[0], s->ambient[1], s->ambient[2], 0.0f}};
     if (rc == VCT_OK)
         rc = vct_set_args(err, PRIMARY_STAGE, k, 5, 3, VCT_ARG_OF(*cam), VCT_ARG_OF(sb.materials),
@@ -212,12 +213,49 @@ static int primary(frame *f, const vct_scene *s, const vct_accel *g, const vct_c
     if (rc == VCT_OK)
         rc = vct_set_args(err, PRIMARY_STAGE, k, 18, 5, VCT_ARG_OF(ambient), VCT_ARG_OF(f->gbuf),
                           VCT_ARG_OF(f->image), VCT_ARG_OF(f->aov), VCT_ARG_OF(f->reflection));
+    return rc;
+}
+
+/* vct_primary (with its keys) or vct_primary_refine (with the flags and
+ * the rays per axis) over every pixel. */
+static int primary_launch(frame *f, const char *name, const vct_scene *s, const vct_accel *g,
+                          const vct_camera_desc *cam, cl_mem buffer, cl_uint n, vct_error *err) {
+    cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
+    int rc = k ? primary_args(f, k, s, g, cam, err) : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 23, 1, VCT_ARG_OF(buffer));
+    if (rc == VCT_OK && n)
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 24, 1, VCT_ARG_OF(n));
     if (rc == VCT_OK)
         rc = launch_frame_kernel(f, k, 1, err);
-    if (rc == VCT_OK)
-        rc = vct_finish(f->ctx, PRIMARY_STAGE, err);
     if (k)
         clReleaseKernel(k);
+    return rc;
+}
+
+/* Camera rays through the pixels' centres; then, unless edge_samples is 1,
+ * the pixels on an edge again with n x n rays each. */
+static int primary(frame *f, const vct_scene *s, const vct_accel *g, const vct_camera_desc *cam,
+                   cl_uint edge_samples, vct_error *err) {
+    const size_t pixels = (size_t)f->size[0] * f->size[1];
+    cl_mem keys = vct_buffer_create(f->ctx, PRIMARY_STAGE, "edge keys", 4 * pixels,
+                                    CL_MEM_READ_WRITE, NULL, err);
+    int rc = keys ? primary_launch(f, "vct_primary", s, g, cam, keys, 0, err) : (int)err->status;
+    cl_mem flags = NULL;
+    if (rc == VCT_OK && edge_samples > 1) {
+        flags = vct_buffer_create(f->ctx, PRIMARY_STAGE, "edge flags", pixels, CL_MEM_READ_WRITE,
+                                  NULL, err);
+        rc = flags ? vct_run_kernel(f->ctx, f->program, "vct_edge_flags", PRIMARY_STAGE, pixels,
+                                    err, 4, VCT_ARG_OF(f->gbuf), VCT_ARG_OF(keys),
+                                    VCT_ARG_OF(f->size), VCT_ARG_OF(flags))
+                   : (int)err->status;
+        if (rc == VCT_OK)
+            rc = primary_launch(f, "vct_primary_refine", s, g, cam, flags, edge_samples, err);
+    }
+    if (rc == VCT_OK)
+        rc = vct_finish(f->ctx, PRIMARY_STAGE, err);
+    vct_buffer_release(f->ctx, flags);
+    vct_buffer_release(f->ctx, keys);
     return rc;
 }
 
@@ -367,7 +405,8 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, con
     if (rc == VCT_OK)
         rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_POWER, PRIMARY_STAGE, &f.emitters, err);
     if (rc == VCT_OK)
-        rc = primary(&f, s, g, &cam, err);
+        rc = primary(&f, s, g, &cam,
+                     opt->edge_samples ? opt->edge_samples : VCT_EDGE_SAMPLES_DEFAULT, err);
     vct_stage_end(ctx);
 
     if (rc == VCT_OK && plan->on[VCT_EFFECT_SOFT_SHADOWS]) {

@@ -1,0 +1,214 @@
+/* Cone tracing's pixels on an edge show the pixel's mean, as a converged
+ * reference does, not the value at its centre.
+ *
+ * The reference is independent of the edge search: the ray caster at N times
+ * the width and height, one ray through each of its pixel centres, which
+ * are exactly the N x N rays of a low-resolution pixel. A pixel that an edge
+ * crosses (its block of fine pixels not all alike) must equal its block's
+ * mean; any other pixel its centre's value. The scene holds every kind of
+ * edge: a floor's border against the sky, a plate over the floor of the same
+ * material (found by geometry alone), the plate's hard shadow (the lights
+ * seen) and two floor materials meeting.
+ *
+ * Indirect light is weighted by the share of the pixel that found a surface:
+ * a plate under a sky, whose indirect light is albedo * sky wherever it is
+ * seen, has at its border the indirect light of its interior times the
+ * share of the fine pixels that see it. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "mesh_gen.h"
+#include "vct_case.h"
+
+#define W 40
+#define H 32
+#define N 4
+
+static vct_context *ctx;
+
+static vct_scene *scene_of(const float *quads, int count, const uint32_t *quad_material,
+                           const vct_material *materials, uint32_t material_count) {
+    test_mesh t = mesh_quads(quads, (uint32_t)count);
+    uint32_t *mat = malloc(4ull * t.nt);
+    for (uint32_t i = 0; i < t.nt; ++i)
+        mat[i] = quad_material[i / 2];
+    vct_error err = {0};
+    vct_scene *s =
+        vct_scene_from_arrays(t.pos, t.nv, t.tri, t.nt, mat, materials, material_count, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    free(mat);
+    mesh_free(&t);
+    s->camera = (vct_camera){{0.05f, 3.0f, 0.02f}, {0, 0, 0}, {0, 0, -1}, 80.0f};
+    return s;
+}
+
+static vct_image render_vct(const vct_scene *s, const vct_plan *plan, int w, int h,
+                            uint32_t edge_samples, vct_aovs *aovs) {
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_voxel_options vo = {0};
+    vo.resolution = 32;
+    vct_vct_options o = vct_vct_options_default();
+    o.width = w;
+    o.height = h;
+    o.edge_samples = edge_samples;
+    o.aovs = aovs != NULL;
+    vct_voxels *v = NULL;
+    REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, NULL, 1, &o.cones, &v, &err), err);
+    vct_image im;
+    vct_stats_reset(ctx);
+    REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &im, aovs, &err), err);
+    vct_voxels_free(v);
+    vct_accel_free(g);
+    return im;
+}
+
+/* The N x N block of fine pixels under pixel (x, y), channel k. */
+static void block_stats(const vct_image *fine, int x, int y, int k, double *mean, double *spread) {
+    double sum = 0.0, lo = INFINITY, hi = -INFINITY;
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i) {
+            const double v = fine->rgba[4 * ((size_t)(N * y + j) * fine->width + N * x + i) + k];
+            sum += v;
+            lo = fmin(lo, v);
+            hi = fmax(hi, v);
+        }
+    *mean = sum / (N * N);
+    *spread = hi - lo;
+}
+
+static void direct_edges(void) {
+    /* A floor of two materials (x < 0.7 and beyond), 2.2 wide each way, and
+     * a plate of the first material over it; a point light above. */
+    const float quads[] = {-2.2f, 0,    -2.2f, 0.7f,  0,    -2.2f, 0.7f,  0,    2.2f,
+                           -2.2f, 0,    2.2f,  0.7f,  0,    -2.2f, 2.2f,  0,    -2.2f,
+                           2.2f,  0,    2.2f,  0.7f,  0,    2.2f,  -1.9f, 1.1f, -1.3f,
+                           -0.2f, 1.1f, -1.3f, -0.2f, 1.1f, 0.9f,  -1.9f, 1.1f, 0.9f};
+    const uint32_t quad_material[3] = {0, 1, 0};
+    vct_material m[2] = {vct_material_default(), vct_material_default()};
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.8f;
+    m[1].albedo[0] = 0.3f, m[1].albedo[1] = 0.6f, m[1].albedo[2] = 0.2f;
+    vct_scene *s = scene_of(quads, 3, quad_material, m, 2);
+    vct_light light = {0};
+    light.type = VCT_LIGHT_POINT;
+    light.position[0] = -1.5f, light.position[1] = 3.4f, light.position[2] = -0.35f;
+    light.color[0] = light.color[1] = light.color[2] = 9.0f;
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &light, &err), err);
+    vct_plan plan;
+    vct_case_direct_plan(s, &plan);
+
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_render_options ro = {N * W, N * H, 0, 0, 0.0f};
+    vct_image fine;
+    REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
+    vct_accel_free(g);
+
+    for (uint32_t n = 1; n <= N; n += N - 1) {
+        vct_image im = render_vct(s, &plan, W, H, n, NULL);
+        CHECK(vct_kernel_launches(ctx, "vct_primary_refine") == (n > 1),
+              "%u rays per axis: the refining pass ran %llu times", n,
+              (unsigned long long)vct_kernel_launches(ctx, "vct_primary_refine"));
+        int edges = 0, flat = 0, off = 0, centred = 0;
+        double worst = 0.0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                int edge = 0;
+                double err_px = 0.0;
+                for (int k = 0; k < 3; ++k) {
+                    double mean, spread;
+                    block_stats(&fine, x, y, k, &mean, &spread);
+                    const double got = im.rgba[4 * (y * W + x) + k];
+                    edge |= spread > 0.25 * (mean + 1e-2);
+                    err_px = fmax(err_px, fabs(got - mean) / (mean + 1e-2));
+                }
+                /* Within a surface the light changes smoothly, and a pixel's
+                 * centre and mean differ by far less than 1e-3. */
+                edges += edge;
+                flat += !edge;
+                centred += edge && err_px > 1e-2;
+                if (n == N) {
+                    off += err_px > 1e-3;
+                    worst = fmax(worst, err_px);
+                }
+            }
+        if (n == N)
+            CHECK(off <= 2 && edges > 100 && flat > 400,
+                  "%u rays per axis: %d pixels (of %d on an edge and %d not) differ from the "
+                  "fine ray caster's mean by more than 1e-3 (worst %.3g)",
+                  n, off, edges, flat, worst);
+        else
+            CHECK(centred > edges / 2,
+                  "one ray per pixel: only %d of %d edge pixels differ from their mean (the "
+                  "test sees no edges)",
+                  centred, edges);
+        vct_image_free(&im);
+    }
+    vct_image_free(&fine);
+    vct_scene_free(s);
+}
+
+static void indirect_share(void) {
+    const float plate[] = {-1.2f, 0.5f, -0.9f, 1.1f,  0.5f, -0.9f,
+                           1.1f,  0.5f, 1.0f,  -1.2f, 0.5f, 1.0f};
+    const uint32_t quad_material[1] = {0};
+    vct_material m = vct_material_default();
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.6f;
+    vct_scene *s = scene_of(plate, 1, quad_material, &m, 1);
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.5f;
+    vct_plan plan;
+    vct_plan_make(s, NULL, &plan);
+    CHECK(plan.on[VCT_EFFECT_INDIRECT] || plan.on[VCT_EFFECT_AO], "a sky-lit plate plans cones");
+    vct_aovs aovs, fine_aovs;
+    vct_image im = render_vct(s, &plan, W, H, N, &aovs);
+    vct_image fine = render_vct(s, &plan, N * W, N * H, 1, &fine_aovs);
+    /* The interior's indirect light, and each border pixel's share. */
+    double interior = 0.0;
+    int inside = 0;
+    double share[W * H];
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            int hits = 0;
+            for (int j = 0; j < N; ++j)
+                for (int i = 0; i < N; ++i)
+                    hits += fine_aovs.position
+                                .rgba[4 * ((size_t)(N * y + j) * N * W + N * x + i) + 3] != 0.0f;
+            share[y * W + x] = (double)hits / (N * N);
+            if (hits == N * N) {
+                interior += aovs.indirect.rgba[4 * (y * W + x) + 1];
+                ++inside;
+            }
+        }
+    interior /= inside > 0 ? inside : 1;
+    int border = 0, off = 0;
+    double worst = 0.0;
+    for (int p = 0; p < W * H; ++p) {
+        if (share[p] == 0.0 || share[p] == 1.0)
+            continue;
+        ++border;
+        const double got = aovs.indirect.rgba[4 * p + 1] / interior;
+        worst = fmax(worst, fabs(got - share[p]));
+        off += fabs(got - share[p]) > 0.08;
+    }
+    CHECK(inside > 150 && border > 40 && off == 0 && interior > 0.2,
+          "indirect light at the border in proportion to the share that sees the plate: %d of "
+          "%d border pixels off by more than 0.08 (worst %.3f; interior %.4f over %d pixels)",
+          off, border, worst, interior, inside);
+    vct_image_free(&im);
+    vct_image_free(&fine);
+    vct_aovs_free(&aovs);
+    vct_aovs_free(&fine_aovs);
+    vct_scene_free(s);
+}
+
+int main(void) {
+    ctx = check_context();
+    direct_edges();
+    indirect_share();
+    vct_context_destroy(ctx);
+    return check_exit("test_edge_samples");
+}
