@@ -22,6 +22,10 @@
 #define PHOTON_DIRECT 1u   /* first hit from a light (read by final gathering, the seed's mode) */
 #define PHOTON_INDIRECT 2u /* after a diffuse or glossy bounce: the global map */
 #define PHOTON_CAUSTIC 4u  /* a specular bounce since the last diffuse one: the caustic map */
+/* Also set on a caustic photon whose specular bounces met a dielectric
+ * (cone tracing's caustics: light through glass, which its voxels cannot
+ * carry; mirrors' light they carry already). */
+#define PHOTON_DIELECTRIC 8u
 
 /* Estimate flags. */
 #define PHOTON_EPANECHNIKOV 1u /* 2 (1 - d^2 / r^2) instead of the box's 1 */

@@ -130,7 +130,7 @@ __kernel void photon_trace(ACCEL_ARGS, __global const vct_material_desc *materia
     uint stored = 0;
     if (photon_emit(&g, lights, sources[src], &e, materials, tri_material, bounds, ambient, &rng,
                     &org, &dir, &power)) {
-        uint specular = 0;
+        uint specular = 0, dielectric = 0;
         for (uint bounce = 0; bounce < max_depth; ++bounce) {
             hit_record h;
             if (!accel_trace(&g, org, dir, 0.0f, INFINITY, 0, &h))
@@ -143,8 +143,8 @@ __kernel void photon_trace(ACCEL_ARGS, __global const vct_material_desc *materia
             m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
             const float3 wo = -dir;
             if (!bsdf_delta_only(&m)) {
-                const uint kind =
-                    specular ? PHOTON_CAUSTIC : (bounce == 0u ? PHOTON_DIRECT : PHOTON_INDIRECT);
+                const uint kind = specular ? PHOTON_CAUSTIC | (dielectric ? PHOTON_DIELECTRIC : 0u)
+                                           : (bounce == 0u ? PHOTON_DIRECT : PHOTON_INDIRECT);
                 if (kind & store_mask) {
                     const uint slot = path * max_depth + stored++;
                     records[3u * slot] = (float4)(p, n.x);
@@ -166,6 +166,7 @@ __kernel void photon_trace(ACCEL_ARGS, __global const vct_material_desc *materia
                 break;
             power = next / keep;
             specular = bs.delta ? 1u : 0u;
+            dielectric = specular && (dielectric || is_dielectric(&m)) ? 1u : 0u;
             const float eps = surface_epsilon(&g, p);
             org = p + (dot(bs.wi, n) > 0.0f ? n : -n) * eps;
             dir = bs.wi;

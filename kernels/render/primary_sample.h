@@ -1,6 +1,7 @@
 /* One camera ray of cone tracing's primary pass: followed through
  * dielectrics (the transmitted ray exactly, total internal reflection where
- * there is none), then emission and direct light at the first other surface,
+ * there is none) and off perfect mirrors, then emission and direct light at
+ * the first other surface,
  * exactly as the ray caster computes them. What it finds is what the G-buffer
  * keeps for the cone passes, and a key that tells surfaces apart: the
  * materials on the way and the lights the point sees. Neighbouring pixels
@@ -48,7 +49,7 @@ typedef struct primary_scene {
 /* What one camera ray found. */
 typedef struct primary_sample {
     float3 radiance;   /* emission and direct light, through the dielectrics' throughput */
-    float3 throughput; /* of the dielectrics on the way to the surface */
+    float3 throughput; /* of the dielectrics and mirrors on the way to the surface */
     int found;         /* a surface other than a dielectric was reached */
     float4 gpos, gnormal, gview, galbedo; /* the G-buffer's slots 0, 1, 2 and 4 */
     /* The Fresnel reflection of the first dielectric entered: (point,
@@ -141,6 +142,16 @@ inline primary_sample primary_trace(const primary_scene *ps, const vct_camera_de
 #endif
 #ifdef VCT_EMISSION
         out.radiance += out.throughput * m.emission.xyz;
+#endif
+#ifdef VCT_SPECULAR
+        if (bsdf_delta_only(&m)) {
+            /* A perfect mirror: the reflected ray exactly, as through glass;
+             * a cone would blur what it shows to the voxels' size. */
+            out.throughput *= glossy_color(&m);
+            dir = reflect_dir(wo, n);
+            org = p + n * surface_epsilon(&ps->g, p);
+            continue;
+        }
 #endif
 #ifdef VCT_DIRECT
         float3 r;

@@ -17,6 +17,7 @@
  *   vct_specular_cone  one cone along the mirror direction
  *   vct_glass_reflection  the Fresnel reflection off the first dielectric
  *                      the camera ray enters, one mirror cone
+ *   vct_caustics       light through dielectrics onto surfaces, from photons
  * Effects are chosen with -D: VCT_DIRECT, VCT_SHADOWS, VCT_SOFT_SHADOWS,
  * VCT_EMISSION, VCT_REFRACTION, VCT_SPECULAR, VCT_INDIRECT, VCT_AO (and the
  * pool's VCT_BRICK_IMAGE, VCT_ANISOTROPIC); VCT_EMITTERS adds the emissive
@@ -41,6 +42,7 @@
 #include "accel/accel.h"
 #include "voxel/cone_sky.h"
 #include "render/primary_sample.h"
+#include "photon/photon.h"
 #include "vct_types.h"
 
 #define AOV_SLOTS 6u
@@ -138,7 +140,7 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
     flags[pixel] = (uchar)edge;
 }
 
-/* Pixels on an edge: n x n camera rays on a grid over the pixel. The image
+/* Pixels on an edge: n x n camera rays over the pixel. The image
  * gets their mean; the G-buffer keeps the centre's surface (or the first
  * sample's that found one) with the mean throughput of the samples that
  * found a surface, so that the cone passes add light in proportion to the
@@ -157,8 +159,13 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     int reflected = reflection && any(reflection[3u * pixel + 2u].xyz != 0.0f);
     float3 radiance = (float3)(0.0f), cover = (float3)(0.0f), rweight = (float3)(0.0f);
     for (uint s = 0; s < n * n; ++s) {
-        const float px = (float)x + ((float)(s % n) + 0.5f) / (float)n;
-        const float py = (float)row + ((float)(s / n) + 0.5f) / (float)n;
+        /* Cell (i, j) of the n x n grid, and within it the sub-cell (j, i)
+         * of an n x n grid of its own: every ray on its own column and row
+         * of the n^2 x n^2 grid, so that an edge along a pixel row or
+         * column is met in n^2 steps, not n. */
+        const uint i = s % n, j = s / n;
+        const float px = (float)x + ((float)(i * n + j) + 0.5f) / (float)(n * n);
+        const float py = (float)row + ((float)(j * n + i) + 0.5f) / (float)(n * n);
         const primary_sample t = primary_trace(&ps, &cam, px, py, id, s, n * n);
         radiance += t.radiance;
         rweight += (float3)(t.rpos.w, t.rnormal.w, t.rdir.w);
@@ -446,6 +453,70 @@ __kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone
     if (!mirror)
         weight *= (e + 2.0f) / (e + 1.0f) * fmax(dot(n, r), 0.0f);
     pixel_add(image, aov, pixel, 2u, weight * c.radiance);
+}
+
+/* Caustics: light that reached a surface through dielectrics, which shadow
+ * rays stop at and voxels let through unlit. Photons traced from the lights
+ * (photon/photon_trace.cl, kept when their specular bounces met a
+ * dielectric) are gathered at each pixel's G-buffer surface; the estimate
+ * (power times the BSDF over pi r^2 and the photons emitted) is added to the
+ * pixel and its direct AOV, through the throughput of the dielectrics and
+ * mirrors the camera ray passed. */
+
+#define CAUSTIC_PI 3.14159265f
+/* Photons whose surface normal is within about 60 degrees of the pixel's. */
+#define CAUSTIC_NORMAL_COS 0.5f
+/* A pixel's radius: the base radius doubled, up to CAUSTIC_WIDENINGS times,
+ * until a pilot pass finds CAUSTIC_MIN_PHOTONS within it. A focus keeps its
+ * sharpness and the sparse photons of a faint caustic are spread, not left
+ * as blotches; the pilot's photons are not the estimate's, so choosing by
+ * their count does not bias it. 0: no photon within the widest. */
+#define CAUSTIC_MIN_PHOTONS 16u
+#define CAUSTIC_WIDENINGS 2
+
+__kernel void vct_caustic_radius(PHOTON_GRID_ARGS(c), float radius, __global const float4 *gbuf,
+                                 __global const vct_material_desc *materials, uint2 size,
+                                 __global float *radii) {
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g)) {
+        if (get_global_id(0) < size.x && get_global_id(1) < size.y)
+            radii[get_global_id(1) * size.x + get_global_id(0)] = 0.0f;
+        return;
+    }
+    const photon_grid grid = PHOTON_GRID_VIEW(c);
+    /* The widest first: most pixels have no caustic near them at all. */
+    const float widest = radius * (float)(1 << CAUSTIC_WIDENINGS);
+    uint found;
+    photon_estimate(&grid, g.p, g.n, g.wo, widest, &g.m, 0u, CAUSTIC_NORMAL_COS, &found);
+    float chosen = found > 0u ? widest : 0.0f;
+    for (float r = radius; found > 0u && r < widest; r *= 2.0f) {
+        uint within;
+        photon_estimate(&grid, g.p, g.n, g.wo, r, &g.m, 0u, CAUSTIC_NORMAL_COS, &within);
+        if (within >= CAUSTIC_MIN_PHOTONS) {
+            chosen = r;
+            break;
+        }
+    }
+    radii[pixel] = chosen;
+}
+
+__kernel void vct_caustics(PHOTON_GRID_ARGS(c), __global const float *radii, float inv_emitted,
+                           __global const float4 *gbuf, __global const vct_material_desc *materials,
+                           uint2 size, __global float4 *image, __global float4 *aov) {
+    uint pixel;
+    gbuffer_surface g;
+    if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
+        return;
+    const float r = radii[pixel];
+    if (!(r > 0.0f))
+        return;
+    const photon_grid grid = PHOTON_GRID_VIEW(c);
+    uint found;
+    const float3 sum = photon_estimate(&grid, g.p, g.n, g.wo, r, &g.m, PHOTON_EPANECHNIKOV,
+                                       CAUSTIC_NORMAL_COS, &found);
+    if (found > 0u)
+        pixel_add(image, aov, pixel, 0u, g.throughput * sum * (inv_emitted / (CAUSTIC_PI * r * r)));
 }
 
 /* The Fresnel reflection vct_primary recorded, through a mirror cone.

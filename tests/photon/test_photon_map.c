@@ -226,12 +226,16 @@ static void grids(vct_context *ctx) {
     vct_scene *s = box_scene(0.6f, 1.0f, 1);
     traced t;
     trace_pass(ctx, s, 1u << 14, 8, 3, &t);
-    uint32_t caustic = 0, dir = 0;
+    uint32_t caustic = 0, through_glass = 0, dir = 0;
     for (size_t i = 0; i < (size_t)t.slots.paths * t.slots.depth; ++i) {
-        caustic += t.kinds[i] == VCT_PHOTON_CAUSTIC;
+        caustic += (t.kinds[i] & VCT_PHOTON_CAUSTIC) != 0;
+        through_glass += t.kinds[i] == (VCT_PHOTON_CAUSTIC | VCT_PHOTON_DIELECTRIC);
         dir += t.kinds[i] == VCT_PHOTON_DIRECT;
     }
     CHECK(caustic > 100, "only %u caustic photons under a glass sphere", caustic);
+    /* The box's only specular surface is the glass: every caustic passed it. */
+    CHECK(through_glass == caustic, "%u of %u caustic photons marked as through a dielectric",
+          through_glass, caustic);
     const uint32_t all = VCT_PHOTON_DIRECT | VCT_PHOTON_INDIRECT;
     grid_queries(ctx, s, &t, all, 0.1f, 0.1f, 0, "dense, radius = cell");
     grid_queries(ctx, s, &t, all, 0.1f, 0.04f, 0, "dense, radius < cell");

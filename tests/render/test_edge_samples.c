@@ -1,11 +1,13 @@
 /* Cone tracing's pixels on an edge show the pixel's mean, as a converged
  * reference does, not the value at its centre.
  *
- * The reference is independent of the edge search: the ray caster at N times
- * the width and height, one ray through each of its pixel centres, which
- * are exactly the N x N rays of a low-resolution pixel. A pixel that an edge
- * crosses (its block of fine pixels not all alike) must equal its block's
- * mean; any other pixel its centre's value. The scene holds every kind of
+ * The reference is independent of the edge search: the ray caster at N^2
+ * times the width and height, one ray through each of its pixel centres.
+ * A coarse pixel's N x N rays go through N x N of those centres: ray (i, j)
+ * through fine pixel (N i + j, N j + i) of its N^2 x N^2 block, each on a
+ * column and a row of its own. A pixel that an edge crosses (those fine
+ * pixels not all alike) must equal their mean; any other pixel its centre's
+ * value, which lies within 1e-3 of that mean on a smooth surface. The scene holds every kind of
  * edge: a floor's border against the sky, a plate over the floor of the same
  * material (found by geometry alone), the plate's hard shadow (the lights
  * seen) and two floor materials meeting.
@@ -66,12 +68,13 @@ static vct_image render_vct(const vct_scene *s, const vct_plan *plan, int w, int
     return im;
 }
 
-/* The N x N block of fine pixels under pixel (x, y), channel k. */
+/* The fine pixels pixel (x, y)'s rays go through, channel k. */
 static void block_stats(const vct_image *fine, int x, int y, int k, double *mean, double *spread) {
     double sum = 0.0, lo = INFINITY, hi = -INFINITY;
     for (int j = 0; j < N; ++j)
         for (int i = 0; i < N; ++i) {
-            const double v = fine->rgba[4 * ((size_t)(N * y + j) * fine->width + N * x + i) + k];
+            const size_t fx = (size_t)N * N * x + N * i + j, fy = (size_t)N * N * y + N * j + i;
+            const double v = fine->rgba[4 * (fy * fine->width + fx) + k];
             sum += v;
             lo = fmin(lo, v);
             hi = fmax(hi, v);
@@ -103,7 +106,7 @@ static void direct_edges(void) {
 
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_render_options ro = {N * W, N * H, 0, 0, 0.0f};
+    const vct_render_options ro = {N * N * W, N * N * H, 0, 0, 0.0f};
     vct_image fine;
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
     vct_accel_free(g);
@@ -126,8 +129,6 @@ static void direct_edges(void) {
                     edge |= spread > 0.25 * (mean + 1e-2);
                     err_px = fmax(err_px, fabs(got - mean) / (mean + 1e-2));
                 }
-                /* Within a surface the light changes smoothly, and a pixel's
-                 * centre and mean differ by far less than 1e-3. */
                 edges += edge;
                 flat += !edge;
                 centred += edge && err_px > 1e-2;
@@ -163,9 +164,15 @@ static void indirect_share(void) {
     vct_plan plan;
     vct_plan_make(s, NULL, &plan);
     CHECK(plan.on[VCT_EFFECT_INDIRECT] || plan.on[VCT_EFFECT_AO], "a sky-lit plate plans cones");
+    /* Which fine pixels see the plate: their positions, no cones needed. */
+    vct_effect_force force[VCT_EFFECTS];
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        force[e] = VCT_FORCE_OFF;
+    vct_plan visible;
+    vct_plan_make(s, force, &visible);
     vct_aovs aovs, fine_aovs;
     vct_image im = render_vct(s, &plan, W, H, N, &aovs);
-    vct_image fine = render_vct(s, &plan, N * W, N * H, 1, &fine_aovs);
+    vct_image fine = render_vct(s, &visible, N * N * W, N * N * H, 1, &fine_aovs);
     /* The interior's indirect light, and each border pixel's share. */
     double interior = 0.0;
     int inside = 0;
@@ -174,9 +181,11 @@ static void indirect_share(void) {
         for (int x = 0; x < W; ++x) {
             int hits = 0;
             for (int j = 0; j < N; ++j)
-                for (int i = 0; i < N; ++i)
-                    hits += fine_aovs.position
-                                .rgba[4 * ((size_t)(N * y + j) * N * W + N * x + i) + 3] != 0.0f;
+                for (int i = 0; i < N; ++i) {
+                    const size_t fx = (size_t)N * N * x + N * i + j,
+                                 fy = (size_t)N * N * y + N * j + i;
+                    hits += fine_aovs.position.rgba[4 * (fy * N * N * W + fx) + 3] != 0.0f;
+                }
             share[y * W + x] = (double)hits / (N * N);
             if (hits == N * N) {
                 interior += aovs.indirect.rgba[4 * (y * W + x) + 1];

@@ -154,7 +154,8 @@ static void specular_only_when_planned(void) {
  * (indirect, with no light but the sky), the AO output is 1 (all open), and
  * pixels that miss see L. The ambient light also plans AO, which must not
  * add the sky a second time. A mirror floor (metal, roughness 0) reflects
- * exactly albedo * L through its specular cone and nothing diffusely. */
+ * exactly albedo * L (its reflected ray, which meets the sky) and nothing
+ * diffusely. */
 static void sky_floor(vct_material m, const uint32_t *presets, int count, int mirror) {
     const float floor_quad[12] = {-1, 0.999f, -1, 1, 0.999f, -1, 1, 0.999f, 1, -1, 0.999f, 1};
     vct_scene *s = one_material_scene(floor_quad, 1, m);
@@ -302,6 +303,75 @@ static void glossy_cornell_against_path_tracer(void) {
     rendered_free(&without);
     vct_image_free(&ref);
     vct_scene_free(box);
+}
+
+/* A perfect mirror (metal, roughness 0, albedo a) under an emissive quad
+ * E: camera rays are reflected exactly, as through glass, so a pixel shows
+ * a E where the reflected ray meets the quad and nothing elsewhere, with
+ * sharp edges (a cone, which this replaces, blurs them to the voxels' size).
+ * Where the camera sees the quad itself, E. The reference reflects the
+ * camera rays in double (vec3d.h). */
+static void exact_mirror(void) {
+    const float quads[] = {-3,    0, -3,    3,    0, -3,    3,    0, 3,    -3,    0, 3,
+                           -0.5f, 1, -0.6f, 0.7f, 1, -0.6f, 0.7f, 1, 0.4f, -0.5f, 1, 0.4f};
+    test_mesh t = mesh_quads(quads, 2);
+    const uint32_t mat[4] = {0, 0, 1, 1};
+    vct_material m[2] = {vct_material_default(), vct_material_default()};
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.9f;
+    m[0].metallic = 1.0f;
+    m[0].roughness = 0.0f;
+    m[1].albedo[0] = m[1].albedo[1] = m[1].albedo[2] = 0.0f;
+    m[1].emission[0] = 2.0f, m[1].emission[1] = 3.0f, m[1].emission[2] = 4.0f;
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(t.pos, t.nv, t.tri, t.nt, mat, m, 2, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    mesh_free(&t);
+    const v3 eye = {2.2, 1.4, 1.8}, at = {0, 0.3, 0}, up = {0, 1, 0};
+    s->camera = (vct_camera){{2.2f, 1.4f, 1.8f}, {0, 0.3f, 0}, {0, 1, 0}, 60.0f};
+    vct_plan p;
+    vct_plan_make(s, NULL, &p);
+    const int w = 48, h = 48;
+    vct_image im = vct_case_render(ctx, s, &p, 32, w, h, 1, NULL);
+    int checked = 0, in_mirror = 0, bad = 0;
+    double worst = 0.0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const v3 d = camera_ray(eye, at, up, 60.0, w, h, x, y);
+            if (d.y > -1e-3)
+                continue; /* towards the sky, or nearly level */
+            /* The quad's plane first (the camera is above it), then the
+             * mirror's, reflected back up to the quad's plane. */
+            v3 q = add(eye, mul(d, (1.0 - eye.y) / d.y));
+            double scale = 1.0;
+            const int direct = q.x > -0.5 && q.x < 0.7 && q.z > -0.6 && q.z < 0.4;
+            if (!direct) {
+                const v3 p0 = add(eye, mul(d, -eye.y / d.y));
+                if (fabs(p0.x) > 2.9 || fabs(p0.z) > 2.9)
+                    continue;
+                const v3 r = {d.x, -d.y, d.z};
+                q = add(p0, mul(r, 1.0 / r.y));
+                scale = 0.9;
+            }
+            const double margin = fmin(fmin(fabs(q.x + 0.5), fabs(q.x - 0.7)),
+                                       fmin(fabs(q.z + 0.6), fabs(q.z - 0.4)));
+            if (margin < 1e-3)
+                continue; /* on an edge: float and double may disagree */
+            const int lit = q.x > -0.5 && q.x < 0.7 && q.z > -0.6 && q.z < 0.4;
+            ++checked;
+            in_mirror += !direct && lit;
+            for (int k = 0; k < 3; ++k) {
+                const double expected = lit ? scale * m[1].emission[k] : 0.0;
+                const double e = fabs(im.rgba[4 * (y * w + x) + k] - expected) / 4.0;
+                worst = fmax(worst, e);
+                bad += e > 1e-5;
+            }
+        }
+    CHECK(bad == 0 && checked > 1000 && in_mirror > 100,
+          "perfect mirror: %d values off (worst %.3g of the brightest emission) over %d pixels, "
+          "%d showing the quad in the mirror",
+          bad, worst, checked, in_mirror);
+    vct_image_free(&im);
+    vct_scene_free(s);
 }
 
 /* A clear glass pane (IOR 1.5, tinted a) under a constant sky L, seen from
@@ -678,6 +748,7 @@ int main(void) {
     empty_volume();
     sparse_diffuse();
     glass_pane();
+    exact_mirror();
     closed_room_lit_outside();
     cornell_against_path_tracer();
     glossy_cornell_against_path_tracer();

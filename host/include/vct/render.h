@@ -76,6 +76,7 @@ typedef enum vct_effect {
     VCT_EFFECT_EMISSION,     /* emissive surfaces */
     VCT_EFFECT_AO,           /* ambient occlusion of the ambient light */
     VCT_EFFECT_SOFT_SHADOWS, /* shadows of lights with a radius, by cones */
+    VCT_EFFECT_CAUSTICS,     /* light through dielectrics onto diffuse surfaces, by photons */
     VCT_EFFECTS
 } vct_effect;
 

@@ -11,6 +11,7 @@
 #define VCT_PHOTON_DIRECT 1u
 #define VCT_PHOTON_INDIRECT 2u
 #define VCT_PHOTON_CAUSTIC 4u
+#define VCT_PHOTON_DIELECTRIC 8u /* with CAUSTIC: the specular bounces met a dielectric */
 
 #define VCT_PHOTON_BYTES 48u /* 3 float4 */
 

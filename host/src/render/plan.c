@@ -8,8 +8,9 @@
 #include "runtime/runtime.h"
 #include "light/emitters.h"
 
-static const char *const effect_names[VCT_EFFECTS] = {
-    "direct", "shadows", "indirect", "specular", "refraction", "emission", "ao", "soft_shadows"};
+static const char *const effect_names[VCT_EFFECTS] = {"direct",   "shadows",      "indirect",
+                                                      "specular", "refraction",   "emission",
+                                                      "ao",       "soft_shadows", "caustics"};
 
 const char *vct_effect_name(vct_effect effect) {
     return effect >= 0 && effect < VCT_EFFECTS ? effect_names[effect] : "unknown";
@@ -137,6 +138,14 @@ void vct_plan_make(const vct_scene *s, const vct_effect_force *force, vct_plan *
             soft, soft == 1 ? "" : "s");
     else
         say(p, VCT_EFFECT_SOFT_SHADOWS, 0, "%s", lights ? "no light has a radius" : "no lights");
+
+    if (clear >= 0 && (lights || emitters || ambient))
+        say(p, VCT_EFFECT_CAUSTICS, 1,
+            "light through material \"%s\" (transmits %g): photons gathered where it lands",
+            s->materials[clear].name, s->materials[clear].transmission);
+    else
+        say(p, VCT_EFFECT_CAUSTICS, 0, "%s",
+            clear >= 0 ? "nothing sends light through it" : "no transmissive material");
 
     for (int e = 0; force && e < VCT_EFFECTS; ++e) {
         if (force[e] == VCT_FORCE_AUTO)

@@ -7,6 +7,7 @@
 #include "accel/accel.h"
 #include "light/emitters.h"
 #include "render/frame.h"
+#include "render/vct_caustics.h"
 #include "voxel/cones.h"
 #include "scene/scene_device.h"
 #include "vct_types.h"
@@ -17,6 +18,7 @@
 #define SPECULAR_STAGE "vct specular cone"
 #define SOFT_STAGE "vct soft shadows"
 #define GLASS_STAGE "vct glass reflection"
+#define CAUSTICS_STAGE "vct caustics"
 #define BOUNCE_STAGE "light bounce"
 
 vct_vct_options vct_vct_options_default(void) {
@@ -157,16 +159,18 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
     return VCT_OK;
 }
 
-/* -D options: the planned effects, then the cones' (pool kind, levels). */
+/* -D options: the planned effects (caustics are a kernel of their own,
+ * which needs none), then the cones' (pool kind, levels). */
 static void program_options(const vct_plan *plan, int emitters, const vct_voxels *v,
                             const vct_cone_settings *cones, char *out, size_t size) {
     static const char *defines[VCT_EFFECTS] = {
-        "-DVCT_DIRECT",     "-DVCT_SHADOWS",  "-DVCT_INDIRECT", "-DVCT_SPECULAR",
-        "-DVCT_REFRACTION", "-DVCT_EMISSION", "-DVCT_AO",       "-DVCT_SOFT_SHADOWS"};
+        "-DVCT_DIRECT",   "-DVCT_SHADOWS",      "-DVCT_INDIRECT",
+        "-DVCT_SPECULAR", "-DVCT_REFRACTION",   "-DVCT_EMISSION",
+        "-DVCT_AO",       "-DVCT_SOFT_SHADOWS", NULL};
     size_t len = 0;
     out[0] = '\0';
     for (int e = 0; e < VCT_EFFECTS; ++e)
-        if (plan->on[e])
+        if (plan->on[e] && defines[e])
             len += (size_t)snprintf(out + len, size - len, "%s%s", len ? " " : "", defines[e]);
     if (emitters && plan->on[VCT_EFFECT_DIRECT] && len < size)
         len += (size_t)snprintf(out + len, size - len, " -DVCT_EMITTERS");
@@ -409,6 +413,11 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, con
                      opt->edge_samples ? opt->edge_samples : VCT_EDGE_SAMPLES_DEFAULT, err);
     vct_stage_end(ctx);
 
+    if (rc == VCT_OK && plan->on[VCT_EFFECT_CAUSTICS]) {
+        vct_stage_begin(ctx, CAUSTICS_STAGE);
+        rc = vct_caustics_add(ctx, s, g, &f.scene, f.program, f.gbuf, f.image, f.aov, f.size, err);
+        vct_stage_end(ctx);
+    }
     if (rc == VCT_OK && plan->on[VCT_EFFECT_SOFT_SHADOWS]) {
         vct_stage_begin(ctx, SOFT_STAGE);
         rc =
