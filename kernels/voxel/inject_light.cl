@@ -120,14 +120,22 @@ inline float3 fragment_irradiance(const accel_view *g, const light_bins_view *bi
     return irradiance;
 }
 
+/* An emitter parallel to a surface and nearer to it than a voxel (a
+ * ceiling panel hung just below the ceiling) lights that surface only in
+ * the gap between them, whence the light cannot get out; in a voxel both
+ * share, that light would show on the panel's face instead. */
+#define TRAPPED_PARALLEL 0.95f
+
 /* Irradiance at centre p onto one fragment (triangle normal n, nearest
  * point q) from the emitters: e->samples samples of stream `seed`, each seen
- * from q, lifted off the triangle on the sample's side and towards it. Split
- * by side as fragment_irradiance does. */
+ * from q, lifted off the triangle on the sample's side and towards it,
+ * except from emitters that trap their light within `gap` of the fragment.
+ * Split by side as fragment_irradiance does. */
 inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
                                 __global const vct_material_desc *materials,
                                 __global const uint *tri_material, float3 p, float3 q, float3 n,
-                                float3 *behind, uint seed, shared_rays *shared, int reuse) {
+                                float gap, float3 *behind, uint seed, shared_rays *shared,
+                                int reuse) {
     float3 irradiance = (float3)(0.0f), back = (float3)(0.0f);
     const float lift = surface_epsilon(g, q);
     const int keep = !reuse && e->samples <= SHARED_LIGHTS;
@@ -147,6 +155,11 @@ inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
         }
         if (keep)
             shared->seen[s] = seen;
+        float3 a, b, c;
+        emitter_vertices(g, tri, &a, &b, &c);
+        const float3 nl = normalize(cross(b - a, c - a));
+        if (fabs(dot(nl, n)) > TRAPPED_PARALLEL && fabs(dot(q - a, nl)) < gap)
+            continue;
         if (cos_n >= 0.0f)
             irradiance += radiant * cos_theta * seen;
         else
@@ -209,7 +222,7 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
             /* the first fragment's stream: shared samples are the same samples */
             const int reuse_glow =
                 glow.valid && dot(n, glow.n) > SHARED_FACING && fabs(dot(q - glow.q, n)) < plane;
-            front += fragment_emitters(&g, &ev, materials, tri_material, p, q, n, &behind,
+            front += fragment_emitters(&g, &ev, materials, tri_material, p, q, n, size, &behind,
                                        reuse_glow ? glow.seed : f, &glow, reuse_glow);
             if (!reuse_glow) {
                 glow.n = n;

@@ -365,8 +365,77 @@ static void thin_walls(void) {
     }
 }
 
+/* Irradiance at (x, y) on the plane from a square of radiance L over
+ * [4, 12]^2, h under it, integrated on a fine grid. */
+static double square_irradiance(double x, double y, double h, double L) {
+    const int grid = 200;
+    double E = 0.0;
+    for (int j = 0; j < grid; ++j)
+        for (int i = 0; i < grid; ++i) {
+            const double dx = 4.0 + 8.0 * (i + 0.5) / grid - x,
+                         dy = 4.0 + 8.0 * (j + 0.5) / grid - y;
+            const double d2 = dx * dx + dy * dy + h * h;
+            E += L * (h * h / d2) / d2 * (64.0 / ((double)grid * grid));
+        }
+    return E;
+}
+
+/* An emissive square (radiance L, over [4, 12]^2) parallel to the plane,
+ * `below` units under it. Returns the ratio of the plane's radiance over the
+ * square's central 8 x 8 voxels to albedo / pi times the irradiance there,
+ * and *worst, the largest radiance anywhere. */
+static double panel_under_plane(double below, double L, double albedo, double *worst) {
+    const float z = (float)(PLANE_Z - below);
+    const float pos[] = {0, 0, PLANE_Z, 16, 0, PLANE_Z, 16, 16, PLANE_Z, 0, 16, PLANE_Z,
+                         4, 4, z,       12, 4, z,       12, 12, z,       4, 12, z};
+    const uint32_t tri[] = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
+    const uint32_t mat[] = {0, 0, 1, 1};
+    vct_material m[2] = {vct_material_default(), vct_material_default()};
+    m[1].albedo[0] = m[1].albedo[1] = m[1].albedo[2] = 0.0f;
+    m[1].emission[0] = m[1].emission[1] = m[1].emission[2] = (float)L;
+    vct_error err = {0};
+    inject_case c = {0};
+    c.scene = vct_scene_from_arrays(pos, 8, tri, 4, mat, m, 2, &err);
+    REQUIRE_OK(c.scene ? VCT_OK : err.status, err);
+    case_build(&c);
+    inject(&c);
+    double got = 0.0, expected = 0.0;
+    *worst = 0.0;
+    for (uint32_t v = 0; v < c.info.voxels; ++v) {
+        uint32_t cell[3];
+        decode(c.keys[v], cell);
+        *worst = fmax(*worst, c.radiance[4 * v]);
+        if (cell[2] == 8 && cell[0] >= 4 && cell[0] < 12 && cell[1] >= 4 && cell[1] < 12) {
+            got += c.radiance[4 * v];
+            expected +=
+                albedo / CHECK_PI * square_irradiance(cell[0] + 0.5, cell[1] + 0.5, below, L);
+        }
+    }
+    case_free(&c);
+    return expected > 0.0 ? got / expected : -1.0;
+}
+
+/* A panel hung a third of a voxel under the plane lights the plane only in
+ * the gap between them, and shares the plane's voxels: none of that light
+ * may show (it would glow on the panel's face). Three voxels under it, its
+ * light on the plane is albedo / pi times the irradiance of the square
+ * (8 emitter samples per voxel: within 10 % over 64 voxels). */
+static void trapped_light(void) {
+    const double L = 2.0, albedo = 0.8;
+    double worst;
+    panel_under_plane(1.0 / 3.0, L, albedo, &worst);
+    CHECK(worst < 0.01 * albedo * L,
+          "a panel a third of a voxel under the plane: voxels up to %.4g (unhidden, up to about "
+          "%.3g)",
+          worst, albedo * L);
+    const double ratio = panel_under_plane(3.0, L, albedo, &worst);
+    CHECK(fabs(ratio - 1.0) < 0.1,
+          "a panel three voxels under the plane: %.4f of the light over it", ratio);
+}
+
 int main(void) {
     ctx = check_context();
+    trapped_light();
     vct_material white = vct_material_default();
     const double light[3] = {8.3, 7.7, 14.5}, moved[3] = {3.1, 12.6, 13.0};
 
