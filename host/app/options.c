@@ -37,7 +37,7 @@ void cli_usage(void) {
         "                                   an edge (surface, material, hard shadow), which\n"
         "                                   show their mean (default 4; 1: pixel centres);\n"
         "                                   --ao-distance F (of the volume, 0.125);\n"
-        "                                   --bounces 1..4 light bounces in the voxels (2);\n"
+        "                                   --bounces 1..4 light bounces in the voxels (3);\n"
         "                                   --isotropic: one radiance per brick sample\n"
         "                                   (default: six directional values);\n"
         "                                   --aov PREFIX writes PREFIX_direct.pfm, _indirect,\n"
@@ -257,7 +257,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
     opt->voxel_res = 0; /* each command's own default */
     opt->diffuse_cones = 6;
     opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
-    opt->bounces = 2;
+    opt->bounces = 3;
     opt->anisotropic = -1; /* render: on, voxelize: off, unless given */
     opt->cones = vct_cone_settings_default();
     if (argc < 2) {

@@ -68,8 +68,14 @@ typedef struct cone_result {
  *    origin that sees one face from before it, beside the other, behind:
  *    such views see the darker side: what darkens the atrium's columns and
  *    the Cornell box's blocks (README, "The scene suite", with what was
- *    tried against it). */
+ *    tried against it).
+ * A side is seen only by a cone that comes at it: one heading along the
+ * side's own normal (leaving it, or grazing it: the floor a cone starts
+ * from, which its wide samples take in further on) sees its light fade,
+ * fully by a normal component of 1 / SIDE_FACING_FADE. Without this, a lit
+ * surface lit itself through its own cones, more so the finer the voxels. */
 #define SIDE_TOLERANCE 0.05f
+#define SIDE_FACING_FADE 2.0f
 #define SIDE_COHERENT_MIN 0.3f
 #define SIDE_COHERENT_FULL 0.7f
 
@@ -78,6 +84,12 @@ typedef struct cone_result {
  * level's sample spacing in volume units. */
 inline float side_behind(float dist, float spacing) {
     return clamp(0.5f - dist / (2.0f * SIDE_TOLERANCE * spacing), 0.0f, 1.0f);
+}
+
+/* How much of a side whose unit normal has component `facing` along the
+ * cone's direction the cone sees (1: it comes at the side). */
+inline float side_facing(float facing) {
+    return clamp(1.0f - SIDE_FACING_FADE * facing, 0.0f, 1.0f);
 }
 
 /* How much a sample of plane pl and shade sh is one surface's: planes
@@ -124,22 +136,25 @@ VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, u
     if (!(len > 1e-6f))
         return s; /* no one-sided surface */
     const float dist = (dot(pl.xyz, o) - pl.w) / len;
-    if (!(dist < SIDE_TOLERANCE * spacing))
-        return s; /* before the plane */
     const float4 shade = CONE_POOL_READ(shade_pool);
-    const float turn = side_behind(dist, spacing) * side_coherence(shade, pl);
+    const float coherent = side_coherence(shade, pl);
+    const float facing = dot(d, pl.xyz) / len;
+    const float front = mix(1.0f, side_facing(facing), coherent),
+                back = mix(1.0f, side_facing(-facing), coherent);
+    const float turn =
+        dist < SIDE_TOLERANCE * spacing ? side_behind(dist, spacing) * coherent : 0.0f;
     if (!(turn > 0.0f))
-        return s;
+        return (float4)(s.xyz * front, s.w);        /* before the plane */
+    float4 dark = (float4)(s.xyz - shade.xyz, s.w); /* isotropic: itself less the shade */
 #ifdef VCT_ANISOTROPIC
     if (directional) {
         const float4 dx = d.x >= 0.0f ? CONE_POOL_READ(dark0) : CONE_POOL_READ(dark3);
         const float4 dy = d.y >= 0.0f ? CONE_POOL_READ(dark1) : CONE_POOL_READ(dark4);
         const float4 dz = d.z >= 0.0f ? CONE_POOL_READ(dark2) : CONE_POOL_READ(dark5);
-        return mix(s, (w.x * dx + w.y * dy + w.z * dz) / (w.x + w.y + w.z), turn);
+        dark = (w.x * dx + w.y * dy + w.z * dz) / (w.x + w.y + w.z);
     }
 #endif
-    /* one isotropic value: its darker side is itself less the shade */
-    return (float4)(s.xyz - turn * shade.xyz, s.w);
+    return (float4)(mix(s.xyz * front, dark.xyz * back, turn), mix(s.w, dark.w, turn));
 #undef CONE_POOL_READ
 }
 

@@ -71,25 +71,29 @@ static void pyramid_free(ref_pyramid *p) {
 }
 
 /* How far a sample of level `level` at lattice point lp is seen from its
- * darker side by a cone from o (volume units less 0.5), and its shade:
- * cone_trace.h's rule, written out. */
+ * darker side by a cone from o (volume units less 0.5) along d, its shade,
+ * and how much of its brighter (*front) and darker (*back) side the cone
+ * sees by the way it heads: cone_trace.h's rule, written out. */
 static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3], const double o[3],
-                       double shade[4]) {
+                       const double d[3], double shade[4], double *front, double *back) {
     double pl[4];
     ref_trilinear(&p->plane[level], lp, pl);
     for (int k = 0; k < 4; ++k)
         shade[k] = 0.0;
+    *front = *back = 1.0;
     const double len = sqrt(pl[0] * pl[0] + pl[1] * pl[1] + pl[2] * pl[2]);
     if (!(len > 1e-6))
         return 0.0;
+
     const double tolerance = 0.05, spacing = 0.5 / (double)(1u << level);
     const double dist = (pl[0] * o[0] + pl[1] * o[1] + pl[2] * o[2] - pl[3]) / len;
-    if (!(dist < tolerance * spacing))
-        return 0.0;
     ref_trilinear(&p->shade[level], lp, shade);
-    const double behind = fmin(fmax(0.5 - dist / (2.0 * tolerance * spacing), 0.0), 1.0);
     const double coherent = fmin(fmax((len / fmax(shade[3], 1e-6) - 0.3) / 0.4, 0.0), 1.0);
-    return behind * coherent;
+    const double facing = (pl[0] * d[0] + pl[1] * d[1] + pl[2] * d[2]) / len;
+    *front = 1.0 + coherent * (fmin(fmax(1.0 - 2.0 * facing, 0.0), 1.0) - 1.0);
+    *back = 1.0 + coherent * (fmin(fmax(1.0 + 2.0 * facing, 0.0), 1.0) - 1.0);
+    const double behind = fmin(fmax(0.5 - dist / (2.0 * tolerance * spacing), 0.0), 1.0);
+    return dist < tolerance * spacing ? behind * coherent : 0.0;
 }
 
 /* A level's value at volume point at ([0,1)^3) seen along d from o (volume
@@ -109,12 +113,14 @@ static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int dire
     const uint32_t node = node_at(c, cell, level);
     if (node == VCT_NODE_NULL || c->child[node] == VCT_NODE_NULL)
         return;
-    double shade[4];
-    const double turn = ref_turn(p, level, lp, o, shade);
+    double shade[4], front, back;
+    const double turn = ref_turn(p, level, lp, o, d, shade, &front, &back);
     if (!directional || level + 1 >= p->levels) {
         ref_trilinear(&p->iso[level], lp, out);
+        if (!(out[3] > 0.0))
+            return; /* empty: no side to see */
         for (int k = 0; k < 3; ++k)
-            out[k] -= turn * shade[k];
+            out[k] = (1.0 - turn) * front * out[k] + turn * back * (out[k] - shade[k]);
         return;
     }
     const double w[3] = {d[0] * d[0], d[1] * d[1], d[2] * d[2]};
@@ -124,7 +130,10 @@ static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int dire
         ref_trilinear(&p->dir[dir][level], lp, s);
         ref_trilinear(&p->dark[dir][level], lp, dark);
         for (int k = 0; k < 4; ++k)
-            out[k] += w[axis] * (s[k] + turn * (dark[k] - s[k])) / (w[0] + w[1] + w[2]);
+            out[k] += w[axis] *
+                      (k < 3 ? (1.0 - turn) * front * s[k] + turn * back * dark[k]
+                             : s[k] + turn * (dark[k] - s[k])) /
+                      (w[0] + w[1] + w[2]);
     }
 }
 
