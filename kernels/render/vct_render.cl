@@ -154,8 +154,7 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
         return;
     const primary_scene ps = PRIMARY_SCENE();
     const uint id = camera_pixel_id(&cam, x, y), row = camera_row(&cam, y);
-    const int centre_found = gbuf[GBUF_SLOTS * pixel + 1u].w != 0.0f;
-    int found = centre_found;
+    int found = gbuf[GBUF_SLOTS * pixel + 1u].w != 0.0f; /* the centre's surface */
     int reflected = reflection && any(reflection[3u * pixel + 2u].xyz != 0.0f);
     float3 radiance = (float3)(0.0f), cover = (float3)(0.0f), rweight = (float3)(0.0f);
     for (uint s = 0; s < n * n; ++s) {

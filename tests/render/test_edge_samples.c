@@ -214,8 +214,35 @@ static void indirect_share(void) {
     vct_scene_free(s);
 }
 
+/* More rays per axis than VCT_EDGE_SAMPLES_MAX: a clear error, no image. */
+static void too_many_rays(void) {
+    const float quad[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+    const uint32_t quad_material[1] = {0};
+    const vct_material m = vct_material_default();
+    vct_scene *s = scene_of(quad, 1, quad_material, &m, 1);
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 1.0f;
+    vct_effect_force force[VCT_EFFECTS];
+    for (int e = 0; e < VCT_EFFECTS; ++e)
+        force[e] = VCT_FORCE_OFF;
+    vct_plan plan;
+    vct_plan_make(s, force, &plan);
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_vct_options o = vct_vct_options_default();
+    o.width = o.height = 8;
+    o.edge_samples = VCT_EDGE_SAMPLES_MAX + 1;
+    vct_image im;
+    const int rc = vct_render_vct(ctx, s, g, NULL, &plan, &o, &im, NULL, &err);
+    CHECK(rc == VCT_ERR_INPUT && strstr(err.message, "rays per axis") && im.rgba == NULL,
+          "%u rays per axis: rc %d, '%s'", o.edge_samples, rc, err.message);
+    vct_accel_free(g);
+    vct_scene_free(s);
+}
+
 int main(void) {
     ctx = check_context();
+    too_many_rays();
     direct_edges();
     indirect_share();
     vct_context_destroy(ctx);

@@ -365,6 +365,11 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, con
         return vct_fail(err, VCT_ERR_INPUT,
                         "vct: the plan traces cones: build the voxels first (vct_vct_prepare)");
     int rc = vct_cone_settings_check(&opt->cones, err);
+    if (rc == VCT_OK && opt->edge_samples > VCT_EDGE_SAMPLES_MAX)
+        rc = vct_fail(err, VCT_ERR_INPUT,
+                      "vct: %u rays per axis at edges is more than %u: give 1 to %u (1: pixel "
+                      "centres only)",
+                      opt->edge_samples, VCT_EDGE_SAMPLES_MAX, VCT_EDGE_SAMPLES_MAX);
     vct_camera_desc cam;
     if (rc == VCT_OK)
         rc = vct_frame_camera(ctx, &s->camera, opt->width, opt->height, &cam, err);
