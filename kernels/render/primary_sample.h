@@ -1,8 +1,8 @@
 /* One camera ray of cone tracing's primary pass: followed through
  * dielectrics (the transmitted ray exactly, total internal reflection where
  * there is none) and off perfect mirrors, then emission and direct light at
- * the first other surface,
- * exactly as the ray caster computes them. What it finds is what the G-buffer
+ * the first other surface, exactly as the ray caster computes them. What it
+ * finds is what the G-buffer
  * keeps for the cone passes, and a key that tells surfaces apart: the
  * materials on the way and the lights the point sees. Neighbouring pixels
  * whose keys or surfaces differ hold an edge, and are supersampled
@@ -48,9 +48,9 @@ typedef struct primary_scene {
 
 /* What one camera ray found. */
 typedef struct primary_sample {
-    float3 radiance;   /* emission and direct light, through the dielectrics' throughput */
+    float3 radiance;   /* emission and direct light, through the throughput on the way */
     float3 throughput; /* of the dielectrics and mirrors on the way to the surface */
-    int found;         /* a surface other than a dielectric was reached */
+    int found;         /* a surface other than a dielectric or mirror was reached */
     float4 gpos, gnormal, gview, galbedo; /* the G-buffer's slots 0, 1, 2 and 4 */
     /* The Fresnel reflection of the first dielectric entered: (point,
      * weight.x), (normal, weight.y), (mirror direction, weight.z). */
