@@ -17,6 +17,7 @@
 #include "scene/camera.h"
 #include "scene/rng.h"
 #include "scene/texture.h"
+#include "render/shading_scene.h"
 #include "vct_types.h"
 
 #define VCT_MAX_INTERFACES 8u
@@ -33,18 +34,6 @@
 #else
 #define SOFT_SHADOWS 0
 #endif
-
-/* Everything a camera ray reads. */
-typedef struct primary_scene {
-    accel_view g;
-    texture_view tv;
-    emitter_view e;
-    __global const vct_material_desc *materials;
-    __global const uint *tri_material;
-    __global const vct_light_desc *lights;
-    uint light_count;
-    float3 ambient;
-} primary_scene;
 
 /* What one camera ray found. */
 typedef struct primary_sample {
@@ -82,7 +71,7 @@ inline float3 direct_shade(const vct_material_desc *m, direct_terms d, float e) 
 /* The camera ray through (px, py) in the whole image's pixel coordinates;
  * seed keys the pixel's emitter samples, of which the ray takes those from
  * `part` on, every `parts` (light/emitters.h). */
-inline primary_sample primary_trace(const primary_scene *ps, const vct_camera_desc *cam, float px,
+inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_desc *cam, float px,
                                     float py, uint seed, uint part, uint parts) {
     primary_sample out;
     out.radiance = (float3)(0.0f);

@@ -62,9 +62,6 @@
         __global const uint *tri_material, TEXTURE_ARGS, __global const vct_light_desc *lights,    \
         uint light_count, EMITTER_ARGS, float4 ambient, __global float4 *gbuf,                     \
         __global float4 *image, __global float4 *aov, __global float4 *reflection
-#define PRIMARY_SCENE()                                                                            \
-    ((primary_scene){ACCEL_VIEW(), TEXTURE_VIEW(), EMITTER_VIEW(), materials, tri_material,        \
-                     lights, light_count, ambient.xyz})
 
 /* A sample's surface into the G-buffer, with the throughput given. */
 inline void gbuffer_write(__global float4 *gbuf, uint pixel, const primary_sample *s,
@@ -89,7 +86,7 @@ __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
         return;
-    const primary_scene ps = PRIMARY_SCENE();
+    const shading_scene ps = SHADING_SCENE();
     const uint pixel = y * cam.size.x + x;
     const primary_sample s =
         primary_trace(&ps, &cam, (float)x + 0.5f, (float)camera_row(&cam, y) + 0.5f,
@@ -152,7 +149,7 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     const uint pixel = y * cam.size.x + x;
     if (!flags[pixel])
         return;
-    const primary_scene ps = PRIMARY_SCENE();
+    const shading_scene ps = SHADING_SCENE();
     const uint id = camera_pixel_id(&cam, x, y), row = camera_row(&cam, y);
     int found = gbuf[GBUF_SLOTS * pixel + 1u].w != 0.0f; /* the centre's surface */
     int reflected = reflection && any(reflection[3u * pixel + 2u].xyz != 0.0f);

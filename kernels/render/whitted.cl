@@ -13,6 +13,7 @@
 #include "scene/bsdf.h"
 #include "scene/camera.h"
 #include "scene/texture.h"
+#include "render/shading_scene.h"
 #include "vct_types.h"
 
 /* One refraction branch per level at most, so the stack never holds more
@@ -50,22 +51,13 @@ inline float3 whitted_local(const accel_view *g, const vct_material_desc *m, flo
 
 /* What a ray tree reads. */
 typedef struct whitted_scene {
-    accel_view g;
-    texture_view tv;
-    emitter_view e;
-    __global const vct_material_desc *materials;
-    __global const uint *tri_material;
-    __global const vct_light_desc *lights;
-    uint light_count;
-    float3 ambient;
+    shading_scene s;
     uint max_depth;
     float min_throughput;
     uint plain; /* the ray caster: one hit, Lambertian shading, no ambient */
 } whitted_scene;
 
-#define WHITTED_SCENE()                                                                            \
-    ((whitted_scene){ACCEL_VIEW(), TEXTURE_VIEW(), EMITTER_VIEW(), materials, tri_material,        \
-                     lights, light_count, ambient.xyz, max_depth, min_throughput, plain})
+#define WHITTED_SCENE() ((whitted_scene){SHADING_SCENE(), max_depth, min_throughput, plain})
 
 inline uint key_mix(uint key, uint v) {
     return (key ^ v) * 16777619u; /* FNV-1a, a word at a time */
@@ -90,17 +82,17 @@ inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, u
     for (;;) {
         hit_record h;
         int next = 0; /* 1: this branch continues with org, dir, throughput */
-        if (!accel_trace(&w->g, org, dir, 0.0f, INFINITY, 0, &h)) {
-            radiance += throughput * w->ambient; /* the environment */
+        if (!accel_trace(&w->s.g, org, dir, 0.0f, INFINITY, 0, &h)) {
+            radiance += throughput * w->s.ambient; /* the environment */
             k = key_mix(k, 0xFFFFFFFFu);
         } else {
             float3 p, ng, n;
             int front;
-            if (surface_hit(&w->g, &h, dir, &p, &ng, &n, &front)) {
-                const uint mat = w->tri_material[h.tri];
-                const vct_material_desc m = w->materials[mat];
+            if (surface_hit(&w->s.g, &h, dir, &p, &ng, &n, &front)) {
+                const uint mat = w->s.tri_material[h.tri];
+                const vct_material_desc m = w->s.materials[mat];
                 const float3 wo = -dir;
-                const float eps = surface_epsilon(&w->g, p);
+                const float eps = surface_epsilon(&w->s.g, p);
                 const int deeper = depth + 1 < w->max_depth;
                 k = key_mix(k, mat);
                 if (is_dielectric(&m) && !w->plain) {
@@ -124,12 +116,12 @@ inline float3 whitted_tree(const whitted_scene *w, const vct_camera_desc *cam, u
                     dir = reflect_dir(wo, n);
                     next = deeper;
                 } else {
-                    const float3 albedo = texture_albedo(&w->tv, &m, h.tri, h.u, h.v);
+                    const float3 albedo = texture_albedo(&w->s.tv, &m, h.tri, h.u, h.v);
                     uint seen;
-                    radiance += throughput * whitted_local(&w->g, &m, albedo, p, n, wo, w->lights,
-                                                           w->light_count, &w->e, w->materials,
-                                                           w->tri_material, pixel, w->ambient,
-                                                           (int)w->plain, &seen);
+                    radiance += throughput * whitted_local(&w->s.g, &m, albedo, p, n, wo,
+                                                           w->s.lights, w->s.light_count, &w->s.e,
+                                                           w->s.materials, w->s.tri_material, pixel,
+                                                           w->s.ambient, (int)w->plain, &seen);
                     k = key_mix(k, seen);
                     if (is_mirror(&m)) {
                         throughput *= glossy_color(&m);

@@ -78,12 +78,8 @@ static void slab(void) {
     vct_image_free(&im);
 
     /* Forced off, the floor under the slab is in the slab's shadow. */
-    vct_effect_force force[VCT_EFFECTS];
-    for (int e = 0; e < VCT_EFFECTS; ++e)
-        force[e] = VCT_FORCE_AUTO;
-    force[VCT_EFFECT_CAUSTICS] = VCT_FORCE_OFF;
     vct_plan off;
-    vct_plan_make(s, force, &off);
+    vct_case_plan_forcing(s, VCT_EFFECT_CAUSTICS, VCT_FORCE_OFF, VCT_FORCE_AUTO, &off);
     im = vct_case_render(ctx, s, &off, 32, W, H, 1, NULL);
     double worst = 0.0;
     for (int p = 0; p < 4 * W * H; ++p)

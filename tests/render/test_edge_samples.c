@@ -165,11 +165,8 @@ static void indirect_share(void) {
     vct_plan_make(s, NULL, &plan);
     CHECK(plan.on[VCT_EFFECT_INDIRECT] || plan.on[VCT_EFFECT_AO], "a sky-lit plate plans cones");
     /* Which fine pixels see the plate: their positions, no cones needed. */
-    vct_effect_force force[VCT_EFFECTS];
-    for (int e = 0; e < VCT_EFFECTS; ++e)
-        force[e] = VCT_FORCE_OFF;
     vct_plan visible;
-    vct_plan_make(s, force, &visible);
+    vct_case_plan_forcing(s, VCT_EFFECT_DIRECT, VCT_FORCE_OFF, VCT_FORCE_OFF, &visible);
     vct_aovs aovs, fine_aovs;
     vct_image im = render_vct(s, &plan, W, H, N, &aovs);
     vct_image fine = render_vct(s, &visible, N * N * W, N * N * H, 1, &fine_aovs);
@@ -221,11 +218,8 @@ static void too_many_rays(void) {
     const vct_material m = vct_material_default();
     vct_scene *s = scene_of(quad, 1, quad_material, &m, 1);
     s->ambient[0] = s->ambient[1] = s->ambient[2] = 1.0f;
-    vct_effect_force force[VCT_EFFECTS];
-    for (int e = 0; e < VCT_EFFECTS; ++e)
-        force[e] = VCT_FORCE_OFF;
     vct_plan plan;
-    vct_plan_make(s, force, &plan);
+    vct_case_plan_forcing(s, VCT_EFFECT_DIRECT, VCT_FORCE_OFF, VCT_FORCE_OFF, &plan);
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);

@@ -34,13 +34,21 @@ static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, co
     return image;
 }
 
-/* The scene's own plan with indirect light forced off: direct light alone. */
-static inline void vct_case_direct_plan(const vct_scene *s, vct_plan *plan) {
+/* The plan with every effect forced to `rest`, but `effect` to `forced`
+ * (VCT_FORCE_AUTO: the scene decides). */
+static inline void vct_case_plan_forcing(const vct_scene *s, vct_effect effect,
+                                         vct_effect_force forced, vct_effect_force rest,
+                                         vct_plan *plan) {
     vct_effect_force force[VCT_EFFECTS];
     for (int e = 0; e < VCT_EFFECTS; ++e)
-        force[e] = VCT_FORCE_AUTO;
-    force[VCT_EFFECT_INDIRECT] = VCT_FORCE_OFF;
+        force[e] = rest;
+    force[effect] = forced;
     vct_plan_make(s, force, plan);
+}
+
+/* The scene's own plan with indirect light forced off: direct light alone. */
+static inline void vct_case_direct_plan(const vct_scene *s, vct_plan *plan) {
+    vct_case_plan_forcing(s, VCT_EFFECT_INDIRECT, VCT_FORCE_OFF, VCT_FORCE_AUTO, plan);
 }
 
 #endif
