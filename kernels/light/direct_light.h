@@ -63,12 +63,18 @@ typedef struct direct_terms {
     uint lights_seen, emitters_facing, emitters_seen;
 } direct_terms;
 
+/* The Phong lobe's part of a light's sample (normalised: (e + 2) / 2pi). */
+inline void direct_add_lobe(direct_terms *sum, float3 radiant, float cos_theta, float3 wi, float3 r,
+                            float e) {
+    if (e >= 0.0f)
+        sum->lobe +=
+            radiant * cos_theta * pow(fmax(dot(r, wi), 0.0f), e) * (e + 2.0f) * (0.5f * VCT_INV_PI);
+}
+
 inline void direct_add(direct_terms *sum, float3 radiant, float cos_theta, float3 wi, float3 r,
                        float e, float visible) {
     sum->irradiance += radiant * (cos_theta * visible);
-    if (e >= 0.0f)
-        sum->lobe += radiant * (cos_theta * visible) * pow(fmax(dot(r, wi), 0.0f), e) * (e + 2.0f) *
-                     (0.5f * VCT_INV_PI);
+    direct_add_lobe(sum, radiant * visible, cos_theta, wi, r, e);
 }
 
 /* light_incident for a surface with normal n: also the cosine, and 0 where

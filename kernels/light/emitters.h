@@ -5,7 +5,17 @@
  * ray. A sample's weight is Le cos_l / d^2 times the emitter's area over its
  * pick probability (emitter_scale); emitters are two-sided. The sample
  * stream is keyed by the caller's seed (pixel or voxel), so an image is the
- * same bit for bit on every run. */
+ * same bit for bit on every run.
+ *
+ * Near an emitter (a lamp panel a centimetre under a ceiling) that weight's
+ * 1 / d^2 is heavy-tailed: a few samples almost always miss the close part
+ * that holds most of the light, and the mean of a pixel's samples falls far
+ * short. So direct_emitters_part takes the unoccluded light of a near
+ * triangle from Lambert's formula, exactly, and only its visibility from the
+ * shadow rays: the ratio of the seen samples' weight to all samples' weight
+ * (Heitz et al. 2018, "Combining analytic direct illumination and
+ * stochastic shadows"). Far triangles keep the point weight, whose mean the
+ * ratio then leaves as it was. */
 #ifndef VCT_EMITTERS_H
 #define VCT_EMITTERS_H
 
@@ -59,6 +69,13 @@ inline uint emitter_pick(const emitter_view *e, float u) {
     return lo;
 }
 
+/* Which emitter sample s of stream `seed` picks (stratified over the CDF). */
+inline uint emitter_index(const emitter_view *e, uint seed, uint s) {
+    uint jitter = rng_start(seed, s + 1u, 0x5a17e3u);
+    const float u0 = ((float)s + rng_next(&jitter)) / (float)e->samples;
+    return emitter_pick(e, fmin(u0, 0.99999994f));
+}
+
 /* Sample s of stream `seed`: an emitter point *q, the emitter's triangle in
  * *tri, and the sample's weight before the receiver's cosine and 1 /
  * samples: Le cos_l / d^2 * scale, seen from p (0 when edge-on). */
@@ -71,9 +88,7 @@ inline float3 emitter_sample(const emitter_view *e, const accel_view *g,
      * stream, which covers the triangle more evenly than independent points. */
     uint rng = rng_start(seed, 0u, 0x5a17e3u);
     const float shift_u = rng_next(&rng), shift_v = rng_next(&rng);
-    uint jitter = rng_start(seed, s + 1u, 0x5a17e3u);
-    const float u0 = ((float)s + rng_next(&jitter)) / (float)e->samples;
-    const uint i = emitter_pick(e, fmin(u0, 0.99999994f));
+    const uint i = emitter_index(e, seed, s);
     float u = shift_u + 0.75487767f * (float)s, v = shift_v + 0.56984029f * (float)s;
     u -= floor(u);
     v -= floor(v);
@@ -103,11 +118,83 @@ inline int emitter_visible(const accel_view *g, float3 o, float3 q) {
     return !accel_trace(g, o, to / dist, 0.0f, dist - 2.0f * surface_epsilon(g, q), 1, &h);
 }
 
+/* A triangle is near where it spans more than this share of its distance:
+ * there Lambert's formula replaces the point weight. Farther, its sum of
+ * nearly cancelling edge terms loses float digits that the point weight,
+ * almost constant over the triangle there, does not need. */
+#define EMITTER_NEAR_SPAN 0.1f
+
+/* Lambert's formula: the irradiance at p (unit normal n) from triangle
+ * (a, b, c) of unit radiance, unoccluded and two-sided: half the magnitude
+ * of the sum, over the edges of its part above p's horizon, of each edge's
+ * angle at p times the cosine between n and the plane through p and it. */
+inline float emitter_irradiance(float3 p, float3 n, float3 a, float3 b, float3 c) {
+    const float3 v[3] = {a - p, b - p, c - p};
+    float3 poly[4];
+    uint count = 0u;
+    for (uint k = 0u; k < 3u; ++k) {
+        const float3 from = v[k], to = v[k == 2u ? 0u : k + 1u];
+        const float h_from = dot(n, from), h_to = dot(n, to);
+        if (h_from >= 0.0f)
+            poly[count++] = from;
+        if ((h_from >= 0.0f) != (h_to >= 0.0f))
+            poly[count++] = from + (h_from / (h_from - h_to)) * (to - from);
+    }
+    float sum = 0.0f;
+    for (uint k = 0u; k < count; ++k) {
+        const float3 from = poly[k], to = poly[k + 1u == count ? 0u : k + 1u];
+        if (!(dot(from, from) > 0.0f) || !(dot(to, to) > 0.0f))
+            return 0.0f; /* p on a corner: a point of no area */
+        const float3 u = normalize(from), w = normalize(to), cr = cross(u, w);
+        const float s = length(cr);
+        if (s > 0.0f)
+            sum += atan2(s, dot(u, w)) * (dot(n, cr) / s);
+    }
+    return 0.5f * fabs(sum);
+}
+
+/* Emitter triangle tri's unoccluded irradiance at p if it is near p (-1 if
+ * not), and its area. */
+inline float3 emitter_near_light(const accel_view *g, __global const vct_material_desc *materials,
+                                 __global const uint *tri_material, uint tri, float3 p, float3 n,
+                                 float *area) {
+    float3 a, b, c;
+    emitter_vertices(g, tri, &a, &b, &c);
+    const float span = fmax(fmax(distance(a, b), distance(b, c)), distance(c, a));
+    const float3 to = (a + b + c) * (1.0f / 3.0f) - p;
+    *area = 0.5f * length(cross(b - a, c - a));
+    if (span * span < EMITTER_NEAR_SPAN * EMITTER_NEAR_SPAN * dot(to, to))
+        return (float3)(-1.0f);
+    return materials[tri_material[tri]].emission.xyz * emitter_irradiance(p, n, a, b, c);
+}
+
+/* Scenes of at most this many emitter triangles (a quad lamp or a few) sum
+ * every near triangle's light at each point instead of taking it from the
+ * samples' picks: the picks' noise is then gone where it was worst. */
+#define EMITTER_EXACT_MAX 16u
+
+/* The unoccluded light of every near emitter triangle at p. */
+inline float3 emitters_near_sum(const emitter_view *e, const accel_view *g,
+                                __global const vct_material_desc *materials,
+                                __global const uint *tri_material, float3 p, float3 n) {
+    float3 total = (float3)(0.0f);
+    for (uint i = 0u; i < e->count; ++i) {
+        float area;
+        const float3 near = emitter_near_light(g, materials, tri_material, e->tris[i], p, n, &area);
+        if (near.x >= 0.0f)
+            total += near;
+    }
+    return total;
+}
+
 /* Adds the emitters' light at p (normal n facing the viewer) to `sum`, as
  * direct_gather adds a punctual light's: the irradiance, and the Phong lobe
  * of exponent e about r when e >= 0. Only samples first, first + stride, ...
  * of the stream: the rays of one pixel share its stream that way, each
- * taking its part (the pixel's mean is then the whole stratified sum). */
+ * taking its part (the pixel's mean is then the whole stratified sum).
+ * The irradiance is the samples' unoccluded light (near triangles' exact)
+ * times the share of their point weight that the shadow rays see; the lobe
+ * takes the point weights of the seen samples. */
 inline void direct_emitters_part(const accel_view *g, const emitter_view *e,
                                  __global const vct_material_desc *materials,
                                  __global const uint *tri_material, float3 p, float3 n, float3 r,
@@ -118,20 +205,38 @@ inline void direct_emitters_part(const accel_view *g, const emitter_view *e,
     first %= e->samples;
     const float3 o = p + n * surface_epsilon(g, p);
     const float inv = 1.0f / (float)((e->samples - first + stride - 1u) / stride);
+    const int exact = e->count <= EMITTER_EXACT_MAX;
+    float3 unoccluded =
+        exact ? emitters_near_sum(e, g, materials, tri_material, p, n) / inv : (float3)(0.0f);
+    float weight = 0.0f, weight_seen = 0.0f;
     for (uint s = first; s < e->samples; s += stride) {
         float3 q;
         uint tri;
         const float3 radiant = emitter_sample(e, g, materials, tri_material, p, seed, s, &q, &tri);
+        float area;
+        const float3 near = emitter_near_light(g, materials, tri_material, tri, p, n, &area);
         const float3 wi = normalize(q - p);
         const float cos_theta = dot(n, wi);
-        if (!(cos_theta > 0.0f) || all(radiant == 0.0f))
+        const int facing = cos_theta > 0.0f && any(radiant != 0.0f);
+        const int is_near = near.x >= 0.0f;
+        if (is_near && !exact && area > 0.0f) /* over the pick's probability */
+            unoccluded += near * (e->scale[emitter_index(e, seed, s)] / area);
+        if (!facing)
             continue;
+        const float3 point = radiant * cos_theta;
+        const float w = point.x + point.y + point.z;
+        if (!is_near)
+            unoccluded += point;
+        weight += w;
         ++sum->emitters_facing;
         if (!emitter_visible(g, o, q))
             continue;
         ++sum->emitters_seen;
-        direct_add(sum, radiant * inv, cos_theta, wi, r, exponent, 1.0f);
+        weight_seen += w;
+        direct_add_lobe(sum, radiant * inv, cos_theta, wi, r, exponent);
     }
+    if (weight > 0.0f)
+        sum->irradiance += unoccluded * (inv * (weight_seen / weight));
 }
 
 /* All of the stream's samples. */

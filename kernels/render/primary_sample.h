@@ -148,8 +148,13 @@ inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_de
         direct_terms d =
             direct_gather(&ps->g, ps->lights, ps->light_count, p, n, SHADOWS, r, e, SOFT_SHADOWS);
 #ifdef VCT_EMITTERS
+        /* The pixel's rays take its emitter samples' strata in a shuffled
+         * order: in their own order, the rays of one part of the pixel (its
+         * top half) would all take the same strata (the same of a quad's two
+         * triangles), and an edge that one side of them sees alone would be
+         * lit by those strata alone. */
         direct_emitters_part(&ps->g, &ps->e, ps->materials, ps->tri_material, p, n, r, e, seed,
-                             part, parts, &d);
+                             rng_permute(part, parts, seed), parts, &d);
         /* None, some or all of the emitter samples seen: an area light's
          * shadow edge. */
         const uint seen_class =

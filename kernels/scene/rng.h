@@ -23,4 +23,31 @@ inline float rng_next(uint *state) {
     return (float)(*state >> 8) * (1.0f / 16777216.0f);
 }
 
+/* Where i (< n) goes in a permutation of 0 .. n - 1 chosen by key: rounds
+ * of steps that are each one-to-one on the bits below n's next power of two
+ * (xor, odd multiply, add, xor with a right shift), walked until the value
+ * falls below n again (cycle walking), so that it stays one-to-one on n. */
+inline uint rng_permute(uint i, uint n, uint key) {
+    if (n <= 1u)
+        return 0u;
+    uint mask = n - 1u;
+    mask |= mask >> 1;
+    mask |= mask >> 2;
+    mask |= mask >> 4;
+    mask |= mask >> 8;
+    mask |= mask >> 16;
+    const uint k1 = rng_hash(key), k2 = rng_hash(k1);
+    uint x = i;
+    do {
+        for (uint round = 0u; round < 3u; ++round) {
+            x = (x ^ (k1 >> (8u * round))) & mask;
+            x = (x * (2u * (k2 >> (8u * round)) + 1u)) & mask;
+            x ^= x >> 1;
+            x = (x + (k2 >> (4u * round))) & mask;
+            x ^= x >> 2;
+        }
+    } while (x >= n);
+    return x;
+}
+
 #endif

@@ -5,6 +5,7 @@
  * voxels light injection fills; a blocker under the lamp casts its shadow;
  * and the plan says the triangles are sampled. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -125,6 +126,85 @@ static void pixels_against_analytic(const char *name, int blocker, int lamp_up) 
     vct_image_free(&im);
     vct_aovs_free(&aovs);
     vct_scene_free(s);
+}
+
+/* A lamp panel standing upright on the floor, 2 mm above it, seen from
+ * above: the floor beside its foot is lit mostly by the panel's nearest
+ * centimetres, where a point sample's Le cos cos / d^2 is heavy-tailed and
+ * a pixel's 16 samples fall short. The panel is `tiles` x `tiles` quads:
+ * one (2 triangles, each pixel's light summed exactly) or three (18, the
+ * picked triangles' light). Every floor pixel against Lambert's formula,
+ * computed here in double over the whole panel. */
+static void near_panel_against_analytic(int tiles, double mean_tolerance, double nrmse_tolerance) {
+    const float x = 5.0f, y0 = 0.002f, y1 = 1.0f, z0 = 4.0f, z1 = 6.0f;
+    const uint32_t quads = 1 + (uint32_t)(tiles * tiles);
+    float *v = malloc(12 * sizeof(float) * quads);
+    uint32_t *tri = malloc(6 * sizeof(uint32_t) * quads),
+             *mat = malloc(2 * sizeof(uint32_t) * quads);
+    const float floor_quad[12] = {0, 0, 0, 0, 0, 10, 10, 0, 10, 10, 0, 0};
+    memcpy(v, floor_quad, sizeof floor_quad);
+    for (int i = 0; i < tiles; ++i)
+        for (int j = 0; j < tiles; ++j) {
+            const float ya = y0 + (y1 - y0) * (float)i / (float)tiles,
+                        yb = y0 + (y1 - y0) * (float)(i + 1) / (float)tiles,
+                        za = z0 + (z1 - z0) * (float)j / (float)tiles,
+                        zb = z0 + (z1 - z0) * (float)(j + 1) / (float)tiles;
+            const float q[12] = {x, ya, za, x, yb, za, x, yb, zb, x, ya, zb};
+            memcpy(v + 12 * (1 + i * tiles + j), q, sizeof q);
+        }
+    for (uint32_t k = 0; k < quads; ++k) {
+        const uint32_t up[6] = {0, 1, 2, 0, 2, 3};
+        for (int i = 0; i < 6; ++i)
+            tri[6 * k + i] = 4 * k + up[i];
+        mat[2 * k] = mat[2 * k + 1] = k == 0 ? 0 : 1;
+    }
+    vct_material m[2] = {vct_material_default(), vct_material_default()};
+    for (int c = 0; c < 3; ++c) {
+        m[0].albedo[c] = (float)ALBEDO;
+        m[1].albedo[c] = 0.0f;
+        m[1].emission[c] = (float)LE;
+    }
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(v, 4 * quads, tri, 2 * quads, mat, m, 2, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const vct_camera above = {{5.15f, 3, 5}, {5.15f, 0, 5}, {0, 0, -1}, 6.0f};
+    s->camera = above;
+    s->has_camera = 1;
+    vct_plan plan;
+    vct_case_direct_plan(s, &plan);
+    vct_aovs aovs;
+    vct_image im = vct_case_render(ctx, s, &plan, 32, 96, 96, 1, &aovs);
+    const double panel[4][3] = {{x, y0, z0}, {x, y1, z0}, {x, y1, z1}, {x, y0, z1}};
+    double sum_got = 0.0, sum_want = 0.0, sq = 0.0, worst = 0.0;
+    int floor_pixels = 0;
+    for (int i = 0; i < 96 * 96; ++i) {
+        const float *pos = &aovs.position.rgba[4 * i];
+        if (pos[3] == 0.0f || fabsf(pos[1]) > 1e-3f)
+            continue; /* the panel, not the floor */
+        const double p[3] = {pos[0], pos[1], pos[2]};
+        const double got = aovs.direct.rgba[4 * i];
+        const double want = ALBEDO / CHECK_PI * lambert_polygon(p, panel);
+        sum_got += got;
+        sum_want += want;
+        sq += (got - want) * (got - want);
+        worst = fmax(worst, fabs(got - want) / want);
+        ++floor_pixels;
+    }
+    const double ratio = sum_got / sum_want;
+    const double nrmse = sqrt(sq / floor_pixels) / (sum_want / floor_pixels);
+    CHECK(floor_pixels > 4000 && fabs(ratio - 1.0) < mean_tolerance && nrmse < nrmse_tolerance,
+          "panel of %d triangles 2 mm above the floor: %d floor pixels, mean ratio %.4f, NRMSE "
+          "%.4f against Lambert's formula",
+          2 * tiles * tiles, floor_pixels, ratio, nrmse);
+    printf("panel of %2d triangles, 2 mm up      %d floor pixels: mean ratio %.4f, NRMSE %.4f, "
+           "worst pixel %.4f\n",
+           2 * tiles * tiles, floor_pixels, ratio, nrmse, worst);
+    vct_image_free(&im);
+    vct_aovs_free(&aovs);
+    vct_scene_free(s);
+    free(v);
+    free(tri);
+    free(mat);
 }
 
 /* The floor's voxels: their radiance against albedo / pi * E at their
@@ -252,6 +332,11 @@ int main(void) {
     pixels_against_analytic("lamp wound down", 0, 0);
     pixels_against_analytic("lamp wound up", 0, 1);
     pixels_against_analytic("blocker under the lamp", 1, 0);
+    /* Summed exactly: to float rounding. Picked: each pixel's 16 picks
+     * among 18 triangles are still noisy (NRMSE 0.39 measured), the mean
+     * is not; point samples alone gave NRMSE 3.3 and 1.9, pixels 100x off. */
+    near_panel_against_analytic(1, 1e-3, 1e-3);
+    near_panel_against_analytic(3, 0.02, 0.6);
     voxels_against_analytic();
     vct_context_destroy(ctx);
     return check_exit("test_area_light");
