@@ -47,6 +47,12 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
         vct_bricks_info_get(v, &b);
         fprintf(stderr, "voxels: %u^3, %u bricks, %s\n", voxel.resolution, b.bricks,
                 b.storage_reason);
+        const double ratio = vct_voxels_bounce_ratio(v);
+        if (ratio > 0.0)
+            fprintf(stderr,
+                    "voxel light: %d bounces, then the rest at the bounce ratio %.3f (x %.3f of "
+                    "the last)\n",
+                    opt->bounces, ratio, ratio / (1.0 - ratio));
     }
     vct_aovs aovs;
     job->voxels = v;

@@ -37,7 +37,9 @@ void cli_usage(void) {
         "                                   an edge (surface, material, hard shadow), which\n"
         "                                   show their mean (default 4; 1: pixel centres);\n"
         "                                   --ao-distance F (of the volume, 0.125);\n"
-        "                                   --bounces 1..4 light bounces in the voxels (3);\n"
+        "                                   --bounces 1..4 light bounces in the voxels (3),\n"
+        "                                   then the rest of the series at the scene's\n"
+        "                                   bounce ratio; --exact-bounces: no rest;\n"
         "                                   --isotropic: one radiance per brick sample\n"
         "                                   (default: six directional values);\n"
         "                                   --aov PREFIX writes PREFIX_direct.pfm, _indirect,\n"
@@ -390,6 +392,8 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
             }
         } else if (strcmp(a, "--thin") == 0) {
             opt->thin_voxels = 1;
+        } else if (strcmp(a, "--exact-bounces") == 0) {
+            opt->exact_bounces = 1;
         } else if (strcmp(a, "--voxel-bounds") == 0) {
             if (parse_floats(argc, argv, &i, 4, opt->voxel_bounds))
                 return 1;

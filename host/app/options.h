@@ -38,6 +38,7 @@ typedef struct cli_options {
     int has_light_radius;
     float light_radius;
     int voxel_res, thin_voxels, has_voxel_bounds;
+    int exact_bounces;     /* no rest of the bounces after the last one */
     float voxel_bounds[4]; /* x, y, z, size */
     vct_brick_storage bricks;
     int anisotropic;
@@ -47,7 +48,7 @@ typedef struct cli_options {
     int print_plan;
     vct_effect_force force[VCT_EFFECTS];
     int diffuse_cones, bounces, sparse_diffuse, edge_samples;
-    int copy_voxels; /* several devices: one builds the voxels, the others copy them */
+    int copy_voxels;       /* several devices: one builds the voxels, the others copy them */
     int emitters_by_cones; /* --emitters cones */
     vct_cone_settings cones;
     const char *aov_prefix;

@@ -173,6 +173,8 @@ static int update_light(view_app *app, vct_error *err) {
         rc = vct_voxels_inject_bounce(app->ctx, app->scene, app->accel, app->voxels,
                                       &app->opt.cones, BOUNCE_CONES, err);
     if (rc == VCT_OK)
+        rc = vct_voxels_bounce_rest(app->ctx, app->voxels, err);
+    if (rc == VCT_OK)
         app->light_moved = 0;
     return rc;
 }

@@ -22,7 +22,13 @@ typedef struct vct_voxel_options {
     int has_bounds;      /* 0: a cube around the scene with a one-voxel margin */
     double bounds_min[3];
     double bounds_size; /* side of the cube when has_bounds */
+    /* 0: after two bounces or more, the voxels add the rest of the series
+     * (vct_voxels_bounce_rest); 1: only the bounces asked for */
+    int exact_bounces;
 } vct_voxel_options;
+
+/* The largest bounce ratio the rest of the bounces assumes. */
+#define VCT_BOUNCE_RATIO_MAX 0.9
 
 typedef struct vct_voxels vct_voxels;
 
@@ -206,6 +212,17 @@ int vct_cone_trace(vct_context *ctx, const vct_voxels *voxels, const vct_cone_se
 int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
                              vct_voxels *voxels, const vct_cone_settings *settings,
                              uint32_t diffuse_cones, vct_error *err);
+
+/* After the last bounce: adds the bounces still to come, as each bounce
+ * adds what the one before it added times a ratio r, to each voxel its
+ * last bounce's light times r / (1 - r). r is the scene's own: the light
+ * the last bounce added, summed over the voxels, over what the one before
+ * it added (at most VCT_BOUNCE_RATIO_MAX). Nothing with fewer than two
+ * bounces since light injection, or with exact_bounces. */
+int vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *voxels, vct_error *err);
+
+/* The ratio the last vct_voxels_bounce_rest used (0: none). */
+double vct_voxels_bounce_ratio(const vct_voxels *voxels);
 
 #ifdef __cplusplus
 }

@@ -8,6 +8,7 @@
 #include "light/emitters.h"
 #include "render/frame.h"
 #include "render/vct_caustics.h"
+#include "voxel/bounce_rest.h"
 #include "voxel/cones.h"
 #include "scene/scene_device.h"
 #include "vct_types.h"
@@ -113,7 +114,11 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_acc
                           VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->direct_radiance),
                           VCT_ARG_OF(v->direct_side), VCT_ARG_OF(v->radiance), VCT_ARG_OF(v->side));
     if (rc == VCT_OK)
+        rc = vct_bounce_rest_keep(ctx, v, err);
+    if (rc == VCT_OK)
         rc = vct_launch(ctx, k, n, 64, err);
+    if (rc == VCT_OK)
+        rc = vct_bounce_rest_measure(ctx, v, err);
     if (rc == VCT_OK)
         rc = vct_finish(ctx, BOUNCE_STAGE, err);
     if (rc == VCT_OK)
@@ -151,6 +156,8 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
         rc = vct_bricks_build(ctx, v, &bricks, err);
     for (uint32_t b = 1; rc == VCT_OK && lit && b < bounces; ++b)
         rc = vct_voxels_inject_bounce(ctx, s, g, v, cs, 6, err);
+    if (rc == VCT_OK && lit)
+        rc = vct_voxels_bounce_rest(ctx, v, err);
     if (rc != VCT_OK) {
         vct_voxels_free(v);
         return rc;

@@ -248,6 +248,7 @@ vct_voxels *vct_voxelize(vct_context *ctx, const vct_scene *s, const vct_voxel_o
         return NULL;
     }
     v->ctx = ctx;
+    v->bounce_rest = !o->exact_bounces;
     vct_voxel_info *info = &v->info;
     info->resolution = o->resolution;
     while ((1u << info->levels) < o->resolution)

@@ -32,9 +32,9 @@ void vct_voxels_free(vct_voxels *v) {
     if (!v)
         return;
     cl_mem *mems[] = {
-        &v->keys,         &v->albedo,      &v->normal,     &v->emission,        &v->child,
-        &v->neighbours,   &v->tile_parent, &v->radiance,   &v->direct_radiance, &v->fragment_start,
-        &v->fragment_tri, &v->side,        &v->direct_side};
+        &v->keys,         &v->albedo,      &v->normal,      &v->emission,        &v->child,
+        &v->neighbours,   &v->tile_parent, &v->radiance,    &v->direct_radiance, &v->fragment_start,
+        &v->fragment_tri, &v->side,        &v->direct_side, &v->before_radiance, &v->before_side};
     for (size_t i = 0; i < sizeof mems / sizeof mems[0]; ++i)
         vct_buffer_release(v->ctx, *mems[i]);
     vct_bricks_release(v);

@@ -27,6 +27,15 @@ struct vct_voxels {
      * light injection sets bounces back to 0. */
     cl_mem direct_radiance, direct_side;
     uint32_t bounces;
+    /* The rest of the bounces (bounce_rest.h), unless the voxel options
+     * said exact_bounces: the light before the last bounce, the light the
+     * last two bounces added (summed over the voxels' sides), how many were
+     * measured since light injection, and the ratio the rest used. */
+    int bounce_rest;
+    cl_mem before_radiance, before_side;
+    double bounce_light[2];
+    uint32_t bounces_measured;
+    double bounce_ratio;
     /* Octree: built by vct_octree_build (child is NULL before). */
     cl_mem child, neighbours, tile_parent;
     /* Bricks: built by vct_bricks_build (has_bricks 0 before). Buffers are

@@ -88,10 +88,11 @@ vct_voxels *vct_voxels_copy(vct_context *ctx, const vct_voxels *src, vct_error *
     }
     *v = *src;
     v->ctx = ctx;
-    cl_mem *mems[] = {&v->keys,           &v->albedo,       &v->normal,      &v->emission,
-                      &v->fragment_start, &v->fragment_tri, &v->radiance,    &v->direct_radiance,
-                      &v->child,          &v->neighbours,   &v->tile_parent, &v->brick_window,
-                      &v->side,           &v->direct_side};
+    cl_mem *mems[] = {
+        &v->keys,           &v->albedo,       &v->normal,          &v->emission,
+        &v->fragment_start, &v->fragment_tri, &v->radiance,        &v->direct_radiance,
+        &v->child,          &v->neighbours,   &v->tile_parent,     &v->brick_window,
+        &v->side,           &v->direct_side,  &v->before_radiance, &v->before_side};
     const size_t buffers = sizeof mems / sizeof mems[0];
     cl_mem *bricks[2 * VCT_BRICK_CHANNELS];
     for (int c = 0; c < VCT_BRICK_CHANNELS; ++c) {
@@ -105,11 +106,11 @@ vct_voxels *vct_voxels_copy(vct_context *ctx, const vct_voxels *src, vct_error *
         *bricks[c] = NULL;
     vct_stage_begin(ctx, STAGE);
     int rc = VCT_OK;
-    const cl_mem *from[] = {&src->keys,       &src->albedo,          &src->normal,
-                            &src->emission,   &src->fragment_start,  &src->fragment_tri,
-                            &src->radiance,   &src->direct_radiance, &src->child,
-                            &src->neighbours, &src->tile_parent,     &src->brick_window,
-                            &src->side,       &src->direct_side};
+    const cl_mem *from[] = {
+        &src->keys,           &src->albedo,       &src->normal,          &src->emission,
+        &src->fragment_start, &src->fragment_tri, &src->radiance,        &src->direct_radiance,
+        &src->child,          &src->neighbours,   &src->tile_parent,     &src->brick_window,
+        &src->side,           &src->direct_side,  &src->before_radiance, &src->before_side};
     for (size_t i = 0; rc == VCT_OK && i < buffers; ++i)
         if (*from[i] && !(*mems[i] = copy_buffer(ctx, src, *from[i], err)))
             rc = err->status;

@@ -1,0 +1,98 @@
+/* The rest of the bounces: the light each bounce added, measured, and the
+ * geometric series of their ratio added after the last one. */
+#include <stdlib.h>
+
+#include "vct_types.h"
+#include "voxel/bounce_rest.h"
+
+#define STAGE "light bounce rest"
+#define GROUP 64 /* BOUNCE_GROUP in bounce_rest.cl */
+
+static int copy_into(vct_context *ctx, cl_mem from, cl_mem *to, size_t bytes, const char *what,
+                     vct_error *err) {
+    if (!*to)
+        *to = vct_buffer_create(ctx, STAGE, what, bytes, CL_MEM_READ_WRITE, NULL, err);
+    if (!*to)
+        return err->status;
+    return vct_cl_check(err, clEnqueueCopyBuffer(ctx->queue, from, *to, 0, 0, bytes, 0, NULL, NULL),
+                        STAGE, "clEnqueueCopyBuffer");
+}
+
+int vct_bounce_rest_keep(vct_context *ctx, vct_voxels *v, vct_error *err) {
+    const size_t n = v->info.voxels;
+    if (!v->bounce_rest || n == 0)
+        return VCT_OK;
+    int rc = copy_into(ctx, v->radiance, &v->before_radiance, 16 * n,
+                       "voxel radiance before a bounce", err);
+    return rc ? rc
+              : copy_into(ctx, v->side, &v->before_side, 16 * VCT_VOXEL_SIDE_FLOAT4S * n,
+                          "voxel sides before a bounce", err);
+}
+
+int vct_bounce_rest_measure(vct_context *ctx, vct_voxels *v, vct_error *err) {
+    const uint32_t n = v->info.voxels;
+    if (!v->bounce_rest || n == 0)
+        return VCT_OK;
+    const size_t groups = (n + GROUP - 1) / GROUP;
+    float *sums = malloc(sizeof(float) * groups);
+    if (!sums)
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory (%zu group sums)", STAGE,
+                        groups);
+    cl_program p;
+    int rc = vct_program_get(ctx, "voxel/bounce_rest.cl", "", &p, err);
+    cl_mem out = rc == VCT_OK
+                     ? vct_buffer_create(ctx, STAGE, "bounce light per group",
+                                         sizeof(float) * groups, CL_MEM_WRITE_ONLY, NULL, err)
+                     : NULL;
+    if (rc == VCT_OK && !out)
+        rc = err->status;
+    if (rc == VCT_OK)
+        rc = vct_run_kernel_grouped(ctx, p, "bounce_energy", STAGE, n, GROUP, err, 7,
+                                    VCT_ARG_OF(v->radiance), VCT_ARG_OF(v->side),
+                                    VCT_ARG_OF(v->before_radiance), VCT_ARG_OF(v->before_side),
+                                    VCT_ARG_OF(v->direct_side), VCT_ARG_OF(n), VCT_ARG_OF(out));
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, STAGE, out, 0, sizeof(float) * groups, sums, err);
+    if (rc == VCT_OK) {
+        double total = 0.0; /* in group order: the same sum on every device */
+        for (size_t g = 0; g < groups; ++g)
+            total += sums[g];
+        v->bounce_light[0] = v->bounce_light[1];
+        v->bounce_light[1] = total;
+        ++v->bounces_measured;
+    }
+    vct_buffer_release(ctx, out);
+    free(sums);
+    return rc;
+}
+
+double vct_voxels_bounce_ratio(const vct_voxels *v) {
+    return v ? v->bounce_ratio : 0.0;
+}
+
+int vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *v, vct_error *err) {
+    v->bounce_ratio = 0.0;
+    if (!v->bounce_rest || v->bounces_measured < 2 || !(v->bounce_light[0] > 0.0))
+        return VCT_OK;
+    /* A ratio near 1 would make the rest unbounded: no surface keeps 90 %
+     * of what reaches it, bounce after bounce, in a scene we render. */
+    double r = v->bounce_light[1] / v->bounce_light[0];
+    r = r < 0.0 ? 0.0 : (r > VCT_BOUNCE_RATIO_MAX ? VCT_BOUNCE_RATIO_MAX : r);
+    v->bounce_ratio = r;
+    const float rest = (float)(r / (1.0 - r));
+    const uint32_t n = v->info.voxels;
+    if (!(rest > 0.0f) || n == 0)
+        return VCT_OK;
+    vct_stage_begin(ctx, STAGE);
+    cl_program p;
+    int rc = vct_program_get(ctx, "voxel/bounce_rest.cl", "", &p, err);
+    if (rc == VCT_OK)
+        rc = vct_run_kernel(ctx, p, "bounce_rest", STAGE, n, err, 7, VCT_ARG_OF(v->radiance),
+                            VCT_ARG_OF(v->side), VCT_ARG_OF(v->before_radiance),
+                            VCT_ARG_OF(v->before_side), VCT_ARG_OF(v->direct_side), VCT_ARG_OF(n),
+                            VCT_ARG_OF(rest));
+    if (rc == VCT_OK)
+        rc = vct_finish(ctx, STAGE, err);
+    vct_stage_end(ctx);
+    return rc == VCT_OK ? vct_bricks_refresh_radiance(ctx, v, err) : rc;
+}

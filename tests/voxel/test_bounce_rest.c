@@ -1,0 +1,219 @@
+/* The rest of the bounces (vct_voxels_bounce_rest, kernels/voxel/bounce_rest.cl)
+ * in a closed box of albedo 0.5 lit by a point light inside:
+ *  - against a plain-C reference on the light read back after injection and
+ *    after each bounce: the ratio of the last two bounces' light summed over
+ *    every voxel's two sides, and each side's light plus its last bounce's
+ *    times r / (1 - r);
+ *  - physically: in a closed room of one albedo, each bounce carries on all
+ *    the light the one before it sent times the albedo, so the measured
+ *    ratio must be near 0.5 (the cones lose some to their opacity and
+ *    leave none: within 0.15);
+ *  - with exact_bounces, or after one bounce only, nothing is added. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+
+#define RES 32
+#define ALBEDO 0.5f
+
+static vct_context *ctx;
+
+typedef struct voxel_light {
+    float *radiance; /* 4 per voxel */
+    float *sides;    /* 8 per voxel */
+} voxel_light;
+
+static voxel_light read_light(vct_voxels *v, uint32_t n) {
+    voxel_light l = {malloc(16ull * n), malloc(32ull * n)};
+    vct_error err = {0};
+    REQUIRE_OK(vct_voxels_read_radiance(ctx, v, l.radiance, &err), err);
+    REQUIRE_OK(vct_voxels_read_sides(ctx, v, l.sides, &err), err);
+    return l;
+}
+
+static void light_free(voxel_light *l) {
+    free(l->radiance);
+    free(l->sides);
+}
+
+static double luminance(const double c[3]) {
+    return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+}
+
+/* Voxel i's light on the side normal n points to and on the other. */
+static void sides_of(const voxel_light *l, uint32_t i, const float n[3], double toward[3],
+                     double away[3]) {
+    const float *s = l->sides + 8 * i;
+    const double facing = (double)s[4] * n[0] + (double)s[5] * n[1] + (double)s[6] * n[2];
+    for (int k = 0; k < 3; ++k) {
+        const double bright = l->radiance[4 * i + k], dark = bright - s[k];
+        toward[k] = facing < 0.0 ? dark : bright;
+        away[k] = facing < 0.0 ? bright : dark;
+    }
+}
+
+/* What `after` added to `before` on voxel i's two sides (never below 0). */
+static void added(const voxel_light *after, const voxel_light *before, const float n[3], uint32_t i,
+                  double toward[3], double away[3]) {
+    double t1[3], a1[3], t0[3], a0[3];
+    sides_of(after, i, n, t1, a1);
+    sides_of(before, i, n, t0, a0);
+    for (int k = 0; k < 3; ++k) {
+        toward[k] = fmax(t1[k] - t0[k], 0.0);
+        away[k] = fmax(a1[k] - a0[k], 0.0);
+    }
+}
+
+static double bounce_light(const voxel_light *after, const voxel_light *before,
+                           const voxel_light *direct, uint32_t n) {
+    double total = 0.0;
+    for (uint32_t i = 0; i < n; ++i) {
+        double t[3], a[3];
+        added(after, before, direct->sides + 8 * i + 4, i, t, a);
+        total += luminance(t) + luminance(a);
+    }
+    return total;
+}
+
+/* The closed box [2, 14]^3 facing in, a point light inside, and a plate
+ * just under the light's height beside it: lit at a grazing angle from
+ * above and, after the bounces, more from the floor below, so that its
+ * voxels' brighter side turns from the direct light's. */
+static vct_scene *closed_box(void) {
+    const float lo = 2.0f, hi = 14.0f;
+    const float v[8][3] = {{lo, lo, lo}, {hi, lo, lo}, {hi, hi, lo}, {lo, hi, lo},
+                           {lo, lo, hi}, {hi, lo, hi}, {hi, hi, hi}, {lo, hi, hi}};
+    const uint32_t faces[6][4] = {{0, 1, 2, 3}, {5, 4, 7, 6}, {4, 0, 3, 7},
+                                  {1, 5, 6, 2}, {4, 5, 1, 0}, {3, 2, 6, 7}};
+    const float plate[4][3] = {{9, 10.6f, 4}, {13, 10.6f, 4}, {13, 10.6f, 10}, {9, 10.6f, 10}};
+    float pos[28 * 3];
+    uint32_t tri[42], mat[14] = {0};
+    for (int f = 0; f < 7; ++f) {
+        for (int c = 0; c < 4; ++c)
+            memcpy(pos + 3 * (4 * f + c), f < 6 ? v[faces[f][c]] : plate[c], sizeof v[0]);
+        const uint32_t q[6] = {0, 1, 2, 0, 2, 3};
+        for (int i = 0; i < 6; ++i)
+            tri[6 * f + i] = 4u * (uint32_t)f + q[i];
+    }
+    vct_material m = vct_material_default();
+    for (int c = 0; c < 3; ++c)
+        m.albedo[c] = ALBEDO;
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(pos, 28, tri, 14, mat, &m, 1, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const vct_light l = {VCT_LIGHT_POINT, {6.0f, 11.0f, 7.0f}, {0}, {60, 60, 60}, 0, 0, 0};
+    REQUIRE_OK(vct_scene_add_light(s, &l, &err), err);
+    return s;
+}
+
+static vct_voxels *lit_voxels(vct_scene *s, vct_accel *g, int exact) {
+    vct_error err = {0};
+    vct_voxel_options o = {0};
+    o.resolution = RES;
+    o.has_bounds = 1;
+    o.bounds_size = 16.0;
+    o.exact_bounces = exact;
+    vct_voxels *v = vct_voxelize(ctx, s, &o, &err);
+    REQUIRE_OK(v ? VCT_OK : err.status, err);
+    REQUIRE_OK(vct_octree_build(ctx, v, &err), err);
+    REQUIRE_OK(vct_voxels_inject_light(ctx, s, g, v, &err), err);
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, 1, 0};
+    REQUIRE_OK(vct_bricks_build(ctx, v, &bo, &err), err);
+    return v;
+}
+
+static void bounce(vct_scene *s, vct_accel *g, vct_voxels *v) {
+    vct_error err = {0};
+    const vct_cone_settings cs = vct_cone_settings_default();
+    REQUIRE_OK(vct_voxels_inject_bounce(ctx, s, g, v, &cs, 6, &err), err);
+}
+
+static void against_reference(void) {
+    vct_scene *s = closed_box();
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_voxels *v = lit_voxels(s, g, 0);
+    vct_voxel_info info;
+    vct_voxels_info_get(v, &info);
+    const uint32_t n = info.voxels;
+    voxel_light direct = read_light(v, n);
+    bounce(s, g, v);
+    voxel_light one = read_light(v, n);
+    REQUIRE_OK(vct_voxels_bounce_rest(ctx, v, &err), err);
+    voxel_light still = read_light(v, n);
+    CHECK(vct_voxels_bounce_ratio(v) == 0.0 && memcmp(still.radiance, one.radiance, 16ull * n) == 0,
+          "after one bounce the rest adds nothing (ratio %g)", vct_voxels_bounce_ratio(v));
+    bounce(s, g, v);
+    voxel_light two = read_light(v, n);
+    REQUIRE_OK(vct_voxels_bounce_rest(ctx, v, &err), err);
+    voxel_light rest = read_light(v, n);
+
+    const double e1 = bounce_light(&one, &direct, &direct, n),
+                 e2 = bounce_light(&two, &one, &direct, n);
+    double r = e2 / e1;
+    r = r > VCT_BOUNCE_RATIO_MAX ? VCT_BOUNCE_RATIO_MAX : r;
+    const double f = r / (1.0 - r), got_r = vct_voxels_bounce_ratio(v);
+    CHECK(fabs(got_r - r) < 1e-4 * r, "bounce ratio %.6f, the reference's %.6f", got_r, r);
+    int bad = 0, turned = 0;
+    double worst = 0.0, before_sum = 0.0, after_sum = 0.0;
+    for (uint32_t i = 0; i < n; ++i) {
+        const float *plane = direct.sides + 8 * i + 4;
+        double t2[3], a2[3], dt[3], da[3], t[3], a[3];
+        sides_of(&two, i, plane, t2, a2);
+        added(&two, &one, plane, i, dt, da);
+        sides_of(&rest, i, plane, t, a);
+        for (int k = 0; k < 3; ++k) {
+            const double want_t = t2[k] + f * dt[k], want_a = a2[k] + f * da[k];
+            const double off = fmax(fabs(t[k] - want_t), fabs(a[k] - want_a));
+            const double scale = fmax(fmax(want_t, want_a), 1e-3);
+            worst = fmax(worst, off / scale);
+            bad += off > 1e-4 * scale;
+        }
+        const float *up = rest.sides + 8 * i + 4;
+        turned +=
+            (double)up[0] * plane[0] + (double)up[1] * plane[1] + (double)up[2] * plane[2] < 0.0;
+        before_sum += luminance(t2) + luminance(a2);
+        after_sum += luminance(t) + luminance(a);
+    }
+    CHECK(bad == 0 && turned > 0,
+          "%d voxel sides off the reference's light plus the rest (worst %.2e); %d voxels whose "
+          "brighter side is no longer the direct light's",
+          bad, worst, turned);
+    /* A closed room of one albedo: the bounce ratio is the albedo. */
+    CHECK(fabs(r - ALBEDO) < 0.15, "closed box of albedo %.2f: bounce ratio %.3f", ALBEDO, r);
+    printf("closed box, albedo %.2f: bounce ratio %.4f (kernel %.4f), rest x %.3f of the last "
+           "bounce, %u voxels (%d turned), worst side %.1e, light %.4g -> %.4g\n",
+           ALBEDO, r, got_r, f, n, turned, worst, before_sum, after_sum);
+    light_free(&direct);
+    light_free(&one);
+    light_free(&still);
+    light_free(&two);
+    light_free(&rest);
+    vct_voxels_free(v);
+
+    /* exact_bounces: the same two bounces, nothing after them. */
+    v = lit_voxels(s, g, 1);
+    bounce(s, g, v);
+    bounce(s, g, v);
+    voxel_light exact = read_light(v, n);
+    REQUIRE_OK(vct_voxels_bounce_rest(ctx, v, &err), err);
+    voxel_light exact_after = read_light(v, n);
+    CHECK(vct_voxels_bounce_ratio(v) == 0.0 &&
+              memcmp(exact.radiance, exact_after.radiance, 16ull * n) == 0,
+          "exact_bounces: the rest adds nothing");
+    light_free(&exact);
+    light_free(&exact_after);
+    vct_voxels_free(v);
+    vct_accel_free(g);
+    vct_scene_free(s);
+}
+
+int main(void) {
+    ctx = check_context();
+    against_reference();
+    vct_context_destroy(ctx);
+    return check_exit("test_bounce_rest");
+}
