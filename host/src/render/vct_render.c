@@ -77,9 +77,11 @@ static int keep_direct(vct_context *ctx, vct_voxels *v, vct_error *err) {
                           "direct voxel sides", err);
 }
 
-int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                             vct_voxels *v, const vct_cone_settings *cs, uint32_t diffuse_cones,
-                             vct_error *err) {
+/* One bounce; `refresh` 0 leaves the bricks' radiance to the rest of the
+ * bounces that follows (v->radiance_stale), which filters it once. */
+static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
+                         const vct_cone_settings *cs, uint32_t diffuse_cones, int refresh,
+                         vct_error *err) {
     if (!v->radiance || !v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT,
                         "%s: inject light into built bricks first (vct_bricks_build, "
@@ -127,7 +129,16 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_acc
         clReleaseKernel(k);
     vct_buffer_release(ctx, cones);
     vct_stage_end(ctx);
-    return rc == VCT_OK ? vct_bricks_refresh_radiance(ctx, v, err) : rc;
+    if (rc != VCT_OK)
+        return rc;
+    v->radiance_stale = !refresh;
+    return refresh ? vct_bricks_refresh_radiance(ctx, v, err) : VCT_OK;
+}
+
+int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                             vct_voxels *v, const vct_cone_settings *cs, uint32_t diffuse_cones,
+                             vct_error *err) {
+    return inject_bounce(ctx, s, g, v, cs, diffuse_cones, 1, err);
 }
 
 int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, const vct_plan *plan,
@@ -154,8 +165,9 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
     bricks.radiance_later = 0;
     if (rc == VCT_OK)
         rc = vct_bricks_build(ctx, v, &bricks, err);
+    /* The last bounce's radiance is filtered once, after the rest. */
     for (uint32_t b = 1; rc == VCT_OK && lit && b < bounces; ++b)
-        rc = vct_voxels_inject_bounce(ctx, s, g, v, cs, 6, err);
+        rc = inject_bounce(ctx, s, g, v, cs, 6, b + 1 < bounces || !v->bounce_rest, err);
     if (rc == VCT_OK && lit)
         rc = vct_voxels_bounce_rest(ctx, v, err);
     if (rc != VCT_OK) {

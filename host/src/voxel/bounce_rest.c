@@ -72,27 +72,32 @@ double vct_voxels_bounce_ratio(const vct_voxels *v) {
 
 int vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *v, vct_error *err) {
     v->bounce_ratio = 0.0;
-    if (!v->bounce_rest || v->bounces_measured < 2 || !(v->bounce_light[0] > 0.0))
-        return VCT_OK;
-    /* A ratio near 1 would make the rest unbounded: no surface keeps 90 %
-     * of what reaches it, bounce after bounce, in a scene we render. */
-    double r = v->bounce_light[1] / v->bounce_light[0];
-    r = r < 0.0 ? 0.0 : (r > VCT_BOUNCE_RATIO_MAX ? VCT_BOUNCE_RATIO_MAX : r);
-    v->bounce_ratio = r;
-    const float rest = (float)(r / (1.0 - r));
+    float rest = 0.0f;
+    if (v->bounce_rest && v->bounces_measured >= 2 && v->bounce_light[0] > 0.0) {
+        /* A ratio near 1 would make the rest unbounded: no surface keeps
+         * 90 % of what reaches it, bounce after bounce, in a scene we render. */
+        double r = v->bounce_light[1] / v->bounce_light[0];
+        r = r < 0.0 ? 0.0 : (r > VCT_BOUNCE_RATIO_MAX ? VCT_BOUNCE_RATIO_MAX : r);
+        v->bounce_ratio = r;
+        rest = (float)(r / (1.0 - r));
+    }
     const uint32_t n = v->info.voxels;
-    if (!(rest > 0.0f) || n == 0)
-        return VCT_OK;
-    vct_stage_begin(ctx, STAGE);
-    cl_program p;
-    int rc = vct_program_get(ctx, "voxel/bounce_rest.cl", "", &p, err);
-    if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, p, "bounce_rest", STAGE, n, err, 7, VCT_ARG_OF(v->radiance),
-                            VCT_ARG_OF(v->side), VCT_ARG_OF(v->before_radiance),
-                            VCT_ARG_OF(v->before_side), VCT_ARG_OF(v->direct_side), VCT_ARG_OF(n),
-                            VCT_ARG_OF(rest));
-    if (rc == VCT_OK)
-        rc = vct_finish(ctx, STAGE, err);
-    vct_stage_end(ctx);
-    return rc == VCT_OK ? vct_bricks_refresh_radiance(ctx, v, err) : rc;
+    int rc = VCT_OK;
+    if (rest > 0.0f && n > 0) {
+        vct_stage_begin(ctx, STAGE);
+        cl_program p;
+        rc = vct_program_get(ctx, "voxel/bounce_rest.cl", "", &p, err);
+        if (rc == VCT_OK)
+            rc = vct_run_kernel(ctx, p, "bounce_rest", STAGE, n, err, 7, VCT_ARG_OF(v->radiance),
+                                VCT_ARG_OF(v->side), VCT_ARG_OF(v->before_radiance),
+                                VCT_ARG_OF(v->before_side), VCT_ARG_OF(v->direct_side),
+                                VCT_ARG_OF(n), VCT_ARG_OF(rest));
+        if (rc == VCT_OK)
+            rc = vct_finish(ctx, STAGE, err);
+        vct_stage_end(ctx);
+    }
+    if (rc != VCT_OK || (!(rest > 0.0f) && !v->radiance_stale))
+        return rc;
+    v->radiance_stale = 0;
+    return vct_bricks_refresh_radiance(ctx, v, err);
 }

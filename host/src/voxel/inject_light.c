@@ -75,6 +75,7 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     vct_stage_end(ctx);
     v->bounces = 0; /* the radiance is direct light again */
     v->bounces_measured = 0;
+    v->radiance_stale = 0;
     v->bounce_ratio = 0.0;
     if (rc == VCT_OK)
         rc = vct_bricks_refresh_radiance(ctx, v, err);

@@ -36,6 +36,7 @@ struct vct_voxels {
     double bounce_light[2];
     uint32_t bounces_measured;
     double bounce_ratio;
+    int radiance_stale; /* the bricks' radiance waits for the rest */
     /* Octree: built by vct_octree_build (child is NULL before). */
     cl_mem child, neighbours, tile_parent;
     /* Bricks: built by vct_bricks_build (has_bricks 0 before). Buffers are
