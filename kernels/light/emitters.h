@@ -123,6 +123,8 @@ inline int emitter_visible(const accel_view *g, float3 o, float3 q) {
  * nearly cancelling edge terms loses float digits that the point weight,
  * almost constant over the triangle there, does not need. */
 #define EMITTER_NEAR_SPAN 0.1f
+/* Vertices within this share of their distance of p's plane lie in it. */
+#define EMITTER_IN_PLANE 1e-4f
 
 /* Lambert's formula: the irradiance at p (unit normal n) from triangle
  * (a, b, c) of unit radiance, unoccluded and two-sided: half the magnitude
@@ -130,6 +132,12 @@ inline int emitter_visible(const accel_view *g, float3 o, float3 q) {
  * angle at p times the cosine between n and the plane through p and it. */
 inline float emitter_irradiance(float3 p, float3 n, float3 a, float3 b, float3 c) {
     const float3 v[3] = {a - p, b - p, c - p};
+    /* A triangle in p's own plane (an emitter inlaid in a floor, or the
+     * emitter p lies on) sends nothing: the sum would count its angles. */
+    const float reach = fmax(fmax(length(v[0]), length(v[1])), length(v[2]));
+    const float rise = fmax(fmax(dot(n, v[0]), dot(n, v[1])), dot(n, v[2]));
+    if (!(rise > EMITTER_IN_PLANE * reach))
+        return 0.0f;
     float3 poly[4];
     uint count = 0u;
     for (uint k = 0u; k < 3u; ++k) {

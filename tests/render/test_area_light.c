@@ -207,6 +207,71 @@ static void near_panel_against_analytic(int tiles, double mean_tolerance, double
     free(mat);
 }
 
+/* An emissive square inlaid in the floor under the lamp: the floor around
+ * it and the square itself lie in its plane and get none of its light
+ * (Lambert's formula would sum its angles there), only the lamp's; the
+ * square shows its emission besides. Every pixel against Lambert's formula
+ * for the lamp alone. */
+static void inlaid_tile(void) {
+    /* the floor [0, 10]^2 in four quads around the tile [4.5, 5.5]^2, then
+     * the lamp (down) and the tile, all as x0 z0, x0 z1, x1 z1, x1 z0 */
+    const float rect[6][5] = {{0, 0, 10, 4.5f, 0},      {0, 5.5f, 10, 10, 0},
+                              {0, 4.5f, 4.5f, 5.5f, 0}, {5.5f, 4.5f, 10, 5.5f, 0},
+                              {4, 4, 6, 6, 3},          {4.5f, 4.5f, 5.5f, 5.5f, 0}};
+    float q[6 * 12];
+    uint32_t tri[36], mat[12];
+    for (int k = 0; k < 6; ++k) {
+        const float x0 = rect[k][0], z0 = rect[k][1], x1 = rect[k][2], z1 = rect[k][3],
+                    y = rect[k][4];
+        const float v[12] = {x0, y, z0, x0, y, z1, x1, y, z1, x1, y, z0};
+        memcpy(q + 12 * k, v, sizeof v);
+        const uint32_t up[6] = {0, 1, 2, 0, 2, 3}, down[6] = {0, 2, 1, 0, 3, 2};
+        for (int i = 0; i < 6; ++i)
+            tri[6 * k + i] = 4u * (uint32_t)k + (k == 4 ? down[i] : up[i]);
+        mat[2 * k] = mat[2 * k + 1] = k < 4 ? 0u : (k == 4 ? 1u : 2u);
+    }
+    vct_material m[3] = {vct_material_default(), vct_material_default(), vct_material_default()};
+    for (int c = 0; c < 3; ++c) {
+        m[0].albedo[c] = m[2].albedo[c] = (float)ALBEDO;
+        m[1].albedo[c] = 0.0f;
+        m[1].emission[c] = m[2].emission[c] = (float)LE;
+    }
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(q, 24, tri, 12, mat, m, 3, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const vct_camera above = {{5, 2.5f, 5.01f}, {5, 0, 5}, {0, 0, -1}, 70.0f};
+    s->camera = above;
+    s->has_camera = 1;
+    vct_plan plan;
+    vct_case_direct_plan(s, &plan);
+    vct_aovs aovs;
+    vct_image im = vct_case_render(ctx, s, &plan, 32, 96, 96, 1, &aovs);
+    int pixels = 0, tile_pixels = 0, bad = 0;
+    double worst = 0.0;
+    for (int i = 0; i < 96 * 96; ++i) {
+        const float *pos = &aovs.position.rgba[4 * i];
+        if (pos[3] == 0.0f || fabsf(pos[1]) > 1e-3f)
+            continue;
+        const double p[3] = {pos[0], pos[1], pos[2]};
+        const int on_tile = p[0] > 4.5 && p[0] < 5.5 && p[2] > 4.5 && p[2] < 5.5;
+        const double want = (on_tile ? LE : 0.0) + ALBEDO / CHECK_PI * lambert_polygon(p, LAMP);
+        const double off = fabs(im.rgba[4 * i] - want) / want; /* no indirect planned */
+        worst = fmax(worst, off);
+        bad += off > 1e-3;
+        tile_pixels += on_tile;
+        ++pixels;
+    }
+    CHECK(pixels > 4000 && tile_pixels > 100 && bad == 0,
+          "tile inlaid in the floor: %d of %d pixels (%d on the tile) off Lambert's formula for "
+          "the lamp alone (worst %.3g)",
+          bad, pixels, tile_pixels, worst);
+    printf("tile inlaid in the floor          %d pixels (%d on the tile), worst %.2e\n", pixels,
+           tile_pixels, worst);
+    vct_image_free(&im);
+    vct_aovs_free(&aovs);
+    vct_scene_free(s);
+}
+
 /* The floor's voxels: their radiance against albedo / pi * E at their
  * centres (8 samples per fragment: the mean over the voxels to 2%). */
 static void voxels_against_analytic(void) {
@@ -337,6 +402,7 @@ int main(void) {
      * is not; point samples alone gave NRMSE 3.3 and 1.9, pixels 100x off. */
     near_panel_against_analytic(1, 1e-3, 1e-3);
     near_panel_against_analytic(3, 0.02, 0.6);
+    inlaid_tile();
     voxels_against_analytic();
     vct_context_destroy(ctx);
     return check_exit("test_area_light");
