@@ -173,6 +173,8 @@ inline float3 emitter_near_light(const accel_view *g, __global const vct_materia
     *area = 0.5f * length(cross(b - a, c - a));
     if (span * span < EMITTER_NEAR_SPAN * EMITTER_NEAR_SPAN * dot(to, to))
         return (float3)(-1.0f);
+    if (!(*area > 0.0f))
+        return (float3)(0.0f); /* a sliver of no area sends nothing */
     return materials[tri_material[tri]].emission.xyz * emitter_irradiance(p, n, a, b, c);
 }
 
