@@ -58,23 +58,14 @@ static cl_mem cone_buffer(vct_context *ctx, uint32_t count, const char *stage, v
                              cones, err);
 }
 
-/* A copy of `from` in *to (made once): what the bounces add to. */
-static int keep_copy(vct_context *ctx, cl_mem from, cl_mem *to, uint64_t bytes, const char *what,
-                     vct_error *err) {
-    if (!*to)
-        *to = vct_buffer_create(ctx, BOUNCE_STAGE, what, bytes, CL_MEM_READ_WRITE, NULL, err);
-    if (!*to)
-        return err->status;
-    return vct_cl_check(err, clEnqueueCopyBuffer(ctx->queue, from, *to, 0, 0, bytes, 0, NULL, NULL),
-                        BOUNCE_STAGE, "clEnqueueCopyBuffer");
-}
-
 static int keep_direct(vct_context *ctx, vct_voxels *v, vct_error *err) {
     const uint64_t n = v->info.voxels;
-    int rc = keep_copy(ctx, v->radiance, &v->direct_radiance, 16 * n, "direct voxel radiance", err);
+    /* made once: what the bounces add to */
+    int rc = vct_buffer_copy_into(ctx, BOUNCE_STAGE, "direct voxel radiance", v->radiance,
+                                  &v->direct_radiance, 16 * n, err);
     return rc ? rc
-              : keep_copy(ctx, v->side, &v->direct_side, 16 * VCT_VOXEL_SIDE_FLOAT4S * n,
-                          "direct voxel sides", err);
+              : vct_buffer_copy_into(ctx, BOUNCE_STAGE, "direct voxel sides", v->side,
+                                     &v->direct_side, 16 * VCT_VOXEL_SIDE_FLOAT4S * n, err);
 }
 
 /* One bounce; `refresh` 0 leaves the bricks' radiance to the rest of the

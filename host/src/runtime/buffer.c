@@ -84,6 +84,16 @@ void vct_buffer_release(vct_context *ctx, cl_mem mem) {
     clReleaseMemObject(mem);
 }
 
+int vct_buffer_copy_into(vct_context *ctx, const char *stage, const char *what, cl_mem from,
+                         cl_mem *to, size_t bytes, vct_error *err) {
+    if (!*to)
+        *to = vct_buffer_create(ctx, stage, what, bytes, CL_MEM_READ_WRITE, NULL, err);
+    if (!*to)
+        return err->status;
+    return vct_cl_check(err, clEnqueueCopyBuffer(ctx->queue, from, *to, 0, 0, bytes, 0, NULL, NULL),
+                        stage, "clEnqueueCopyBuffer");
+}
+
 int vct_buffer_read(vct_context *ctx, const char *stage, cl_mem mem, size_t offset, size_t bytes,
                     void *dst, vct_error *err) {
     if (bytes == 0)

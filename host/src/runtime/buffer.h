@@ -14,6 +14,10 @@ cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, 
 cl_mem vct_image3d_create(vct_context *ctx, const char *stage, const char *what,
                           const cl_image_format *format, const cl_image_desc *desc, vct_error *err);
 void vct_buffer_release(vct_context *ctx, cl_mem mem);
+/* A device copy of `bytes` of `from` into *to, which is created (read and
+ * write, named `what`) the first time. */
+int vct_buffer_copy_into(vct_context *ctx, const char *stage, const char *what, cl_mem from,
+                         cl_mem *to, size_t bytes, vct_error *err);
 int vct_buffer_read(vct_context *ctx, const char *stage, cl_mem mem, size_t offset, size_t bytes,
                     void *dst, vct_error *err);
 int vct_buffer_write(vct_context *ctx, const char *stage, cl_mem mem, size_t offset, size_t bytes,

@@ -8,25 +8,15 @@
 #define STAGE "light bounce rest"
 #define GROUP 64 /* BOUNCE_GROUP in bounce_rest.cl */
 
-static int copy_into(vct_context *ctx, cl_mem from, cl_mem *to, size_t bytes, const char *what,
-                     vct_error *err) {
-    if (!*to)
-        *to = vct_buffer_create(ctx, STAGE, what, bytes, CL_MEM_READ_WRITE, NULL, err);
-    if (!*to)
-        return err->status;
-    return vct_cl_check(err, clEnqueueCopyBuffer(ctx->queue, from, *to, 0, 0, bytes, 0, NULL, NULL),
-                        STAGE, "clEnqueueCopyBuffer");
-}
-
 int vct_bounce_rest_keep(vct_context *ctx, vct_voxels *v, vct_error *err) {
     const size_t n = v->info.voxels;
     if (!v->bounce_rest || n == 0)
         return VCT_OK;
-    int rc = copy_into(ctx, v->radiance, &v->before_radiance, 16 * n,
-                       "voxel radiance before a bounce", err);
+    int rc = vct_buffer_copy_into(ctx, STAGE, "voxel radiance before a bounce", v->radiance,
+                                  &v->before_radiance, 16 * n, err);
     return rc ? rc
-              : copy_into(ctx, v->side, &v->before_side, 16 * VCT_VOXEL_SIDE_FLOAT4S * n,
-                          "voxel sides before a bounce", err);
+              : vct_buffer_copy_into(ctx, STAGE, "voxel sides before a bounce", v->side,
+                                     &v->before_side, 16 * VCT_VOXEL_SIDE_FLOAT4S * n, err);
 }
 
 int vct_bounce_rest_measure(vct_context *ctx, vct_voxels *v, vct_error *err) {
