@@ -161,6 +161,13 @@ inline float emitter_irradiance(float3 p, float3 n, float3 a, float3 b, float3 c
     return 0.5f * fabs(sum);
 }
 
+/* Whether triangle (a, b, c) is near p. */
+inline int emitter_is_near(float3 p, float3 a, float3 b, float3 c) {
+    const float span = fmax(fmax(distance(a, b), distance(b, c)), distance(c, a));
+    const float3 to = (a + b + c) * (1.0f / 3.0f) - p;
+    return span * span >= EMITTER_NEAR_SPAN * EMITTER_NEAR_SPAN * dot(to, to);
+}
+
 /* Emitter triangle tri's unoccluded irradiance at p if it is near p (-1 if
  * not), and its area. */
 inline float3 emitter_near_light(const accel_view *g, __global const vct_material_desc *materials,
@@ -168,10 +175,8 @@ inline float3 emitter_near_light(const accel_view *g, __global const vct_materia
                                  float *area) {
     float3 a, b, c;
     emitter_vertices(g, tri, &a, &b, &c);
-    const float span = fmax(fmax(distance(a, b), distance(b, c)), distance(c, a));
-    const float3 to = (a + b + c) * (1.0f / 3.0f) - p;
     *area = 0.5f * length(cross(b - a, c - a));
-    if (span * span < EMITTER_NEAR_SPAN * EMITTER_NEAR_SPAN * dot(to, to))
+    if (!emitter_is_near(p, a, b, c))
         return (float3)(-1.0f);
     if (!(*area > 0.0f))
         return (float3)(0.0f); /* a sliver of no area sends nothing */
@@ -223,14 +228,21 @@ inline void direct_emitters_part(const accel_view *g, const emitter_view *e,
         float3 q;
         uint tri;
         const float3 radiant = emitter_sample(e, g, materials, tri_material, p, seed, s, &q, &tri);
-        float area;
-        const float3 near = emitter_near_light(g, materials, tri_material, tri, p, n, &area);
         const float3 wi = normalize(q - p);
         const float cos_theta = dot(n, wi);
         const int facing = cos_theta > 0.0f && any(radiant != 0.0f);
-        const int is_near = near.x >= 0.0f;
-        if (is_near && !exact && area > 0.0f) /* over the pick's probability */
-            unoccluded += near * (e->scale[emitter_index(e, seed, s)] / area);
+        int is_near;
+        if (exact) { /* its light is in the sum already */
+            float3 a, b, c;
+            emitter_vertices(g, tri, &a, &b, &c);
+            is_near = emitter_is_near(p, a, b, c);
+        } else {
+            float area;
+            const float3 near = emitter_near_light(g, materials, tri_material, tri, p, n, &area);
+            is_near = near.x >= 0.0f;
+            if (is_near && area > 0.0f) /* over the pick's probability */
+                unoccluded += near * (e->scale[emitter_index(e, seed, s)] / area);
+        }
         if (!facing)
             continue;
         const float3 point = radiant * cos_theta;
