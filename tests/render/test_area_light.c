@@ -39,6 +39,38 @@ static double lambert_polygon(const double p[3], const double lamp[4][3]) {
     return LE / 2.0 * fabs(sum);
 }
 
+/* Materials of quad_scene: the floor's, the lamp's (black, emitting Le)
+ * and a glowing floor tile's (both). */
+enum { FLOOR_MATERIAL, LAMP_MATERIAL, TILE_MATERIAL };
+
+/* A scene of `count` quads (4 corners of 3 floats each), quad k of
+ * material kind[k] and wound the other way where flip[k], seen by camera. */
+static vct_scene *quad_scene(const float *corners, uint32_t count, const uint32_t *kind,
+                             const int *flip, vct_camera camera) {
+    uint32_t *tri = malloc(6 * sizeof(uint32_t) * count),
+             *mat = malloc(2 * sizeof(uint32_t) * count);
+    for (uint32_t k = 0; k < count; ++k) {
+        const uint32_t up[6] = {0, 1, 2, 0, 2, 3}, down[6] = {0, 2, 1, 0, 3, 2};
+        for (int i = 0; i < 6; ++i)
+            tri[6 * k + i] = 4 * k + (flip[k] ? down[i] : up[i]);
+        mat[2 * k] = mat[2 * k + 1] = kind[k];
+    }
+    vct_material m[3] = {vct_material_default(), vct_material_default(), vct_material_default()};
+    for (int c = 0; c < 3; ++c) {
+        m[FLOOR_MATERIAL].albedo[c] = m[TILE_MATERIAL].albedo[c] = (float)ALBEDO;
+        m[LAMP_MATERIAL].albedo[c] = 0.0f;
+        m[LAMP_MATERIAL].emission[c] = m[TILE_MATERIAL].emission[c] = (float)LE;
+    }
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(corners, 4 * count, tri, 2 * count, mat, m, 3, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    s->camera = camera;
+    s->has_camera = 1;
+    free(tri);
+    free(mat);
+    return s;
+}
+
 /* A floor [0, 10]^2 at y = 0; a lamp square [4, 6]^2 at y = 3 (wound down
  * or up); a blocker square [3.5, 6.5]^2 at y = 1.5 when asked, seen from low
  * down so that the floor under it shows. */
@@ -47,28 +79,11 @@ static vct_scene *lamp_scene(int blocker, int lamp_up) {
         0,    0,    0,    0,    0,    10,   10,   0,    10,   10,   0,    0, /* floor, up */
         4,    3,    4,    6,    3,    4,    6,    3,    6,    4,    3,    6, /* lamp, down */
         3.5f, 1.5f, 3.5f, 6.5f, 1.5f, 3.5f, 6.5f, 1.5f, 6.5f, 3.5f, 1.5f, 6.5f};
-    const uint32_t quads = blocker ? 3 : 2;
-    uint32_t tri[18], mat[6];
-    for (uint32_t k = 0; k < quads; ++k) {
-        const uint32_t up[6] = {0, 1, 2, 0, 2, 3}, down[6] = {0, 2, 1, 0, 3, 2};
-        for (int i = 0; i < 6; ++i)
-            tri[6 * k + i] = 4 * k + (k == 1 && lamp_up ? down[i] : up[i]);
-        mat[2 * k] = mat[2 * k + 1] = k == 1 ? 1 : 0;
-    }
-    vct_material m[2] = {vct_material_default(), vct_material_default()};
-    for (int c = 0; c < 3; ++c) {
-        m[0].albedo[c] = (float)ALBEDO;
-        m[1].albedo[c] = 0.0f;
-        m[1].emission[c] = (float)LE;
-    }
-    vct_error err = {0};
-    vct_scene *s = vct_scene_from_arrays(q, 4 * quads, tri, 2 * quads, mat, m, 2, &err);
-    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const uint32_t kind[3] = {FLOOR_MATERIAL, LAMP_MATERIAL, FLOOR_MATERIAL};
+    const int flip[3] = {0, lamp_up, 0};
     const vct_camera above = {{5, 9, 5.01f}, {5, 0, 5}, {0, 0, -1}, 70.0f};
     const vct_camera low = {{5, 0.8f, -3}, {5, 0, 5}, {0, 1, 0}, 50.0f};
-    s->camera = blocker ? low : above;
-    s->has_camera = 1;
-    return s;
+    return quad_scene(q, blocker ? 3 : 2, kind, flip, blocker ? low : above);
 }
 
 static const double LAMP[4][3] = {{4, 3, 4}, {6, 3, 4}, {6, 3, 6}, {4, 3, 6}};
@@ -139,8 +154,8 @@ static void near_panel_against_analytic(int tiles, double mean_tolerance, double
     const float x = 5.0f, y0 = 0.002f, y1 = 1.0f, z0 = 4.0f, z1 = 6.0f;
     const uint32_t quads = 1 + (uint32_t)(tiles * tiles);
     float *v = malloc(12 * sizeof(float) * quads);
-    uint32_t *tri = malloc(6 * sizeof(uint32_t) * quads),
-             *mat = malloc(2 * sizeof(uint32_t) * quads);
+    uint32_t *kind = malloc(sizeof(uint32_t) * quads);
+    int *flip = calloc(quads, sizeof(int));
     const float floor_quad[12] = {0, 0, 0, 0, 0, 10, 10, 0, 10, 10, 0, 0};
     memcpy(v, floor_quad, sizeof floor_quad);
     for (int i = 0; i < tiles; ++i)
@@ -152,24 +167,13 @@ static void near_panel_against_analytic(int tiles, double mean_tolerance, double
             const float q[12] = {x, ya, za, x, yb, za, x, yb, zb, x, ya, zb};
             memcpy(v + 12 * (1 + i * tiles + j), q, sizeof q);
         }
-    for (uint32_t k = 0; k < quads; ++k) {
-        const uint32_t up[6] = {0, 1, 2, 0, 2, 3};
-        for (int i = 0; i < 6; ++i)
-            tri[6 * k + i] = 4 * k + up[i];
-        mat[2 * k] = mat[2 * k + 1] = k == 0 ? 0 : 1;
-    }
-    vct_material m[2] = {vct_material_default(), vct_material_default()};
-    for (int c = 0; c < 3; ++c) {
-        m[0].albedo[c] = (float)ALBEDO;
-        m[1].albedo[c] = 0.0f;
-        m[1].emission[c] = (float)LE;
-    }
-    vct_error err = {0};
-    vct_scene *s = vct_scene_from_arrays(v, 4 * quads, tri, 2 * quads, mat, m, 2, &err);
-    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    for (uint32_t k = 0; k < quads; ++k)
+        kind[k] = k == 0 ? FLOOR_MATERIAL : LAMP_MATERIAL;
     const vct_camera above = {{5.15f, 3, 5}, {5.15f, 0, 5}, {0, 0, -1}, 6.0f};
-    s->camera = above;
-    s->has_camera = 1;
+    vct_scene *s = quad_scene(v, quads, kind, flip, above);
+    free(v);
+    free(kind);
+    free(flip);
     vct_plan plan;
     vct_case_direct_plan(s, &plan);
     vct_aovs aovs;
@@ -202,9 +206,6 @@ static void near_panel_against_analytic(int tiles, double mean_tolerance, double
     vct_image_free(&im);
     vct_aovs_free(&aovs);
     vct_scene_free(s);
-    free(v);
-    free(tri);
-    free(mat);
 }
 
 /* An emissive square inlaid in the floor under the lamp: the floor around
@@ -219,29 +220,17 @@ static void inlaid_tile(void) {
                               {0, 4.5f, 4.5f, 5.5f, 0}, {5.5f, 4.5f, 10, 5.5f, 0},
                               {4, 4, 6, 6, 3},          {4.5f, 4.5f, 5.5f, 5.5f, 0}};
     float q[6 * 12];
-    uint32_t tri[36], mat[12];
     for (int k = 0; k < 6; ++k) {
         const float x0 = rect[k][0], z0 = rect[k][1], x1 = rect[k][2], z1 = rect[k][3],
                     y = rect[k][4];
         const float v[12] = {x0, y, z0, x0, y, z1, x1, y, z1, x1, y, z0};
         memcpy(q + 12 * k, v, sizeof v);
-        const uint32_t up[6] = {0, 1, 2, 0, 2, 3}, down[6] = {0, 2, 1, 0, 3, 2};
-        for (int i = 0; i < 6; ++i)
-            tri[6 * k + i] = 4u * (uint32_t)k + (k == 4 ? down[i] : up[i]);
-        mat[2 * k] = mat[2 * k + 1] = k < 4 ? 0u : (k == 4 ? 1u : 2u);
     }
-    vct_material m[3] = {vct_material_default(), vct_material_default(), vct_material_default()};
-    for (int c = 0; c < 3; ++c) {
-        m[0].albedo[c] = m[2].albedo[c] = (float)ALBEDO;
-        m[1].albedo[c] = 0.0f;
-        m[1].emission[c] = m[2].emission[c] = (float)LE;
-    }
-    vct_error err = {0};
-    vct_scene *s = vct_scene_from_arrays(q, 24, tri, 12, mat, m, 3, &err);
-    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const uint32_t kind[6] = {FLOOR_MATERIAL, FLOOR_MATERIAL, FLOOR_MATERIAL,
+                              FLOOR_MATERIAL, LAMP_MATERIAL,  TILE_MATERIAL};
+    const int flip[6] = {0, 0, 0, 0, 1, 0};
     const vct_camera above = {{5, 2.5f, 5.01f}, {5, 0, 5}, {0, 0, -1}, 70.0f};
-    s->camera = above;
-    s->has_camera = 1;
+    vct_scene *s = quad_scene(q, 6, kind, flip, above);
     vct_plan plan;
     vct_case_direct_plan(s, &plan);
     vct_aovs aovs;
