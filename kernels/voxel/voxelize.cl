@@ -12,6 +12,7 @@
 #include "vct_types.h"
 #include "voxel/voxel_overlap.h"
 #include "voxel/fragment_albedo.h"
+#include "voxel/clip_area.h"
 
 #define VOX_COLUMNS_PER_CHUNK 32u
 
@@ -226,10 +227,15 @@ inline float3 tensor_axis(normal_tensor m) {
     return len > 0.0f ? axis_canonical(v / len) : e;
 }
 
-/* Averages each voxel's fragments in sorted order (deterministic): albedo
- * (each fragment's mean over its part of the voxel where its material has a
- * texture, fragment_albedo.h) and opacity (1 - transmission, times the share of the fragment
- * an alpha mask keeps), emission, and the normal axis.
+/* Sums each voxel's fragments in sorted order (deterministic), each weighed
+ * by the area of its triangle inside the voxel (clip_area.h), in voxel
+ * faces: albedo (each fragment's mean over its part of the voxel where its
+ * material has a texture, fragment_albedo.h) and emission are means by area;
+ * opacity is the area's opaque share (1 - transmission, times the share an
+ * alpha mask keeps), at most 1. A wall across the voxel makes it opaque;
+ * a bead or a slat a fraction of a voxel wide covers, blocks and sends light
+ * in proportion to its surface, not as a whole voxel. Fragments that only
+ * touch the voxel (no area) give plain means and no opacity.
  * Surfaces are two-sided, so a fragment's normal counts for its line, not its sign: the voxel's
  * normal is the axis that fits its fragments' normals best (tensor_axis), and a surface wound
  * either way, or a mix, gives it bit for bit. normal.w: how well it fits, sqrt(mean of (n .
@@ -247,49 +253,58 @@ __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_st
     const float voxel = vol.origin.w / (float)vol.res.x;
     const float unit = vol.origin.w / (float)(1u << VCT_VOLUME_UNITS_LOG2);
     const float3 centre = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * voxel;
+    const int q = (int)((1u << VCT_VOLUME_UNITS_LOG2) / vol.res.x);
+    const int3 centre_units = convert_int3(morton_decode(keys[v])) * q + q / 2;
+    const float voxels_per_unit = 1.0f / (float)q; /* a power of two: exact */
     const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
-    float4 albedo = 0.0f;
-    float3 emission = 0.0f, textured = 0.0f, touching = 0.0f;
-    uint textured_fragments = 0, covered = 0;
+    /* area-weighted sums (the surface's area inside the voxel, in faces),
+     * and plain ones for voxels whose fragments only touch it */
+    float3 albedo_area = 0.0f, albedo_plain = 0.0f, emission_area = 0.0f, emission_plain = 0.0f;
+    float area_sum = 0.0f, opacity_area = 0.0f;
     normal_tensor m = {(float3)(0.0f), (float3)(0.0f)};
     for (uint f = begin; f < end; ++f) {
         const uint t = ids[f];
         const float4 tn = tri_normals[t];
         const vct_material_desc mat = materials[(uint)tn.w];
+        const float3 a = vol.origin.xyz + convert_float3(tris[3u * t].xyz) * unit;
+        const float3 b = vol.origin.xyz + convert_float3(tris[3u * t + 1u].xyz) * unit;
+        const float3 c = vol.origin.xyz + convert_float3(tris[3u * t + 2u].xyz) * unit;
+        /* corners relative to the voxel's centre from the integer units:
+         * exact, however far the triangle reaches */
+        const float area = triangle_area_in_cube(
+            convert_float3(tris[3u * t].xyz - centre_units) * voxels_per_unit,
+            convert_float3(tris[3u * t + 1u].xyz - centre_units) * voxels_per_unit,
+            convert_float3(tris[3u * t + 2u].xyz - centre_units) * voxels_per_unit);
+        float3 fragment_albedo;
+        float kept;
         if ((uint)mat.extra.y != 0u) {
             uint inside;
-            float coverage;
-            const float3 sum = fragment_albedo_sum(
-                &tv, &mat, t, vol.origin.xyz + convert_float3(tris[3u * t].xyz) * unit,
-                vol.origin.xyz + convert_float3(tris[3u * t + 1u].xyz) * unit,
-                vol.origin.xyz + convert_float3(tris[3u * t + 2u].xyz) * unit, centre, voxel,
-                &inside, &coverage);
-            if (inside > 0u)
-                textured += sum;
-            else
-                touching += sum;
-            covered += inside;
-            ++textured_fragments;
-            albedo.w += (1.0f - mat.specular.w) * coverage;
+            const float3 sum =
+                fragment_albedo_sum(&tv, &mat, t, a, b, c, centre, voxel, &inside, &kept);
+            fragment_albedo = inside > 0u ? sum / (float)inside : sum;
         } else {
-            const float kept = fragment_kept(&mat, (float4)(1.0f)) ? 1.0f : 0.0f;
-            albedo += (float4)(mat.albedo.xyz, (1.0f - mat.specular.w) * kept);
+            kept = fragment_kept(&mat, (float4)(1.0f)) ? 1.0f : 0.0f;
+            fragment_albedo = mat.albedo.xyz;
         }
-        emission += mat.emission.xyz;
+        albedo_area += area * fragment_albedo;
+        albedo_plain += fragment_albedo;
+        emission_area += area * mat.emission.xyz;
+        emission_plain += mat.emission.xyz;
+        area_sum += area;
+        opacity_area += area * (1.0f - mat.specular.w) * kept;
         m.d += tn.xyz * tn.xyz;
         m.o += tn.xyz * tn.yzx;
     }
-    if (textured_fragments > 0u)
-        albedo.xyz +=
-            (float)textured_fragments *
-            (covered > 0u ? textured / (float)covered : touching / (float)textured_fragments);
     const float inv = 1.0f / (float)(end - begin);
     /* one fragment (most voxels): its own normal is the axis exactly, and
      * the eight squarings are saved (they cost the reduction 2x) */
     const float3 single = tri_normals[ids[begin]].xyz;
     const float3 axis = end - begin == 1u ? (all(single == 0.0f) ? single : axis_canonical(single))
                                           : tensor_axis(m);
-    albedo_out[v] = albedo * inv;
+    const int weighed = area_sum > CLIP_AREA_WEIGHED_MIN;
+    albedo_out[v] =
+        (float4)(weighed ? albedo_area / area_sum : albedo_plain * inv, fmin(opacity_area, 1.0f));
     normal_out[v] = (float4)(axis, sqrt(fmax(dot(axis, tensor_apply(m, axis)), 0.0f) * inv));
-    emission_out[v] = (float4)(emission * inv, (float)(end - begin));
+    emission_out[v] =
+        (float4)(weighed ? emission_area / area_sum : emission_plain * inv, (float)(end - begin));
 }

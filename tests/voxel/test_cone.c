@@ -304,7 +304,17 @@ static void random_volumes(void) {
     const uint32_t sizes[] = {8, 32};
     for (size_t s = 0; s < 2; ++s) {
         for (int directional = 0; directional < 2; ++directional) {
-            test_mesh m = mesh_soup(sizes[s] == 8 ? 30 : 500, 0.0f, 41 + s);
+            test_mesh m = mesh_soup(sizes[s] == 8 ? 150 : 500, 0.0f, 41 + s);
+            /* opacity is the share of a voxel a surface covers: the soup's
+             * triangles grow 4x about their centres, so that enough voxels
+             * are opaque for cones to stop in them as well as leave */
+            for (uint32_t t = 0; t < m.nt; ++t)
+                for (int k = 0; k < 3; ++k) {
+                    float *p = m.pos + 9 * t + k;
+                    const float centre = (p[0] + p[3] + p[6]) / 3.0f;
+                    for (int v = 0; v < 3; ++v)
+                        p[3 * v] = fminf(fmaxf(centre + 4.0f * (p[3 * v] - centre), 0.0f), 1.0f);
+                }
             vct_scene *scene = scene_of(&m, mats, 4);
             mesh_free(&m);
             add_point_light(scene, 0.3f, 0.8f, 0.6f, 0.5f);

@@ -197,6 +197,57 @@ static inline ref_voxels ref_voxelize(const vct_scene *s, const vct_voxel_info *
     return r;
 }
 
+/* The cell (x, y, z) of a Morton key. */
+static inline void ref_unmorton(uint32_t key, int64_t cell[3]) {
+    cell[0] = cell[1] = cell[2] = 0;
+    for (int b = 0; b < 10; ++b)
+        for (int k = 0; k < 3; ++k)
+            cell[k] |= (int64_t)((key >> (3 * b + k)) & 1u) << b;
+}
+
+/* Area of triangle v (quantised) inside the voxel `cell` of side q, in
+ * units of the voxel's face: the triangle cut by one face plane at a time,
+ * keeping the part on the voxel's side, in double. */
+static inline double ref_area_in_voxel(const int64_t v[3][3], const int64_t cell[3], int64_t q) {
+    double poly[16][3], cut[16][3];
+    int n = 3;
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k)
+            poly[i][k] = ((double)v[i][k] - ((double)cell[k] + 0.5) * (double)q) / (double)q;
+    for (int face = 0; face < 6 && n > 0; ++face) {
+        const int k = face / 2;
+        const double sign = face % 2 ? -1.0 : 1.0;
+        int m = 0;
+        for (int i = 0; i < n; ++i) {
+            const double *p = poly[i], *r = poly[(i + 1) % n];
+            const double dp = sign * p[k] - 0.5, dr = sign * r[k] - 0.5;
+            if (dp <= 0.0) {
+                memcpy(cut[m++], p, sizeof cut[0]);
+            }
+            if ((dp < 0.0) != (dr < 0.0) && dp != 0.0 && dr != 0.0) {
+                const double w = dp / (dp - dr);
+                for (int j = 0; j < 3; ++j)
+                    cut[m][j] = p[j] + w * (r[j] - p[j]);
+                ++m;
+            }
+        }
+        memcpy(poly, cut, sizeof poly);
+        n = m;
+    }
+    double sum[3] = {0, 0, 0};
+    for (int i = 1; i + 1 < n; ++i) {
+        double a[3], b[3];
+        for (int j = 0; j < 3; ++j) {
+            a[j] = poly[i][j] - poly[0][j];
+            b[j] = poly[i + 1][j] - poly[0][j];
+        }
+        sum[0] += a[1] * b[2] - a[2] * b[1];
+        sum[1] += a[2] * b[0] - a[0] * b[2];
+        sum[2] += a[0] * b[1] - a[1] * b[0];
+    }
+    return 0.5 * sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+}
+
 static inline void ref_free(ref_voxels *r) {
     free(r->frags);
     free(r->keys);
