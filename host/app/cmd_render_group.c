@@ -43,7 +43,7 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
     build.accel = opt->accel;
     build.plan = method == VCT_METHOD_VCT ? &plan : NULL;
     cli_voxel_options(opt, 128, &build.voxel);
-    build.bricks = (vct_brick_options){opt->bricks, opt->anisotropic != 0, 0};
+    build.bricks = (vct_brick_options){opt->bricks, opt->anisotropic == 1, 0};
     build.bounces = (uint32_t)opt->bounces;
     build.cones = opt->cones;
     build.copy_voxels = opt->copy_voxels;

@@ -38,7 +38,7 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
     /* 128^3 by default: within 1 % of the best error measured on the Cornell
      * box (64^3) and on the heavy scene (256^3) (README, accuracy). */
     cli_voxel_options(opt, 128, &voxel);
-    const vct_brick_options bricks = {opt->bricks, opt->anisotropic != 0, 0};
+    const vct_brick_options bricks = {opt->bricks, opt->anisotropic == 1, 0};
     vct_voxels *v = NULL;
     int rc = vct_vct_prepare(ctx, job->scene, job->accel, &plan, &voxel, &bricks,
                              (uint32_t)opt->bounces, &opt->cones, &v, err);

@@ -41,11 +41,10 @@ void cli_usage(void) {
         "                                   then the rest of the series at the scene's\n"
         "                                   bounce ratio; --exact-bounces: no rest;\n"
         "                                   --isotropic: one radiance per brick sample\n"
-        "                                   (default: six directional values);\n"
+        "                                   (default), --anisotropic: six directional values;\n"
         "                                   --aov PREFIX writes PREFIX_direct.pfm, _indirect,\n"
         "                                   _specular, _ao, _level, _position, _normal;\n"
-        "                                   --voxel-res, --bricks,\n"
-        "                                   --anisotropic as for voxelize\n"
+        "                                   --voxel-res, --bricks as for voxelize\n"
         "  --method raycast                 direct light with hard shadows\n"
         "  --method pt                      path tracing (the reference): --spp N or --time S,\n"
         "                                   --max-depth D (default 16), --seed N\n"
@@ -260,7 +259,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
     opt->diffuse_cones = 6;
     opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
     opt->bounces = 3;
-    opt->anisotropic = -1; /* render: on, voxelize: off, unless given */
+    opt->anisotropic = -1; /* off unless given (--anisotropic) */
     opt->cones = vct_cone_settings_default();
     if (argc < 2) {
         cli_usage();

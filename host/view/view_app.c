@@ -75,7 +75,7 @@ static int group_prepare(view_app *app, int with_voxels, vct_error *err) {
     b.accel = app->opt.accel;
     b.plan = with_voxels ? &app->plan : NULL;
     cli_voxel_options(&app->opt, 128, &b.voxel);
-    b.bricks = (vct_brick_options){app->opt.bricks, app->opt.anisotropic != 0, 0};
+    b.bricks = (vct_brick_options){app->opt.bricks, app->opt.anisotropic == 1, 0};
     b.bounces = (uint32_t)app->opt.bounces;
     b.cones = app->opt.cones;
     return vct_group_prepare(app->group, app->scene, &b, err);
@@ -141,7 +141,7 @@ static int ensure_voxels(view_app *app, vct_error *err) {
         if (app->voxels && app->voxels_for_plan && (app->voxels_lit || !lit))
             return VCT_OK;
         drop_voxels(app);
-        const vct_brick_options bricks = {app->opt.bricks, app->opt.anisotropic != 0, 0};
+        const vct_brick_options bricks = {app->opt.bricks, app->opt.anisotropic == 1, 0};
         int rc = vct_vct_prepare(app->ctx, app->scene, app->accel, &app->plan, &vo, &bricks,
                                  (uint32_t)app->opt.bounces, &app->opt.cones, &app->voxels, err);
         if (rc)

@@ -300,7 +300,8 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
         const cone_result r =
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
-        l.radiance += c.dir.w * cone_sky_checked(acc, cd, origin, d, r);
+        l.radiance += c.dir.w * cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
+                                                  c.aperture.x, r);
         l.open += c.dir.w * (1.0f - r.ao_alpha);
         level_sum += r.level_sum;
         samples += r.samples;

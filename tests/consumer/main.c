@@ -23,7 +23,7 @@ static int render(vct_context *ctx, const vct_scene *scene, const vct_accel *acc
         vct_plan_make(scene, NULL, &plan);
         vct_voxel_options vo = {0};
         vo.resolution = 64;
-        const vct_brick_options bo = {VCT_BRICKS_AUTO, 1, 0};
+        const vct_brick_options bo = {VCT_BRICKS_AUTO, 0, 0}; /* isotropic, as vct render */
         const vct_cone_settings cones = vct_cone_settings_default();
         rc = vct_vct_prepare(ctx, scene, accel, &plan, &vo, &bo, 3, &cones, &voxels, err);
         job.voxels = voxels;

@@ -6,17 +6,18 @@
 
 #include "check.h"
 
-/* w x h at res^3 voxels and `bounces` light bounces, pixel centres only;
- * AOVs too when aovs is not NULL. */
-static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, const vct_plan *plan,
-                                        uint32_t res, int w, int h, uint32_t bounces,
-                                        vct_aovs *aovs) {
+/* w x h at res^3 voxels and `bounces` light bounces, pixel centres only,
+ * directional bricks or isotropic ones (the default); AOVs too when aovs
+ * is not NULL. */
+static inline vct_image vct_case_render_bricks(vct_context *ctx, const vct_scene *s,
+                                               const vct_plan *plan, uint32_t res, int w, int h,
+                                               uint32_t bounces, int directional, vct_aovs *aovs) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_voxel_options vo = {0};
     vo.resolution = res;
-    const vct_brick_options bo = {VCT_BRICKS_AUTO, 1, 0};
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, directional, 0};
     vct_vct_options o = vct_vct_options_default();
     o.width = w;
     o.height = h;
@@ -32,6 +33,13 @@ static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, co
     vct_voxels_free(v);
     vct_accel_free(g);
     return image;
+}
+
+/* The same with directional bricks. */
+static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, const vct_plan *plan,
+                                        uint32_t res, int w, int h, uint32_t bounces,
+                                        vct_aovs *aovs) {
+    return vct_case_render_bricks(ctx, s, plan, res, w, h, bounces, 1, aovs);
 }
 
 /* The plan with every effect forced to `rest`, but `effect` to `forced`
