@@ -301,7 +301,7 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
         const cone_result r =
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
         l.radiance += c.dir.w * cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
-                                                  c.aperture.x, r);
+                                                  c.aperture.x, r, CONE_REST_RAYS_CAMERA);
         l.open += c.dir.w * (1.0f - r.ao_alpha);
         level_sum += r.level_sum;
         samples += r.samples;

@@ -32,8 +32,8 @@ inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
         const cone_result r =
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, INFINITY);
-        gathered += c.dir.w *
-                    cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, r);
+        gathered += c.dir.w * cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
+                                                c.aperture.x, r, CONE_REST_RAYS_VOXELS);
     }
     return gathered;
 }
