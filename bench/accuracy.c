@@ -14,8 +14,9 @@
  * bounces without the rest of the series; its time is split into building the
  * voxel hierarchy (voxels, octree, bricks, light) and tracing.
  * --quick runs cone tracing at its default, with sparse diffuse, with its
- * bounces exactly and with directional bricks (the scene suite's table); --ambient gives the scene a sky; --accel picks
- * the structure every ray goes through (its build counts as "accel ms"). */
+ * bounces exactly, with directional bricks and with 6 cones (the scene
+ * suite's table); --ambient gives the scene
+ * a sky; --accel picks the structure every ray goes through (its build counts as "accel ms"). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -471,29 +472,30 @@ int main(int argc, char **argv) {
         n = whitted_rows(ctx, s, &cfg, &ref, runs, n);
     if (cfg.pm)
         n = pm_rows(ctx, s, &cfg, &ref, runs, n);
-    /* The default (128^3, 6 cones, step 1, isotropic, 3 bounces) and one
+    /* The default (128^3, 9 cones, step 1, isotropic, 3 bounces) and one
      * setting changed at a time. */
     static const vct_setting vct_runs[] = {
-        {64, 6, 3, 1.0f, 0, 0.0f, 0, 0, 0},   {128, 6, 3, 1.0f, 0, 0.0f, 0, 0, 0},
-        {256, 6, 3, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 1, 3, 1.0f, 0, 0.0f, 0, 0, 0},
-        {128, 5, 3, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},
-        {128, 16, 3, 1.0f, 0, 0.0f, 0, 0, 0}, {128, 6, 3, 0.25f, 0, 0.0f, 0, 0, 0},
-        {128, 6, 3, 0.5f, 0, 0.0f, 0, 0, 0},  {128, 6, 3, 1.0f, 1, 0.0f, 0, 0, 0},
-        {128, 6, 1, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 6, 2, 1.0f, 0, 0.0f, 0, 0, 0},
-        {64, 6, 3, 1.0f, 0, 2.0f, 0, 0, 0},   {64, 6, 3, 1.0f, 0, 8.0f, 0, 0, 0},
-        {128, 6, 3, 1.0f, 0, 2.0f, 0, 0, 0},  {128, 6, 3, 1.0f, 0, 8.0f, 0, 0, 0},
-        {128, 6, 3, 1.0f, 0, 16.0f, 0, 0, 0}, {256, 6, 3, 1.0f, 0, 8.0f, 0, 0, 0},
-        {256, 6, 3, 1.0f, 0, 16.0f, 0, 0, 0}, {256, 6, 3, 1.0f, 0, 32.0f, 0, 0, 0},
-        {64, 6, 3, 1.0f, 0, 0.0f, 1, 0, 0},   {128, 6, 3, 1.0f, 0, 0.0f, 1, 0, 0},
-        {256, 6, 3, 1.0f, 0, 0.0f, 1, 0, 0},  {128, 6, 3, 1.0f, 0, 2.0f, 1, 0, 0},
-        {128, 16, 3, 1.0f, 0, 0.0f, 1, 0, 0}, {64, 6, 3, 1.0f, 0, 0.0f, 0, 1, 0},
-        {128, 6, 3, 1.0f, 0, 0.0f, 0, 1, 0},  {256, 6, 3, 1.0f, 0, 0.0f, 0, 1, 0},
-        {128, 6, 3, 1.0f, 0, 0.0f, 1, 1, 0},  {128, 6, 3, 1.0f, 0, 0.0f, 0, 0, 1},
-        {128, 6, 2, 1.0f, 0, 0.0f, 0, 0, 1}};
-    static const vct_setting quick_runs[] = {{128, 6, 3, 1.0f, 0, 0.0f, 0, 0, 0},
-                                             {128, 6, 3, 1.0f, 0, 0.0f, 0, 1, 0},
-                                             {128, 6, 3, 1.0f, 0, 0.0f, 0, 0, 1},
-                                             {128, 6, 3, 1.0f, 1, 0.0f, 0, 0, 0}};
+        {64, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},   {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},
+        {256, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 1, 3, 1.0f, 0, 0.0f, 0, 0, 0},
+        {128, 5, 3, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 6, 3, 1.0f, 0, 0.0f, 0, 0, 0},
+        {128, 16, 3, 1.0f, 0, 0.0f, 0, 0, 0}, {128, 9, 3, 0.25f, 0, 0.0f, 0, 0, 0},
+        {128, 9, 3, 0.5f, 0, 0.0f, 0, 0, 0},  {128, 9, 3, 1.0f, 1, 0.0f, 0, 0, 0},
+        {128, 9, 1, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 0},
+        {64, 9, 3, 1.0f, 0, 2.0f, 0, 0, 0},   {64, 9, 3, 1.0f, 0, 8.0f, 0, 0, 0},
+        {128, 9, 3, 1.0f, 0, 2.0f, 0, 0, 0},  {128, 9, 3, 1.0f, 0, 8.0f, 0, 0, 0},
+        {128, 9, 3, 1.0f, 0, 16.0f, 0, 0, 0}, {256, 9, 3, 1.0f, 0, 8.0f, 0, 0, 0},
+        {256, 9, 3, 1.0f, 0, 16.0f, 0, 0, 0}, {256, 9, 3, 1.0f, 0, 32.0f, 0, 0, 0},
+        {64, 9, 3, 1.0f, 0, 0.0f, 1, 0, 0},   {128, 9, 3, 1.0f, 0, 0.0f, 1, 0, 0},
+        {256, 9, 3, 1.0f, 0, 0.0f, 1, 0, 0},  {128, 9, 3, 1.0f, 0, 2.0f, 1, 0, 0},
+        {128, 16, 3, 1.0f, 0, 0.0f, 1, 0, 0}, {64, 9, 3, 1.0f, 0, 0.0f, 0, 1, 0},
+        {128, 9, 3, 1.0f, 0, 0.0f, 0, 1, 0},  {256, 9, 3, 1.0f, 0, 0.0f, 0, 1, 0},
+        {128, 9, 3, 1.0f, 0, 0.0f, 1, 1, 0},  {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 1},
+        {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 1}};
+    static const vct_setting quick_runs[] = {{128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},
+                                             {128, 9, 3, 1.0f, 0, 0.0f, 0, 1, 0},
+                                             {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 1},
+                                             {128, 9, 3, 1.0f, 1, 0.0f, 0, 0, 0},
+                                             {128, 6, 3, 1.0f, 0, 0.0f, 0, 0, 0}};
     const vct_setting *list = cfg.quick ? quick_runs : vct_runs;
     const size_t listed =
         cfg.quick ? sizeof quick_runs / sizeof quick_runs[0] : sizeof vct_runs / sizeof vct_runs[0];

@@ -26,7 +26,7 @@ void cli_usage(void) {
         "                                   effect plan; --effect NAME=on|off forces one\n"
         "                                   (direct, shadows, indirect, specular, refraction,\n"
         "                                   emission, ao, soft_shadows); --cones 1|5|6|9|16\n"
-        "                                   diffuse cones (default 6); --cone-step F\n"
+        "                                   diffuse cones (default 9); --cone-step F\n"
         "                                   (fraction of the diameter, 1); --cone-offset V\n"
         "                                   (voxels, 4); --cone-levels blend|nearest (a\n"
         "                                   sample blends two octree levels, or reads one);\n"
@@ -256,7 +256,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
     opt->method = "vct";
     opt->max_depth = 0; /* each method its own default */
     opt->voxel_res = 0; /* each command's own default */
-    opt->diffuse_cones = 6;
+    opt->diffuse_cones = 9;
     opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
     opt->bounces = 3;
     opt->anisotropic = -1; /* off unless given (--anisotropic) */

@@ -27,7 +27,7 @@ vct_vct_options vct_vct_options_default(void) {
     memset(&o, 0, sizeof o);
     o.width = 512;
     o.height = 512;
-    o.diffuse_cones = 6;
+    o.diffuse_cones = 9;
     o.cones = vct_cone_settings_default();
     o.edge_samples = VCT_EDGE_SAMPLES_DEFAULT;
     return o;
