@@ -26,6 +26,8 @@
 
 #define CONE_REST_RAYS_CAMERA 9u
 #define CONE_REST_RAYS_VOXELS 1u
+/* Below this a sample's colour over its opacity is half-float noise. */
+#define CONE_REST_MIN_OPACITY 1e-3f
 
 /* Ray k of the rest's nine, across the cone in units of its aperture: the
  * axis, four at 0.45, four at 0.9 between them. */
@@ -93,7 +95,8 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
         cone_path path = cone_path_root();
         const float4 s =
             cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, dk, o, &path);
-        if (s.w > 0.0f)
+        /* un-premultiplied where the half floats still hold it */
+        if (s.w > CONE_REST_MIN_OPACITY)
             rest += s.xyz / s.w;
     }
     return r.radiance + (1.0f - r.alpha) * (rest / (float)rays - c->ambient.xyz);
