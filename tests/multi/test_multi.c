@@ -46,7 +46,7 @@ static vct_group_build build_options(const vct_scene *s) {
     vct_plan_make(s, NULL, &plan);
     b.plan = &plan;
     b.voxel.resolution = 32;
-    b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 1, 0};
+    b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 0, 0}; /* isotropic, the default */
     b.bounces = 1;
     b.cones = vct_vct_options_default().cones;
     return b;
