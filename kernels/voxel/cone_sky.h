@@ -90,7 +90,7 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
         }
         /* the level of the cone's diameter there, as cone_trace picks it */
         const float diameter = fmax(2.0f * h.t * tan_half, min_diameter);
-        const float level = clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest);
+        const float level = cone_level(finest, diameter, min_diameter);
         const float3 at = clamp((origin + h.t * dk - c->volume.xyz) * c->ambient.w, 0.0f, 0.99999f);
         cone_path path = cone_path_root();
         const float4 s =

@@ -214,6 +214,12 @@ VCT_INLINE float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child
     return fine == coarse ? value[0] : value[0] + f * (value[1] - value[0]);
 }
 
+/* The fractional octree level whose samples are diameter / 2 apart (finest
+ * the leaves' level, min_diameter two leaf voxels), clamped to the tree. */
+inline float cone_level(float finest, float diameter, float min_diameter) {
+    return clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest);
+}
+
 /* Where a cone from surface point p with normal n starts: lifted off the
  * surface by the offset (in voxels), so that it does not see its own voxel. */
 inline float3 cone_origin(const vct_cone_desc *c, float3 p, float3 n) {
@@ -280,12 +286,11 @@ VCT_INLINE cone_result cone_trace(CONE_POOLS, __global const uint *child, const 
         }
         const float diameter = fmax(2.0f * t * tan_half, min_diameter);
 #ifdef VCT_CONE_NEAREST_LEVEL
-        const float level =
-            rint(clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest));
+        const float level = rint(cone_level(finest, diameter, min_diameter));
         const float spacing = voxel * exp2(finest - level);
         const int follows = 0; /* the spacing is the level's own */
 #else
-        const float level = clamp(finest - native_log2(diameter / min_diameter), 0.0f, finest);
+        const float level = cone_level(finest, diameter, min_diameter);
         const float spacing = level > 0.0f ? 0.5f * diameter : root_spacing;
         const int follows = level > 0.0f;
 #endif

@@ -252,9 +252,10 @@ __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_st
     const texture_view tv = TEXTURE_VIEW();
     const float voxel = vol.origin.w / (float)vol.res.x;
     const float unit = vol.origin.w / (float)(1u << VCT_VOLUME_UNITS_LOG2);
-    const float3 centre = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * voxel;
+    const uint3 cell = morton_decode(keys[v]);
+    const float3 centre = vol.origin.xyz + (convert_float3(cell) + 0.5f) * voxel;
     const int q = (int)((1u << VCT_VOLUME_UNITS_LOG2) / vol.res.x);
-    const int3 centre_units = convert_int3(morton_decode(keys[v])) * q + q / 2;
+    const int3 centre_units = convert_int3(cell) * q + q / 2;
     const float voxels_per_unit = 1.0f / (float)q; /* a power of two: exact */
     const uint begin = voxel_start[v], end = v + 1 < voxels ? voxel_start[v + 1] : fragments;
     /* area-weighted sums (the surface's area inside the voxel, in faces),
@@ -266,19 +267,21 @@ __kernel void vox_reduce(__global const uint *ids, __global const uint *voxel_st
         const uint t = ids[f];
         const float4 tn = tri_normals[t];
         const vct_material_desc mat = materials[(uint)tn.w];
-        const float3 a = vol.origin.xyz + convert_float3(tris[3u * t].xyz) * unit;
-        const float3 b = vol.origin.xyz + convert_float3(tris[3u * t + 1u].xyz) * unit;
-        const float3 c = vol.origin.xyz + convert_float3(tris[3u * t + 2u].xyz) * unit;
+        const int3 ia = tris[3u * t].xyz, ib = tris[3u * t + 1u].xyz, ic = tris[3u * t + 2u].xyz;
         /* corners relative to the voxel's centre from the integer units:
          * exact, however far the triangle reaches */
-        const float area = triangle_area_in_cube(
-            convert_float3(tris[3u * t].xyz - centre_units) * voxels_per_unit,
-            convert_float3(tris[3u * t + 1u].xyz - centre_units) * voxels_per_unit,
-            convert_float3(tris[3u * t + 2u].xyz - centre_units) * voxels_per_unit);
+        const float area =
+            triangle_area_in_cube(convert_float3(ia - centre_units) * voxels_per_unit,
+                                  convert_float3(ib - centre_units) * voxels_per_unit,
+                                  convert_float3(ic - centre_units) * voxels_per_unit);
         float3 fragment_albedo;
         float kept;
         if ((uint)mat.extra.y != 0u) {
             uint inside;
+            /* world corners, for the texture's samples */
+            const float3 a = vol.origin.xyz + convert_float3(ia) * unit;
+            const float3 b = vol.origin.xyz + convert_float3(ib) * unit;
+            const float3 c = vol.origin.xyz + convert_float3(ic) * unit;
             const float3 sum =
                 fragment_albedo_sum(&tv, &mat, t, a, b, c, centre, voxel, &inside, &kept);
             fragment_albedo = inside > 0u ? sum / (float)inside : sum;

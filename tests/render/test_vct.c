@@ -688,6 +688,18 @@ static void default_tone_clips_little(void) {
     vct_scene_free(box);
 }
 
+/* The six quads (12 floats each) of a closed box [0, w] x [0, h] x [0, d]:
+ * floor, ceiling, z = 0, z = d, x = 0, x = w. */
+static void box_quads(float w, float h, float d, float *q) {
+    const float quads[6 * 12] = {0, 0, 0, 0, 0, d, w, 0, d, w, 0, 0, /* floor */
+                                 0, h, 0, w, h, 0, w, h, d, 0, h, d, /* ceiling */
+                                 0, 0, 0, w, 0, 0, w, h, 0, 0, h, 0, /* z = 0 */
+                                 0, 0, d, 0, h, d, w, h, d, w, 0, d, /* z = d */
+                                 0, 0, 0, 0, h, 0, 0, h, d, 0, 0, d, /* x = 0 */
+                                 w, 0, 0, w, 0, d, w, h, d, w, h, 0 /* x = w */};
+    memcpy(q, quads, sizeof quads);
+}
+
 /* A closed room of single quads (7 x 3 x 6, with a block on its floor) lit
  * by the sun from outside, then by the sun and a sky: nothing reaches the
  * inside, which the path tracer renders black. Cone tracing, isotropic and
@@ -698,13 +710,11 @@ static void default_tone_clips_little(void) {
  * the room's brick samples at its own scale hold walls lit outwards on all
  * sides, whose planes cancel (4.5% with directional bricks). */
 static void closed_room_lit_outside(void) {
-    const float walls[] = {0, 0,    0, 0, 0,    6, 7, 0,    6, 7, 0,    0, /* floor */
-                           0, 3,    0, 7, 3,    0, 7, 3,    6, 0, 3,    6, /* ceiling */
-                           0, 0,    0, 7, 0,    0, 7, 3,    0, 0, 3,    0, /* z = 0 */
-                           0, 0,    6, 0, 3,    6, 7, 3,    6, 7, 0,    6, /* z = 6 */
-                           0, 0,    0, 0, 3,    0, 0, 3,    6, 0, 0,    6, /* x = 0 */
-                           7, 0,    0, 7, 0,    6, 7, 3,    6, 7, 3,    0, /* x = 7 */
-                           3, 0.5f, 2, 4, 0.5f, 2, 4, 0.5f, 3, 3, 0.5f, 3};
+    /* the room, and a block's top in it */
+    float walls[7 * 12];
+    box_quads(7, 3, 6, walls);
+    const float block[] = {3, 0.5f, 2, 4, 0.5f, 2, 4, 0.5f, 3, 3, 0.5f, 3};
+    memcpy(walls + 6 * 12, block, sizeof block);
     vct_material m = vct_material_default();
     vct_scene *s = one_material_scene(walls, 7, m);
     /* travelling down, towards -x and +z: the ceiling, the x = 7 and z = 0 walls are lit */
@@ -763,13 +773,10 @@ static void closed_room_lit_outside(void) {
  * the same rest there gained light (1.11). Measured at 48 x 48, 64^3: 1.05
  * and 1.05. The mean must be within 8 % in both. */
 static void closed_room_against_path_tracer(void) {
-    const float quads[] = {0, 0,     0,    0, 0,     5,    6, 0,     5, 6, 0,     0,  /* floor */
-                           0, 2.8f,  0,    6, 2.8f,  0,    6, 2.8f,  5, 0, 2.8f,  5,  /* ceiling */
-                           0, 0,     0,    6, 0,     0,    6, 2.8f,  0, 0, 2.8f,  0,  /* z = 0 */
-                           0, 0,     5,    0, 2.8f,  5,    6, 2.8f,  5, 6, 0,     5,  /* z = 5 */
-                           0, 0,     0,    0, 2.8f,  0,    0, 2.8f,  5, 0, 0,     5,  /* x = 0 */
-                           6, 0,     0,    6, 0,     5,    6, 2.8f,  5, 6, 2.8f,  0,  /* x = 6 */
-                           2, 0.75f, 1.5f, 4, 0.75f, 1.5f, 4, 0.75f, 3, 2, 0.75f, 3}; /* table */
+    float quads[7 * 12];
+    box_quads(6, 2.8f, 5, quads);
+    const float table[] = {2, 0.75f, 1.5f, 4, 0.75f, 1.5f, 4, 0.75f, 3, 2, 0.75f, 3};
+    memcpy(quads + 6 * 12, table, sizeof table);
     vct_material m = vct_material_default();
     m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.5f;
     vct_scene *s = one_material_scene(quads, 7, m);
