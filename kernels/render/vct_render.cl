@@ -40,6 +40,7 @@
 #include "light/emitters.h"
 #include "scene/texture.h"
 #include "accel/accel.h"
+#include "voxel/cone_near.h"
 #include "voxel/cone_sky.h"
 #include "render/primary_sample.h"
 #include "photon/photon.h"
@@ -300,8 +301,12 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
         const cone_result r =
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
-        l.radiance += c.dir.w * cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
-                                                  c.aperture.x, r, CONE_REST_RAYS_CAMERA);
+        float3 near;
+        if (cone_near_light(acc, CONE_POOLS_PASS, child, cd, g->p, n, d, c.aperture.x, &near))
+            l.radiance += c.dir.w * near;
+        else
+            l.radiance += c.dir.w * cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
+                                                      c.aperture.x, r, CONE_REST_RAYS_CAMERA);
         l.open += c.dir.w * (1.0f - r.ao_alpha);
         level_sum += r.level_sum;
         samples += r.samples;

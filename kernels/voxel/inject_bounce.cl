@@ -14,6 +14,7 @@
  * (no normal) gathers on both sides of z and sends the brighter both ways. */
 #include "scene/bsdf.h"
 #include "voxel/cone_trace.h"
+#include "voxel/cone_near.h"
 #include "voxel/cone_sky.h"
 #include "voxel/octree.h"
 #include "voxel/voxel_side.h"
@@ -22,7 +23,7 @@
 /* The cosine-weighted radiance arriving at `centre` from the side n faces. */
 inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint *child,
                           const vct_cone_desc *cd, __global const vct_cone_dir *cones,
-                          uint cone_count, float3 centre, float3 n) {
+                          uint cone_count, float3 centre, float3 n, int near_rays, float3 surface) {
     float3 t, b;
     basis_of(n, &t, &b);
     const float3 origin = cone_origin(cd, centre, n);
@@ -30,6 +31,12 @@ inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint
     for (uint i = 0; i < cone_count; ++i) {
         const vct_cone_dir c = cones[i];
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
+        float3 near;
+        if (near_rays &&
+            cone_near_light(acc, CONE_POOLS_PASS, child, cd, surface, n, d, c.aperture.x, &near)) {
+            gathered += c.dir.w * near;
+            continue;
+        }
         const cone_result r =
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, INFINITY);
         gathered += c.dir.w * cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
@@ -53,10 +60,14 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
     const float4 bright = direct[v], shade = sides[0], plane = sides[1];
     const int has_normal = any(plane.xyz != 0.0f);
     const float3 n = has_normal ? plane.xyz : (float3)(0.0f, 0.0f, 1.0f);
-    const float3 front =
-        gather_side(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, centre, n);
-    const float3 back =
-        gather_side(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, centre, -n);
+    /* the voxel's plane's point nearest its centre: where near rays start */
+    const float3 c_unit = (centre - cd.volume.xyz) * cd.ambient.w - 0.5f;
+    const float3 surface =
+        cd.volume.xyz + (c_unit - (dot(n, c_unit) - plane.w) * n + 0.5f) * cd.volume.w;
+    const float3 front = gather_side(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, centre,
+                                     n, has_normal, surface);
+    const float3 back = gather_side(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, centre,
+                                    -n, has_normal, surface);
     const float3 rho = albedo[v].xyz;
     /* without a normal both sides send what the brighter side receives */
     const float3 more = side_luminance(front) >= side_luminance(back) ? front : back;

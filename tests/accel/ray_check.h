@@ -10,35 +10,7 @@
 
 #include "check.h"
 #include "mesh_gen.h"
-
-/* Möller-Trumbore in double: the independent reference. Returns t or -1, and
- * the distance of the hit to the triangle's border in barycentric units. */
-static double ref_intersect(const double o[3], const double d[3], const float *a, const float *b,
-                            const float *c, double *border) {
-    double e1[3], e2[3], p[3], s[3], q[3];
-    for (int k = 0; k < 3; ++k) {
-        e1[k] = (double)b[k] - a[k];
-        e2[k] = (double)c[k] - a[k];
-        s[k] = o[k] - a[k];
-    }
-    p[0] = d[1] * e2[2] - d[2] * e2[1];
-    p[1] = d[2] * e2[0] - d[0] * e2[2];
-    p[2] = d[0] * e2[1] - d[1] * e2[0];
-    double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
-    if (det == 0.0)
-        return -1;
-    double inv = 1.0 / det;
-    double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) * inv;
-    q[0] = s[1] * e1[2] - s[2] * e1[1];
-    q[1] = s[2] * e1[0] - s[0] * e1[2];
-    q[2] = s[0] * e1[1] - s[1] * e1[0];
-    double v = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) * inv;
-    double t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) * inv;
-    *border = fmin(fmin(u, v), 1.0 - u - v);
-    if (u < 0 || v < 0 || u + v > 1 || t <= 0)
-        return -1;
-    return t;
-}
+#include "ray_ref.h"
 
 static vct_scene *scene_of(const test_mesh *m) {
     vct_error err = {0};

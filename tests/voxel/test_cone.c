@@ -6,6 +6,7 @@
  * crossing a one-voxel wall. Results are never NaN and opacity never
  * exceeds 1. */
 #include "brick_case.h"
+#include "ray_ref.h"
 
 /* ---- the reference marcher ---------------------------------------------- */
 
@@ -555,29 +556,75 @@ static void hard_cases(void) {
     (void)err;
 }
 
+/* The light where the ray from surface point `from` along d meets the
+ * scene before the cone's march starts (kernels/voxel/cone_near.h): the
+ * pyramid's sample there at the cone's diameter, seen from `from`,
+ * un-premultiplied; 0 where the ray meets nothing that near. */
+static int ref_near(const brick_case *c, const ref_pyramid *p, const vct_cone_settings *s,
+                    const double from[3], const double n[3], const double d[3], double tan_half,
+                    double light[3]) {
+    const double side = c->info.side, voxel = side / c->info.resolution;
+    const double up = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+    if (!(up > 0.0))
+        return 0;
+    double border;
+    const double t = ref_closest(c->scene, from, d, s->offset * voxel / up + voxel, &border);
+    if (t < 0.0)
+        return 0;
+    const double finest = c->info.levels - 1.0, min_d = 2.0 * voxel;
+    const double level =
+        fmin(fmax(finest - log2(fmax(2.0 * t * tan_half, min_d) / min_d), 0.0), finest);
+    double at[3], o[3];
+    for (int k = 0; k < 3; ++k) {
+        at[k] = fmin(fmax((from[k] + t * d[k] - c->info.origin[k]) / side, 0.0), 0.99999);
+        o[k] = (from[k] - c->info.origin[k]) / side - 0.5;
+    }
+    const uint32_t coarse = (uint32_t)level, fine = coarse + 1 < p->levels ? coarse + 1 : coarse;
+    double a[4], b[4], v[4];
+    ref_level_sample(c, p, 1, coarse, at, d, o, a);
+    ref_level_sample(c, p, 1, fine, at, d, o, b);
+    for (int k = 0; k < 4; ++k)
+        v[k] = a[k] + (level - coarse) * (b[k] - a[k]);
+    for (int k = 0; k < 3; ++k)
+        light[k] = v[3] > 1e-3 ? v[k] / v[3] : 0.0;
+    return 1;
+}
+
 /* The preset's weighted cones from voxel `cell`'s centre on the side of
- * unit n, through pyramid p. */
+ * unit n, through pyramid p; near rays from the point of the voxel's plane
+ * (normal n or -n, offset h) nearest its centre, when it has a normal. */
 static void gather_side(const brick_case *c, const ref_pyramid *p, const vct_cone_settings *s,
-                        const uint32_t cell[3], const double n[3], const float *dirs,
-                        const float *tan_half, double gathered[3]) {
-    const double voxel = c->info.side / c->info.resolution, none[3] = {0, 0, 0};
+                        const uint32_t cell[3], const double n[3], int has_normal, double h,
+                        const float *dirs, const float *tan_half, double gathered[3]) {
+    const double side = c->info.side, voxel = side / c->info.resolution, none[3] = {0, 0, 0};
     /* the frame of bsdf.h's basis_of (Duff et al. 2017) */
     const double sg = n[2] >= 0 ? 1.0 : -1.0, a = -1.0 / (sg + n[2]), bb = n[0] * n[1] * a;
     const double t[3] = {1.0 + sg * n[0] * n[0] * a, sg * bb, -sg * n[0]};
     const double b[3] = {bb, sg + n[1] * n[1] * a, -n[1]};
-    double origin[3];
+    double origin[3], unit[3], from[3], along = 0.0;
     for (int k = 0; k < 3; ++k) {
-        origin[k] = c->info.origin[k] + (cell[k] + 0.5) * voxel + n[k] * s->offset * voxel;
+        const double centre = c->info.origin[k] + (cell[k] + 0.5) * voxel;
+        origin[k] = centre + n[k] * s->offset * voxel;
+        unit[k] = (centre - c->info.origin[k]) / side - 0.5;
+        along += n[k] * unit[k];
         gathered[k] = 0.0;
     }
+    for (int k = 0; k < 3; ++k)
+        from[k] =
+            c->info.origin[k] + (unit[k] - (along - h) * n[k] + 0.5) * side + n[k] * 1e-5 * side;
     for (int i = 0; i < 6; ++i) {
-        double d[3], dl = 0.0;
+        double d[3], dl = 0.0, near[3];
         for (int k = 0; k < 3; ++k) {
             d[k] = dirs[4 * i] * t[k] + dirs[4 * i + 1] * b[k] + dirs[4 * i + 2] * n[k];
             dl += d[k] * d[k];
         }
         for (int k = 0; k < 3; ++k)
             d[k] /= sqrt(dl);
+        if (has_normal && ref_near(c, p, s, from, n, d, tan_half[i], near)) {
+            for (int k = 0; k < 3; ++k)
+                gathered[k] += dirs[4 * i + 3] * near[k];
+            continue;
+        }
         const ref_cone r = ref_march(c, p, 1, s, none, origin, d, tan_half[i], INFINITY);
         for (int k = 0; k < 3; ++k)
             gathered[k] += dirs[4 * i + 3] * r.radiance[k];
@@ -614,10 +661,11 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
         double n[3] = {has_normal ? plane[0] : 0.0, has_normal ? plane[1] : 0.0,
                        has_normal ? plane[2] : 1.0};
         double front[3], back[3], toward[3], away[3];
-        gather_side(c, p, &s, cell, n, dirs, tan_half, front);
+        gather_side(c, p, &s, cell, n, has_normal, plane[3], dirs, tan_half, front);
         for (int k = 0; k < 3; ++k)
             n[k] = -n[k];
-        gather_side(c, p, &s, cell, n, dirs, tan_half, back);
+        /* the same plane seen from its other side: normal -n, offset -h */
+        gather_side(c, p, &s, cell, n, has_normal, -plane[3], dirs, tan_half, back);
         const int front_more = luminance(front) >= luminance(back);
         for (int k = 0; k < 3; ++k) {
             const double lit = direct[4 * v + k], rho = c->albedo[4 * v + k];

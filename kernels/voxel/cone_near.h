@@ -1,0 +1,43 @@
+/* What lies nearer than a cone's march starts. cone_origin lifts a cone
+ * CONE offset voxels off its surface along the normal, so that it does not
+ * see its own voxels, and the march starts a voxel further: a surface in
+ * that slab (a slat in front of a wall, the wall beside a floor's edge) was
+ * stepped over, and the cone saw what lies behind it. A ray along the
+ * cone's axis from the surface point through the slab decides: where it
+ * meets geometry, the cone takes the voxels' light there, seen from the
+ * ray's side, at the cone's footprint there, instead of its march. */
+#ifndef VCT_CONE_NEAR_H
+#define VCT_CONE_NEAR_H
+
+#include "accel/accel.h"
+#include "light/direct_light.h" /* surface_epsilon */
+#include "voxel/cone_sky.h"
+#include "voxel/cone_trace.h"
+
+/* 1 and the light in *light where the ray from surface point p (unit
+ * normal n) along d meets geometry before the cone's march begins. */
+inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint *child,
+                           const vct_cone_desc *c, float3 p, float3 n, float3 d, float tan_half,
+                           float3 *light) {
+    const float voxel = c->volume.w / (float)c->res.x;
+    const float lift = c->march.y * voxel, up = dot(d, n);
+    if (!(up > 0.0f))
+        return 0;
+    /* through the slab below the lifted origin, and the march's first step */
+    const float reach = lift / up + voxel;
+    const float3 from = p + n * surface_epsilon(g, p);
+    hit_record h;
+    if (!accel_trace(g, from, d, 0.0f, reach, 0, &h))
+        return 0;
+    const uint levels = c->res.y;
+    const float min_diameter = 2.0f * voxel, finest = (float)(levels - 1u);
+    const float level = cone_level(finest, fmax(2.0f * h.t * tan_half, min_diameter), min_diameter);
+    const float3 at = clamp((from + h.t * d - c->volume.xyz) * c->ambient.w, 0.0f, 0.99999f);
+    const float3 o = (from - c->volume.xyz) * c->ambient.w - 0.5f;
+    cone_path path = cone_path_root();
+    const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o, &path);
+    *light = s.w > CONE_REST_MIN_OPACITY ? s.xyz / s.w : (float3)(0.0f);
+    return 1;
+}
+
+#endif
