@@ -274,6 +274,19 @@ static void cornell_against_path_tracer(void) {
     vct_scene_free(box);
 }
 
+/* The path tracer's image of s, w x h at spp samples (depth 16), the reference
+ * the renders below are held against. */
+static vct_image path_traced(const vct_scene *s, int w, int h, uint32_t spp, uint32_t seed) {
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_pathtrace_options po = {w, h, spp, 0.0, 16, seed, 64, 0, 0};
+    vct_image ref;
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &po, &ref, NULL, &err), err);
+    vct_accel_free(g);
+    return ref;
+}
+
 /* A glossy coat on the box's white surfaces: the Phong highlights of the
  * direct light and the specular cone against the path tracer, and against
  * the same render with specular left out. */
@@ -284,12 +297,7 @@ static void glossy_cornell_against_path_tracer(void) {
     box->materials[0].roughness = 0.3f;
     const int w = 64, h = 64;
     vct_error err = {0};
-    vct_accel *g = vct_accel_build(ctx, box, NULL, &err);
-    REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_pathtrace_options po = {w, h, 1024, 0.0, 16, 5, 64, 0, 0};
-    vct_image ref;
-    REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, NULL, &err), err);
-    vct_accel_free(g);
+    vct_image ref = path_traced(box, w, h, 1024, 5);
     vct_plan p;
     vct_plan_make(box, NULL, &p);
     CHECK(p.on[VCT_EFFECT_SPECULAR], "glossy box: specular planned (%s)",
@@ -842,12 +850,7 @@ static void gap_under_a_plate(void) {
     s->camera = (vct_camera){{0.0f, 0.05f, 0.5f}, {0.0f, 0.0f, -0.4f}, {0, 1, 0}, 60.0f};
     s->has_camera = 1;
     const int w = 32, h = 32;
-    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
-    REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_pathtrace_options po = {w, h, 256, 0.0, 16, 3, 64, 0, 0};
-    vct_image ref;
-    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &po, &ref, NULL, &err), err);
-    vct_accel_free(g);
+    vct_image ref = path_traced(s, w, h, 256, 3);
     vct_plan p;
     vct_plan_make(s, NULL, &p);
     const double open = 0.6; /* albedo times the sky */
