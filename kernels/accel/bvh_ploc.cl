@@ -27,21 +27,31 @@ __kernel void ploc_init(uint n, __global uint *clusters, __global uint *sizes) {
     sizes[n - 1u + i] = 1u;
 }
 
-__kernel void ploc_nearest(__global const uint *clusters, uint m, __global const float4 *boxes,
-                           uint n, uint radius, __global uint *nearest) {
+/* The clusters' boxes in place order (lo, hi), so that the neighbour search
+ * reads them in a row instead of through the clusters' box slots. */
+__kernel void ploc_gather(__global const uint *clusters, uint m, __global const float4 *boxes,
+                          uint n, __global float4 *packed) {
     const uint i = get_global_id(0);
     if (i >= m)
         return;
     const uint si = bvh_box_slot(clusters[i], n);
-    const float4 lo = boxes[2 * si], hi = boxes[2 * si + 1];
+    packed[2 * i] = boxes[2 * si];
+    packed[2 * i + 1] = boxes[2 * si + 1];
+}
+
+__kernel void ploc_nearest(__global const float4 *packed, uint m, uint radius,
+                           __global uint *nearest) {
+    const uint i = get_global_id(0);
+    if (i >= m)
+        return;
+    const float4 lo = packed[2 * i], hi = packed[2 * i + 1];
     const uint first = i > radius ? i - radius : 0u, last = min(m - 1u, i + radius);
     float best = INFINITY;
     uint best_j = i;
     for (uint j = first; j <= last; ++j) {
         if (j == i)
             continue;
-        const uint sj = bvh_box_slot(clusters[j], n);
-        const float a = union_area(lo, hi, boxes[2 * sj], boxes[2 * sj + 1]);
+        const float a = union_area(lo, hi, packed[2 * j], packed[2 * j + 1]);
         if (a < best) { /* strictly: the lower place keeps a tie */
             best = a;
             best_j = j;

@@ -7,11 +7,12 @@
 
 typedef struct ploc_buffers {
     cl_mem clusters, merged, nearest, offsets, keep, sizes, leaf_place, placed_ids, placed_parents;
+    cl_mem packed; /* the clusters' boxes in place order */
 } ploc_buffers;
 
 static void release_all(vct_context *ctx, ploc_buffers *t) {
-    cl_mem *m[] = {&t->clusters, &t->merged,     &t->nearest,    &t->offsets,       &t->keep,
-                   &t->sizes,    &t->leaf_place, &t->placed_ids, &t->placed_parents};
+    cl_mem *m[] = {&t->clusters, &t->merged,     &t->nearest,    &t->offsets,        &t->keep,
+                   &t->sizes,    &t->leaf_place, &t->placed_ids, &t->placed_parents, &t->packed};
     for (size_t i = 0; i < sizeof m / sizeof *m; ++i) {
         vct_buffer_release(ctx, *m[i]);
         *m[i] = NULL;
@@ -34,6 +35,7 @@ static int allocate(vct_context *ctx, uint32_t n, const char *stage, ploc_buffer
         {&t->leaf_place, "ploc leaf places", 4ull * n},
         {&t->placed_ids, "ploc placed triangles", 4ull * n},
         {&t->placed_parents, "ploc placed parents", 4ull * (2ull * n - 1)},
+        {&t->packed, "ploc cluster boxes", 32ull * n},
     };
     for (size_t i = 0; i < sizeof list / sizeof *list; ++i) {
         *list[i].mem = vct_buffer_create(ctx, stage, list[i].what, list[i].bytes, CL_MEM_READ_WRITE,
@@ -47,15 +49,19 @@ static int allocate(vct_context *ctx, uint32_t n, const char *stage, ploc_buffer
 /* Merges until one cluster is left; nodes numbered from n-2 down. */
 static int cluster(vct_context *ctx, vct_bvh *b, cl_program p, ploc_buffers *t, const char *stage,
                    uint32_t *passes, vct_error *err) {
-    const uint32_t n = b->triangle_count, radius = VCT_PLOC_RADIUS;
+    const uint32_t n = b->triangle_count;
     int rc = vct_run_kernel(ctx, p, "ploc_init", stage, n, err, 3, VCT_ARG_OF(n),
                             VCT_ARG_OF(t->clusters), VCT_ARG_OF(t->sizes));
     uint32_t m = n, top = n - 2;
     *passes = 0;
     while (rc == VCT_OK && m > 1) {
-        rc = vct_run_kernel(ctx, p, "ploc_nearest", stage, m, err, 6, VCT_ARG_OF(t->clusters),
-                            VCT_ARG_OF(m), VCT_ARG_OF(b->boxes), VCT_ARG_OF(n), VCT_ARG_OF(radius),
-                            VCT_ARG_OF(t->nearest));
+        const uint32_t radius = m > VCT_PLOC_WIDE_BELOW ? VCT_PLOC_RADIUS : VCT_PLOC_RADIUS_WIDE;
+        rc = vct_run_kernel(ctx, p, "ploc_gather", stage, m, err, 5, VCT_ARG_OF(t->clusters),
+                            VCT_ARG_OF(m), VCT_ARG_OF(b->boxes), VCT_ARG_OF(n),
+                            VCT_ARG_OF(t->packed));
+        if (rc == VCT_OK)
+            rc = vct_run_kernel(ctx, p, "ploc_nearest", stage, m, err, 4, VCT_ARG_OF(t->packed),
+                                VCT_ARG_OF(m), VCT_ARG_OF(radius), VCT_ARG_OF(t->nearest));
         if (rc == VCT_OK)
             rc = vct_run_kernel(ctx, p, "ploc_flags", stage, m, err, 3, VCT_ARG_OF(t->nearest),
                                 VCT_ARG_OF(m), VCT_ARG_OF(t->offsets));
