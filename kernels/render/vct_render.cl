@@ -302,12 +302,17 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
         const cone_result r =
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
         float3 near;
-        if (cone_near_light(acc, CONE_POOLS_PASS, child, cd, g->p, n, d, c.aperture.x, &near))
-            l.radiance += c.dir.w * near;
-        else
-            l.radiance += c.dir.w * cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
-                                                      c.aperture.x, r, CONE_REST_RAYS_CAMERA);
-        l.open += c.dir.w * (1.0f - r.ao_alpha);
+        float near_t;
+        const int blocked = cone_near_light(acc, CONE_POOLS_PASS, child, cd, g->p, n, d,
+                                            c.aperture.x, &near, &near_t);
+#ifdef VCT_INDIRECT
+        l.radiance +=
+            c.dir.w * (blocked ? near
+                               : cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
+                                                   c.aperture.x, r, CONE_REST_RAYS_CAMERA));
+#endif
+        /* what the near ray met within the AO distance closes the cone */
+        l.open += c.dir.w * (blocked && near_t <= cd->march.z ? 0.0f : 1.0f - r.ao_alpha);
         level_sum += r.level_sum;
         samples += r.samples;
     }

@@ -14,11 +14,12 @@
 #include "voxel/cone_sky.h"
 #include "voxel/cone_trace.h"
 
-/* 1 and the light in *light where the ray from surface point p (unit
- * normal n) along d meets geometry before the cone's march begins. */
+/* 1, the light in *light and the distance in *dist where the ray from
+ * surface point p (unit normal n) along d meets geometry before the cone's
+ * march begins. */
 inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint *child,
                            const vct_cone_desc *c, float3 p, float3 n, float3 d, float tan_half,
-                           float3 *light) {
+                           float3 *light, float *dist) {
     const float voxel = c->volume.w / (float)c->res.x;
     const float lift = c->march.y * voxel, up = dot(d, n);
     if (!(up > 0.0f))
@@ -37,6 +38,7 @@ inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint 
     cone_path path = cone_path_root();
     const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o, &path);
     *light = s.w > CONE_REST_MIN_OPACITY ? s.xyz / s.w : (float3)(0.0f);
+    *dist = h.t;
     return 1;
 }
 

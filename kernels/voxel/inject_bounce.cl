@@ -32,8 +32,9 @@ inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint
         const vct_cone_dir c = cones[i];
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
         float3 near;
-        if (near_rays &&
-            cone_near_light(acc, CONE_POOLS_PASS, child, cd, surface, n, d, c.aperture.x, &near)) {
+        float near_t;
+        if (near_rays && cone_near_light(acc, CONE_POOLS_PASS, child, cd, surface, n, d,
+                                         c.aperture.x, &near, &near_t)) {
             gathered += c.dir.w * near;
             continue;
         }

@@ -855,22 +855,29 @@ static void gap_under_a_plate(void) {
     vct_plan_make(s, NULL, &p);
     const double open = 0.6; /* albedo times the sky */
     for (int directional = 0; directional < 2; ++directional) {
-        vct_image im = vct_case_render_bricks(ctx, s, &p, 64, w, h, 3, directional, NULL);
-        double mean = 0.0, want = 0.0;
+        vct_aovs aovs;
+        vct_image im = vct_case_render_bricks(ctx, s, &p, 64, w, h, 3, directional, &aovs);
+        double mean = 0.0, want = 0.0, ao = 0.0;
         for (int i = 0; i < 4 * w * h; ++i)
             if (i % 4 != 3) {
                 mean += im.rgba[i] / (3.0 * w * h);
                 want += ref.rgba[i] / (3.0 * w * h);
             }
+        for (int px = 0; px < w * h; ++px)
+            ao += aovs.ao.rgba[4 * px] / (w * h);
         const char *what = directional ? "directional" : "isotropic";
         CHECK(fabs(mean - want) < 0.1 * open,
               "gap under a plate, %s: mean %.4f, the path tracer's %.4f (%.3f and %.3f of the "
               "open floor's)",
               what, mean, want, mean / open, want / open);
+        /* Every cone meets the other plate within the AO distance. */
+        CHECK(ao < 0.1, "gap under a plate, %s: mean ambient occlusion's open share %.3f", what,
+              ao);
         printf("gap under a plate, %-11s mean %.3f of the open floor's light, the path tracer's "
-               "%.3f\n",
-               what, mean / open, want / open);
+               "%.3f; open to AO %.3f\n",
+               what, mean / open, want / open, ao);
         vct_image_free(&im);
+        vct_aovs_free(&aovs);
     }
     vct_image_free(&ref);
     vct_scene_free(s);
