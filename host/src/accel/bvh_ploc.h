@@ -13,9 +13,9 @@
  * 102k-triangle heavy scene the wide search made the path tracer 7 % faster
  * (1,541-1,563 against 1,648-1,676 ms); 128 throughout, 8 %, but the
  * build of the 105k-triangle dense hall took 194 ms. */
-#define VCT_PLOC_RADIUS 32u
-#define VCT_PLOC_RADIUS_WIDE 160u
-#define VCT_PLOC_WIDE_BELOW 8192u
+#define VCT_PLOC_RADIUS 16u
+#define VCT_PLOC_RADIUS_WIDE 128u
+#define VCT_PLOC_WIDE_BELOW 16384u
 
 /* From Morton-sorted leaves (b->tri_ids, their boxes in b->boxes): children,
  * parents, boxes and ranges of the binary tree, its triangles placed depth
