@@ -1,11 +1,13 @@
 /* What lies nearer than a cone's march starts. cone_origin lifts a cone
- * CONE offset voxels off its surface along the normal, so that it does not
- * see its own voxels, and the march starts a voxel further: a surface in
+ * the cone offset (march.y, 4 voxels by default) off its surface along the
+ * normal, so that it does not see its own voxels, and the march starts a
+ * voxel further: a surface in
  * that slab (a slat in front of a wall, the wall beside a floor's edge) was
  * stepped over, and the cone saw what lies behind it. A ray along the
  * cone's axis from the surface point through the slab decides: where it
  * meets geometry, the cone takes the voxels' light there, seen from the
- * ray's side, at the cone's footprint there, instead of its march. */
+ * ray's side, at the cone's footprint there, instead of its march. A voxel
+ * without a normal (fragments facing every way) sends none. */
 #ifndef VCT_CONE_NEAR_H
 #define VCT_CONE_NEAR_H
 
