@@ -32,14 +32,7 @@ inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint 
     hit_record h;
     if (!accel_trace(g, from, d, 0.0f, reach, 0, &h))
         return 0;
-    const uint levels = c->res.y;
-    const float min_diameter = 2.0f * voxel, finest = (float)(levels - 1u);
-    const float level = cone_level(finest, fmax(2.0f * h.t * tan_half, min_diameter), min_diameter);
-    const float3 at = clamp((from + h.t * d - c->volume.xyz) * c->ambient.w, 0.0f, 0.99999f);
-    const float3 o = (from - c->volume.xyz) * c->ambient.w - 0.5f;
-    cone_path path = cone_path_root();
-    const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o, &path);
-    *light = s.w > CONE_REST_MIN_OPACITY ? s.xyz / s.w : (float3)(0.0f);
+    *light = cone_hit_light(CONE_POOLS_PASS, child, c, from, d, h.t, tan_half);
     *dist = h.t;
     return 1;
 }

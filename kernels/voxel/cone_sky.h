@@ -55,6 +55,23 @@ inline float2 cone_rest_offset(uint k) {
     }
 }
 
+/* The voxels' light where a ray from `from` along unit d met the scene at
+ * distance t: the sample there at the diameter a cone of aperture tan_half
+ * has at that distance (the level cone_trace would read), seen from `from`,
+ * un-premultiplied where the half floats still hold it (0 elsewhere). */
+inline float3 cone_hit_light(CONE_POOLS, __global const uint *child, const vct_cone_desc *c,
+                             float3 from, float3 d, float t, float tan_half) {
+    const uint levels = c->res.y;
+    const float voxel = c->volume.w / (float)c->res.x, min_diameter = 2.0f * voxel;
+    const float level =
+        cone_level((float)(levels - 1u), fmax(2.0f * t * tan_half, min_diameter), min_diameter);
+    const float3 at = clamp((from + t * d - c->volume.xyz) * c->ambient.w, 0.0f, 0.99999f);
+    const float3 o = (from - c->volume.xyz) * c->ambient.w - 0.5f;
+    cone_path path = cone_path_root();
+    const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o, &path);
+    return s.w > CONE_REST_MIN_OPACITY ? s.xyz / s.w : (float3)(0.0f);
+}
+
 /* r's radiance, its ambient share dropped where the ray from origin along d
  * meets geometry; with isotropic bricks, that share instead the mean of
  * what `rays` rays across the cone (1 to 9; tan_half its aperture) meet:
@@ -73,10 +90,6 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
 #else
     if (!r.left || r.alpha >= 1.0f)
         return r.radiance;
-    const uint levels = c->res.y;
-    const float voxel = c->volume.w / (float)c->res.x, min_diameter = 2.0f * voxel;
-    const float finest = (float)(levels - 1u);
-    const float3 o = (origin - c->volume.xyz) * c->ambient.w - 0.5f;
     float3 t1, t2;
     basis_of(d, &t1, &t2);
     float3 rest = (float3)(0.0f);
@@ -88,16 +101,7 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
             rest += c->ambient.xyz;
             continue;
         }
-        /* the level of the cone's diameter there, as cone_trace picks it */
-        const float diameter = fmax(2.0f * h.t * tan_half, min_diameter);
-        const float level = cone_level(finest, diameter, min_diameter);
-        const float3 at = clamp((origin + h.t * dk - c->volume.xyz) * c->ambient.w, 0.0f, 0.99999f);
-        cone_path path = cone_path_root();
-        const float4 s =
-            cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, dk, o, &path);
-        /* un-premultiplied where the half floats still hold it */
-        if (s.w > CONE_REST_MIN_OPACITY)
-            rest += s.xyz / s.w;
+        rest += cone_hit_light(CONE_POOLS_PASS, child, c, origin, dk, h.t, tan_half);
     }
     return r.radiance + (1.0f - r.alpha) * (rest / (float)rays - c->ambient.xyz);
 #endif
