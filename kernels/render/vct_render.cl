@@ -57,6 +57,9 @@
  * point within 0.25 of their distance from the other's plane. */
 #define EDGE_NORMAL_COS 0.8f
 #define EDGE_PLANE_SLOPE 0.25f
+/* Neighbours whose albedos differ by more than this share of the brighter
+ * one's luminance (a texture's detail) hold an edge too. */
+#define EDGE_ALBEDO_SHARE 0.1f
 
 #define PRIMARY_ARGS                                                                               \
     ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,                  \
@@ -104,9 +107,14 @@ __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
         reflection_write(reflection, pixel, s.rpos, s.rnormal, s.rdir);
 }
 
+inline float albedo_luminance(float3 a) {
+    return dot(a, (float3)(0.2126f, 0.7152f, 0.0722f));
+}
+
 /* 1 where a pixel's 3x3 neighbourhood holds an edge: a neighbour with
- * another key (material, dielectrics on the way, lights seen), or on
- * another surface (its normal turned, or off this pixel's plane). */
+ * another key (material, dielectrics on the way, lights seen), on another
+ * surface (its normal turned, or off this pixel's plane), or of another
+ * albedo (a texture's detail). */
 __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *keys, uint2 size,
                              __global uchar *flags) {
     const uint pixel = get_global_id(0);
@@ -132,8 +140,10 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
                 continue;
             const float3 d = gbuf[GBUF_SLOTS * q].xyz - p;
             const float reach = EDGE_PLANE_SLOPE * length(d);
+            const float la = albedo_luminance(gbuf[GBUF_SLOTS * pixel + 4u].xyz),
+                        lq = albedo_luminance(gbuf[GBUF_SLOTS * q + 4u].xyz);
             edge = dot(n.xyz, nq.xyz) < EDGE_NORMAL_COS || fabs(dot(n.xyz, d)) > reach ||
-                   fabs(dot(nq.xyz, d)) > reach;
+                   fabs(dot(nq.xyz, d)) > reach || fabs(la - lq) > EDGE_ALBEDO_SHARE * fmax(la, lq);
         }
     flags[pixel] = (uchar)edge;
 }
@@ -155,6 +165,12 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     int found = gbuf[GBUF_SLOTS * pixel + 1u].w != 0.0f; /* the centre's surface */
     int reflected = reflection && any(reflection[3u * pixel + 2u].xyz != 0.0f);
     float3 radiance = (float3)(0.0f), cover = (float3)(0.0f), rweight = (float3)(0.0f);
+    /* The albedo the cone passes shade with: the mean over the samples on
+     * the kept surface's material, so that a texture's detail within the
+     * pixel is averaged as a converged image averages it. */
+    float3 albedo_sum = (float3)(0.0f);
+    uint albedo_count = 0u;
+    uint material = found ? as_uint(gbuf[GBUF_SLOTS * pixel].w) : 0u;
     for (uint s = 0; s < n * n; ++s) {
         /* Cell (i, j) of the n x n grid, and within it the sub-cell (j, i)
          * of an n x n grid of its own: every ray on its own column and row
@@ -170,11 +186,16 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
             cover += t.throughput;
             if (!found) {
                 found = 1;
+                material = as_uint(t.gpos.w);
                 gbuffer_write(gbuf, pixel, &t, t.throughput);
                 if (aov) {
                     aov[AOV_SLOTS * pixel + 4u] = (float4)(t.gpos.xyz, t.gnormal.w);
                     aov[AOV_SLOTS * pixel + 5u] = t.gnormal;
                 }
+            }
+            if (as_uint(t.gpos.w) == material) {
+                albedo_sum += t.galbedo.xyz;
+                ++albedo_count;
             }
         }
         if (reflection && !reflected && any(t.rdir.xyz != 0.0f)) {
@@ -184,6 +205,8 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     }
     const float inv = 1.0f / (float)(n * n);
     gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(cover * inv, 0.0f);
+    if (albedo_count > 0u)
+        gbuf[GBUF_SLOTS * pixel + 4u] = (float4)(albedo_sum / (float)albedo_count, 0.0f);
     image[pixel] = (float4)(radiance * inv, 1.0f);
     if (aov)
         aov[AOV_SLOTS * pixel] = (float4)(radiance * inv, 1.0f);

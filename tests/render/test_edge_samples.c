@@ -17,6 +17,7 @@
  * seen, has at its border the indirect light of its interior times the
  * share of the fine pixels that see it. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -211,6 +212,103 @@ static void indirect_share(void) {
     vct_scene_free(s);
 }
 
+/* A floor wider than the view, textured with a TEX x TEX checker (0.1 and
+ * 0.9) repeated `reps` times each way: a texel about 1.5 pixels wide, so
+ * that a pixel's texture varies within it. A sun straight down of
+ * irradiance pi makes the ray caster's radiance the albedo itself. */
+#define TEX 8
+static vct_scene *textured_floor(float reps) {
+    const float floor[] = {-4, 0, -4, 4, 0, -4, 4, 0, 4, -4, 0, 4};
+    const uint32_t quad_material[1] = {0};
+    vct_material m = vct_material_default();
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 1.0f;
+    vct_scene *s = scene_of(floor, 1, quad_material, &m, 1);
+    free(s->uvs);
+    s->uvs = malloc(sizeof(float) * 2 * s->vertex_count);
+    for (uint32_t i = 0; i < s->vertex_count; ++i) {
+        s->uvs[2 * i] = (s->positions[3 * i] + 4.0f) / 8.0f * reps;
+        s->uvs[2 * i + 1] = (s->positions[3 * i + 2] + 4.0f) / 8.0f * reps;
+    }
+    s->textures = calloc(1, sizeof *s->textures);
+    s->texture_count = 1;
+    vct_texture *t = &s->textures[0];
+    snprintf(t->name, sizeof t->name, "checker");
+    t->width = t->height = TEX;
+    t->rgba = malloc(sizeof(float) * 4 * TEX * TEX);
+    for (int y = 0; y < TEX; ++y)
+        for (int x = 0; x < TEX; ++x)
+            for (int c = 0; c < 4; ++c)
+                t->rgba[4 * (y * TEX + x) + c] = c == 3 ? 1.0f : (((x + y) & 1) ? 0.9f : 0.1f);
+    s->materials[0].albedo_texture = 1;
+    const vct_light sun = {
+        VCT_LIGHT_DIRECTIONAL, {0}, {0, -1, 0}, {3.14159265f, 3.14159265f, 3.14159265f}, 0, 0, 0};
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_validate(s, &err), err);
+    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
+    return s;
+}
+
+/* A texture's detail within a pixel is an edge too: the pixel shows the
+ * mean of its texture, in its direct light (against the ray caster's fine
+ * pixels) and in its indirect light, which is the sky's times the albedo,
+ * so that indirect / mean albedo is one value over the whole floor. With
+ * one ray per pixel neither holds. */
+static void texture_detail(void) {
+    vct_scene *s = textured_floor(4.0f);
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_render_options ro = {N * N * W, N * N * H, 0, 0, 0.0f};
+    vct_image fine; /* the albedo at each fine pixel */
+    REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
+    vct_accel_free(g);
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.5f;
+    vct_plan plan;
+    vct_plan_make(s, NULL, &plan);
+    CHECK(plan.on[VCT_EFFECT_INDIRECT], "a sky-lit floor plans indirect light");
+    for (uint32_t n = 1; n <= N; n += N - 1) {
+        vct_aovs aovs;
+        vct_image im = render_vct(s, &plan, W, H, n, &aovs);
+        int varied = 0, off = 0;
+        double worst = 0.0, lo = INFINITY, hi = -INFINITY;
+        for (int y = 1; y < H - 1; ++y)
+            for (int x = 1; x < W - 1; ++x) {
+                const int p = y * W + x;
+                double mean, spread;
+                block_stats(&fine, x, y, 1, &mean, &spread);
+                const double direct = aovs.direct.rgba[4 * p + 1];
+                const double e = fabs(direct - mean) / mean;
+                const double shade = aovs.indirect.rgba[4 * p + 1] / mean;
+                lo = fmin(lo, shade);
+                hi = fmax(hi, shade);
+                if (spread > 0.25 * mean) {
+                    ++varied;
+                    off += e > 1e-2;
+                    worst = fmax(worst, e);
+                }
+            }
+        const double indirect_spread = (hi - lo) / hi;
+        if (n == N)
+            CHECK(varied > 200 && off == 0 && indirect_spread < 0.1,
+                  "%u rays per axis: %d of %d pixels whose texture varies differ from its mean "
+                  "by more than 1 %% (worst %.3g); indirect light over the mean albedo spreads "
+                  "by %.3f",
+                  n, off, varied, worst, indirect_spread);
+        else
+            CHECK(off > varied / 2 && indirect_spread > 0.3,
+                  "one ray per pixel: only %d of %d textured pixels differ from their mean, "
+                  "indirect over albedo spreads by %.3f (the test sees no texture)",
+                  off, varied, indirect_spread);
+        printf("texture detail, %u rays per axis: %d of %d varied pixels off their mean (worst "
+               "%.3g), indirect / albedo spread %.3f\n",
+               n, off, varied, worst, indirect_spread);
+        vct_image_free(&im);
+        vct_aovs_free(&aovs);
+    }
+    vct_image_free(&fine);
+    vct_scene_free(s);
+}
+
 /* More rays per axis than VCT_EDGE_SAMPLES_MAX: a clear error, no image. */
 static void too_many_rays(void) {
     const float quad[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
@@ -239,6 +337,7 @@ int main(void) {
     too_many_rays();
     direct_edges();
     indirect_share();
+    texture_detail();
     vct_context_destroy(ctx);
     return check_exit("test_edge_samples");
 }
