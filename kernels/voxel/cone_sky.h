@@ -58,7 +58,14 @@ inline float2 cone_rest_offset(uint k) {
 /* The voxels' light where a ray from `from` along unit d met the scene at
  * distance t: the sample there at the diameter a cone of aperture tan_half
  * has at that distance (the level cone_trace would read), seen from `from`,
- * un-premultiplied where the half floats still hold it (0 elsewhere). */
+ * un-premultiplied where the half floats still hold it (0 elsewhere).
+ * A coarse sample takes in surfaces far from the hit: in a closed room,
+ * walls on both sides of its cell, whose one-sided planes then disagree, so
+ * that it cannot tell the side the ray comes from and shows the brighter
+ * one, the outside's (1.8 % of the sky light outside came in, README). So
+ * the sample is read one whole level finer until its planes agree
+ * (side_coherence 1) or the finest level, as cone_trace's march cannot
+ * (it has no hit to look at). */
 inline float3 cone_hit_light(CONE_POOLS, __global const uint *child, const vct_cone_desc *c,
                              float3 from, float3 d, float t, float tan_half) {
     const uint levels = c->res.y;
@@ -68,7 +75,15 @@ inline float3 cone_hit_light(CONE_POOLS, __global const uint *child, const vct_c
     const float3 at = clamp((from + t * d - c->volume.xyz) * c->ambient.w, 0.0f, 0.99999f);
     const float3 o = (from - c->volume.xyz) * c->ambient.w - 0.5f;
     cone_path path = cone_path_root();
-    const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o, &path);
+    float coherence = 1.0f;
+    float4 s =
+        cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o, &path, &coherence);
+    for (float finer = floor(level) + 1.0f; coherence < 1.0f && finer <= (float)(levels - 1u);
+         finer += 1.0f) {
+        coherence = 1.0f;
+        s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, finer, d, o, &path,
+                        &coherence);
+    }
     return s.w > CONE_REST_MIN_OPACITY ? s.xyz / s.w : (float3)(0.0f);
 }
 

@@ -103,9 +103,11 @@ inline float side_coherence(float4 sh, float4 pl) {
 
 /* Brick b's trilinear sample at `at` ([0, 2]^3 texel units) of a level-`level`
  * node, seen by a cone travelling along d from o (volume units less 0.5);
- * spacing: the level's sample spacing in volume units. */
+ * spacing: the level's sample spacing in volume units. *coherence drops to
+ * side_coherence where a one-sided surface's planes disagree. */
 VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint level,
-                                    uint levels, float3 d, float3 o, float spacing) {
+                                    uint levels, float3 d, float3 o, float spacing,
+                                    float *coherence) {
 #ifdef VCT_BRICK_IMAGE
 #define CONE_POOL_READ(p) brick_sample(p, pool, b, at)
 #else
@@ -138,6 +140,7 @@ VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, u
     const float dist = (dot(pl.xyz, o) - pl.w) / len;
     const float4 shade = CONE_POOL_READ(shade_pool);
     const float coherent = side_coherence(shade, pl);
+    *coherence = fmin(*coherence, coherent);
     const float facing = dot(d, pl.xyz) / len;
     const float front = mix(1.0f, side_facing(facing), coherent),
                 back = mix(1.0f, side_facing(-facing), coherent);
@@ -177,9 +180,11 @@ inline cone_path cone_path_root(void) {
 }
 
 /* The pool at `at` (volume units, [0, 1)^3) and fractional level `level`:
- * one descent reads both neighbouring levels. Empty nodes read 0. */
+ * one descent reads both neighbouring levels. Empty nodes read 0.
+ * *coherence: the least of the levels' (cone_brick_sample), 1 to start. */
 VCT_INLINE float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels,
-                              float3 at, float level, float3 d, float3 o, cone_path *path) {
+                              float3 at, float level, float3 d, float3 o, cone_path *path,
+                              float *coherence) {
     const uint coarse = (uint)level, finest = levels - 1u;
     const float f = level - (float)coarse;
     const uint fine = f > 0.0f ? min(coarse + 1u, finest) : coarse; /* a whole level: one */
@@ -206,7 +211,7 @@ VCT_INLINE float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child
                 break;
             const float3 in_cell = at * (float)(1u << l) - convert_float3(cell >> (finest - l));
             value[l - coarse] = cone_brick_sample(CONE_POOLS_PASS, pool, b, 2.0f * in_cell, l,
-                                                  levels, d, o, 0.5f / (float)(1u << l));
+                                                  levels, d, o, 0.5f / (float)(1u << l), coherence);
         }
     }
     path->cell = cell;
@@ -294,8 +299,9 @@ VCT_INLINE cone_result cone_trace(CONE_POOLS, __global const uint *child, const 
         const float spacing = level > 0.0f ? 0.5f * diameter : root_spacing;
         const int follows = level > 0.0f;
 #endif
-        const float4 s =
-            cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o, &path);
+        float coherence = 1.0f; /* the march decides by its origin alone */
+        const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o,
+                                     &path, &coherence);
         const float step = c->march.x * diameter;
         /* Where the level follows the diameter, the samples are D / 2 apart
          * and step / spacing is 2 * step fraction; otherwise (a whole level,

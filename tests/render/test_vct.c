@@ -714,10 +714,13 @@ static void box_quads(float w, float h, float d, float *q) {
  * inside, which the path tracer renders black. Cone tracing, isotropic and
  * directional, must keep it below 1% of the light the sunlit walls send out
  * under the sun alone: their outer faces' light must not show through them.
- * Under the sky too, below 6%: wide cones must not find the sky through the
- * walls (cone_sky.h; 39% and 11% without), and every outer face lit makes
- * the room's brick samples at its own scale hold walls lit outwards on all
- * sides, whose planes cancel (4.5% with directional bricks). */
+ * Under the sky too: wide cones must not find the sky through the walls
+ * (cone_sky.h; 39% and 11% without), and every outer face lit makes the
+ * room's brick samples at its own scale hold walls lit outwards on all
+ * sides, whose planes cancel: directional bricks below 6% (3.2%), isotropic
+ * ones below 1.2%, where the light that the open rest's rays find is read
+ * at the first level whose planes agree (cone_hit_light; 1.65% at the
+ * cone's own level). */
 static void closed_room_lit_outside(void) {
     /* the room, and a block's top in it */
     float walls[7 * 12];
@@ -758,7 +761,7 @@ static void closed_room_lit_outside(void) {
             sum += im.rgba[4 * px + 1];
         const double mean = sum / (48 * 48);
         const char *what = directional ? "directional" : "isotropic";
-        CHECK(mean < (sky ? 0.06 : 0.01) * outside,
+        CHECK(mean < (sky ? (directional ? 0.06 : 0.012) : 0.01) * outside,
               "closed room lit outside%s, %s: inside mean %g, %.2f%% of the outer faces' %g",
               sky ? " under a sky" : "", what, mean, 100.0 * mean / outside, outside);
         printf("closed room lit outside%-12s %-11s inside %.2g (%.3f%% of the outer faces' "

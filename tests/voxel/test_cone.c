@@ -76,12 +76,14 @@ static void pyramid_free(ref_pyramid *p) {
  * and how much of its brighter (*front) and darker (*back) side the cone
  * sees by the way it heads: cone_trace.h's rule, written out. */
 static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3], const double o[3],
-                       const double d[3], double shade[4], double *front, double *back) {
+                       const double d[3], double shade[4], double *front, double *back,
+                       double *coherence) {
     double pl[4];
     ref_trilinear(&p->plane[level], lp, pl);
     for (int k = 0; k < 4; ++k)
         shade[k] = 0.0;
     *front = *back = 1.0;
+    *coherence = 1.0;
     const double len = sqrt(pl[0] * pl[0] + pl[1] * pl[1] + pl[2] * pl[2]);
     if (!(len > 1e-6))
         return 0.0;
@@ -90,6 +92,7 @@ static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3],
     const double dist = (pl[0] * o[0] + pl[1] * o[1] + pl[2] * o[2] - pl[3]) / len;
     ref_trilinear(&p->shade[level], lp, shade);
     const double coherent = fmin(fmax((len / fmax(shade[3], 1e-6) - 0.3) / 0.4, 0.0), 1.0);
+    *coherence = coherent;
     const double facing = (pl[0] * d[0] + pl[1] * d[1] + pl[2] * d[2]) / len;
     *front = 1.0 + coherent * (fmin(fmax(1.0 - 2.0 * facing, 0.0), 1.0) - 1.0);
     *back = 1.0 + coherent * (fmin(fmax(1.0 + 2.0 * facing, 0.0), 1.0) - 1.0);
@@ -98,10 +101,15 @@ static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3],
 }
 
 /* A level's value at volume point at ([0,1)^3) seen along d from o (volume
- * units less 0.5), 0 in nodes without a brick. */
-static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int directional,
-                             uint32_t level, const double at[3], const double d[3],
-                             const double o[3], double out[4]) {
+ * units less 0.5), 0 in nodes without a brick; *coherence (when given): its
+ * one-sided planes' agreement, 1 where it has none. */
+static void ref_level_sample_coherence(const brick_case *c, const ref_pyramid *p, int directional,
+                                       uint32_t level, const double at[3], const double d[3],
+                                       const double o[3], double out[4], double *coherence) {
+    double unused;
+    if (!coherence)
+        coherence = &unused;
+    *coherence = 1.0;
     const double cells = (double)(1u << level);
     uint32_t cell[3];
     double lp[3];
@@ -114,12 +122,13 @@ static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int dire
     const uint32_t node = node_at(c, cell, level);
     if (node == VCT_NODE_NULL || c->child[node] == VCT_NODE_NULL)
         return;
-    double shade[4], front, back;
-    const double turn = ref_turn(p, level, lp, o, d, shade, &front, &back);
+    double shade[4], front, back, coherent;
+    const double turn = ref_turn(p, level, lp, o, d, shade, &front, &back, &coherent);
     if (!directional || level + 1 >= p->levels) {
         ref_trilinear(&p->iso[level], lp, out);
         if (!(out[3] > 0.0))
             return; /* empty: no side to see */
+        *coherence = coherent;
         for (int k = 0; k < 3; ++k)
             out[k] = (1.0 - turn) * front * out[k] + turn * back * (out[k] - shade[k]);
         return;
@@ -136,6 +145,20 @@ static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int dire
                              : s[k] + turn * (dark[k] - s[k])) /
                       (w[0] + w[1] + w[2]);
     }
+    double opacity = 0.0; /* the directional values' own, before the side's */
+    for (int axis = 0; axis < 3; ++axis) {
+        double s[4];
+        ref_trilinear(&p->dir[d[axis] >= 0 ? axis : axis + 3][level], lp, s);
+        opacity += w[axis] * s[3] / (w[0] + w[1] + w[2]);
+    }
+    if (opacity > 0.0)
+        *coherence = coherent;
+}
+
+static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int directional,
+                             uint32_t level, const double at[3], const double d[3],
+                             const double o[3], double out[4]) {
+    ref_level_sample_coherence(c, p, directional, level, at, d, o, out, NULL);
 }
 
 typedef struct ref_cone {
@@ -580,11 +603,15 @@ static int ref_near(const brick_case *c, const ref_pyramid *p, const vct_cone_se
         o[k] = (from[k] - c->info.origin[k]) / side - 0.5;
     }
     const uint32_t coarse = (uint32_t)level, fine = coarse + 1 < p->levels ? coarse + 1 : coarse;
-    double a[4], b[4], v[4];
-    ref_level_sample(c, p, 1, coarse, at, d, o, a);
-    ref_level_sample(c, p, 1, fine, at, d, o, b);
+    double a[4], b[4], v[4], ca = 1.0, cb = 1.0;
+    ref_level_sample_coherence(c, p, 1, coarse, at, d, o, a, &ca);
+    ref_level_sample_coherence(c, p, 1, fine, at, d, o, b, &cb);
     for (int k = 0; k < 4; ++k)
         v[k] = a[k] + (level - coarse) * (b[k] - a[k]);
+    /* finer whole levels while the planes disagree (cone_sky.h) */
+    double coherence = level > coarse ? fmin(ca, cb) : ca;
+    for (uint32_t finer = coarse + 1; coherence < 1.0 && finer < p->levels; ++finer)
+        ref_level_sample_coherence(c, p, 1, finer, at, d, o, v, &coherence);
     for (int k = 0; k < 3; ++k)
         light[k] = v[3] > 1e-3 ? v[k] / v[3] : 0.0;
     return 1;
