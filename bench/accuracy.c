@@ -10,7 +10,7 @@
  * (default 2048, a different seed from the runs) is rendered and saved.
  * "heavy" is bench/heavy_scene.h's 102,430-triangle scene. Voxel cone
  * tracing runs over voxel resolutions, cone presets, step sizes, cone start
- * offsets, isotropic against anisotropic bricks, 1, 2 or 3 bounces, and 2 or 3
+ * offsets, isotropic against anisotropic bricks, 1 to 4 bounces, and 2 to 4
  * bounces without the rest of the series; its time is split into building the
  * voxel hierarchy (voxels, octree, bricks, light) and tracing.
  * --quick runs cone tracing at its default, with sparse diffuse, with its
@@ -472,30 +472,32 @@ int main(int argc, char **argv) {
         n = whitted_rows(ctx, s, &cfg, &ref, runs, n);
     if (cfg.pm)
         n = pm_rows(ctx, s, &cfg, &ref, runs, n);
-    /* The default (128^3, 9 cones, step 1, isotropic, 3 bounces) and one
+    /* The default (128^3, 9 cones, step 1, isotropic, VCT_DEFAULT_BOUNCES) and one
      * setting changed at a time. */
+    enum { D = VCT_DEFAULT_BOUNCES };
     static const vct_setting vct_runs[] = {
-        {64, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},   {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},
-        {256, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 1, 3, 1.0f, 0, 0.0f, 0, 0, 0},
-        {128, 5, 3, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 6, 3, 1.0f, 0, 0.0f, 0, 0, 0},
-        {128, 16, 3, 1.0f, 0, 0.0f, 0, 0, 0}, {128, 9, 3, 0.25f, 0, 0.0f, 0, 0, 0},
-        {128, 9, 3, 0.5f, 0, 0.0f, 0, 0, 0},  {128, 9, 3, 1.0f, 1, 0.0f, 0, 0, 0},
+        {64, 9, D, 1.0f, 0, 0.0f, 0, 0, 0},   {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 0},
+        {256, 9, D, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 1, D, 1.0f, 0, 0.0f, 0, 0, 0},
+        {128, 5, D, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 6, D, 1.0f, 0, 0.0f, 0, 0, 0},
+        {128, 16, D, 1.0f, 0, 0.0f, 0, 0, 0}, {128, 9, D, 0.25f, 0, 0.0f, 0, 0, 0},
+        {128, 9, D, 0.5f, 0, 0.0f, 0, 0, 0},  {128, 9, D, 1.0f, 1, 0.0f, 0, 0, 0},
         {128, 9, 1, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 0},
-        {64, 9, 3, 1.0f, 0, 2.0f, 0, 0, 0},   {64, 9, 3, 1.0f, 0, 8.0f, 0, 0, 0},
-        {128, 9, 3, 1.0f, 0, 2.0f, 0, 0, 0},  {128, 9, 3, 1.0f, 0, 8.0f, 0, 0, 0},
-        {128, 9, 3, 1.0f, 0, 16.0f, 0, 0, 0}, {256, 9, 3, 1.0f, 0, 8.0f, 0, 0, 0},
-        {256, 9, 3, 1.0f, 0, 16.0f, 0, 0, 0}, {256, 9, 3, 1.0f, 0, 32.0f, 0, 0, 0},
-        {64, 9, 3, 1.0f, 0, 0.0f, 1, 0, 0},   {128, 9, 3, 1.0f, 0, 0.0f, 1, 0, 0},
-        {256, 9, 3, 1.0f, 0, 0.0f, 1, 0, 0},  {128, 9, 3, 1.0f, 0, 2.0f, 1, 0, 0},
-        {128, 16, 3, 1.0f, 0, 0.0f, 1, 0, 0}, {64, 9, 3, 1.0f, 0, 0.0f, 0, 1, 0},
-        {128, 9, 3, 1.0f, 0, 0.0f, 0, 1, 0},  {256, 9, 3, 1.0f, 0, 0.0f, 0, 1, 0},
-        {128, 9, 3, 1.0f, 0, 0.0f, 1, 1, 0},  {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 1},
-        {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 1}};
-    static const vct_setting quick_runs[] = {{128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},
-                                             {128, 9, 3, 1.0f, 0, 0.0f, 0, 1, 0},
-                                             {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 1},
-                                             {128, 9, 3, 1.0f, 1, 0.0f, 0, 0, 0},
-                                             {128, 6, 3, 1.0f, 0, 0.0f, 0, 0, 0}};
+        {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},  {64, 9, D, 1.0f, 0, 2.0f, 0, 0, 0},
+        {64, 9, D, 1.0f, 0, 8.0f, 0, 0, 0},   {128, 9, D, 1.0f, 0, 2.0f, 0, 0, 0},
+        {128, 9, D, 1.0f, 0, 8.0f, 0, 0, 0},  {128, 9, D, 1.0f, 0, 16.0f, 0, 0, 0},
+        {256, 9, D, 1.0f, 0, 8.0f, 0, 0, 0},  {256, 9, D, 1.0f, 0, 16.0f, 0, 0, 0},
+        {256, 9, D, 1.0f, 0, 32.0f, 0, 0, 0}, {64, 9, D, 1.0f, 0, 0.0f, 1, 0, 0},
+        {128, 9, D, 1.0f, 0, 0.0f, 1, 0, 0},  {256, 9, D, 1.0f, 0, 0.0f, 1, 0, 0},
+        {128, 9, D, 1.0f, 0, 2.0f, 1, 0, 0},  {128, 16, D, 1.0f, 0, 0.0f, 1, 0, 0},
+        {64, 9, D, 1.0f, 0, 0.0f, 0, 1, 0},   {128, 9, D, 1.0f, 0, 0.0f, 0, 1, 0},
+        {256, 9, D, 1.0f, 0, 0.0f, 0, 1, 0},  {128, 9, D, 1.0f, 0, 0.0f, 1, 1, 0},
+        {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 1},  {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 1},
+        {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 1}};
+    static const vct_setting quick_runs[] = {{128, 9, D, 1.0f, 0, 0.0f, 0, 0, 0},
+                                             {128, 9, D, 1.0f, 0, 0.0f, 0, 1, 0},
+                                             {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 1},
+                                             {128, 9, D, 1.0f, 1, 0.0f, 0, 0, 0},
+                                             {128, 6, D, 1.0f, 0, 0.0f, 0, 0, 0}};
     const vct_setting *list = cfg.quick ? quick_runs : vct_runs;
     const size_t listed =
         cfg.quick ? sizeof quick_runs / sizeof quick_runs[0] : sizeof vct_runs / sizeof vct_runs[0];

@@ -37,7 +37,7 @@ void cli_usage(void) {
         "                                   an edge (surface, material, hard shadow), which\n"
         "                                   show their mean (default 4; 1: pixel centres);\n"
         "                                   --ao-distance F (of the volume, 0.125);\n"
-        "                                   --bounces 1..4 light bounces in the voxels (3),\n"
+        "                                   --bounces 1..4 light bounces in the voxels (4),\n"
         "                                   then the rest of the series at the scene's\n"
         "                                   bounce ratio; --exact-bounces: no rest;\n"
         "                                   --isotropic: one radiance per brick sample\n"
@@ -258,7 +258,7 @@ int cli_parse(int argc, char **argv, cli_options *opt) {
     opt->voxel_res = 0; /* each command's own default */
     opt->diffuse_cones = 9;
     opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
-    opt->bounces = 3;
+    opt->bounces = (int)VCT_DEFAULT_BOUNCES;
     opt->anisotropic = -1; /* off unless given (--anisotropic) */
     opt->cones = vct_cone_settings_default();
     if (argc < 2) {

@@ -25,7 +25,8 @@ static int render(vct_context *ctx, const vct_scene *scene, const vct_accel *acc
         vo.resolution = 64;
         const vct_brick_options bo = {VCT_BRICKS_AUTO, 0, 0}; /* isotropic, as vct render */
         const vct_cone_settings cones = vct_cone_settings_default();
-        rc = vct_vct_prepare(ctx, scene, accel, &plan, &vo, &bo, 3, &cones, &voxels, err);
+        rc = vct_vct_prepare(ctx, scene, accel, &plan, &vo, &bo, VCT_DEFAULT_BOUNCES, &cones,
+                             &voxels, err);
         job.voxels = voxels;
         job.plan = &plan;
     }

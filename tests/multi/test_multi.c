@@ -400,6 +400,9 @@ static void check_balance(void) {
     CHECK(counts[0] == 2 && counts[1] == 1, "a share gets a unit at least: %d/%d", counts[0],
           counts[1]);
     vct_solo solo = {0};
+    vct_solo_next(&solo, 30.0, 1, 0);
+    CHECK(solo.state == VCT_ALL_DEVICES, "no probe after the first frame, settled or not");
+    solo = (vct_solo){0};
     vct_solo_next(&solo, 10.0, 0, 0);
     CHECK(solo.state == VCT_ALL_DEVICES, "no probe before the shares settle");
     vct_solo_next(&solo, 10.0, 1, 1);

@@ -134,6 +134,11 @@ typedef struct vct_aovs {
 } vct_aovs;
 void vct_aovs_free(vct_aovs *aovs);
 
+/* Light bounces in the voxels by default (direct light counts as the first):
+ * with the rest of the series after them, 4 lowered the scene suite's mean
+ * error from 0.107 to 0.097 against 3, for one more bounce's time (README). */
+#define VCT_DEFAULT_BOUNCES 4u
+
 /* Builds what the plan's cones read: voxels, octree and bricks, then light
  * (when indirect diffuse or specular is on) with `bounces` - 1 extra
  * diffuse bounces gathered at the voxels by the 6-cone preset. *voxels is

@@ -58,8 +58,8 @@ void vct_solo_next(vct_solo *solo, double frame_ms, int settled, int fastest) {
     case VCT_ALL_DEVICES:
         solo->all_ms = frame_ms;
         /* after the shares settle, or a few frames of noise that keeps them moving */
-        if ((settled || solo->frames >= VCT_SOLO_AFTER) && fastest >= 0 &&
-            (solo->solo_ms == 0.0 || solo->frames > VCT_SOLO_RETRY)) {
+        if (solo->frames >= VCT_SOLO_WARM && (settled || solo->frames >= VCT_SOLO_AFTER) &&
+            fastest >= 0 && (solo->solo_ms == 0.0 || solo->frames > VCT_SOLO_RETRY)) {
             solo->state = VCT_SOLO_PROBE;
             solo->device = fastest;
             solo->frames = 0;

@@ -24,6 +24,10 @@ int vct_balance_shares(int n, const int *active, const double *speed, double *sh
  * kept, and the other tried again every VCT_SOLO_RETRY frames. */
 #define VCT_SOLO_RETRY 50
 #define VCT_SOLO_AFTER 4
+/* Frames together before the first probe: the first pays for building
+ * kernels and buffers, and against a warm frame alone it lost every time
+ * (a loaded host then kept a group of equal devices on one). */
+#define VCT_SOLO_WARM 2
 typedef enum vct_solo_state { VCT_ALL_DEVICES, VCT_SOLO_PROBE, VCT_SOLO } vct_solo_state;
 typedef struct vct_solo {
     vct_solo_state state;
