@@ -57,7 +57,8 @@ inline float2 cone_rest_offset(uint k) {
 
 /* The voxels' light where a ray from `from` along unit d met the scene at
  * distance t: the sample there at the diameter a cone of aperture tan_half
- * has at that distance (the level cone_trace would read), seen from `from`,
+ * has at that distance (the level cone_trace would read), seen from
+ * `seen_from` (the side of its plane that point lies on, voxel_side.h),
  * un-premultiplied where the half floats still hold it (0 elsewhere).
  * A coarse sample takes in surfaces far from the hit: in a closed room,
  * walls on both sides of its cell, whose one-sided planes then disagree, so
@@ -67,13 +68,13 @@ inline float2 cone_rest_offset(uint k) {
  * (side_coherence 1) or the finest level, as cone_trace's march cannot
  * (it has no hit to look at). */
 inline float3 cone_hit_light(CONE_POOLS, __global const uint *child, const vct_cone_desc *c,
-                             float3 from, float3 d, float t, float tan_half) {
+                             float3 from, float3 d, float t, float tan_half, float3 seen_from) {
     const uint levels = c->res.y;
     const float voxel = c->volume.w / (float)c->res.x, min_diameter = 2.0f * voxel;
     const float level =
         cone_level((float)(levels - 1u), fmax(2.0f * t * tan_half, min_diameter), min_diameter);
     const float3 at = clamp((from + t * d - c->volume.xyz) * c->ambient.w, 0.0f, 0.99999f);
-    const float3 o = (from - c->volume.xyz) * c->ambient.w - 0.5f;
+    const float3 o = (seen_from - c->volume.xyz) * c->ambient.w - 0.5f;
     cone_path path = cone_path_root();
     float coherence = 1.0f;
     float4 s =
@@ -116,7 +117,7 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
             rest += c->ambient.xyz;
             continue;
         }
-        rest += cone_hit_light(CONE_POOLS_PASS, child, c, origin, dk, h.t, tan_half);
+        rest += cone_hit_light(CONE_POOLS_PASS, child, c, origin, dk, h.t, tan_half, origin);
     }
     return r.radiance + (1.0f - r.alpha) * (rest / (float)rays - c->ambient.xyz);
 #endif

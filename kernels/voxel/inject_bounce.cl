@@ -34,7 +34,7 @@ inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint
         float3 near;
         float near_t;
         if (near_rays && cone_near_light(acc, CONE_POOLS_PASS, child, cd, surface, n, d,
-                                         c.aperture.x, &near, &near_t)) {
+                                         c.aperture.x, 0, &near, &near_t)) {
             gathered += c.dir.w * near;
             continue;
         }
