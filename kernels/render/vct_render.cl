@@ -310,7 +310,6 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
     const float3 n = g->n;
     float3 t, b;
     basis_of(n, &t, &b);
-    const float3 origin = cone_origin(cd, g->p, n);
 #ifdef VCT_INDIRECT
     const float reach = INFINITY;
 #else
@@ -322,6 +321,7 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
     for (uint i = 0; i < cone_count; ++i) {
         const vct_cone_dir c = cones[i];
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
+        const float3 origin = cone_camera_origin(cd, g->p, n, d);
         const cone_result r =
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
         float3 near;
