@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Gathers bench/suite.sh's per-scene accuracy.csv files into one Markdown
-table: scene x method x setting -> NRMSE, mean ratio, device time, and the
+table: scene x method x setting -> NRMSE, mean ratio, device time (and its
+stages: the acceleration structure, the voxels and their light, the image), the
 path tracer's time to reach each cone-traced or photon-mapped image's
 error."""
 import csv
@@ -32,8 +33,8 @@ def main():
     names = [line.split()[0] for line in open(manifest)
              if line.strip() and not line.startswith("#")]
     print("| scene | method and setting | NRMSE | mean / reference | device ms | "
-          "path tracer to this error |")
-    print("|---|---|---:|---:|---:|---:|")
+          "accel / build / render ms | path tracer to this error |")
+    print("|---|---|---:|---:|---:|---:|---:|")
     for name in names:
         path = os.path.join(root, name, "accuracy.csv")
         if not os.path.exists(path):
@@ -50,8 +51,11 @@ def main():
             if r["setting"].startswith(("vct", "photon")):
                 t = pt_time_for(rows, float(r["nrmse"]))
                 to = f"{t:.0f} ms" if t else "not reached by 1024 spp"
+            stages = (f"{float(r['accel_ms']):.0f} / {float(r['build_ms']):.0f} / "
+                      f"{float(r['render_ms']):.0f}")
             print(f"| {name} | {r['setting']} | {float(r['nrmse']):.3f} | "
-                  f"{float(r['mean_ratio']):.3f} | {float(r['total_ms']):.0f} | {to} |")
+                  f"{float(r['mean_ratio']):.3f} | {float(r['total_ms']):.0f} | {stages} | "
+                  f"{to} |")
 
 
 if __name__ == "__main__":
