@@ -1,12 +1,13 @@
 /* Lighting never depends on which way a triangle is wound: four scenes (the
  * Cornell box, an open room under a sun and sky, thin fins over a floor, a
  * closed room lit by an emissive quad alone),
- * each rendered by every method (cone tracing with isotropic bricks, the
- * default, and directional ones) as it stands, with every triangle's winding
+ * each rendered by every method (the ray caster, cone tracing with isotropic
+ * bricks, the default, and directional ones, the path tracer, Whitted ray
+ * trees, photon mapping) as it stands, with every triangle's winding
  * reversed, and with every other triangle's reversed (mixed, as real exports
  * are). Each copy must lie within 1% NRMSE of the original, with the same
- * mean within 1%. The path tracer is compared at the same seed and sample
- * count, so that only the winding differs. */
+ * mean within 1%. The path tracer and photon mapping are compared at the
+ * same seed and sample (pass) count, so that only the winding differs. */
 #include <math.h>
 #include <string.h>
 
@@ -57,6 +58,9 @@ static vct_image render(const vct_scene *s, vct_method method, int directional) 
     job.accel = g;
     job.pathtrace.spp = 16;
     job.pathtrace.seed = 7;
+    job.pm.passes = 4;
+    job.pm.photons_per_pass = 32768;
+    job.pm.seed = 7;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
     vct_accel_free(g);
@@ -64,12 +68,12 @@ static vct_image render(const vct_scene *s, vct_method method, int directional) 
 }
 
 static void check_scene(const char *name, vct_scene *s) {
-    const vct_method methods[] = {VCT_METHOD_RAYCAST, VCT_METHOD_VCT, VCT_METHOD_VCT,
-                                  VCT_METHOD_PATHTRACE};
-    const char *method_names[] = {"raycast", "vct", "vct dir", "pt"};
+    const vct_method methods[] = {VCT_METHOD_RAYCAST,   VCT_METHOD_VCT,     VCT_METHOD_VCT,
+                                  VCT_METHOD_PATHTRACE, VCT_METHOD_WHITTED, VCT_METHOD_PM};
+    const char *method_names[] = {"raycast", "vct", "vct dir", "pt", "whitted", "pm"};
     vct_scene *copies[2] = {rewound(s, 1), rewound(s, 2)};
     const char *copy_names[2] = {"all reversed", "mixed"};
-    for (int m = 0; m < 4; ++m) {
+    for (int m = 0; m < 6; ++m) {
         vct_image ref = render(s, methods[m], m == 2);
         for (int c = 0; c < 2; ++c) {
             vct_image im = render(copies[c], methods[m], m == 2);
