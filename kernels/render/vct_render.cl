@@ -124,6 +124,7 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
     const uint key = keys[pixel];
     const float4 n = gbuf[GBUF_SLOTS * pixel + 1u];
     const float3 p = gbuf[GBUF_SLOTS * pixel].xyz;
+    const float la = albedo_luminance(gbuf[GBUF_SLOTS * pixel + 4u].xyz);
     int edge = 0;
     for (int dy = -1; dy <= 1 && !edge; ++dy)
         for (int dx = -1; dx <= 1 && !edge; ++dx) {
@@ -140,8 +141,7 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
                 continue;
             const float3 d = gbuf[GBUF_SLOTS * q].xyz - p;
             const float reach = EDGE_PLANE_SLOPE * length(d);
-            const float la = albedo_luminance(gbuf[GBUF_SLOTS * pixel + 4u].xyz),
-                        lq = albedo_luminance(gbuf[GBUF_SLOTS * q + 4u].xyz);
+            const float lq = albedo_luminance(gbuf[GBUF_SLOTS * q + 4u].xyz);
             edge = dot(n.xyz, nq.xyz) < EDGE_NORMAL_COS || fabs(dot(n.xyz, d)) > reach ||
                    fabs(dot(nq.xyz, d)) > reach || fabs(la - lq) > EDGE_ALBEDO_SHARE * fmax(la, lq);
         }
