@@ -34,8 +34,7 @@
 #define CONE_ORIGIN_MIN_UP 0.25f
 
 inline float3 cone_camera_origin(const vct_cone_desc *c, float3 p, float3 n, float3 d) {
-    const float lift = c->march.y * (c->volume.w / (float)c->res.x);
-    const float3 on_axis = p + d * (lift / fmax(dot(d, n), CONE_ORIGIN_MIN_UP));
+    const float3 on_axis = p + d * (cone_lift(c) / fmax(dot(d, n), CONE_ORIGIN_MIN_UP));
     return mix(cone_origin(c, p, n), on_axis, CONE_ORIGIN_TOWARDS_AXIS);
 }
 
@@ -53,7 +52,7 @@ inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint 
                            const vct_cone_desc *c, float3 p, float3 n, float3 d, float tan_half,
                            int side_at_hit, float3 *light, float *dist) {
     const float voxel = c->volume.w / (float)c->res.x;
-    const float lift = c->march.y * voxel, up = dot(d, n);
+    const float lift = cone_lift(c), up = dot(d, n);
     if (!(up > 0.0f))
         return 0;
     /* through the slab below the lifted origin, and the march's first step */

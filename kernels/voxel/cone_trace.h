@@ -227,8 +227,13 @@ inline float cone_level(float finest, float diameter, float min_diameter) {
 
 /* Where a cone from surface point p with normal n starts: lifted off the
  * surface by the offset (in voxels), so that it does not see its own voxel. */
+/* The cone offset in world units. */
+inline float cone_lift(const vct_cone_desc *c) {
+    return c->march.y * (c->volume.w / (float)c->res.x);
+}
+
 inline float3 cone_origin(const vct_cone_desc *c, float3 p, float3 n) {
-    return p + n * (c->march.y * (c->volume.w / (float)c->res.x));
+    return p + n * cone_lift(c);
 }
 
 /* 1 - (1 - a)^ratio: opacity a of one thickness over `ratio` of it. pow is

@@ -134,6 +134,7 @@ static void ref_level_sample_coherence(const brick_case *c, const ref_pyramid *p
         return;
     }
     const double w[3] = {d[0] * d[0], d[1] * d[1], d[2] * d[2]};
+    double opacity = 0.0; /* the directional values' own, before the side's */
     for (int axis = 0; axis < 3; ++axis) {
         const int dir = d[axis] >= 0 ? axis : axis + 3;
         double s[4], dark[4];
@@ -144,11 +145,6 @@ static void ref_level_sample_coherence(const brick_case *c, const ref_pyramid *p
                       (k < 3 ? (1.0 - turn) * front * s[k] + turn * back * dark[k]
                              : s[k] + turn * (dark[k] - s[k])) /
                       (w[0] + w[1] + w[2]);
-    }
-    double opacity = 0.0; /* the directional values' own, before the side's */
-    for (int axis = 0; axis < 3; ++axis) {
-        double s[4];
-        ref_trilinear(&p->dir[d[axis] >= 0 ? axis : axis + 3][level], lp, s);
         opacity += w[axis] * s[3] / (w[0] + w[1] + w[2]);
     }
     if (opacity > 0.0)
