@@ -97,6 +97,19 @@ static cl_program load_cached(vct_context *ctx, const char *path) {
     return p;
 }
 
+/* fma in hardware, not in software: kernels may then fuse what they would
+ * otherwise leave as a product and a sum (kernels/README.md, -D options).
+ * VCT_FAST_FMA=0 builds the other variant (tests run both). */
+static int device_has_fast_fma(cl_device_id device) {
+    const char *env = getenv("VCT_FAST_FMA");
+    if (env && strcmp(env, "0") == 0)
+        return 0;
+    cl_device_fp_config fp = 0;
+    if (clGetDeviceInfo(device, CL_DEVICE_SINGLE_FP_CONFIG, sizeof fp, &fp, NULL) != CL_SUCCESS)
+        return 0;
+    return (fp & CL_FP_FMA) && !(fp & CL_FP_SOFT_FLOAT);
+}
+
 static void store_cached(cl_program p, const char *path) {
     size_t size = 0;
     if (clGetProgramInfo(p, CL_PROGRAM_BINARY_SIZES, sizeof size, &size, NULL) != CL_SUCCESS ||
@@ -167,7 +180,8 @@ int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_
         return vct_fail(err, VCT_ERR_MEMORY, "kernels: too many program variants");
 
     char full_options[1024];
-    snprintf(full_options, sizeof full_options, "-cl-std=CL1.2 %s", options ? options : "");
+    snprintf(full_options, sizeof full_options, "-cl-std=CL1.2%s %s",
+             device_has_fast_fma(ctx->device) ? " -DVCT_FAST_FMA" : "", options ? options : "");
     char *source = vct_kernel_source_expand(file, err);
     if (!source)
         return err->status;
