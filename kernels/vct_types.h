@@ -6,7 +6,7 @@
 
 /* The kernel interface's version: bumped whenever an entry point's
  * arguments, a buffer layout or the meaning of a -D option changes. */
-#define VCT_KERNEL_ABI_VERSION 9
+#define VCT_KERNEL_ABI_VERSION 10
 
 #ifdef __OPENCL_VERSION__
 typedef float4 vct_f4;
@@ -65,9 +65,10 @@ typedef struct vct_light_bins_desc {
     vct_u4 info;  /* x: its first cell, y: F, z: distance bits, w: 1 if it has bins */
 } vct_light_bins_desc;
 
-/* Below this roughness a glossy lobe is an ideal mirror (a delta lobe), on
- * both sides: the BSDF (kernels/scene/bsdf.h) and the host's choices. */
-#define VCT_MIRROR_ROUGHNESS 0.02f
+/* Below this roughness (alpha = roughness^2 under 0.02, a Phong exponent
+ * over 5,000) a glossy lobe is an ideal mirror (a delta lobe), on both sides:
+ * the BSDF (kernels/scene/bsdf.h) and the host's choices. */
+#define VCT_MIRROR_ROUGHNESS 0.14f
 
 typedef struct vct_material_desc {
     vct_f4 albedo;   /* rgb; w = metallic */

@@ -24,9 +24,13 @@ inline void basis_of(float3 n, float3 *t, float3 *b) {
     *b = (float3)(c, s + n.y * n.y * a, -n.y);
 }
 
+/* glTF's roughness is perceptual: the microfacet width is alpha = roughness^2
+ * (glTF 2.0, appendix B). The Phong exponent of the same width is
+ * 2 / alpha^2 - 2 (Walter et al. 2007, Beckmann). */
 inline float phong_exponent(float roughness) {
     const float r = fmax(roughness, 1e-3f);
-    return fmax(2.0f / (r * r) - 2.0f, 0.0f);
+    const float alpha = r * r;
+    return fmax(2.0f / (alpha * alpha) - 2.0f, 0.0f);
 }
 
 inline float3 reflect_dir(float3 wo, float3 n) {

@@ -296,7 +296,7 @@ static int read_materials(const struct aiScene *sc, const char *path, vct_scene 
         float f;
         if (aiGetMaterialFloatArray(am, AI_MATKEY_SHININESS, &f, NULL) == aiReturn_SUCCESS &&
             f > 0.0f)
-            m->roughness = sqrtf(2.0f / (f + 2.0f)); /* Phong exponent -> roughness */
+            m->roughness = sqrtf(sqrtf(2.0f / (f + 2.0f))); /* Phong exponent -> roughness */
         if (aiGetMaterialFloatArray(am, AI_MATKEY_ROUGHNESS_FACTOR, &f, NULL) == aiReturn_SUCCESS)
             m->roughness = f;
         if (aiGetMaterialFloatArray(am, AI_MATKEY_METALLIC_FACTOR, &f, NULL) == aiReturn_SUCCESS)
