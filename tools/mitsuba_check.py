@@ -18,8 +18,8 @@ transmission as a smooth dielectric of the material's ior; emission
 (times KHR_materials_emissive_strength) on the front, on both sides where the
 material is double-sided; KHR_lights_punctual point, spot and directional
 lights; the perspective camera; the sky as a constant environment; a box
-pixel filter. Base-colour textures and alpha masks are not converted: the
-script refuses such scenes."""
+pixel filter; base-colour textures (sRGB, bilinear, repeating) and alpha
+masks (MASK mode, the cutoff taken per texel)."""
 import argparse
 import base64
 import json
@@ -92,12 +92,46 @@ class Gltf:
             stack.extend((c, world) for c in node.get("children", []))
 
 
-def bsdf_of(mat):
+def texture_file(g, out, index):
+    """Texture index's image, written beside the meshes; its path."""
+    image = g.j["images"][g.j["textures"][index]["source"]]
+    if "bufferView" in image:
+        view = g.j["bufferViews"][image["bufferView"]]
+        start = view.get("byteOffset", 0)
+        data = g.buffers[view["buffer"]][start:start + view["byteLength"]]
+    elif image["uri"].startswith("data:"):
+        data = base64.b64decode(image["uri"].split(",", 1)[1])
+    else:
+        with open(os.path.join(os.path.dirname(g.path), image["uri"]), "rb") as f:
+            data = f.read()
+    path = os.path.join(out, "texture%d.png" % index)
+    with open(path, "wb") as f:
+        f.write(data)
+    return path
+
+
+def alpha_file(path, cutoff):
+    """The mask of a base-colour image: opaque where its alpha reaches the cutoff."""
+    from PIL import Image
+    alpha = np.array(Image.open(path).convert("RGBA"))[:, :, 3]
+    mask = np.where(alpha / 255.0 >= cutoff, 255, 0).astype(np.uint8)
+    out = path[:-4] + "_mask.png"
+    Image.fromarray(mask, "L").save(out)
+    return out
+
+
+def bsdf_of(g, out, mat):
     pbr = mat.get("pbrMetallicRoughness", {})
-    if "baseColorTexture" in pbr or mat.get("alphaMode", "OPAQUE") != "OPAQUE":
-        sys.exit("mitsuba_check: textures and alpha masks are not converted (%s)" %
-                 mat.get("name", "?"))
-    color = list(pbr.get("baseColorFactor", [1, 1, 1, 1]))[:3]
+    factor = list(pbr.get("baseColorFactor", [1, 1, 1, 1]))
+    color = {"type": "rgb", "value": factor[:3]}
+    tex = pbr.get("baseColorTexture")
+    if tex is not None:
+        png = texture_file(g, out, tex["index"])
+        # sRGB decoded, bilinear, repeating: as vct's loader and kernels read it
+        color = {"type": "bitmap", "filename": png, "filter_type": "bilinear",
+                 "wrap_mode": "repeat", "raw": False}
+        if factor[:3] != [1, 1, 1]:
+            sys.exit("mitsuba_check: a base-colour factor times a texture is not converted")
     metallic, rough = pbr.get("metallicFactor", 1.0), pbr.get("roughnessFactor", 1.0)
     ext = mat.get("extensions", {})
     transmission = ext.get("KHR_materials_transmission", {}).get("transmissionFactor", 0.0)
@@ -106,14 +140,24 @@ def bsdf_of(mat):
         return {"type": "dielectric", "int_ior": ior, "ext_ior": 1.0}
     if metallic > 0.5:
         if rough < 0.14:  # VCT_MIRROR_ROUGHNESS
-            inner = {"type": "conductor", "material": "none",
-                     "specular_reflectance": {"type": "rgb", "value": color}}
+            inner = {"type": "conductor", "material": "none", "specular_reflectance": color}
         else:
             inner = {"type": "roughconductor", "material": "none", "distribution": "beckmann",
-                     "alpha": rough * rough, "specular_reflectance": {"type": "rgb", "value": color}}
+                     "alpha": rough * rough, "specular_reflectance": color}
     else:
-        inner = {"type": "diffuse", "reflectance": {"type": "rgb", "value": color}}
-    return {"type": "twosided", "bsdf": inner}
+        inner = {"type": "diffuse", "reflectance": color}
+    bsdf = {"type": "twosided", "bsdf": inner}
+    if mat.get("alphaMode", "OPAQUE") == "MASK" and tex is not None:
+        # a hard cutoff of each texel's alpha, then bilinear: the edges differ
+        # from vct's cutoff of the interpolated alpha by under a texel
+        cutoff = mat.get("alphaCutoff", 0.5) / factor[3]
+        bsdf = {"type": "mask", "bsdf": bsdf,
+                "opacity": {"type": "bitmap", "filename": alpha_file(png, cutoff),
+                            "filter_type": "bilinear", "wrap_mode": "repeat", "raw": True}}
+    elif mat.get("alphaMode", "OPAQUE") != "OPAQUE":
+        sys.exit("mitsuba_check: alpha mode %s of %s is not converted" %
+                 (mat["alphaMode"], mat.get("name", "?")))
+    return bsdf
 
 
 def emission_of(mat):
@@ -123,13 +167,18 @@ def emission_of(mat):
     return [c * s for c in e]
 
 
-def write_ply(path, pos, faces):
+def write_ply(path, pos, faces, uvs=None):
+    """A binary PLY file; uvs as glTF has them (Mitsuba also puts v = 0 at an
+    image's top row, and its PLY reader does not flip v as its OBJ reader
+    does: checked on a quad of four coloured quarters)."""
     with open(path, "wb") as f:
         f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\n"
-                 "property float x\nproperty float y\nproperty float z\n"
+                 "property float x\nproperty float y\nproperty float z\n%s"
                  "element face %d\nproperty list uchar int vertex_indices\nend_header\n"
-                 % (len(pos), len(faces))).encode())
-        f.write(pos.astype("<f4").tobytes())
+                 % (len(pos), "property float u\nproperty float v\n" if uvs is not None else "",
+                    len(faces))).encode())
+        f.write(np.c_[pos, uvs].astype("<f4").tobytes() if uvs is not None else
+                pos.astype("<f4").tobytes())
         rows = np.zeros(len(faces), dtype=[("n", "u1"), ("v", "<i4", 3)])
         rows["n"] = 3
         rows["v"] = faces
@@ -180,6 +229,8 @@ def convert(mi, path, out, width, height, spp, ambient, max_depth):
             pos = (np.c_[pos, np.ones(len(pos))] @ world.T)[:, :3]
             idx = (g.accessor(p["indices"]).reshape(-1, 3) if "indices" in p else
                    np.arange(len(pos)).reshape(-1, 3)).astype(np.int32)
+            uvs = (g.accessor(p["attributes"]["TEXCOORD_0"]).astype(np.float64)
+                   if "TEXCOORD_0" in p["attributes"] else None)
             mat = j["materials"][p["material"]] if "material" in p else {}
             emit = emission_of(mat)
             emissive = any(c > 0 for c in emit)
@@ -187,14 +238,14 @@ def convert(mi, path, out, width, height, spp, ambient, max_depth):
             for k, faces in enumerate(sides):
                 ply = os.path.join(out, "mesh%d.ply" % count)
                 if k == 0:
-                    write_ply(ply, pos, faces)
+                    write_ply(ply, pos, faces, uvs)
                 else:
                     write_ply(ply, *behind(pos, faces, 1e-5 * extent))
                 # the back of a double-sided emitter: a flipped copy just
                 # behind it, of the same (two-sided) BSDF; a null BSDF there
                 # made Mitsuba's floor under an upward-facing lamp 12 % darker
                 entry = {"type": "ply", "filename": ply, "face_normals": True,
-                         "bsdf": bsdf_of(mat)}
+                         "bsdf": bsdf_of(g, out, mat)}
                 if emissive:
                     entry["emitter"] = {"type": "area",
                                         "radiance": {"type": "rgb", "value": emit}}
@@ -225,6 +276,10 @@ def convert(mi, path, out, width, height, spp, ambient, max_depth):
                 "film": {"type": "hdrfilm", "width": width, "height": height,
                          "rfilter": {"type": "box"}, "pixel_format": "rgb"},
                 "sampler": {"type": "independent", "sample_count": spp}}
+    if any(e.get("bsdf", {}).get("type") == "mask" for e in scene.values() if isinstance(e, dict)):
+        # the path integrator's shadow rays stop at a mask's transparent
+        # texels; volpath's see through them
+        scene["integrator"]["type"] = "volpath"
     if ambient and any(c > 0 for c in ambient):
         scene["sky"] = {"type": "constant", "radiance": {"type": "rgb", "value": list(ambient)}}
     return scene
