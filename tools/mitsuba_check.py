@@ -19,7 +19,9 @@ transmission as a smooth dielectric of the material's ior; emission
 material is double-sided; KHR_lights_punctual point, spot and directional
 lights; the perspective camera; the sky as a constant environment; a box
 pixel filter; base-colour textures (sRGB, bilinear, repeating) and alpha
-masks (MASK mode, the cutoff taken per texel)."""
+masks (MASK mode, the cutoff taken per texel). A spot light's penumbra is
+approximate: Mitsuba ramps linearly in angle from the inner to the outer cone,
+glTF (and vct) square a ramp in the cosine."""
 import argparse
 import base64
 import json
