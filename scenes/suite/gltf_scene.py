@@ -118,6 +118,14 @@ class Scene:
         self.lights.append(({"type": "point", "color": list(color), "intensity": intensity},
                             position, None))
 
+    def spot_light(self, position, target, intensity, inner_deg, outer_deg, color=(1, 1, 1)):
+        """A spot at position aimed at target; its cone's half-angles in degrees."""
+        spot = {"innerConeAngle": math.radians(inner_deg),
+                "outerConeAngle": math.radians(outer_deg)}
+        direction = _normalise([target[k] - position[k] for k in range(3)])
+        self.lights.append(({"type": "spot", "color": list(color), "intensity": intensity,
+                             "spot": spot}, position, direction))
+
     def sun(self, direction, irradiance, color=(1, 1, 1)):
         self.lights.append(({"type": "directional", "color": list(color),
                              "intensity": irradiance}, None, direction))

@@ -17,6 +17,8 @@ glTF file cannot hold, is given as --ambient).
                     wall under a point light: a few pixels each on screen
   textured_room     a room with a parquet floor and striped wallpaper
                     (base-colour textures), a table and a lamp
+  spot_gallery      a closed gallery lit by three spot lights alone (soft and
+                    hard cone edges) on pictures, a statue and the floor
 """
 import math
 import os
@@ -301,8 +303,33 @@ def small_objects():
     s.write(os.path.join(OUT, "small_objects.gltf"))
 
 
+def spot_gallery():
+    s = Scene()
+    wall = s.material("walls", (0.72, 0.7, 0.66))
+    floor = s.material("floor", (0.25, 0.22, 0.2))
+    ceiling = s.material("ceiling", (0.8, 0.8, 0.8))
+    pictures = [s.material("blue picture", (0.1, 0.2, 0.6)),
+                s.material("ochre picture", (0.7, 0.5, 0.15))]
+    stone = s.material("statue", (0.8, 0.78, 0.75))
+    s.quads(floor, [[(0, 0, 0), (0, 0, 6), (8, 0, 6), (8, 0, 0)]])
+    s.quads(ceiling, [[(0, 3.2, 0), (8, 3.2, 0), (8, 3.2, 6), (0, 3.2, 6)]])
+    s.box(wall, (0, 0, 0), (8, 3.2, 6), skip=("-y", "+y"))
+    # two pictures a centimetre off the back wall, each under its own spot
+    for i, x in enumerate((1.5, 5.0)):
+        s.quads(pictures[i], [[(x, 1.0, 0.01), (x + 1.5, 1.0, 0.01), (x + 1.5, 2.2, 0.01),
+                               (x, 2.2, 0.01)]])
+        s.spot_light((x + 0.75, 3.1, 1.6), (x + 0.75, 1.6, 0.0), 6.0, 14 if i else 0, 22,
+                     (1.0, 0.92, 0.8))
+    # a statue on a plinth in the middle, lit from above by a narrow hard spot
+    s.box(stone, (3.6, 0, 2.6), (4.4, 0.9, 3.4))
+    s.sphere(stone, (4.0, 1.3, 3.0), 0.4)
+    s.spot_light((4.5, 3.1, 3.6), (4.0, 1.0, 3.0), 8.0, 18, 20, (0.95, 0.95, 1.0))
+    s.look((7.3, 1.6, 5.6), (3.2, 1.2, 1.0), 60)
+    s.write(os.path.join(OUT, "spot_gallery.gltf"))
+
+
 if __name__ == "__main__":
     for make in (atrium, window_room, glass_mirror_box, blinds_fins, dense_hall, lamp_room,
-                 small_objects, textured_room):
+                 small_objects, textured_room, spot_gallery):
         make()
         print("wrote", make.__name__)
