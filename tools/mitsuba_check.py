@@ -15,8 +15,8 @@ metallic > 0.5 as a conductor of the base colour without Fresnel (a mirror
 below roughness 0.14, else Beckmann with alpha = roughness^2, the width of
 vct's Phong lobe);
 transmission as a smooth dielectric of the material's ior; emission
-(times KHR_materials_emissive_strength) on the front, on both sides where the
-material is double-sided; KHR_lights_punctual point, spot and directional
+(times KHR_materials_emissive_strength) on both sides, as vct emits whatever
+doubleSided says; KHR_lights_punctual point, spot and directional
 lights; the perspective camera; the sky as a constant environment; a box
 pixel filter; base-colour textures (sRGB, bilinear, repeating) and alpha
 masks (MASK mode, the cutoff taken per texel). A spot light's penumbra is
@@ -236,7 +236,8 @@ def convert(mi, path, out, width, height, spp, ambient, max_depth):
             mat = j["materials"][p["material"]] if "material" in p else {}
             emit = emission_of(mat)
             emissive = any(c > 0 for c in emit)
-            sides = [idx, idx[:, ::-1]] if emissive and mat.get("doubleSided", False) else [idx]
+            # vct's emitters send light from both sides, whatever doubleSided says
+            sides = [idx, idx[:, ::-1]] if emissive else [idx]
             for k, faces in enumerate(sides):
                 ply = os.path.join(out, "mesh%d.ply" % count)
                 if k == 0:
