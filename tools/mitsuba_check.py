@@ -77,10 +77,9 @@ class Gltf:
         dtype = np.dtype(kinds[a["componentType"]])
         start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
         stride = view.get("byteStride", dtype.itemsize * comps)
-        raw = np.frombuffer(self.buffers[view["buffer"]], dtype=np.uint8)
-        rows = [raw[start + i * stride:start + i * stride + dtype.itemsize * comps]
-                for i in range(a["count"])]
-        return np.frombuffer(b"".join(r.tobytes() for r in rows), dtype=dtype).reshape(-1, comps)
+        rows = np.ndarray((a["count"], comps), dtype=dtype, buffer=self.buffers[view["buffer"]],
+                          offset=start, strides=(stride, dtype.itemsize))
+        return rows.copy()
 
     def walk(self):
         """(node, world matrix) for every node of the default scene."""
@@ -92,6 +91,21 @@ class Gltf:
             world = parent @ node_matrix(node)
             yield node, world
             stack.extend((c, world) for c in node.get("children", []))
+
+    def triangles(self):
+        """(world positions, faces, uvs or None, material) of every triangle
+        primitive of the default scene."""
+        for node, world in self.walk():
+            for p in self.j["meshes"][node["mesh"]]["primitives"] if "mesh" in node else []:
+                if p.get("mode", 4) != 4:
+                    continue
+                pos = self.accessor(p["attributes"]["POSITION"]).astype(np.float64)
+                pos = (np.c_[pos, np.ones(len(pos))] @ world.T)[:, :3]
+                idx = (self.accessor(p["indices"]).reshape(-1, 3) if "indices" in p else
+                       np.arange(len(pos)).reshape(-1, 3)).astype(np.int32)
+                uvs = (self.accessor(p["attributes"]["TEXCOORD_0"]).astype(np.float64)
+                       if "TEXCOORD_0" in p["attributes"] else None)
+                yield pos, idx, uvs, self.j["materials"][p["material"]] if "material" in p else {}
 
 
 def texture_file(g, out, index):
@@ -187,16 +201,6 @@ def write_ply(path, pos, faces, uvs=None):
         f.write(rows.tobytes())
 
 
-def scene_extent(g):
-    lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
-    for node, world in g.walk():
-        for p in g.j["meshes"][node["mesh"]]["primitives"] if "mesh" in node else []:
-            pos = g.accessor(p["attributes"]["POSITION"]).astype(np.float64)
-            pos = (np.c_[pos, np.ones(len(pos))] @ world.T)[:, :3]
-            lo, hi = np.minimum(lo, pos.min(axis=0)), np.maximum(hi, pos.max(axis=0))
-    return float(np.max(hi - lo))
-
-
 def behind(pos, faces, offset):
     """Each face on its own vertices, moved by offset along its own normal:
     the flipped copy of a double-sided emitter lies just behind the original,
@@ -221,39 +225,28 @@ def convert(mi, path, out, width, height, spp, ambient, max_depth):
     # Mitsuba counts the camera's vertex in its depth, vct counts surfaces.
     scene = {"type": "scene", "integrator": {"type": "path", "max_depth": max_depth + 1}}
     lights = j.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", [])
-    count = 0
-    extent = scene_extent(g)
+    prims = list(g.triangles())
+    extent = float(np.max(np.max([p.max(axis=0) for p, _, _, _ in prims], axis=0) -
+                          np.min([p.min(axis=0) for p, _, _, _ in prims], axis=0)))
+    for count, (pos, idx, uvs, mat) in enumerate(prims):
+        emit = emission_of(mat)
+        emissive = any(c > 0 for c in emit)
+        # vct's emitters send light from both sides, whatever doubleSided says:
+        # the back is a flipped copy just behind the front, of the same
+        # (two-sided) BSDF; a null BSDF there made Mitsuba's floor under an
+        # upward-facing lamp 12 % darker
+        for k in range(2 if emissive else 1):
+            ply = os.path.join(out, "mesh%d_%d.ply" % (count, k))
+            if k == 0:
+                write_ply(ply, pos, idx, uvs)
+            else:
+                write_ply(ply, *behind(pos, idx[:, ::-1], 1e-5 * extent))
+            entry = {"type": "ply", "filename": ply, "face_normals": True,
+                     "bsdf": bsdf_of(g, out, mat)}
+            if emissive:
+                entry["emitter"] = {"type": "area", "radiance": {"type": "rgb", "value": emit}}
+            scene["mesh%d_%d" % (count, k)] = entry
     for node, world in g.walk():
-        for p in j["meshes"][node["mesh"]]["primitives"] if "mesh" in node else []:
-            if p.get("mode", 4) != 4:
-                continue
-            pos = g.accessor(p["attributes"]["POSITION"]).astype(np.float64)
-            pos = (np.c_[pos, np.ones(len(pos))] @ world.T)[:, :3]
-            idx = (g.accessor(p["indices"]).reshape(-1, 3) if "indices" in p else
-                   np.arange(len(pos)).reshape(-1, 3)).astype(np.int32)
-            uvs = (g.accessor(p["attributes"]["TEXCOORD_0"]).astype(np.float64)
-                   if "TEXCOORD_0" in p["attributes"] else None)
-            mat = j["materials"][p["material"]] if "material" in p else {}
-            emit = emission_of(mat)
-            emissive = any(c > 0 for c in emit)
-            # vct's emitters send light from both sides, whatever doubleSided says
-            sides = [idx, idx[:, ::-1]] if emissive else [idx]
-            for k, faces in enumerate(sides):
-                ply = os.path.join(out, "mesh%d.ply" % count)
-                if k == 0:
-                    write_ply(ply, pos, faces, uvs)
-                else:
-                    write_ply(ply, *behind(pos, faces, 1e-5 * extent))
-                # the back of a double-sided emitter: a flipped copy just
-                # behind it, of the same (two-sided) BSDF; a null BSDF there
-                # made Mitsuba's floor under an upward-facing lamp 12 % darker
-                entry = {"type": "ply", "filename": ply, "face_normals": True,
-                         "bsdf": bsdf_of(g, out, mat)}
-                if emissive:
-                    entry["emitter"] = {"type": "area",
-                                        "radiance": {"type": "rgb", "value": emit}}
-                scene["mesh%d" % count] = entry
-                count += 1
         light = node.get("extensions", {}).get("KHR_lights_punctual", {}).get("light")
         if light is not None:
             l = lights[light]
@@ -340,6 +333,7 @@ def main():
     blocks, ratio = block_metrics(read_pfm(a.vct_image), image)
     print("%s: NRMSE %.4f, 8x8 block means NRMSE %.4f, mean ratio %.4f (vct / Mitsuba), "
           "Mitsuba's image %s" % (name, nrmse, blocks, ratio, pfm))
+
 
 if __name__ == "__main__":
     main()
