@@ -13,7 +13,7 @@ SIZE=${1:-128}
 REF_SPP=${2:-2048}
 export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
 export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
-python3 scenes/suite/make_suite.py >/dev/null
+tools/python.sh scenes/suite/make_suite.py >/dev/null
 mkdir -p out/suite
 grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
     [ -n "$name" ] || continue
@@ -27,5 +27,5 @@ grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
         --reference-spp "$REF_SPP" --max-spp 1024 --pm --out "$out" $ref $extra >/dev/null ||
         echo "suite: $name failed; the table goes on without it" >&2
 done
-python3 bench/suite_table.py out/suite scenes/suite/suite.txt > out/suite/table.md
+tools/python.sh bench/suite_table.py out/suite scenes/suite/suite.txt > out/suite/table.md
 cat out/suite/table.md

@@ -15,7 +15,7 @@ command -v clang >/dev/null || { echo "fuzz: needs clang (apt-get install clang)
 CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVCT_FUZZ=ON \
     -DVCT_BUILD_TESTS=OFF -DVCT_BUILD_BENCH=OFF >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene_load >/dev/null
-python3 scenes/suite/make_suite.py >/dev/null
+tools/python.sh scenes/suite/make_suite.py >/dev/null
 mkdir -p out/fuzz/corpus out/fuzz/seeds
 # seeds: the format byte (0 glTF, 1 binary glTF, 2 OBJ, NUL, MTL), then the file
 for f in scenes/suite/*.gltf scenes/cornell_box.gltf; do

@@ -22,8 +22,8 @@ static void print_devices(const vct_group *g, FILE *out) {
 int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
                      const char *out) {
     vct_error err = {0};
-    if (opt->aov_prefix) {
-        fprintf(stderr, "vct: --aov comes from one device: give --device one device\n");
+    if (opt->aov) {
+        fprintf(stderr, "vct render: --aov comes from one device: give --device one device\n");
         return 1;
     }
     vct_group *g = vct_group_create(opt->device, &err);
@@ -58,7 +58,7 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
         cli_print_result(opt, &result);
         fprintf(stderr, "devices: %d of %d active, frame in %.1f ms\n", vct_group_active_count(g),
                 n, result.seconds * 1e3);
-        rc = cli_write_image(opt, &image, out, &err);
+        rc = cli_write_image(opt, &image, NULL, out, &err);
     }
     if (rc == VCT_OK && opt->stats) {
         print_devices(g, stdout);

@@ -6,29 +6,8 @@
 #include "cli_common.h"
 #include "cmd_render_vct.h"
 
-/* AOVs are raw linear PFM files. */
-static int write_aovs(const vct_aovs *a, const char *prefix, vct_error *err) {
-    const struct {
-        const char *name;
-        const vct_image *image;
-    } outs[] = {{"direct", &a->direct}, {"indirect", &a->indirect}, {"specular", &a->specular},
-                {"ao", &a->ao},         {"level", &a->level},       {"position", &a->position},
-                {"normal", &a->normal}};
-    for (size_t i = 0; i < sizeof outs / sizeof outs[0]; ++i) {
-        char path[4096];
-        snprintf(path, sizeof path, "%s_%s.pfm", prefix, outs[i].name);
-        int rc = cli_make_parent_dir(path, err);
-        if (rc == VCT_OK)
-            rc = vct_image_write_pfm(outs[i].image, path, err);
-        if (rc)
-            return rc;
-        printf("wrote %s\n", path);
-    }
-    return VCT_OK;
-}
-
 int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt, vct_image *image,
-                   vct_error *err) {
+                   vct_aovs *aovs, vct_error *err) {
     vct_plan plan;
     vct_plan_make(job->scene, opt->force, &plan);
     plan.emitters_by_cones = opt->emitters_by_cones;
@@ -54,16 +33,11 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
                     "the last)\n",
                     opt->bounces, ratio, ratio / (1.0 - ratio));
     }
-    vct_aovs aovs;
     job->voxels = v;
     job->plan = &plan;
-    job->aovs = opt->aov_prefix ? &aovs : NULL;
+    job->aovs = opt->aov ? aovs : NULL;
     if (rc == VCT_OK)
         rc = vct_render(ctx, job, image, NULL, err);
-    if (rc == VCT_OK && opt->aov_prefix) {
-        rc = write_aovs(&aovs, opt->aov_prefix, err);
-        vct_aovs_free(&aovs);
-    }
     job->voxels = NULL;
     job->plan = NULL;
     job->aovs = NULL;

@@ -5,8 +5,9 @@
 #include "options.h"
 
 /* Plans, builds what the plan needs and renders `job` (its scene, grid
- * and size set) by voxel cone tracing with the options' settings. */
+ * and size set) by voxel cone tracing with the options' settings; with
+ * --aov, fills aovs (the caller frees them). */
 int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt, vct_image *image,
-                   vct_error *err);
+                   vct_aovs *aovs, vct_error *err);
 
 #endif

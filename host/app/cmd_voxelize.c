@@ -46,13 +46,8 @@ static void print_bricks(const vct_brick_info *b, uint32_t levels) {
 int cmd_voxelize(const cli_options *opt) {
     vct_error err = {0};
     const char *out = opt->output;
-    if (out) {
-        const char *dot = strrchr(out, '.');
-        if (!dot || (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0)) {
-            fprintf(stderr, "vct: output %s must end in .png or .pfm\n", out);
-            return 1;
-        }
-    }
+    if (out && cli_check_output("vct voxelize", out))
+        return 1;
     vct_scene *s = cli_load_scene(opt, &err);
     if (!s)
         return cli_fail(&err);

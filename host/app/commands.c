@@ -87,15 +87,16 @@ int cmd_info(const cli_options *opt) {
 int cmd_render(const cli_options *opt) {
     vct_error err = {0};
     const char *out = opt->output ? opt->output : "render.png";
-    const char *dot = strrchr(out, '.');
-    if (!dot || (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0)) {
-        fprintf(stderr, "vct: output %s must end in .png or .pfm\n", out);
+    if (cli_check_output("vct render", out))
         return 1;
-    }
     const int method = vct_method_from_name(opt->method);
     if (method < 0 || method == VCT_METHOD_VOXELS) {
         fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt, whitted, pm)\n",
                 opt->method);
+        return 1;
+    }
+    if (opt->aov && method != VCT_METHOD_VCT) {
+        fprintf(stderr, "vct render: --aov is for --method vct\n");
         return 1;
     }
     if (opt->subsample && method != VCT_METHOD_WHITTED && method != VCT_METHOD_RAYCAST) {
@@ -129,8 +130,10 @@ int cmd_render(const cli_options *opt) {
     job.accel = accel;
     vct_render_result result = {0};
     vct_pm_result pm = {0};
+    vct_aovs aovs;
+    memset(&aovs, 0, sizeof aovs);
     int rc = !accel                     ? (int)err.status
-             : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &err)
+             : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &aovs, &err)
              : method == VCT_METHOD_PM  ? vct_render_pm(ctx, s, accel, &job.pm, &image, &pm, &err)
                                         : vct_render(ctx, &job, &image, &result, &err);
     if (rc == VCT_OK && method == VCT_METHOD_PM)
@@ -138,13 +141,14 @@ int cmd_render(const cli_options *opt) {
     if (rc == VCT_OK)
         cli_print_result(opt, &result);
     if (rc == VCT_OK)
-        rc = cli_write_image(opt, &image, out, &err);
+        rc = cli_write_image(opt, &image, opt->aov ? &aovs : NULL, out, &err);
     if (rc == VCT_OK) {
         rc = cli_print_accel(ctx, accel, stderr, &err);
         if (opt->stats)
             cli_print_stats(ctx);
     }
     vct_image_free(&image);
+    vct_aovs_free(&aovs);
     vct_accel_free(accel);
     vct_context_destroy(ctx);
     vct_scene_free(s);
@@ -153,14 +157,10 @@ int cmd_render(const cli_options *opt) {
 
 int cmd_compare(const cli_options *opt) {
     vct_error err = {0};
-    if (opt->input_count != 2) {
-        fprintf(stderr, "vct: compare needs two PFM images: TEST REFERENCE\n");
-        return 2;
-    }
     vct_image test = {0}, ref = {0}, map = {0};
-    int rc = vct_image_read_pfm(opt->inputs[0], &test, &err);
+    int rc = vct_image_read(opt->inputs[0], &test, &err);
     if (rc == VCT_OK)
-        rc = vct_image_read_pfm(opt->inputs[1], &ref, &err);
+        rc = vct_image_read(opt->inputs[1], &ref, &err);
     vct_image_metrics m;
     if (rc == VCT_OK)
         rc = vct_image_compare(&test, &ref, &m, &err);

@@ -2,6 +2,9 @@
 #ifndef VCT_APP_OPTIONS_H
 #define VCT_APP_OPTIONS_H
 
+#include <stdio.h>
+
+#include "option_table.h"
 #include "vct/vct.h"
 
 #define MAX_CLI_LIGHTS 16
@@ -13,8 +16,8 @@ typedef struct cli_pm {
     int has_alpha, has_normal_cos;
 } cli_pm;
 
-typedef struct cli_options {
-    const char *command;
+struct cli_options {
+    const cli_command *command;
     const char *inputs[2];
     int input_count;
     const char *output;
@@ -51,13 +54,24 @@ typedef struct cli_options {
     int copy_voxels;       /* several devices: one builds the voxels, the others copy them */
     int emitters_by_cones; /* --emitters cones */
     vct_cone_settings cones;
-    const char *aov_prefix;
+    int aov;       /* --aov */
+    int exr_float; /* --exr float */
     cli_pm pm;
-} cli_options;
+    /* vct-view */
+    const char *capture, *keys, *display;
+};
 
-/* Parses argv into opt; on error prints the reason and returns non-zero. */
-int cli_parse(int argc, char **argv, cli_options *opt);
-void cli_usage(void);
+/* Parses a command's words (argv[0] is the command's name) into opt, with
+ * the command's groups of options. Returns 0, or 2 after printing the reason
+ * (an option the command does not take, a bad value, a missing operand), or
+ * -1 after printing the command's help for --help. */
+int cli_parse(const cli_command *cmd, const char *program, int argc, char **argv, cli_options *opt);
+/* The command's usage and options (--help). */
+void cli_print_help(FILE *out, const char *program, const cli_command *cmd);
+/* vct's usage: its commands and global options. */
+void cli_print_commands(FILE *out);
+/* Every command's options as Markdown (doc/cli.md is generated from this). */
+void cli_print_reference(FILE *out);
 /* Applies camera and light overrides to a loaded scene. */
 int cli_apply_scene_overrides(const cli_options *opt, vct_scene *scene, vct_error *err);
 

@@ -3,22 +3,33 @@
 #include <string.h>
 
 #include "commands.h"
+#include "vct/version.h"
 
 int main(int argc, char **argv) {
-    cli_options opt;
-    if (cli_parse(argc, argv, &opt))
-        return 2;
-    if (strcmp(opt.command, "devices") == 0)
-        return cmd_devices(&opt);
-    if (strcmp(opt.command, "info") == 0)
-        return cmd_info(&opt);
-    if (strcmp(opt.command, "render") == 0)
-        return cmd_render(&opt);
-    if (strcmp(opt.command, "compare") == 0)
-        return cmd_compare(&opt);
-    if (strcmp(opt.command, "voxelize") == 0)
-        return cmd_voxelize(&opt);
-    fprintf(stderr, "vct: unknown command \"%s\"\n", opt.command);
-    cli_usage();
+    const char *first = argc > 1 ? argv[1] : "";
+    if (argc < 2 || strcmp(first, "-h") == 0 || strcmp(first, "--help") == 0) {
+        cli_print_commands(argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    if (strcmp(first, "--version") == 0) {
+        printf("vct %s (library %s, kernel interface %d)\n", VCT_VERSION_STRING, vct_version(),
+               vct_kernel_abi_version());
+        return 0;
+    }
+    if (strcmp(first, "--reference") == 0) {
+        cli_print_reference(stdout);
+        return 0;
+    }
+    for (const cli_command *const *c = vct_commands; *c; ++c) {
+        if (strcmp((*c)->name, first) != 0)
+            continue;
+        cli_options opt;
+        const int rc = cli_parse(*c, "vct", argc - 1, argv + 1, &opt);
+        return rc < 0 ? 0 : rc ? rc : (*c)->run(&opt);
+    }
+    fprintf(stderr,
+            "vct: unknown command \"%s\" (commands: devices, info, render, voxelize, "
+            "compare; see vct --help)\n",
+            first);
     return 2;
 }

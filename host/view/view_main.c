@@ -24,20 +24,6 @@ typedef struct viewer {
     int screenshots;
 } viewer;
 
-static void usage(void) {
-    fputs(
-        "usage: vct-view SCENE [--capture OUT.png] [--keys K,K,...] [--display auto|interop|host]\n"
-        "                [render options of `vct render`: --method "
-        "vct|raycast|pt|voxels|whitted|pm,\n"
-        "                --size, --effect, --voxel-res, --cones, ...]\n"
-        "  --capture OUT.png   render one frame, read the window back into OUT.png, exit\n"
-        "  --keys LIST         keys pressed before the first frame (1, F1, [, left, r, ...),\n"
-        "                      and size=WxH to resize the window\n"
-        "  --display MODE      how the frame reaches GL: CL-GL interop where the device\n"
-        "                      shares with GL (auto, the default), interop only, or host\n",
-        stderr);
-}
-
 static void help(void) {
     puts(
         "keys: mouse drag look | W A S D move, Q E down/up, scroll speed\n"
@@ -261,42 +247,13 @@ typedef struct view_args {
     display_mode mode;
 } view_args;
 
-/* Pulls the viewer's own options out of argv, leaving `vct render`'s. */
-static int take_view_options(int *argc, char **argv, view_args *va) {
-    int out = 1;
-    for (int i = 1; i < *argc; ++i) {
-        const char *a = argv[i];
-        const int valued =
-            strcmp(a, "--capture") == 0 || strcmp(a, "--display") == 0 || strcmp(a, "--keys") == 0;
-        if (valued && i + 1 >= *argc) {
-            fprintf(stderr, "vct-view: %s needs a value\n", a);
-            return 1;
-        }
-        if (strcmp(a, "--capture") == 0) {
-            va->capture = argv[++i];
-        } else if (strcmp(a, "--keys") == 0) {
-            va->keys = argv[++i];
-        } else if (strcmp(a, "--display") == 0) {
-            const char *m = argv[++i];
-            if (strcmp(m, "auto") == 0)
-                va->mode = DISPLAY_AUTO;
-            else if (strcmp(m, "interop") == 0)
-                va->mode = DISPLAY_INTEROP;
-            else if (strcmp(m, "host") == 0)
-                va->mode = DISPLAY_HOST;
-            else {
-                fprintf(stderr, "vct-view: --display %s: use auto, interop or host\n", m);
-                return 1;
-            }
-        } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
-            usage();
-            exit(0);
-        } else {
-            argv[out++] = argv[i];
-        }
-    }
-    *argc = out;
-    return 0;
+/* --display's mode (the parser has checked the name). */
+static display_mode display_mode_of(const char *name) {
+    if (name && strcmp(name, "interop") == 0)
+        return DISPLAY_INTEROP;
+    if (name && strcmp(name, "host") == 0)
+        return DISPLAY_HOST;
+    return DISPLAY_AUTO;
 }
 
 static int run(viewer *v, const view_args *va);
@@ -390,29 +347,12 @@ static int run(viewer *v, const view_args *va) {
 }
 
 int main(int argc, char **argv) {
-    view_args va = {NULL, NULL, DISPLAY_AUTO};
-    if (argc < 2 || take_view_options(&argc, argv, &va)) {
-        usage();
-        return 2;
-    }
-    /* The rest reads like `vct view SCENE ...` to the shared parser. */
-    char **args = malloc(sizeof *args * (size_t)(argc + 1));
-    if (!args)
-        return 1;
-    args[0] = argv[0];
-    args[1] = "view";
-    for (int i = 1; i < argc; ++i)
-        args[i + 1] = argv[i];
-    static viewer v;
     cli_options opt;
-    const int parsed = cli_parse(argc + 1, args, &opt);
-    free(args);
-    if (parsed || opt.input_count != 1) {
-        if (!parsed)
-            fprintf(stderr, "vct-view: give one scene file\n");
-        usage();
-        return 2;
-    }
+    const int parsed = cli_parse(&vct_view_command, "vct-view", argc, argv, &opt);
+    if (parsed)
+        return parsed < 0 ? 0 : parsed;
+    const view_args va = {opt.capture, opt.keys, display_mode_of(opt.display)};
+    static viewer v;
     vct_error err = {0};
     if (view_app_init(&v.app, &opt, &err) != VCT_OK) {
         fprintf(stderr, "vct-view: %s\n", err.message);

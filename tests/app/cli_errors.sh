@@ -45,7 +45,7 @@ expect_failure "index out of range" "index.obj: line 4: a face uses vertex 9, bu
 expect_failure "empty scene" "empty.obj: no triangles" render empty.obj -o out.png
 expect_failure "missing texture" "names texture \"missing.png\", which does not exist" render texture.obj -o out.png
 expect_failure "unreadable glTF" "garbage.gltf" render garbage.gltf -o out.png
-expect_failure "bad output name" "must end in .png or .pfm" render ok.obj -o out.jpg
+expect_failure "bad output name" "must end in .exr, .pfm or .png" render ok.obj -o out.jpg
 expect_failure "bad size" "--size" render ok.obj --size 0 10 -o out.png
 expect_failure "bad number" "not a finite number" render ok.obj --point-light 1 2 x 1 1 1 -o out.png
 expect_failure "bad cone levels" "--cone-levels takes blend or nearest" render ok.obj --cone-levels bilinear -o out.png

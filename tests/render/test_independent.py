@@ -11,7 +11,7 @@ unit, a one-sided emitter or a texture upside down gives (a 5 % brighter point
 light: means 1.03-1.05 off; one-sided emitters: 0.81-0.85; textures flipped
 in v: 0.070 in the textured room).
 
-usage: test_independent.py VCT_CLI SOURCE_DIR OUT_DIR (exit 77: no Mitsuba)"""
+usage: test_independent.py VCT_CLI SOURCE_DIR OUT_DIR"""
 import os
 import subprocess
 import sys
@@ -34,8 +34,9 @@ def main():
     try:
         import mitsuba  # noqa: F401
     except ImportError:
-        print("test_independent: Mitsuba 3 is not installed (pip install mitsuba): skipped")
-        return 77
+        print(f"test_independent: Mitsuba 3 is not installed for {sys.executable}: "
+              "run tools/deps.sh")
+        return 1
     import mitsuba_check as mc
     os.makedirs(out, exist_ok=True)
     if not all(os.path.exists(os.path.join(source, rel)) for _, rel, _ in SCENES):

@@ -46,7 +46,7 @@ const char *vct_tone_curve_name(vct_tone_curve curve);
 /* PNG tone mapped as `tone` says; *applied (may be NULL) gets the stops. */
 int vct_image_write_png_tone(const vct_image *image, const char *path, const vct_tone *tone,
                              float *applied, vct_error *err);
-/* .png through `tone`, .pfm raw. */
+/* .png through `tone`; .pfm raw; .exr raw, half floats. */
 int vct_image_write_tone(const vct_image *image, const char *path, const vct_tone *tone,
                          vct_error *err);
 
@@ -56,6 +56,25 @@ int vct_image_write_pfm(const vct_image *image, const char *path, vct_error *err
 int vct_image_write_png(const vct_image *image, const char *path, float exposure, vct_error *err);
 int vct_image_write(const vct_image *image, const char *path, float exposure, vct_error *err);
 int vct_image_read_pfm(const char *path, vct_image *image, vct_error *err);
+
+/* OpenEXR: linear half or 32-bit float channels. */
+typedef enum vct_exr_pixel { VCT_EXR_HALF = 0, VCT_EXR_FLOAT = 1 } vct_exr_pixel;
+/* One layer of an EXR file: the image's first components as channels named
+ * by `channels`, one letter each ("RGB", "RGBA", "XYZ", "Y"). An empty or
+ * NULL name gives the image itself (R, G, B); a name gives "name.R", ... */
+typedef struct vct_exr_layer {
+    const char *name;
+    const vct_image *image;
+    const char *channels; /* NULL: "RGB" */
+} vct_exr_layer;
+/* Layers of one size into one file, written to a temporary name and
+ * renamed, so a failure leaves nothing. */
+int vct_image_write_exr(const vct_exr_layer *layers, int count, vct_exr_pixel pixel,
+                        const char *path, vct_error *err);
+/* The R, G and B channels of a scanline EXR file (alpha set to 1). */
+int vct_image_read_exr(const char *path, vct_image *image, vct_error *err);
+/* .pfm or .exr, by the name's ending. */
+int vct_image_read(const char *path, vct_image *image, vct_error *err);
 
 typedef struct vct_image_metrics {
     double mse, rmse;
