@@ -5,7 +5,8 @@
 # and with sparse diffuse, photon mapping progressive, fixed and with final
 # gathering, each against a 2048-spp reference of another seed,
 # or what suite.txt gives the scene),
-# and gathers one table: out/suite/table.md. References stay under out/suite.
+# and gathers one table: out/suite/table.md, and the page doc/results/suite.md
+# with the README's summary of it. References stay under out/suite.
 # usage: bench/suite.sh [SIZE] [REFERENCE_SPP]   (default 128 2048)
 set -eu
 cd "$(dirname "$0")/.."
@@ -28,4 +29,31 @@ grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
         echo "suite: $name failed; the table goes on without it" >&2
 done
 tools/python.sh bench/suite_table.py out/suite scenes/suite/suite.txt > out/suite/table.md
+tools/python.sh bench/suite_table.py out/suite scenes/suite/suite.txt --summary > out/suite/summary.md
+mkdir -p doc/results
+stamp=$(bench/stamp.sh bench/suite.sh "$@")
+{
+    echo "# The scene suite: error and time"
+    echo
+    echo "$stamp"
+    echo
+    echo "Each scene of \`scenes/suite/suite.txt\` at ${SIZE}x${SIZE}, against a path-traced reference of"
+    echo "$REF_SPP samples per pixel (another seed). NRMSE is the RMSE over all pixels and channels over"
+    echo "the reference's mean; device ms is the sum of the stages' device time: the acceleration"
+    echo "structure, the voxels and their light, and the image. The last column is the time the path"
+    echo "tracer needs for the same error, read between its sample counts."
+    echo
+    echo "## Every method at its default, over the suite"
+    echo
+    cat out/suite/summary.md
+    echo
+    echo "## Every scene"
+    echo
+    cat out/suite/table.md
+} > doc/results/suite.md
+{
+    echo "$stamp"
+    echo
+    cat out/suite/summary.md
+} | tools/python.sh bench/update_block.py README.md suite-summary
 cat out/suite/table.md

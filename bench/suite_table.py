@@ -3,7 +3,9 @@
 table: scene x method x setting -> NRMSE, mean ratio, device time (and its
 stages: the acceleration structure, the voxels and their light, the image), the
 path tracer's time to reach each cone-traced or photon-mapped image's
-error."""
+error. With --summary, one row per method over the whole suite.
+
+usage: suite_table.py OUT_DIR MANIFEST [--summary]"""
 import csv
 import math
 import os
@@ -28,10 +30,43 @@ def pt_time_for(rows, error):
     return None
 
 
+VCT_DEFAULT = "vct 128^3, 9 cones, step 1, offset 4, iso, 4 bounces"
+SUMMARY = [("ray cast (direct light only)", lambda s: s == "ray cast (direct only)"),
+           ("cone tracing, default", lambda s: s == VCT_DEFAULT),
+           ("path tracing, 16 spp", lambda s: s == "path trace 16 spp"),
+           ("path tracing, 256 spp", lambda s: s == "path trace 256 spp"),
+           ("photon mapping, 64 passes",
+            lambda s: s == "photon mapping, progressive, 64 passes")]
+
+
+def summary(root, names):
+    """One row per method at its default over the whole suite: the mean and
+    worst NRMSE and the median device time."""
+    print("| method | mean NRMSE | worst NRMSE (scene) | median device ms |")
+    print("|---|---:|---:|---:|")
+    for label, match in SUMMARY:
+        found = []
+        for name in names:
+            path = os.path.join(root, name, "accuracy.csv")
+            if os.path.exists(path):
+                found += [(float(r["nrmse"]), float(r["total_ms"]), name)
+                          for r in csv.DictReader(open(path)) if match(r["setting"])]
+        if not found:
+            continue
+        errors = [f[0] for f in found]
+        times = sorted(f[1] for f in found)
+        worst = max(found)
+        print(f"| {label} | {sum(errors) / len(errors):.3f} | {worst[0]:.3f} ({worst[2]}) | "
+              f"{times[len(times) // 2]:.0f} |")
+
+
 def main():
     root, manifest = sys.argv[1], sys.argv[2]
     names = [line.split()[0] for line in open(manifest)
              if line.strip() and not line.startswith("#")]
+    if len(sys.argv) > 3 and sys.argv[3] == "--summary":
+        summary(root, names)
+        return
     print("| scene | method and setting | NRMSE | mean / reference | device ms | "
           "accel / build / render ms | path tracer to this error |")
     print("|---|---|---:|---:|---:|---:|---:|")

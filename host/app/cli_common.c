@@ -52,6 +52,10 @@ void cli_print_stats(const vct_context *ctx) {
     for (int i = 0; i < n; ++i)
         printf("%-20s %10.2f %10.2f %10.2f %9d\n", st[i].name, st[i].device_ms, st[i].host_ms,
                st[i].mib, st[i].launches);
+    vct_program_stats programs;
+    vct_context_program_stats(ctx, &programs);
+    printf("kernel programs: %d compiled, %d from the cache, in %.2f s\n", programs.compiled,
+           programs.cached, programs.ms / 1000.0);
     const vct_kernel_stat *k;
     n = vct_kernel_stats(ctx, &k);
     printf("%-31s %10s %9s\n", "kernel or transfer", "device ms", "launches");
@@ -59,8 +63,16 @@ void cli_print_stats(const vct_context *ctx) {
         printf("%-31s %10.2f %9d\n", k[i].name, k[i].device_ms, k[i].launches);
 }
 
+void cli_log(void *user, const char *message) {
+    (void)user;
+    fprintf(stderr, "vct: %s\n", message);
+    fflush(stderr);
+}
+
 vct_context *cli_open_context(const cli_options *opt, vct_error *err) {
     vct_context *ctx = vct_context_create(opt->device, err);
+    if (ctx)
+        vct_context_set_log(ctx, cli_log, NULL);
     if (ctx)
         fprintf(stderr, "device: %s (%s)\n", vct_context_device(ctx)->name,
                 vct_context_device(ctx)->platform);

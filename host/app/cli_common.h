@@ -11,6 +11,8 @@ int cli_fail_input(vct_error *err, const char *fmt, ...) __attribute__((format(p
 vct_scene *cli_load_scene(const cli_options *opt, vct_error *err);
 void cli_print_scene(const vct_scene *s, FILE *out);
 void cli_print_stats(const vct_context *ctx);
+/* The library's messages (kernel compilation), on stderr. */
+void cli_log(void *user, const char *message);
 /* The context for --device (or the default), its name printed on stderr. */
 vct_context *cli_open_context(const cli_options *opt, vct_error *err);
 int cli_make_parent_dir(const char *path, vct_error *err);

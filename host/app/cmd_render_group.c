@@ -29,6 +29,7 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
     vct_group *g = vct_group_create(opt->device, &err);
     if (!g)
         return cli_fail(&err);
+    vct_group_set_log(g, cli_log, NULL);
     const vct_group_device *d;
     const int n = vct_group_devices(g, &d);
     for (int i = 0; i < n; ++i)

@@ -75,7 +75,7 @@ int cmd_info(const cli_options *opt) {
         printf("%u texture%s, texture coordinates %s\n", s->texture_count,
                s->texture_count == 1 ? "" : "s", s->uvs ? "present" : "absent (all 0)");
     /* What rays would traverse: built on the device, as a render builds it. */
-    vct_context *ctx = vct_context_create(opt->device, &err);
+    vct_context *ctx = cli_open_context(opt, &err);
     vct_accel *accel = ctx ? cli_accel_build(ctx, s, opt, &err) : NULL;
     int rc = accel ? cli_print_accel(ctx, accel, stdout, &err) : (int)err.status;
     vct_accel_free(accel);

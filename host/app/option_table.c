@@ -17,14 +17,20 @@ static const cli_option output_rows[] = {
      "on beside it"},
     {"exr", 0, OPT_EXR, 1, "half|float",
      "EXR only: 16-bit half floats (default) or 32-bit floats, as PFM holds them"},
-    {"exposure", 0, OPT_EXPOSURE, 1, "STOPS",
-     "PNG only: scale by 2^STOPS (default: the image's log-average luminance to middle grey)"},
-    {"tone", 0, OPT_TONE, 1, "filmic|clip",
-     "PNG only: the tone curve after the exposure (default filmic, an ACES fit; clip: 1 and "
-     "above is white)"},
     {"stats", 0, OPT_STATS, 0, NULL, "per-stage device time, host time and memory"},
 };
 GROUP(cli_group_output, "output", output_rows);
+
+static const cli_option tone_rows[] = {
+    {"exposure", 0, OPT_EXPOSURE, 1, "STOPS",
+     "PNG and the viewer: scale by 2^STOPS (default: the image's log-average luminance to middle "
+     "grey)"},
+    {"tone", 0, OPT_TONE, 1, "filmic|clip",
+     "PNG and the viewer: the tone curve after the exposure (default filmic, an ACES fit; clip: 1 "
+     "and "
+     "above is white)"},
+};
+GROUP(cli_group_tone, "tone mapping (PNG files and the viewer)", tone_rows);
 
 static const cli_option device_rows[] = {
     {"device", 0, OPT_DEVICE, 1, "DEVICE",

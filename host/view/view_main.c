@@ -267,6 +267,8 @@ static int run_group(viewer *v, const view_args *va, const cli_options *opt) {
         return 1;
     }
     vct_group *group = vct_group_create(opt->device, &err);
+    if (group)
+        vct_group_set_log(group, cli_log, NULL);
     int status = 1;
     if (group && view_app_attach_group(&v->app, group, &err) == VCT_OK) {
         const vct_group_device *d;
@@ -374,6 +376,8 @@ int main(int argc, char **argv) {
         return status;
     }
     vct_context *ctx = display_context(&v.display, va.mode, opt.device, &err);
+    if (ctx)
+        vct_context_set_log(ctx, cli_log, NULL);
     if (ctx && view_app_attach(&v.app, ctx, &err) == VCT_OK) {
         printf("device: %s (%s)\n%s\n", vct_context_device(ctx)->name,
                vct_context_device(ctx)->platform, v.display.path);

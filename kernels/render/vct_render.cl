@@ -19,9 +19,12 @@
  *                      the camera ray enters, one mirror cone
  *   vct_caustics       light through dielectrics onto surfaces, from photons
  * Effects are chosen with -D: VCT_DIRECT, VCT_SHADOWS, VCT_SOFT_SHADOWS,
- * VCT_EMISSION, VCT_REFRACTION, VCT_SPECULAR, VCT_INDIRECT, VCT_AO (and the
- * pool's VCT_BRICK_IMAGE, VCT_ANISOTROPIC); VCT_EMITTERS adds the emissive
- * triangles to the direct light, sampled with shadow rays (light/emitters.h).
+ * VCT_EMISSION, VCT_REFRACTION, VCT_SPECULAR, VCT_INDIRECT, VCT_AO,
+ * VCT_CAUSTICS (and the pool's VCT_BRICK_IMAGE, VCT_ANISOTROPIC); a pass's
+ * kernel is compiled only with its effect (VCT_SPARSE_DIFFUSE picks the
+ * sparse diffuse kernels, VCT_CONE_PROBE adds cone_probe). VCT_EMITTERS adds
+ * the emissive triangles to the direct light, sampled with shadow rays
+ * (light/emitters.h).
  *
  * G-buffer, GBUF_SLOTS float4 per pixel: position and material id (as bits);
  * normal facing the viewer and 1 where a surface was found; direction
@@ -263,6 +266,7 @@ inline void pixel_add(__global float4 *image, __global float4 *aov, uint pixel, 
  * radius) and reaching to it, sees opacity alpha; the light is shaded as a
  * point times the fraction 1 - alpha / stop that gets through (0 once the
  * cone counts as opaque). */
+#if defined(VCT_SOFT_SHADOWS)
 __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                                __global const vct_light_desc *lights, uint light_count,
                                __global const float4 *gbuf,
@@ -295,6 +299,7 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
     }
     pixel_add(image, aov, pixel, 0u, g.throughput * direct_shade(&g.m, sum, e));
 }
+#endif
 
 /* What a pixel's diffuse cones gathered: the cosine-weighted radiance
  * (which only indirect light uses), the open fraction within the AO
@@ -357,6 +362,7 @@ inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pix
         aov[AOV_SLOTS * pixel + 3u] = (float4)(l.open, l.level, 0.0f, 1.0f);
 }
 
+#if (defined(VCT_INDIRECT) || defined(VCT_AO)) && !defined(VCT_SPARSE_DIFFUSE)
 __kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *child,
                                 vct_cone_desc cd, __global const vct_cone_dir *cones,
                                 uint cone_count, __global const float4 *gbuf,
@@ -370,6 +376,7 @@ __kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *chi
     const diffuse_light l = diffuse_trace(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
     diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }
+#endif
 
 /* Diffuse light traced sparsely: vct_diffuse_sparse traces the cones of
  * every other pixel per axis, pixel (2i, 2j) into cell (i, j) of `sparse`
@@ -387,6 +394,7 @@ __kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *chi
 #define SPARSE_PLANE_VOXELS 0.25f
 #define SPARSE_MIN_REACH 2.0f
 
+#if (defined(VCT_INDIRECT) || defined(VCT_AO)) && defined(VCT_SPARSE_DIFFUSE)
 __kernel void vct_diffuse_sparse(ACCEL_ARGS, CONE_POOLS, __global const uint *child,
                                  vct_cone_desc cd, __global const vct_cone_dir *cones,
                                  uint cone_count, __global const float4 *gbuf,
@@ -407,6 +415,7 @@ __kernel void vct_diffuse_sparse(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
     sparse[2u * cell] = (float4)(l.radiance, l.open);
     sparse[2u * cell + 1u] = (float4)(l.level, 0.0f, 0.0f, 0.0f);
 }
+#endif
 
 inline int sparse_agrees(const vct_cone_desc *cd, const gbuffer_surface *g,
                          const gbuffer_surface *cell) {
@@ -417,6 +426,7 @@ inline int sparse_agrees(const vct_cone_desc *cd, const gbuffer_surface *g,
            fabs(dot(g->n, off)) <= SPARSE_PLANE_VOXELS * voxel && dot(off, off) <= reach * reach;
 }
 
+#if (defined(VCT_INDIRECT) || defined(VCT_AO)) && defined(VCT_SPARSE_DIFFUSE)
 __kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                                __global const vct_cone_dir *cones, uint cone_count,
                                __global const float4 *gbuf,
@@ -454,6 +464,7 @@ __kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *chil
     }
     diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }
+#endif
 
 /* Half-angle of a Phong lobe cos^e: the cone that holds half its energy. */
 inline float specular_tan_half(float e) {
@@ -461,6 +472,7 @@ inline float specular_tan_half(float e) {
     return sqrt(fmax(1.0f - c * c, 0.0f)) / c;
 }
 
+#if defined(VCT_SPECULAR)
 __kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                                 __global const float4 *gbuf,
                                 __global const vct_material_desc *materials, uint2 size,
@@ -484,6 +496,7 @@ __kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone
         weight *= (e + 2.0f) / (e + 1.0f) * fmax(dot(n, r), 0.0f);
     pixel_add(image, aov, pixel, 2u, weight * c.radiance);
 }
+#endif
 
 /* Caustics: light that reached a surface through dielectrics, which shadow
  * rays stop at and voxels let through unlit. Photons traced from the lights
@@ -504,6 +517,7 @@ __kernel void vct_specular_cone(CONE_POOLS, __global const uint *child, vct_cone
 #define CAUSTIC_MIN_PHOTONS 16u
 #define CAUSTIC_WIDENINGS 2
 
+#if defined(VCT_CAUSTICS)
 __kernel void vct_caustic_radius(PHOTON_GRID_ARGS(c), float radius, __global const float4 *gbuf,
                                  __global const vct_material_desc *materials, uint2 size,
                                  __global float *radii) {
@@ -530,7 +544,9 @@ __kernel void vct_caustic_radius(PHOTON_GRID_ARGS(c), float radius, __global con
     }
     radii[pixel] = chosen;
 }
+#endif
 
+#if defined(VCT_CAUSTICS)
 __kernel void vct_caustics(PHOTON_GRID_ARGS(c), __global const float *radii, float inv_emitted,
                            __global const float4 *gbuf, __global const vct_material_desc *materials,
                            uint2 size, __global float4 *image, __global float4 *aov) {
@@ -548,9 +564,11 @@ __kernel void vct_caustics(PHOTON_GRID_ARGS(c), __global const float *radii, flo
     if (found > 0u)
         pixel_add(image, aov, pixel, 0u, g.throughput * sum * (inv_emitted / (CAUSTIC_PI * r * r)));
 }
+#endif
 
 /* The Fresnel reflection vct_primary recorded, through a mirror cone.
  * gbuf and materials are unused: the signature is every cone pass's. */
+#if defined(VCT_REFRACTION) && defined(VCT_SPECULAR)
 __kernel void vct_glass_reflection(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                                    __global const float4 *reflection, uint per_pixel,
                                    __global const float4 *gbuf,
@@ -570,10 +588,12 @@ __kernel void vct_glass_reflection(CONE_POOLS, __global const uint *child, vct_c
     const cone_result c = cone_trace(CONE_POOLS_PASS, child, &cd, origin, rdir.xyz, 0.0f, INFINITY);
     pixel_add(image, aov, pixel, 2u, weight * c.radiance);
 }
+#endif
 
 /* Cones given one by one (for tests and tools): 2 float4 in, origin and
  * tan(half-angle), direction and reach; 2 float4 out, radiance and opacity,
  * then AO opacity, level sum, samples and 1 if it left the volume. */
+#if defined(VCT_CONE_PROBE)
 __kernel void cone_probe(CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                          __global const float4 *cones, uint n, __global float4 *out) {
     const uint i = get_global_id(0);
@@ -584,3 +604,4 @@ __kernel void cone_probe(CONE_POOLS, __global const uint *child, vct_cone_desc c
     out[2u * i] = (float4)(r.radiance, r.alpha);
     out[2u * i + 1u] = (float4)(r.ao_alpha, r.level_sum, (float)r.samples, (float)r.left);
 }
+#endif

@@ -76,7 +76,8 @@ VARIANTS = {
     "render/vct_render.cl": [(), ("-DVCT_DIRECT", "-DVCT_SHADOWS", "-DVCT_INDIRECT",
                                   "-DVCT_SPECULAR", "-DVCT_AO", "-DVCT_EMISSION",
                                   "-DVCT_SOFT_SHADOWS", "-DVCT_REFRACTION", "-DVCT_ANISOTROPIC",
-                                  "-DVCT_CONE_NEAREST_LEVEL")],
+                                  "-DVCT_CONE_NEAREST_LEVEL", "-DVCT_CAUSTICS"),
+                             ("-DVCT_AO", "-DVCT_SPARSE_DIFFUSE", "-DVCT_CONE_PROBE")],
     "voxel/bricks.cl": [(), ("-DVCT_ANISOTROPIC",)],
     "parallel/radix_sort.cl": [(), ("-D", "KEY_T=ulong", "-D", "RADIX_BITS=4", "-D", "WG=64")],
     "parallel/scan.cl": [(), ("-D", "WG=1", "-D", "ITEM_SPAN=1024")],
@@ -193,7 +194,7 @@ check(np.array_equal(read(normal, np.float32, 4 * nv), load("voxel_normal.f32", 
       "voxel normals equal the library's, bit for bit")
 
 # ---- a cone trace through the library's bricks and octree, on our buffers.
-render = build("render/vct_render.cl")
+render = build("render/vct_render.cl", ("-DVCT_CONE_PROBE",))
 cones = load("cones.f32", np.float32)
 n_cones = cones.size // 8
 result = empty(32 * n_cones)

@@ -47,12 +47,12 @@ typedef struct vct_accel_options {
 
 typedef struct vct_accel_info {
     vct_accel_kind kind;
-    double build_ms;    /* host wall time of the build, device work included */
-    double bytes;       /* device memory it holds */
-    uint32_t nodes;     /* BVH: wide nodes; grid: cells */
-    uint32_t leaves;    /* BVH: leaves; grid: occupied (cell, triangle) references */
-    uint32_t depth;     /* BVH: levels */
-    uint32_t passes;    /* BVH: clustering passes (0 for the linear hierarchy) */
+    double build_ms; /* host wall time of the build, device work included */
+    double bytes;    /* device memory it holds */
+    uint32_t nodes;  /* BVH: wide nodes; grid: cells */
+    uint32_t leaves; /* BVH: leaves; grid: occupied (cell, triangle) references */
+    uint32_t depth;  /* BVH: levels */
+    uint32_t passes; /* BVH: clustering passes (0 for the linear hierarchy) */
     vct_bvh_builder bvh_builder;
     double sah_cost;    /* BVH: surface-area cost relative to the root, 1 per node and triangle */
     vct_grid_info grid; /* grid only */

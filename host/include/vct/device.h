@@ -46,6 +46,22 @@ vct_context *vct_context_create(const char *selector, vct_error *err);
 void vct_context_destroy(vct_context *ctx);
 const vct_device_info *vct_context_device(const vct_context *ctx);
 
+/* Messages about work a call does beyond what it was asked, as it does it:
+ * today, compiling a kernel program that is not in the on-disk cache (the
+ * first use of a kernel variant on a device takes seconds; later uses load
+ * it). The library prints nothing itself; without a callback messages are
+ * dropped. Called on the thread that uses the context. */
+typedef void (*vct_log_fn)(void *user, const char *message);
+void vct_context_set_log(vct_context *ctx, vct_log_fn log, void *user);
+
+/* Kernel programs this context compiled from source and loaded from the
+ * on-disk cache, and the wall time both took. */
+typedef struct vct_program_stats {
+    int compiled, cached;
+    double ms;
+} vct_program_stats;
+void vct_context_program_stats(const vct_context *ctx, vct_program_stats *stats);
+
 /* ---- statistics ----------------------------------------------------------- */
 
 typedef struct vct_stage_stat {

@@ -67,7 +67,7 @@ typedef struct vct_group_device {
     char dropped[2048]; /* why it was dropped */
     double build_ms;    /* its structures: build time and device memory */
     double build_mib;
-    double voxels_ms;   /* of which its voxels: built, or copied from another device */
+    double voxels_ms; /* of which its voxels: built, or copied from another device */
     int voxels_copied;
     double share;     /* row methods: its share of the next render's rows */
     double speed;     /* rows (or samples) per second it last measured, 0 unknown */
@@ -75,6 +75,9 @@ typedef struct vct_group_device {
     double last_work; /* and rows or samples */
 } vct_group_device;
 
+/* vct_context_set_log on every device's context: the callback may then be
+ * called from the devices' threads at once. */
+void vct_group_set_log(vct_group *group, vct_log_fn log, void *user);
 /* The devices, in the order the list named them. */
 int vct_group_devices(const vct_group *group, const vct_group_device **devices);
 /* Devices not dropped. */

@@ -59,6 +59,12 @@ vct_context *vct_group_context(vct_group *g, int i) {
     return i >= 0 && i < g->count ? g->ctx[i] : NULL;
 }
 
+void vct_group_set_log(vct_group *g, vct_log_fn log, void *user) {
+    for (int i = 0; i < g->count; ++i)
+        if (g->ctx[i])
+            vct_context_set_log(g->ctx[i], log, user);
+}
+
 int vct_group_devices(const vct_group *g, const vct_group_device **devices) {
     *devices = g->devices;
     return g->count;

@@ -169,14 +169,15 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
     return VCT_OK;
 }
 
-/* -D options: the planned effects (caustics are a kernel of their own,
- * which needs none), then the cones' (pool kind, levels). */
-static void program_options(const vct_plan *plan, int emitters, const vct_voxels *v,
+/* -D options: the planned effects, which also choose the kernels the
+ * program holds (a kernel no pass runs is not compiled), then the cones'
+ * (pool kind, levels). */
+static void program_options(const vct_plan *plan, int emitters, int sparse, const vct_voxels *v,
                             const vct_cone_settings *cones, char *out, size_t size) {
     static const char *defines[VCT_EFFECTS] = {
         "-DVCT_DIRECT",   "-DVCT_SHADOWS",      "-DVCT_INDIRECT",
         "-DVCT_SPECULAR", "-DVCT_REFRACTION",   "-DVCT_EMISSION",
-        "-DVCT_AO",       "-DVCT_SOFT_SHADOWS", NULL};
+        "-DVCT_AO",       "-DVCT_SOFT_SHADOWS", "-DVCT_CAUSTICS"};
     size_t len = 0;
     out[0] = '\0';
     for (int e = 0; e < VCT_EFFECTS; ++e)
@@ -184,6 +185,8 @@ static void program_options(const vct_plan *plan, int emitters, const vct_voxels
             len += (size_t)snprintf(out + len, size - len, "%s%s", len ? " " : "", defines[e]);
     if (emitters && plan->on[VCT_EFFECT_DIRECT] && len < size)
         len += (size_t)snprintf(out + len, size - len, " -DVCT_EMITTERS");
+    if (sparse && len < size)
+        len += (size_t)snprintf(out + len, size - len, " -DVCT_SPARSE_DIFFUSE");
     if (v && len < size)
         vct_cone_options(v, cones, out + len, size - len);
 }
@@ -395,8 +398,8 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, con
     if (f.v)
         vct_cone_desc_make(f.v, &opt->cones, s->ambient, &f.desc);
     char own[256], options[320];
-    program_options(plan, vct_scene_emissive_triangles(s) > 0 && !plan->emitters_by_cones, f.v,
-                    &opt->cones, own, sizeof own);
+    program_options(plan, vct_scene_emissive_triangles(s) > 0 && !plan->emitters_by_cones,
+                    opt->sparse_diffuse, f.v, &opt->cones, own, sizeof own);
     vct_accel_options_join(g, own, options, sizeof options);
     const size_t pixels = (size_t)opt->width * opt->height;
 

@@ -73,6 +73,8 @@ struct vct_context {
     /* Program cache statistics, for reporting cold/warm starts. */
     int cache_hits, cache_misses;
     double build_ms;
+    vct_log_fn log;
+    void *log_user;
 };
 
 /* Opens a context on the device `selector` picks (as vct_context_create),

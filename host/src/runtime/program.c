@@ -195,6 +195,13 @@ int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_
     if (p) {
         ctx->cache_hits++;
     } else {
+        if (ctx->log) {
+            char message[512];
+            snprintf(message, sizeof message,
+                     "compiling kernels/%s for %s (once; then cached in %s)", file, ctx->info.name,
+                     vct_cache_dir());
+            ctx->log(ctx->log_user, message);
+        }
         rc = build_from_source(ctx, file, source, full_options, &p, err);
         if (rc == VCT_OK) {
             ctx->cache_misses++;
@@ -221,4 +228,15 @@ cl_kernel vct_kernel_create(vct_context *ctx, cl_program program, const char *na
     }
     (void)ctx;
     return k;
+}
+
+void vct_context_set_log(vct_context *ctx, vct_log_fn log, void *user) {
+    ctx->log = log;
+    ctx->log_user = user;
+}
+
+void vct_context_program_stats(const vct_context *ctx, vct_program_stats *stats) {
+    stats->compiled = ctx->cache_misses;
+    stats->cached = ctx->cache_hits;
+    stats->ms = ctx->build_ms;
 }

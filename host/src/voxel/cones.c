@@ -165,8 +165,8 @@ int vct_cone_trace(vct_context *ctx, const vct_voxels *v, const vct_cone_setting
     if (rc || n == 0)
         return rc;
     cl_program p;
-    char options[128];
-    vct_cone_options(v, s, options, sizeof options);
+    char options[128] = "-DVCT_CONE_PROBE";
+    vct_cone_options(v, s, options + strlen(options), sizeof options - strlen(options));
     rc = vct_program_get(ctx, "render/vct_render.cl", options, &p, err);
     cl_mem in = rc == VCT_OK ? vct_buffer_create(ctx, stage, "cones", 32ull * n, CL_MEM_READ_ONLY,
                                                  (void *)cones, err)
