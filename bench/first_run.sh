@@ -1,7 +1,8 @@
 #!/bin/sh
 # The first hour's figures: the quick start's render on a cold kernel cache
 # (vct's and PoCL's emptied) and on a warm one, and the whole test suite's
-# time, written to doc/results/first_run.md and the README's quick start.
+# time, written to doc/results/first_run.md and the README's quick start, and
+# the README's picture (the quick start's image).
 # Run after ./tools/quickstart.sh has built vct.
 # usage: bench/first_run.sh [--no-tests]
 set -eu
@@ -17,6 +18,7 @@ render() { # cache dirs -> wall seconds of the quick start's render
 }
 cold_s=$(render "$cold")
 warm_s=$(render "$cold")
+cp out/cornell_box.png doc/cornell_box.png # the README's picture
 programs=$(grep "kernel programs" "$cold.log" | sed 's/kernel programs: //')
 tests_s=""
 if [ "${1:-}" != "--no-tests" ]; then
