@@ -17,12 +17,15 @@ import subprocess
 import sys
 
 STAGES = ["runtime", "parallel", "scene", "accel", "light", "voxel", "photon", "render", "image",
-          "multi"]
+          "denoise", "multi"]
 # image/ (files and metrics of host images) is used by the renderers but
-# uses only the runtime: it sits beside the pipeline, not above render.
+# uses only the runtime, and denoise/ (a filter over images and their
+# guides) only the runtime and images: they sit beside the pipeline, not
+# above render.
 BELOW = {s: set(STAGES[: i + 1]) for i, s in enumerate(STAGES)}
 BELOW["image"] = {"runtime", "image"}
-BELOW["render"] |= {"image"}
+BELOW["denoise"] = {"runtime", "image", "denoise"}
+BELOW["render"] |= {"image", "denoise"}
 
 
 def objects(src, build):

@@ -231,71 +231,12 @@ void cli_print_result(const cli_options *opt, const vct_render_result *r) {
                 r->spp, r->seconds, r->seconds > 0 ? r->spp / r->seconds : 0.0, r->discarded);
 }
 
-/* The AOVs as layers: colours as R, G, B; points and directions as X, Y, Z;
- * scalars (in the first component) as Y. */
-static int aov_layers(const vct_aovs *a, vct_exr_layer *layers) {
-    const vct_exr_layer all[] = {
-        {"direct", &a->direct, "RGB"},     {"indirect", &a->indirect, "RGB"},
-        {"specular", &a->specular, "RGB"}, {"ao", &a->ao, "Y"},
-        {"level", &a->level, "Y"},         {"position", &a->position, "XYZ"},
-        {"normal", &a->normal, "XYZ"}};
-    memcpy(layers, all, sizeof all);
-    return (int)(sizeof all / sizeof all[0]);
-}
-
-/* AOVs beside a .png or .pfm image: STEM_direct.pfm, ... */
-static int write_aov_files(const vct_aovs *aovs, const char *out, vct_error *err) {
-    vct_exr_layer layers[8];
-    const int n = aov_layers(aovs, layers);
-    const char *dot = strrchr(out, '.');
-    const int stem = dot ? (int)(dot - out) : (int)strlen(out);
-    for (int i = 0; i < n; ++i) {
-        char path[4096];
-        snprintf(path, sizeof path, "%.*s_%s.pfm", stem, out, layers[i].name);
-        int rc = vct_image_write_pfm(layers[i].image, path, err);
-        if (rc)
-            return rc;
-        printf("wrote %s (%s, linear)\n", path, layers[i].name);
-    }
-    return VCT_OK;
-}
-
 int cli_check_output(const char *who, const char *out) {
     const char *dot = strrchr(out, '.');
     if (dot && (strcmp(dot, ".png") == 0 || strcmp(dot, ".pfm") == 0 || strcmp(dot, ".exr") == 0))
         return 0;
     fprintf(stderr, "%s: output %s must end in .exr, .pfm or .png\n", who, out);
     return 1;
-}
-
-int cli_write_image(const cli_options *opt, const vct_image *image, const vct_aovs *aovs,
-                    const char *out, vct_error *err) {
-    int rc = cli_make_parent_dir(out, err);
-    const char *dot = strrchr(out, '.');
-    const int png = dot && strcmp(dot, ".png") == 0, exr = dot && strcmp(dot, ".exr") == 0;
-    float stops = 0.0f;
-    if (rc == VCT_OK && exr) {
-        vct_exr_layer layers[9] = {{NULL, image, "RGB"}};
-        const int n = aovs ? 1 + aov_layers(aovs, layers + 1) : 1;
-        rc =
-            vct_image_write_exr(layers, n, opt->exr_float ? VCT_EXR_FLOAT : VCT_EXR_HALF, out, err);
-    } else if (rc == VCT_OK) {
-        rc = png ? vct_image_write_png_tone(image, out, &opt->tone, &stops, err)
-                 : vct_image_write_pfm(image, out, err);
-    }
-    if (rc == VCT_OK && png)
-        printf("wrote %s (%dx%d, exposure %+.2f stops%s, %s curve, sRGB)\n", out, image->width,
-               image->height, stops, opt->tone.auto_exposure ? " from the image" : "",
-               vct_tone_curve_name(opt->tone.curve));
-    else if (rc == VCT_OK)
-        printf("wrote %s (%dx%d, linear radiance%s%s)\n", out, image->width, image->height,
-               !exr             ? ""
-               : opt->exr_float ? ", 32-bit floats"
-                                : ", half floats",
-               exr && aovs ? ", with the AOVs as layers" : "");
-    if (rc == VCT_OK && aovs && !exr)
-        rc = write_aov_files(aovs, out, err);
-    return rc;
 }
 
 int cli_device_list(const cli_options *opt) {

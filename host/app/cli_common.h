@@ -31,11 +31,7 @@ vct_render_job cli_render_job(const cli_options *opt, vct_method method, const v
 void cli_print_result(const cli_options *opt, const vct_render_result *result);
 /* 0 when `out` ends in .exr, .pfm or .png; else 1 after a message. */
 int cli_check_output(const char *who, const char *out);
-/* The image as EXR or PFM (linear) or PNG (tone mapped), by the name's
- * ending, and a line; with aovs, their layers in the EXR file, or PFM files
- * beside the others. */
-int cli_write_image(const cli_options *opt, const vct_image *image, const vct_aovs *aovs,
-                    const char *out, vct_error *err);
+
 /* 1 when --device (or $VCT_DEVICE) names several devices: "0,2", all, gpu, cpu. */
 int cli_device_list(const cli_options *opt);
 

@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "cli_common.h"
+#include "cli_layers.h"
 #include "cmd_render_group.h"
 
 static void print_devices(const vct_group *g, FILE *out) {
@@ -22,8 +23,9 @@ static void print_devices(const vct_group *g, FILE *out) {
 int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
                      const char *out) {
     vct_error err = {0};
-    if (opt->aov) {
-        fprintf(stderr, "vct render: --aov comes from one device: give --device one device\n");
+    if (opt->aov || opt->denoise) {
+        fprintf(stderr, "vct render: --aov and --denoise take one device: give --device one "
+                        "device\n");
         return 1;
     }
     vct_group *g = vct_group_create(opt->device, &err);

@@ -14,8 +14,7 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
     if (opt->print_plan)
         cli_print_plan(&plan, stdout);
     vct_voxel_options voxel;
-    /* 128^3 by default: within 1 % of the best error measured on the Cornell
-     * box (64^3) and on the heavy scene (256^3) (README, accuracy). */
+    /* 128^3 by default (the scene suite's page shows what it costs). */
     cli_voxel_options(opt, 128, &voxel);
     const vct_brick_options bricks = {opt->bricks, opt->anisotropic == 1, 0};
     vct_voxels *v = NULL;

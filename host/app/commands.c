@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include "cli_common.h"
+#include "cli_denoise.h"
 #include "cmd_render_group.h"
 #include "cmd_render_vct.h"
 #include "commands.h"
@@ -95,8 +96,9 @@ int cmd_render(const cli_options *opt) {
                 opt->method);
         return 1;
     }
-    if (opt->aov && method != VCT_METHOD_VCT) {
-        fprintf(stderr, "vct render: --aov is for --method vct\n");
+    if (opt->denoise && method != VCT_METHOD_PATHTRACE && method != VCT_METHOD_PM &&
+        method != VCT_METHOD_VCT) {
+        fprintf(stderr, "vct render: --denoise is for --method pt, pm and vct\n");
         return 1;
     }
     if (opt->subsample && method != VCT_METHOD_WHITTED && method != VCT_METHOD_RAYCAST) {
@@ -132,6 +134,9 @@ int cmd_render(const cli_options *opt) {
     vct_pm_result pm = {0};
     vct_aovs aovs;
     memset(&aovs, 0, sizeof aovs);
+    vct_image variance = {0};
+    if (opt->denoise && method == VCT_METHOD_PATHTRACE)
+        job.pathtrace.variance = &variance;
     int rc = !accel                     ? (int)err.status
              : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &aovs, &err)
              : method == VCT_METHOD_PM  ? vct_render_pm(ctx, s, accel, &job.pm, &image, &pm, &err)
@@ -140,14 +145,22 @@ int cmd_render(const cli_options *opt) {
         cli_print_pm(&pm, stderr);
     if (rc == VCT_OK)
         cli_print_result(opt, &result);
+    cli_layers layers = {0};
+    if (rc == VCT_OK && opt->aov && method == VCT_METHOD_VCT)
+        cli_layers_add_aovs(&layers, &aovs);
     if (rc == VCT_OK)
-        rc = cli_write_image(opt, &image, opt->aov ? &aovs : NULL, out, &err);
+        rc = cli_denoise_outputs(ctx, s, accel, opt, (vct_method)method, &image,
+                                 variance.rgba ? &variance : NULL, &layers, &err);
+    if (rc == VCT_OK)
+        rc = cli_write_image(opt, &image, &layers, out, &err);
     if (rc == VCT_OK) {
         rc = cli_print_accel(ctx, accel, stderr, &err);
         if (opt->stats)
             cli_print_stats(ctx);
     }
     vct_image_free(&image);
+    vct_image_free(&variance);
+    cli_layers_free(&layers);
     vct_aovs_free(&aovs);
     vct_accel_free(accel);
     vct_context_destroy(ctx);

@@ -12,9 +12,13 @@ static const cli_option output_rows[] = {
      "the image: .exr (linear, half floats, OpenEXR), .pfm (linear, 32-bit floats) or .png "
      "(exposure, tone curve and sRGB); render defaults to render.png"},
     {"aov", 0, OPT_AOV, 0, NULL,
-     "cone tracing: also write the arbitrary output values (direct, indirect, specular, ao, "
-     "level, position, normal): layers of the same file for .exr, else FILE_direct.pfm and so "
-     "on beside it"},
+     "also write arbitrary output values: cone tracing's direct, indirect, specular, ao, level, "
+     "position and normal; the other methods' albedo, normal, depth (and pt's variance with "
+     "--denoise): layers of the same file for .exr, else FILE_albedo.pfm and so on beside it"},
+    {"denoise", 0, OPT_DENOISE, 0, NULL,
+     "pt, pm and vct: filter the image with the engine's denoiser, guided by the first hit's "
+     "albedo, normal and depth and (pt) each pixel's variance; with --aov the noisy image and "
+     "the guides are layers too"},
     {"exr", 0, OPT_EXR, 1, "half|float",
      "EXR only: 16-bit half floats (default) or 32-bit floats, as PFM holds them"},
     {"stats", 0, OPT_STATS, 0, NULL, "per-stage device time, host time and memory"},

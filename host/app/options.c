@@ -306,6 +306,9 @@ static int apply(const parse_state *ps, cli_option_id id, char **w, int nw, cli_
     case OPT_AOV:
         opt->aov = 1;
         return 0;
+    case OPT_DENOISE:
+        opt->denoise = 1;
+        return 0;
     case OPT_EXR:
         return choose(ps, w[0], "half|float", &opt->exr_float);
     case OPT_DEVICE:

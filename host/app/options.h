@@ -56,6 +56,7 @@ struct cli_options {
     vct_cone_settings cones;
     int aov;       /* --aov */
     int exr_float; /* --exr float */
+    int denoise;   /* --denoise */
     cli_pm pm;
     /* vct-view */
     const char *capture, *keys, *display;

@@ -1,9 +1,11 @@
 /* Unbiased path tracing on the shared acceleration structure: next-event estimation to every
  * punctual light and to emissive triangles (chosen by area, combined with BSDF
  * sampling by the power heuristic), Russian roulette after RR_DEPTH bounces.
- * Each launch adds `samples` samples per pixel to `accum`: per pixel the
- * exact sums (render/exact_sum.h) of red, green and blue, then the count of
- * samples kept (x); a sample that is not finite is dropped and counted. The
+ * Each launch adds `samples` samples per pixel to `accum`: per pixel
+ * PT_SUMS exact sums (render/exact_sum.h): red, green and blue, the count of
+ * samples kept (x), and the squares of the samples' luminance (for the
+ * variance the denoiser weighs by); a sample that is not finite is dropped
+ * and counted. The
  * sums are exact, so the image does not depend on how samples were split
  * into launches, calls or devices.
  *
@@ -18,6 +20,11 @@
 #include "vct_types.h"
 
 #define RR_DEPTH 3
+#define PT_SUMS 5u
+
+inline float pt_luminance(float3 c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
 __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                         __global const vct_material_desc *materials,
@@ -34,8 +41,8 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
     const texture_view tv = TEXTURE_VIEW();
     const emitters em = {{emitter_tris, emitter_cdf, 0, emitter_count, 1u}, emitter_inv_area};
     const uint pixel = y * cam.size.x + x;
-    exact_sum sum_r = accum[4u * pixel], sum_g = accum[4u * pixel + 1u],
-              sum_b = accum[4u * pixel + 2u];
+    __global exact_sum *sums = accum + PT_SUMS * pixel;
+    exact_sum sum_r = sums[0], sum_g = sums[1], sum_b = sums[2], sum_l2 = sums[4];
     uint dropped = 0;
     for (uint s = 0; s < samples; ++s) {
         uint rng = rng_start(seed, camera_pixel_id(&cam, x, y), sample_begin + s);
@@ -97,16 +104,24 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
             sum_r = exact_add(sum_r, exact_from_float(radiance.x));
             sum_g = exact_add(sum_g, exact_from_float(radiance.y));
             sum_b = exact_add(sum_b, exact_from_float(radiance.z));
+            const float l = pt_luminance(radiance);
+            sum_l2 = exact_add(sum_l2, exact_from_float(l * l));
         } else {
             ++dropped;
         }
     }
-    accum[4u * pixel] = sum_r;
-    accum[4u * pixel + 1u] = sum_g;
-    accum[4u * pixel + 2u] = sum_b;
-    accum[4u * pixel + 3u].x += (ulong)(samples - dropped);
+    sums[0] = sum_r;
+    sums[1] = sum_g;
+    sums[2] = sum_b;
+    sums[3].x += (ulong)(samples - dropped);
+    sums[4] = sum_l2;
     if (dropped)
         atomic_add(discarded, dropped);
+}
+
+/* A pixel's summed red, green and blue. */
+inline float3 pt_sum_rgb(__global const exact_sum *sums) {
+    return (float3)(exact_to_float(sums[0]), exact_to_float(sums[1]), exact_to_float(sums[2]));
 }
 
 /* The frame: each pixel's mean sample (black where every sample was dropped). */
@@ -115,8 +130,21 @@ __kernel void pathtrace_resolve(__global const exact_sum *accum, uint pixels,
     const uint i = get_global_id(0);
     if (i >= pixels)
         return;
-    const float n = (float)accum[4u * i + 3u].x;
-    const float3 sum = (float3)(exact_to_float(accum[4u * i]), exact_to_float(accum[4u * i + 1u]),
-                                exact_to_float(accum[4u * i + 2u]));
-    frame[i] = n > 0.0f ? (float4)(sum / n, 1.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+    __global const exact_sum *sums = accum + PT_SUMS * i;
+    const float n = (float)sums[3].x;
+    frame[i] = n > 0.0f ? (float4)(pt_sum_rgb(sums) / n, 1.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
+}
+
+/* The variance of each pixel's mean luminance, (E[l^2] - E[l]^2) / n, in
+ * the first component (0 below two samples). */
+__kernel void pathtrace_variance(__global const exact_sum *accum, uint pixels,
+                                 __global float4 *variance) {
+    const uint i = get_global_id(0);
+    if (i >= pixels)
+        return;
+    __global const exact_sum *sums = accum + PT_SUMS * i;
+    const float n = (float)sums[3].x;
+    const float mean = pt_luminance(pt_sum_rgb(sums)) / n;
+    const float v = n > 1.0f ? fmax(exact_to_float(sums[4]) / n - mean * mean, 0.0f) / n : 0.0f;
+    variance[i] = (float4)(v, 0.0f, 0.0f, 1.0f);
 }

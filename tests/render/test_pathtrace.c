@@ -29,7 +29,7 @@ static vct_image trace(vct_context *ctx, const vct_scene *s, int w, int h, uint3
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0};
+    vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0, NULL};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, res, &err), err);
     vct_accel_free(g);
@@ -258,7 +258,7 @@ static void resume_continues(vct_context *ctx) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_pathtrace_options whole = {24, 16, 4, 0.0, 8, 5, 1, 0, 0};
+    vct_pathtrace_options whole = {24, 16, 4, 0.0, 8, 5, 1, 0, 0, NULL};
     vct_pathtrace_result r;
     vct_image once, step = {0}, fresh;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &whole, &once, &r, &err), err);

@@ -41,6 +41,9 @@ typedef struct vct_pathtrace_options {
      * scene, camera and size), continuing its sample sequence: n calls of k
      * samples give the image of one call of n * k. 0: start over. */
     int resume;
+    /* Non-NULL: also filled with the variance of each pixel's mean luminance
+     * (in r; the denoiser's guide), from the same sums as the image. */
+    vct_image *variance;
 } vct_pathtrace_options;
 
 typedef struct vct_pathtrace_result {
@@ -48,6 +51,14 @@ typedef struct vct_pathtrace_result {
     uint32_t discarded; /* samples dropped because they were not finite */
     double seconds;
 } vct_pathtrace_result;
+
+/* The denoiser's guides (vct/denoise.h) at width x height: the first hit's
+ * albedo (textured; 1 where rays leave the scene) and, in normal_depth, its
+ * normal facing the viewer (xyz, not normalised) and distance (w, 0 where
+ * no ray hit), each the mean of rays_per_axis^2 rays across the pixel. */
+int vct_render_guides(vct_context *ctx, const vct_scene *scene, const vct_accel *accel, int width,
+                      int height, uint32_t rays_per_axis, vct_image *albedo,
+                      vct_image *normal_depth, vct_error *err);
 
 /* Unbiased path tracing: next-event estimation with MIS, Lambert, glossy,
  * mirror and dielectric materials, Russian roulette. result may be NULL. */
@@ -134,9 +145,8 @@ typedef struct vct_aovs {
 } vct_aovs;
 void vct_aovs_free(vct_aovs *aovs);
 
-/* Light bounces in the voxels by default (direct light counts as the first):
- * with the rest of the series after them, 4 lowered the scene suite's mean
- * error from 0.107 to 0.097 against 3, for one more bounce's time (README). */
+/* Light bounces in the voxels by default (direct light counts as the first),
+ * after which the rest of the series is added at the scene's bounce ratio. */
 #define VCT_DEFAULT_BOUNCES 4u
 
 /* Builds what the plan's cones read: voxels, octree and bricks, then light
@@ -261,7 +271,7 @@ int vct_render_pm(vct_context *ctx, const vct_scene *scene, const vct_accel *acc
                   const vct_pm_options *options, vct_image *image, vct_pm_result *result,
                   vct_error *err);
 
-/* The ray caster's options are the historical vct_render_options. */
+/* The ray caster's options (vct_render_raycast's). */
 typedef vct_render_options vct_raycast_options;
 
 typedef struct vct_voxel_view_options {

@@ -15,6 +15,7 @@
  *   vct/voxels.h    voxels, octree, bricks, light injection, cones
  *   vct/render.h    renderers, the effect plan, the frame, OpenGL display
  *   vct/image.h     images, files, error metrics
+ *   vct/denoise.h   the denoiser
  *   vct/multi.h     one frame on several devices */
 #ifndef VCT_VCT_H
 #define VCT_VCT_H
@@ -29,6 +30,7 @@
 #include "vct/voxels.h"
 #include "vct/render.h"
 #include "vct/image.h"
+#include "vct/denoise.h"
 #include "vct/multi.h"
 
 #endif

@@ -57,6 +57,14 @@ static const exr_source *find_source(const exr_source *src, int n, const char *n
     return NULL;
 }
 
+/* Our side of a channel: one float of each rgba pixel, rows of `width`. */
+static void rgba_float_layout(exr_coding_channel_info_t *ch, int width) {
+    ch->user_data_type = EXR_PIXEL_FLOAT;
+    ch->user_bytes_per_element = 4;
+    ch->user_pixel_stride = 16;
+    ch->user_line_stride = 16 * width;
+}
+
 /* Encodes every chunk of scanlines. */
 static exr_result_t write_chunks(exr_context_t ctx, const exr_source *src, int n, int width,
                                  int height) {
@@ -72,10 +80,7 @@ static exr_result_t write_chunks(exr_context_t ctx, const exr_source *src, int n
         for (int c = 0; rc == EXR_ERR_SUCCESS && c < encode.channel_count; ++c) {
             exr_coding_channel_info_t *ch = &encode.channels[c];
             const exr_source *s = find_source(src, n, ch->channel_name);
-            ch->user_data_type = EXR_PIXEL_FLOAT;
-            ch->user_bytes_per_element = 4;
-            ch->user_pixel_stride = 16;
-            ch->user_line_stride = 16 * width;
+            rgba_float_layout(ch, width);
             ch->encode_from_ptr = (const uint8_t *)(s->values + 4 * (size_t)chunk.start_y * width);
         }
         if (rc == EXR_ERR_SUCCESS)
@@ -141,10 +146,7 @@ static exr_result_t read_chunks(exr_context_t ctx, float *rgba, int width, int h
                 strlen(ch->channel_name) == 1 ? strchr(names, ch->channel_name[0]) : NULL;
             if (!at || !*at)
                 continue; /* left NULL: not decoded */
-            ch->user_data_type = EXR_PIXEL_FLOAT;
-            ch->user_bytes_per_element = 4;
-            ch->user_pixel_stride = 16;
-            ch->user_line_stride = 16 * width;
+            rgba_float_layout(ch, width);
             ch->decode_to_ptr =
                 (uint8_t *)(rgba + 4 * (size_t)(chunk.start_y - y0) * width + (at - names));
         }

@@ -114,6 +114,31 @@ int vct_pt_run(vct_pt_session *pt, uint32_t first, uint32_t count, int wait, vct
     return rc;
 }
 
+/* Each pixel's luminance variance from `sums`, into a host image. */
+static int pathtrace_variance(vct_context *ctx, cl_program program, cl_mem sums,
+                              const vct_pathtrace_options *opt, vct_image *variance,
+                              vct_error *err) {
+    const size_t pixels = (size_t)opt->width * opt->height;
+    const cl_uint pixel_count = (cl_uint)pixels;
+    memset(variance, 0, sizeof *variance);
+    variance->rgba = malloc(16 * pixels);
+    if (!variance->rgba)
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory for the variance", STAGE);
+    variance->width = opt->width;
+    variance->height = opt->height;
+    cl_mem out =
+        vct_buffer_create(ctx, STAGE, "variance", 16 * pixels, CL_MEM_WRITE_ONLY, NULL, err);
+    int rc = out ? vct_run_kernel(ctx, program, "pathtrace_variance", STAGE, pixels, err, 3,
+                                  VCT_ARG_OF(sums), VCT_ARG_OF(pixel_count), VCT_ARG_OF(out))
+                 : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, STAGE, out, 0, 16 * pixels, variance->rgba, err);
+    vct_buffer_release(ctx, out);
+    if (rc != VCT_OK)
+        vct_image_free(variance);
+    return rc;
+}
+
 int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
                vct_pathtrace_result *result, vct_error *err) {
     vct_context *ctx = pt->ctx;
@@ -129,6 +154,8 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
     if (rc == VCT_OK && image)
         rc = vct_run_kernel(ctx, pt->program, "pathtrace_resolve", STAGE, pixels, err, 3,
                             VCT_ARG_OF(sums), VCT_ARG_OF(pixel_count), VCT_ARG_OF(frame));
+    if (rc == VCT_OK && opt->variance)
+        rc = pathtrace_variance(ctx, pt->program, sums, opt, opt->variance, err);
     cl_uint dropped = 0;
     if (rc == VCT_OK && result)
         rc = vct_buffer_read(ctx, STAGE, ctx->pt_discarded, 0, 4, &dropped, err);

@@ -8,9 +8,9 @@
 #include "light/emitters.h"
 #include "scene/scene_device.h"
 
-/* Per pixel: exact sums of red, green, blue and the count of samples kept
- * (kernels/render/exact_sum.h), 16 bytes each. */
-#define VCT_PT_ACCUM_BYTES 64
+/* Per pixel: exact sums of red, green, blue, the count of samples kept and
+ * the squares of their luminance (kernels/render/exact_sum.h), 16 bytes each. */
+#define VCT_PT_ACCUM_BYTES 80
 
 typedef struct vct_pt_session {
     vct_context *ctx;

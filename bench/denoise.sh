@@ -1,0 +1,57 @@
+#!/bin/sh
+# The engine's denoiser against Intel Open Image Denoise on the scene suite:
+# the path tracer at 4 and 16 spp, denoised by each, against the suite's
+# references (bench/suite.sh renders them first). Writes
+# doc/results/denoise.md. OIDN comes from PyPI's pyoidn, installed here; where
+# it cannot be had, its columns say so.
+# usage: bench/denoise.sh [SIZE]   (the suite's size, default 128)
+set -eu
+cd "$(dirname "$0")/.."
+SIZE=${1:-128}
+export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
+export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
+PY=$(tools/python.sh --path)
+"$PY" -c "import pyoidn" 2>/dev/null ||
+    "$PY" -m pip install -q --disable-pip-version-check --break-system-packages pyoidn ||
+    echo "denoise: pyoidn cannot be installed: OIDN's columns stay empty" >&2
+mkdir -p out/denoise doc/results
+rows=out/denoise/rows.md
+: >"$rows"
+stage_ms() { # stats file, stage -> device ms
+    awk -v s="$2" '$0 ~ "^"s" " { print $(NF - 3); exit }' "$1"
+}
+grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
+    [ -n "$name" ] || continue
+    ref=out/suite/$name/reference.pfm
+    [ -f "$ref" ] || { echo "denoise: $name has no reference ($ref): run bench/suite.sh" >&2; continue; }
+    ambient=$(echo "$extra" | grep -o -- '--ambient [0-9. ]*' || true)
+    for spp in 4 16; do
+        out=out/denoise/${name}_$spp
+        # shellcheck disable=SC2086
+        ./build/vct render "scenes/suite/$file" --method pt --spp "$spp" --seed 1 \
+            --size "$SIZE" "$SIZE" --denoise --aov --exr float --stats $ambient \
+            -o "$out.exr" >"$out.stats" 2>&1
+        set -- $("$PY" bench/denoise_compare.py "$out.exr" "$ref")
+        echo "| $name | $spp | $1 | $2 | $(stage_ms "$out.stats" denoise) | $3 | $4 | $(stage_ms "$out.stats" guides) | $(stage_ms "$out.stats" "path trace") |" >>"$rows"
+        echo "$name $spp spp: noisy $1, ours $2, OIDN $3" >&2
+    done
+done
+stamp=$(bench/stamp.sh bench/denoise.sh "$@")
+{
+    echo "# Denoising the path tracer: the engine's filter and Intel Open Image Denoise"
+    echo
+    echo "$stamp"
+    echo
+    echo "Each suite scene at ${SIZE}x${SIZE}, path traced at 4 and 16 spp (seed 1), then denoised"
+    echo "by the engine's filter (\`--denoise\`: albedo demodulation, five à-trous passes guided by"
+    echo "normals, depth and the path tracer's per-pixel variance) and by OIDN's RT filter (HDR,"
+    echo "the same albedo and normal guides, as clean auxiliaries). NRMSE against the suite's"
+    echo "reference; times in ms: our filter's device time, OIDN's filter call on the same"
+    echo "CPU (the second call), the guides' device time (both filters use them) and the path"
+    echo "tracer's."
+    echo
+    echo "| scene | spp | noisy NRMSE | ours | ours ms | OIDN | OIDN ms | guides ms | path trace ms |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+    cat "$rows"
+} >doc/results/denoise.md
+cat doc/results/denoise.md

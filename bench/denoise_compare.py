@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""One row of bench/denoise.sh: a path-traced EXR written by `vct render
+--method pt --denoise --aov` (the denoised image, its `noisy` layer and the
+guides), the same noisy image through Intel Open Image Denoise (PyPI's
+pyoidn: the RT filter, HDR, with the albedo and normal guides as clean
+auxiliaries), and each against a reference PFM. Prints: noisy NRMSE, ours,
+OIDN's and OIDN's filter time in ms (the second of two calls: the first
+builds the filter), or "-" for OIDN where pyoidn cannot be had.
+
+usage: denoise_compare.py RENDER.exr REFERENCE.pfm"""
+import sys
+import time
+
+import numpy as np
+import OpenEXR
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        kind = f.readline().strip()
+        w, h = map(int, f.readline().split())
+        f.readline()
+        n = 3 if kind == b"PF" else 1
+        return np.frombuffer(f.read(), dtype="<f4").reshape(h, w, n)[::-1].astype(np.float64)
+
+
+def layer(channels, name, letters):
+    prefix = f"{name}." if name else ""
+    return np.stack([channels[prefix + c].pixels.astype(np.float32) for c in letters], axis=-1)
+
+
+def nrmse(image, ref):
+    return float(np.sqrt(np.mean((image - ref) ** 2)) / np.mean(ref))
+
+
+def main():
+    exr, reference = sys.argv[1:3]
+    ch = OpenEXR.File(exr, separate_channels=True).channels()
+    ref = read_pfm(reference)
+    ours, noisy = layer(ch, "", "RGB"), layer(ch, "noisy", "RGB")
+    albedo, normal = layer(ch, "albedo", "RGB"), layer(ch, "normal", "XYZ")
+    lengths = np.linalg.norm(normal, axis=-1, keepdims=True)
+    normal = np.where(lengths > 0, normal / np.maximum(lengths, 1e-12), 0.0).astype(np.float32)
+    oidn, oidn_ms = "-", "-"
+    try:
+        import pyoidn
+        args = dict(hdr=True, clean_aux=True)
+        pyoidn.denoise(noisy, albedo, normal, **args)
+        start = time.perf_counter()
+        out = pyoidn.denoise(noisy, albedo, normal, **args)
+        oidn_ms = f"{(time.perf_counter() - start) * 1e3:.1f}"
+        oidn = f"{nrmse(np.asarray(out, dtype=np.float64), ref):.4f}"
+    except ImportError:
+        pass
+    print(f"{nrmse(noisy, ref):.4f} {nrmse(ours, ref):.4f} {oidn} {oidn_ms}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,47 @@
+/* vct: the denoiser, an edge-avoiding à-trous wavelet filter guided by the
+ * first hit's albedo, normal and depth and by each pixel's variance (SVGF's
+ * spatial filter, on one frame). The image is divided by the albedo before
+ * filtering and multiplied by it after, so texture detail is not blurred;
+ * edges stop the filter where normals, depths or luminance (against the
+ * local standard deviation) differ. Deterministic: the same input gives the
+ * same output, bit for bit, on a device. */
+#ifndef VCT_API_DENOISE_H
+#define VCT_API_DENOISE_H
+
+#include <stdint.h>
+
+#include "vct/device.h"
+#include "vct/image.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct vct_denoise_options {
+    uint32_t iterations;   /* passes, taps 1, 2, 4, ... pixels apart (1 to 10) */
+    float sigma_luminance; /* luminance differences allowed, in standard deviations */
+    float sigma_normal;    /* the exponent on the normals' cosine */
+    float sigma_depth;     /* depth differences allowed, in the local slope */
+} vct_denoise_options;
+
+/* 5 passes, 4 standard deviations, cosine^128, one slope. */
+vct_denoise_options vct_denoise_options_default(void);
+
+/* What guides the filter: vct_render_guides' images, and the variance of
+ * each pixel's mean luminance in r (vct_pathtrace_options.variance); NULL
+ * variance: estimated from the image's luminance over 5x5 pixels. */
+typedef struct vct_denoise_guides {
+    const vct_image *albedo;
+    const vct_image *normal_depth;
+    const vct_image *variance;
+} vct_denoise_guides;
+
+/* Filters `color` into `out` (allocated here; free with vct_image_free).
+ * Every guide must have the image's size. */
+int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *guides,
+                const vct_denoise_options *options, vct_image *out, vct_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,124 @@
+/* An edge-avoiding à-trous wavelet filter with variance guidance (after
+ * Schied et al. 2017, "Spatiotemporal Variance-Guided Filtering", on one
+ * frame): the image is divided by the first hit's albedo, filtered in
+ * DENOISE_ITERATIONS passes of a 5x5 B3-spline kernel whose taps spread
+ * 2^i pixels apart, each tap weighted by how alike its normal, depth and
+ * luminance are to the centre's, the luminance judged against the centre's
+ * standard deviation, and multiplied by the albedo again. Every pass reads
+ * one buffer and writes another, in a fixed order: the result does not
+ * depend on scheduling.
+ *
+ * Buffers, one element per pixel, rows top to bottom:
+ *   color          float4 linear radiance
+ *   albedo         float4 (rgb; w unused), render_guides' albedo
+ *   normal_depth   float4 (normal, not normalised; distance, 0: no surface)
+ *   variance       float, the variance of each pixel's mean luminance
+ *   signal         float4 (demodulated rgb, its luminance variance)
+ *   guide, slope   float4 (unit normal, distance), float2 depth change per
+ *                  pixel along x and y: normal_depth prepared once */
+#include "denoise/denoise.h"
+
+/* Albedo below this is not divided by: the channel is filtered as it is. */
+#define DENOISE_MIN_ALBEDO 0.01f
+
+inline float3 safe_albedo(float3 a) {
+    return (float3)(a.x > DENOISE_MIN_ALBEDO ? a.x : 1.0f, a.y > DENOISE_MIN_ALBEDO ? a.y : 1.0f,
+                    a.z > DENOISE_MIN_ALBEDO ? a.z : 1.0f);
+}
+
+/* Without the estimator's variance: the luminance variance over the 5x5
+ * pixels around (an over-estimate at edges, which filters them less). */
+__kernel void denoise_estimate_variance(__global const float4 *color, uint2 size,
+                                        __global float *variance) {
+    const int x = (int)get_global_id(0), y = (int)get_global_id(1);
+    if (x >= (int)size.x || y >= (int)size.y)
+        return;
+    float sum = 0.0f, sum2 = 0.0f, count = 0.0f;
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int qx = x + dx, qy = y + dy;
+            if (qx < 0 || qy < 0 || qx >= (int)size.x || qy >= (int)size.y)
+                continue;
+            const float l = denoise_luminance(color[qy * (int)size.x + qx].xyz);
+            sum += l;
+            sum2 += l * l;
+            count += 1.0f;
+        }
+    const float mean = sum / count;
+    variance[y * (int)size.x + x] = fmax(sum2 / count - mean * mean, 0.0f);
+}
+
+/* Each pixel's guide and depth slope, once for all passes. */
+__kernel void denoise_guides(__global const float4 *normal_depth, uint2 size,
+                             __global float4 *guide, __global float2 *slope) {
+    const int x = (int)get_global_id(0), y = (int)get_global_id(1);
+    if (x >= (int)size.x || y >= (int)size.y)
+        return;
+    const int p = y * (int)size.x + x;
+    const float4 v = normal_depth[p];
+    const float len = length(v.xyz);
+    guide[p] = (float4)(len > 0.0f ? v.xyz / len : (float3)(0.0f), v.w);
+    slope[p] = (float2)(denoise_slope(v.w, denoise_depth_at(normal_depth, size, x - 1, y),
+                                      denoise_depth_at(normal_depth, size, x + 1, y)),
+                        denoise_slope(v.w, denoise_depth_at(normal_depth, size, x, y - 1),
+                                      denoise_depth_at(normal_depth, size, x, y + 1)));
+}
+
+/* The signal the passes filter: radiance over albedo, and its variance. */
+__kernel void denoise_demodulate(__global const float4 *color, __global const float4 *albedo,
+                                 __global const float *variance, uint pixels,
+                                 __global float4 *signal) {
+    const uint i = get_global_id(0);
+    if (i >= pixels)
+        return;
+    const float3 a = safe_albedo(albedo[i].xyz);
+    const float la = denoise_luminance(a);
+    signal[i] = (float4)(color[i].xyz / a, variance[i] / (la * la));
+}
+
+/* One pass with taps `step` pixels apart. */
+__kernel void denoise_atrous(__global const float4 *in, __global const float4 *guide,
+                             __global const float2 *slope, uint2 size, int step, float4 sigma,
+                             __global float4 *out) {
+    const int x = (int)get_global_id(0), y = (int)get_global_id(1);
+    if (x >= (int)size.x || y >= (int)size.y)
+        return;
+    const int w = (int)size.x, h = (int)size.y;
+    const int p = y * w + x;
+    const float4 centre = in[p];
+    const float4 gp = guide[p];
+    const float2 sp = slope[p];
+    const float var_c = denoise_variance_blurred(in, size, x, y);
+    const float lp = denoise_luminance(centre.xyz);
+    const float kernel_weights[3] = {0.375f, 0.25f, 0.0625f};
+    float3 sum = (float3)(0.0f);
+    float weights = 0.0f, variance = 0.0f;
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int qx = x + dx * step, qy = y + dy * step;
+            if (qx < 0 || qy < 0 || qx >= w || qy >= h)
+                continue;
+            const float4 q = in[qy * w + qx];
+            const float k = kernel_weights[abs(dx)] * kernel_weights[abs(dy)];
+            /* the centre always counts: its normal may be 0 where its rays' cancel */
+            const float wq =
+                dx == 0 && dy == 0
+                    ? k
+                    : k * denoise_edge_weight(gp, sp, guide[qy * w + qx], dx * step, dy * step, lp,
+                                              denoise_luminance(q.xyz), var_c, q.w, sigma);
+            sum += wq * q.xyz;
+            weights += wq;
+            variance += wq * wq * q.w;
+        }
+    /* The centre's own weight, k(0, 0) > 0, keeps weights above 0. */
+    out[p] = (float4)(sum / weights, variance / (weights * weights));
+}
+
+/* The filtered signal times the albedo again. */
+__kernel void denoise_remodulate(__global const float4 *signal, __global const float4 *albedo,
+                                 uint pixels, __global float4 *color) {
+    const uint i = get_global_id(0);
+    if (i >= pixels)
+        return;
+    color[i] = (float4)(signal[i].xyz * safe_albedo(albedo[i].xyz), 1.0f);
+}

@@ -1,0 +1,63 @@
+/* The denoiser's weights (denoise/atrous.cl): what makes a tap count less
+ * than the kernel says. Kept in plain float arithmetic that a C reference
+ * can follow (tests/denoise/denoise_ref.h). */
+#ifndef VCT_DENOISE_H
+#define VCT_DENOISE_H
+
+inline float denoise_luminance(float3 c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+inline float denoise_depth_at(__global const float4 *nd, uint2 size, int x, int y) {
+    return x < 0 || y < 0 || x >= (int)size.x || y >= (int)size.y ? 0.0f
+                                                                  : nd[y * (int)size.x + x].w;
+}
+
+/* The smaller change towards a neighbour with a surface (0: none has one),
+ * so that a step in depth beside a pixel does not count as its slope. */
+inline float denoise_slope(float z, float before, float after) {
+    const float a = before > 0.0f ? fabs(z - before) : INFINITY;
+    const float b = after > 0.0f ? fabs(after - z) : INFINITY;
+    const float s = fmin(a, b);
+    return isinf(s) ? 0.0f : s;
+}
+
+/* The variance (signal.w) over the 3x3 pixels around, Gaussian-weighted. */
+inline float denoise_variance_blurred(__global const float4 *signal, uint2 size, int x, int y) {
+    const float k[2] = {0.25f, 0.125f};
+    float sum = 0.0f, weights = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int qx = x + dx, qy = y + dy;
+            if (qx < 0 || qy < 0 || qx >= (int)size.x || qy >= (int)size.y)
+                continue;
+            const float w = k[abs(dx)] * k[abs(dy)] * 4.0f;
+            sum += w * signal[qy * (int)size.x + qx].w;
+            weights += w;
+        }
+    return sum / weights;
+}
+
+/* A tap (offset ox, oy from the centre c) against the centre, from their
+ * guides (unit normal, 0 where a pixel's rays' normals cancel; distance, 0
+ * without a surface), the centre's depth slope per pixel, their luminances
+ * and variances: normals cos^sigma.y, depth (the difference against the
+ * slope times the offset, sigma.z, with a thousandth of the distance for
+ * flat surfaces), luminance (the difference against sigma.x standard
+ * deviations of the two). Pixels without a surface weigh only by luminance,
+ * among themselves. The three factors are one exp2. */
+inline float denoise_edge_weight(float4 gc, float2 slope_c, float4 gq, int ox, int oy, float lc,
+                                 float lq, float var_c, float var_q, float4 sigma) {
+    const float l = fabs(lc - lq) / (sigma.x * sqrt(var_c + var_q) + 1e-6f);
+    const int surface_c = gc.w > 0.0f, surface_q = gq.w > 0.0f;
+    if (!surface_c || !surface_q)
+        return surface_c == surface_q ? exp2(-l * M_LOG2E_F) : 0.0f;
+    const float cosine = dot(gc.xyz, gq.xyz);
+    if (!(cosine > 0.0f))
+        return 0.0f;
+    const float slope = fabs(slope_c.x * (float)ox) + fabs(slope_c.y * (float)oy);
+    const float z = fabs(gc.w - gq.w) / (sigma.z * slope + 1e-3f * gc.w);
+    return exp2(sigma.y * log2(cosine) - (l + z) * M_LOG2E_F);
+}
+
+#endif

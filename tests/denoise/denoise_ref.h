@@ -1,0 +1,156 @@
+/* The denoiser in plain C, written from its description (vct/denoise.h,
+ * kernels/denoise/atrous.cl's comment): demodulation by the albedo, an
+ * optional 5x5 variance estimate, à-trous passes of the B3 spline with
+ * normal, depth and luminance weights, remodulation. Single precision, as
+ * the device computes, so the two agree to rounding. */
+#ifndef VCT_TEST_DENOISE_REF_H
+#define VCT_TEST_DENOISE_REF_H
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define LOG2E_F 1.44269504088896340736f
+
+typedef struct ref_px {
+    float r, g, b, w;
+} ref_px;
+
+static float ref_lum(float r, float g, float b) {
+    return 0.2126f * r + 0.7152f * g + 0.0722f * b;
+}
+
+static float ref_safe(float a) {
+    return a > 0.01f ? a : 1.0f;
+}
+
+static int ref_inside(int w, int h, int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h;
+}
+
+static float ref_depth(const ref_px *nd, int w, int h, int x, int y) {
+    return ref_inside(w, h, x, y) ? nd[y * w + x].w : 0.0f;
+}
+
+static float ref_slope(float z, float before, float after) {
+    const float a = before > 0.0f ? fabsf(z - before) : INFINITY;
+    const float b = after > 0.0f ? fabsf(after - z) : INFINITY;
+    const float s = fminf(a, b);
+    return isinf(s) ? 0.0f : s;
+}
+
+static void ref_unit(const ref_px *p, float n[3]) {
+    const float len = sqrtf(p->r * p->r + p->g * p->g + p->b * p->b);
+    n[0] = len > 0 ? p->r / len : 0.0f;
+    n[1] = len > 0 ? p->g / len : 0.0f;
+    n[2] = len > 0 ? p->b / len : 0.0f;
+}
+
+/* One pass over `in` (rgb demodulated, w variance) into `out`. */
+static void ref_atrous(const ref_px *in, const ref_px *nd, int w, int h, int step,
+                       const float sigma[3], ref_px *out) {
+    static const float k1[3] = {0.375f, 0.25f, 0.0625f};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const ref_px c = in[y * w + x], cnd = nd[y * w + x];
+            float nc[3];
+            ref_unit(&cnd, nc);
+            const float gx =
+                ref_slope(cnd.w, ref_depth(nd, w, h, x - 1, y), ref_depth(nd, w, h, x + 1, y));
+            const float gy =
+                ref_slope(cnd.w, ref_depth(nd, w, h, x, y - 1), ref_depth(nd, w, h, x, y + 1));
+            float vs = 0.0f, vw = 0.0f;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if (!ref_inside(w, h, x + dx, y + dy))
+                        continue;
+                    const float k = (dx ? 0.125f : 0.25f) * (dy ? 0.125f : 0.25f) * 4.0f;
+                    vs += k * in[(y + dy) * w + x + dx].w;
+                    vw += k;
+                }
+            const float var_c = vs / vw, lc = ref_lum(c.r, c.g, c.b);
+            float sr = 0, sg = 0, sb = 0, weights = 0, var = 0;
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) {
+                    const int qx = x + dx * step, qy = y + dy * step;
+                    if (!ref_inside(w, h, qx, qy))
+                        continue;
+                    const ref_px q = in[qy * w + qx], qnd = nd[qy * w + qx];
+                    const float k = k1[abs(dx)] * k1[abs(dy)];
+                    float e = 1.0f;
+                    if (dx || dy) {
+                        const float l = fabsf(lc - ref_lum(q.r, q.g, q.b)) /
+                                        (sigma[0] * sqrtf(var_c + q.w) + 1e-6f);
+                        const int sc = cnd.w > 0.0f, sq = qnd.w > 0.0f;
+                        float nq[3];
+                        ref_unit(&qnd, nq);
+                        const float cosine = nc[0] * nq[0] + nc[1] * nq[1] + nc[2] * nq[2];
+                        if (!sc || !sq) {
+                            e = sc == sq ? exp2f(-l * LOG2E_F) : 0.0f;
+                        } else if (!(cosine > 0.0f)) {
+                            e = 0.0f;
+                        } else {
+                            const float slope =
+                                fabsf(gx * (float)(dx * step)) + fabsf(gy * (float)(dy * step));
+                            const float z =
+                                fabsf(cnd.w - qnd.w) / (sigma[2] * slope + 1e-3f * cnd.w);
+                            e = exp2f(sigma[1] * log2f(cosine) - (l + z) * LOG2E_F);
+                        }
+                    }
+                    const float wq = k * e;
+                    sr += wq * q.r;
+                    sg += wq * q.g;
+                    sb += wq * q.b;
+                    weights += wq;
+                    var += wq * wq * q.w;
+                }
+            out[y * w + x] =
+                (ref_px){sr / weights, sg / weights, sb / weights, var / (weights * weights)};
+        }
+}
+
+/* The whole filter; variance NULL: estimated over 5x5 pixels. */
+static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px *nd,
+                        const float *variance, int w, int h, int iterations, const float sigma[3],
+                        ref_px *out) {
+    const size_t n = (size_t)w * h;
+    ref_px *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int i = y * w + x;
+            float v;
+            if (variance) {
+                v = variance[i];
+            } else {
+                float s = 0, s2 = 0, cnt = 0;
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx) {
+                        if (!ref_inside(w, h, x + dx, y + dy))
+                            continue;
+                        const ref_px q = color[(y + dy) * w + x + dx];
+                        const float l = ref_lum(q.r, q.g, q.b);
+                        s += l;
+                        s2 += l * l;
+                        cnt += 1.0f;
+                    }
+                const float mean = s / cnt;
+                v = fmaxf(s2 / cnt - mean * mean, 0.0f);
+            }
+            const float ar = ref_safe(albedo[i].r), ag = ref_safe(albedo[i].g),
+                        ab = ref_safe(albedo[i].b), la = ref_lum(ar, ag, ab);
+            a[i] = (ref_px){color[i].r / ar, color[i].g / ag, color[i].b / ab, v / (la * la)};
+        }
+    for (int it = 0; it < iterations; ++it) {
+        ref_atrous(a, nd, w, h, 1 << it, sigma, b);
+        ref_px *t = a;
+        a = b;
+        b = t;
+    }
+    for (size_t i = 0; i < n; ++i)
+        out[i] = (ref_px){a[i].r * ref_safe(albedo[i].r), a[i].g * ref_safe(albedo[i].g),
+                          a[i].b * ref_safe(albedo[i].b), 1.0f};
+    free(a);
+    free(b);
+}
+
+#endif

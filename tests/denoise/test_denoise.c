@@ -1,0 +1,338 @@
+/* The denoiser (vct_denoise, kernels/denoise/atrous.cl) against the plain-C
+ * reference (denoise_ref.h) on the same inputs, and against what a denoiser
+ * must do: a noisy image of a known answer comes out closer to it; a checker
+ * of albedo keeps its contrast; a lit wall beside a dark one does not bleed
+ * into it; zero variance, black albedo, zero normals and pixels without a
+ * surface give no NaN; the result is the same bit for bit on every run; bad
+ * guides are refused. Then the path tracer at 4 spp, denoised, against its
+ * own 1024-spp image. */
+#include <string.h>
+
+#include "check.h"
+#include "denoise_ref.h"
+
+/* Device and reference agree to this, relative to the image's largest
+ * value (exp, pow and sqrt round differently; a tap's weight moves a few
+ * ulps). */
+#define REF_TOL 1e-5
+
+typedef struct inputs {
+    int w, h;
+    vct_image color, albedo, nd, variance, clean;
+    int with_variance;
+} inputs;
+
+static uint32_t lcg(uint32_t *s) {
+    *s = *s * 1664525u + 1013904223u;
+    return *s;
+}
+
+/* Uniform in [-1, 1). */
+static float noise(uint32_t *s) {
+    return (float)(lcg(s) >> 8) / 8388608.0f - 1.0f;
+}
+
+static vct_image image_new(int w, int h) {
+    vct_image im = {w, h, calloc((size_t)w * h, 16)};
+    return im;
+}
+
+static void inputs_alloc(inputs *in, int w, int h) {
+    memset(in, 0, sizeof *in);
+    in->w = w;
+    in->h = h;
+    in->color = image_new(w, h);
+    in->albedo = image_new(w, h);
+    in->nd = image_new(w, h);
+    in->variance = image_new(w, h);
+    in->clean = image_new(w, h);
+    in->with_variance = 1;
+}
+
+static void inputs_free(inputs *in) {
+    vct_image_free(&in->color);
+    vct_image_free(&in->albedo);
+    vct_image_free(&in->nd);
+    vct_image_free(&in->variance);
+    vct_image_free(&in->clean);
+}
+
+static void set4(vct_image *im, int i, float a, float b, float c, float d) {
+    float *p = &im->rgba[4 * i];
+    p[0] = a, p[1] = b, p[2] = c, p[3] = d;
+}
+
+/* A pixel: albedo a (grey), irradiance e, relative noise amplitude k (so its
+ * variance is (k e lum(a))^2 / 3 per sample, one sample), normal, depth. */
+static void pixel(inputs *in, int i, float a, float e, float k, const float n[3], float z,
+                  uint32_t *seed) {
+    const float c = a * e;
+    const float noisy = c * (1.0f + k * noise(seed));
+    set4(&in->clean, i, c, c, c, 1.0f);
+    set4(&in->color, i, noisy, noisy, noisy, 1.0f);
+    set4(&in->albedo, i, a, a, a, 1.0f);
+    set4(&in->nd, i, n[0], n[1], n[2], z);
+    set4(&in->variance, i, k * k * c * c / 3.0f, 0.0f, 0.0f, 1.0f);
+}
+
+static int run(vct_context *ctx, const inputs *in, vct_image *out, vct_error *err) {
+    const vct_denoise_guides g = {&in->albedo, &in->nd, in->with_variance ? &in->variance : NULL};
+    const vct_denoise_options o = vct_denoise_options_default();
+    return vct_denoise(ctx, &in->color, &g, &o, out, err);
+}
+
+static void reference(const inputs *in, ref_px *out) {
+    const size_t n = (size_t)in->w * in->h;
+    float *v = malloc(4 * n);
+    for (size_t i = 0; i < n; ++i)
+        v[i] = in->variance.rgba[4 * i];
+    const vct_denoise_options o = vct_denoise_options_default();
+    const float sigma[3] = {o.sigma_luminance, o.sigma_normal, o.sigma_depth};
+    ref_denoise((const ref_px *)in->color.rgba, (const ref_px *)in->albedo.rgba,
+                (const ref_px *)in->nd.rgba, in->with_variance ? v : NULL, in->w, in->h,
+                (int)o.iterations, sigma, out);
+    free(v);
+}
+
+/* The device's image against the reference's: the largest difference over
+ * the largest value. */
+static void against_reference(vct_context *ctx, const char *name, const inputs *in) {
+    vct_error err = {0};
+    vct_image out;
+    REQUIRE_OK(run(ctx, in, &out, &err), err);
+    const size_t n = (size_t)in->w * in->h;
+    ref_px *ref = malloc(n * sizeof *ref);
+    reference(in, ref);
+    double worst = 0, largest = 1e-30;
+    int finite = 1;
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const float r = (&ref[i].r)[c], d = out.rgba[4 * i + c];
+            finite &= isfinite(d) && isfinite(r);
+            worst = fmax(worst, fabs(d - r));
+            largest = fmax(largest, fabs(r));
+        }
+    CHECK(finite, "%s: a value is not finite", name);
+    CHECK(worst / largest < REF_TOL, "%s: device and reference differ by %.3g of the largest", name,
+          worst / largest);
+    printf("%s (%dx%d): device against reference %.2g of the largest value\n", name, in->w, in->h,
+           worst / largest);
+    free(ref);
+    vct_image_free(&out);
+}
+
+static double nrmse(const vct_image *a, const vct_image *ref) {
+    double se = 0, sum = 0;
+    const size_t n = (size_t)a->width * a->height;
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double d = a->rgba[4 * i + c] - ref->rgba[4 * i + c];
+            se += d * d;
+            sum += ref->rgba[4 * i + c];
+        }
+    return sqrt(se / (3.0 * n)) / (sum / (3.0 * n));
+}
+
+static const float facing[3] = {0, 0, 1}, sideways[3] = {1, 0, 0}, none[3] = {0, 0, 0};
+
+/* A sloping, gently curved surface (its normal turns by 0.02 rad a pixel),
+ * a checker of albedo (4-pixel cells, 0.8 and 0.2), smooth irradiance, 50 %
+ * noise. */
+static void checker_plane(inputs *in, int w, int h) {
+    inputs_alloc(in, w, h);
+    uint32_t seed = 7;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float a = ((x / 4 + y / 4) & 1) ? 0.8f : 0.2f;
+            const float e = 1.0f + 0.5f * sinf(0.1f * (float)x) * cosf(0.07f * (float)y);
+            const float n[3] = {sinf(0.02f * (float)x), 0.0f, cosf(0.02f * (float)x)};
+            pixel(in, y * w + x, a, e, 0.5f, n, 2.0f + 0.01f * (float)x, &seed);
+        }
+}
+
+static void test_checker(vct_context *ctx) {
+    inputs in;
+    checker_plane(&in, 48, 40);
+    against_reference(ctx, "checker plane", &in);
+    vct_error err = {0};
+    vct_image out, again;
+    REQUIRE_OK(run(ctx, &in, &out, &err), err);
+    const double before = nrmse(&in.color, &in.clean), after = nrmse(&out, &in.clean);
+    printf("checker plane: NRMSE against the clean image %.4f noisy, %.4f denoised\n", before,
+           after);
+    CHECK(after < 0.3 * before, "denoised %.4f, noisy %.4f", after, before);
+    /* The checker's contrast: light cells over dark cells, 4 in the clean image. */
+    double light = 0, dark = 0, truth_l = 0, truth_d = 0;
+    for (int i = 0; i < in.w * in.h; ++i) {
+        const int is_light = in.albedo.rgba[4 * i] > 0.5f;
+        *(is_light ? &light : &dark) += out.rgba[4 * i];
+        *(is_light ? &truth_l : &truth_d) += in.clean.rgba[4 * i];
+    }
+    const double contrast = (light / dark) / (truth_l / truth_d);
+    printf("checker plane: contrast kept %.4f of the clean image's\n", contrast);
+    CHECK(fabs(contrast - 1.0) < 0.02, "the checker's contrast is %.4f of the truth's", contrast);
+    /* The same input twice, and on a fresh context: the same bits. */
+    REQUIRE_OK(run(ctx, &in, &again, &err), err);
+    CHECK(memcmp(out.rgba, again.rgba, 16ull * in.w * in.h) == 0, "two runs differ");
+    vct_image_free(&again);
+    vct_context *fresh = check_context();
+    REQUIRE_OK(run(fresh, &in, &again, &err), err);
+    CHECK(memcmp(out.rgba, again.rgba, 16ull * in.w * in.h) == 0, "a fresh context differs");
+    vct_context_destroy(fresh);
+    vct_image_free(&again);
+    /* Without the estimator's variance: estimated, still against the reference. */
+    in.with_variance = 0;
+    against_reference(ctx, "checker plane, variance estimated", &in);
+    vct_image_free(&out);
+    inputs_free(&in);
+}
+
+/* A corner: a lit wall (irradiance 1) beside a dark one (0.1) at another
+ * normal, 30 % noise. The columns beside the edge keep their own side. */
+static void test_edge(vct_context *ctx) {
+    inputs in;
+    const int w = 40, h = 32;
+    inputs_alloc(&in, w, h);
+    uint32_t seed = 11;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            pixel(&in, y * w + x, 0.5f, x < w / 2 ? 1.0f : 0.1f, 0.3f,
+                  x < w / 2 ? facing : sideways, 3.0f, &seed);
+    against_reference(ctx, "corner", &in);
+    vct_error err = {0};
+    vct_image out;
+    REQUIRE_OK(run(ctx, &in, &out, &err), err);
+    for (int side = 0; side < 2; ++side) {
+        const int x = side ? w / 2 : w / 2 - 1;
+        double mean = 0;
+        for (int y = 0; y < h; ++y)
+            mean += out.rgba[4 * (y * w + x)] / h;
+        const double truth = in.clean.rgba[4 * x];
+        printf("corner: column %d beside the edge %.4f, truth %.4f\n", x, mean, truth);
+        CHECK(fabs(mean / truth - 1.0) < 0.05, "column %d: %.4f against %.4f", x, mean, truth);
+    }
+    vct_image_free(&out);
+    inputs_free(&in);
+}
+
+/* Zero variance, black albedo, normals that cancel, pixels without a surface. */
+static void test_degenerate(vct_context *ctx) {
+    inputs in;
+    const int w = 24, h = 16;
+    inputs_alloc(&in, w, h);
+    uint32_t seed = 3;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int i = y * w + x;
+            const int region = (x / 6) % 4;
+            pixel(&in, i, region == 1 ? 0.0f : 0.5f, 1.0f, 0.0f, region == 2 ? none : facing,
+                  region == 3 ? 0.0f : 1.0f, &seed);
+            if (region == 1) /* black albedo but light (an emitter): filtered as it is */
+                set4(&in.color, i, 2.0f, 2.0f, 2.0f, 1.0f);
+        }
+    against_reference(ctx, "degenerate guides", &in);
+    vct_error err = {0};
+    vct_image out;
+    REQUIRE_OK(run(ctx, &in, &out, &err), err);
+    double worst = 0;
+    int finite = 1;
+    for (int i = 0; i < w * h; ++i)
+        for (int c = 0; c < 3; ++c) {
+            finite &= isfinite(out.rgba[4 * i + c]);
+            worst = fmax(worst, fabs(out.rgba[4 * i + c] - in.color.rgba[4 * i + c]));
+        }
+    CHECK(finite, "a NaN or infinity from degenerate guides");
+    /* No noise at all: nothing to take away. */
+    CHECK(worst < 1e-5, "a noiseless image moved by %.3g", worst);
+    vct_image_free(&out);
+    inputs_free(&in);
+}
+
+/* Sizes below the kernel's reach and off the work-group's. */
+static void test_sizes(vct_context *ctx) {
+    const int sizes[][2] = {{1, 1}, {3, 2}, {13, 7}, {64, 1}};
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
+        inputs in;
+        checker_plane(&in, sizes[s][0], sizes[s][1]);
+        in.with_variance = s & 1;
+        char name[64];
+        snprintf(name, sizeof name, "size %dx%d", sizes[s][0], sizes[s][1]);
+        against_reference(ctx, name, &in);
+        inputs_free(&in);
+    }
+}
+
+static void test_refusals(vct_context *ctx) {
+    inputs in;
+    checker_plane(&in, 16, 8);
+    vct_error err = {0};
+    vct_image out, small = image_new(8, 8);
+    vct_denoise_guides g = {&in.albedo, &small, NULL};
+    vct_denoise_options o = vct_denoise_options_default();
+    CHECK(vct_denoise(ctx, &in.color, &g, &o, &out, &err) == VCT_ERR_INPUT &&
+              strstr(err.message, "normal and depth guide is 8x8"),
+          "a guide of another size: %s", err.message);
+    g.normal_depth = &in.nd;
+    o.iterations = 0;
+    CHECK(vct_denoise(ctx, &in.color, &g, &o, &out, &err) == VCT_ERR_INPUT, "0 passes accepted");
+    vct_image_free(&small);
+    inputs_free(&in);
+}
+
+/* The path tracer at 4 spp with its variance and the guides, denoised,
+ * against 1024 spp of the same scene. */
+static void test_pathtrace(vct_context *ctx) {
+    vct_error err = {0};
+    const char *src = getenv("VCT_SOURCE_DIR");
+    char path[4096];
+    snprintf(path, sizeof path, "%s/scenes/cornell_box.gltf", src ? src : ".");
+    vct_scene *s = vct_scene_load(path, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const int size = 48;
+    vct_render_job job = vct_render_job_default(VCT_METHOD_PATHTRACE, size, size);
+    job.scene = s;
+    job.accel = g;
+    vct_image reference, noisy, variance, albedo, nd, denoised;
+    job.pathtrace.spp = 1024;
+    REQUIRE_OK(vct_render(ctx, &job, &reference, NULL, &err), err);
+    job.pathtrace.spp = 4;
+    job.pathtrace.seed = 1;
+    job.pathtrace.variance = &variance;
+    REQUIRE_OK(vct_render(ctx, &job, &noisy, NULL, &err), err);
+    REQUIRE_OK(vct_render_guides(ctx, s, g, size, size, 4, &albedo, &nd, &err), err);
+    const vct_denoise_guides guides = {&albedo, &nd, &variance};
+    const vct_denoise_options o = vct_denoise_options_default();
+    REQUIRE_OK(vct_denoise(ctx, &noisy, &guides, &o, &denoised, &err), err);
+    const double before = nrmse(&noisy, &reference), after = nrmse(&denoised, &reference);
+    double mean_d = 0, mean_r = 0, var_mean = 0;
+    for (int i = 0; i < size * size; ++i) {
+        mean_d += denoised.rgba[4 * i];
+        mean_r += reference.rgba[4 * i];
+        var_mean += variance.rgba[4 * i] / (size * size);
+    }
+    printf("Cornell box %d^2: NRMSE against 1024 spp: 4 spp %.4f, denoised %.4f; mean %.4f of "
+           "the reference's\n",
+           size, before, after, mean_d / mean_r);
+    CHECK(var_mean > 0.0, "the path tracer's variance is all 0");
+    CHECK(after < 0.5 * before, "denoised %.4f, noisy %.4f", after, before);
+    CHECK(fabs(mean_d / mean_r - 1.0) < 0.03, "the mean moved to %.4f", mean_d / mean_r);
+    vct_image *all[] = {&reference, &noisy, &variance, &albedo, &nd, &denoised};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
+        vct_image_free(all[i]);
+    vct_accel_free(g);
+    vct_scene_free(s);
+}
+
+int main(void) {
+    vct_context *ctx = check_context();
+    test_checker(ctx);
+    test_edge(ctx);
+    test_degenerate(ctx);
+    test_sizes(ctx);
+    test_refusals(ctx);
+    test_pathtrace(ctx);
+    vct_context_destroy(ctx);
+    return check_exit("test_denoise");
+}
