@@ -50,6 +50,16 @@ stamp=$(bench/stamp.sh bench/denoise.sh "$@")
     echo "CPU (the second call), the guides' device time (both filters use them) and the path"
     echo "tracer's."
     echo
+    for spp in 4 16; do
+        awk -F'|' -v spp="$spp" '$3 + 0 == spp && $7 + 0 > 0 {
+                n++; e[n] = $5 / $7; t[n] = $6 / $8 }
+            END {
+                if (!n) exit
+                for (i = 1; i <= n; ++i) { se += e[i]; st += t[i]; if (e[i] > worst) worst = e[i] }
+                printf "At %d spp, over %d scenes: our NRMSE is %.2fx OIDN'"'"'s on average (at worst %.2fx),\n", spp, n, se / n, worst
+                printf "in %.2fx its time on average.\n\n", st / n
+            }' "$rows"
+    done
     echo "| scene | spp | noisy NRMSE | ours | ours ms | OIDN | OIDN ms | guides ms | path trace ms |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
     cat "$rows"

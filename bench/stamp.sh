@@ -1,11 +1,12 @@
 #!/bin/sh
 # The line that heads every generated page: the command that wrote it, the
-# commit (marked when the tree had changes), the date, the cores and the
-# OpenCL device the figures come from.
+# commit (marked when the code had changes: the generated pages and the
+# README's blocks do not count), the date, the cores and the OpenCL device
+# the figures come from.
 # usage: bench/stamp.sh COMMAND...
 cd "$(dirname "$0")/.."
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [ -n "$(git status --porcelain --untracked-files=no 2>/dev/null)" ]; then
+if [ -n "$(git status --porcelain --untracked-files=no -- . ':!doc' ':!README.md' 2>/dev/null)" ]; then
     commit="$commit with uncommitted changes"
 fi
 device=$(./build/vct devices 2>/dev/null | grep -i -m1 "${VCT_DEVICE:-.}" | sed 's/^\[[0-9]*\] //')
