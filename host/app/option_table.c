@@ -150,7 +150,7 @@ static const cli_option whitted_rows[] = {
      "touches"},
     {"contrast", 0, OPT_CONTRAST, 1, "C",
      "subsampling: corners whose radiance spreads by more than C of their mean disagree too "
-     "(default 0: off)"},
+     "(default 0.05; 0: the corners' keys alone)"},
 };
 GROUP(cli_group_whitted, "adaptive subsampling (whitted, raycast)", whitted_rows);
 

@@ -379,6 +379,7 @@ static void defaults(cli_options *opt) {
     opt->bounces = (int)VCT_DEFAULT_BOUNCES;
     opt->anisotropic = -1; /* the library's choice unless given */
     opt->cones = vct_cone_settings_default();
+    opt->contrast = VCT_SUBSAMPLE_CONTRAST_DEFAULT;
 }
 
 static const cli_option help_option = {"help", 'h', OPT_HELP, 0, NULL, "this help"};

@@ -196,9 +196,15 @@ typedef struct vct_whitted_options {
      * their corners say, so small objects are not lost between corners. */
     uint32_t subsample_unguarded;
     /* > 0: corners whose radiance spreads by more than this share of their
-     * mean disagree too (soft shadows, falloff); 0: the seed's keys alone. */
+     * mean disagree too (soft shadows, falloff); 0: the keys alone.
+     * VCT_SUBSAMPLE_CONTRAST_DEFAULT in vct_render_job_default. */
     float subsample_contrast;
 } vct_whitted_options;
+
+/* The contrast subsampling splits at by default: with keys alone, the
+ * brightest spots between equal corners are interpolated away
+ * (doc/results/subsample.md measures both). */
+#define VCT_SUBSAMPLE_CONTRAST_DEFAULT 0.05f
 
 typedef struct vct_whitted_result {
     uint64_t traced_pixels; /* pixels whose ray tree was traced (all without subsampling) */

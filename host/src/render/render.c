@@ -29,6 +29,8 @@ vct_render_job vct_render_job_default(vct_method method, int width, int height) 
     job.whitted.height = height;
     job.whitted.max_depth = 8;
     job.whitted.min_throughput = 1e-3f;
+    job.whitted.subsample_contrast = job.raycast.subsample_contrast =
+        VCT_SUBSAMPLE_CONTRAST_DEFAULT;
     job.pathtrace.width = width;
     job.pathtrace.height = height;
     job.pathtrace.spp = 64;
