@@ -15,15 +15,19 @@ static const cli_option output_rows[] = {
      "also write arbitrary output values: cone tracing's direct, indirect, specular, ao, level, "
      "position and normal; the other methods' albedo, normal, depth (and pt's variance with "
      "--denoise): layers of the same file for .exr, else FILE_albedo.pfm and so on beside it"},
-    {"denoise", 0, OPT_DENOISE, 0, NULL,
-     "pt, pm and vct: filter the image with the engine's denoiser, guided by the first hit's "
-     "albedo, normal and depth and (pt) each pixel's variance; with --aov the noisy image and "
-     "the guides are layers too"},
     {"exr", 0, OPT_EXR, 1, "half|float",
      "EXR only: 16-bit half floats (default) or 32-bit floats, as PFM holds them"},
     {"stats", 0, OPT_STATS, 0, NULL, "per-stage device time, host time and memory"},
 };
 GROUP(cli_group_output, "output", output_rows);
+
+static const cli_option denoise_rows[] = {
+    {"denoise", 0, OPT_DENOISE, 0, NULL,
+     "filter the image with the engine's denoiser, guided by the first hit's albedo, normal and "
+     "depth and (pt) each pixel's variance; with --aov the noisy image and the guides are "
+     "layers too; one device (the viewer: N toggles it)"},
+};
+GROUP(cli_group_denoise, "denoising (pt, pm, vct)", denoise_rows);
 
 static const cli_option tone_rows[] = {
     {"exposure", 0, OPT_EXPOSURE, 1, "STOPS",

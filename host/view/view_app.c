@@ -39,6 +39,7 @@ static float scene_extent(const vct_scene *s) {
 int view_app_init(view_app *app, const cli_options *opt, vct_error *err) {
     memset(app, 0, sizeof *app);
     app->opt = *opt;
+    app->denoise = opt->denoise;
     const char *m = opt->method;
     app->method = strcmp(m, "raycast") == 0   ? VIEW_RAYCAST
                   : strcmp(m, "pt") == 0      ? VIEW_PATHTRACE
@@ -88,7 +89,10 @@ int view_app_attach_group(view_app *app, vct_group *group, vct_error *err) {
 }
 
 void view_app_free(view_app *app) {
-    vct_image_free(&app->group_frame);
+    vct_image_free(&app->host_frame);
+    vct_image_free(&app->albedo);
+    vct_image_free(&app->normal_depth);
+    vct_image_free(&app->variance);
     vct_voxels_free(app->voxels);
     vct_accel_free(app->accel);
     vct_scene_free(app->scene);
@@ -235,6 +239,9 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
         (uint32_t)app->opt.subsample_plain;
     job.whitted.subsample_contrast = job.raycast.subsample_contrast = app->opt.contrast;
     job.pathtrace.seed = (uint32_t)app->opt.seed;
+    vct_image_free(&app->variance);
+    if (view_app_denoising(app))
+        job.pathtrace.variance = &app->variance;
     job.pathtrace.resume = app->pt_spp > 0;
     job.voxel_view.level = app->voxel_level;
     /* Photon mapping likewise: one pass per frame. */
@@ -258,6 +265,38 @@ int view_app_wants_frame(const view_app *app) {
     return app->dirty || (view_app_progressive(app) && app->pt_spp < VIEW_PT_MAX_SPP);
 }
 
+int view_app_denoising(const view_app *app) {
+    /* one device: several hold their structures apart from the host's */
+    return app->denoise && !app->group &&
+           (app->method == VIEW_PATHTRACE || app->method == VIEW_PM || app->method == VIEW_VCT);
+}
+
+void view_app_toggle_denoise(view_app *app) {
+    app->denoise = !app->denoise;
+    app->dirty = 1;
+}
+
+/* The frame through the denoiser, with the guides of this camera (made on
+ * the first denoised frame after it moved). */
+static int denoise_frame(view_app *app, vct_image *image, vct_error *err) {
+    vct_context *ctx = app->ctx;
+    int rc = VCT_OK;
+    if (!app->albedo.rgba)
+        rc = vct_render_guides(ctx, app->scene, app->accel, image->width, image->height, 4,
+                               &app->albedo, &app->normal_depth, err);
+    const vct_denoise_guides g = {&app->albedo, &app->normal_depth,
+                                  app->variance.rgba ? &app->variance : NULL};
+    const vct_denoise_options o = vct_denoise_options_default();
+    vct_image out;
+    if (rc == VCT_OK)
+        rc = vct_denoise(ctx, image, &g, &o, &out, err);
+    if (rc == VCT_OK) {
+        vct_image_free(image);
+        *image = out;
+    }
+    return rc;
+}
+
 int view_app_render(view_app *app, vct_error *err) {
     const double t0 = now_ms();
     view_camera_get(&app->camera, &app->scene->camera);
@@ -266,14 +305,20 @@ int view_app_render(view_app *app, vct_error *err) {
     if (rc == VCT_OK)
         rc = update_light(app, err);
     vct_image image = {0};
+    const int denoise = view_app_denoising(app);
+    if (denoise)
+        vct_frame_host_copy(app->ctx, 1); /* the denoiser takes the frame on the host */
     if (rc == VCT_OK)
         rc = render_method(app, &image, err);
-    if (rc == VCT_OK && app->group) { /* the display takes it from the host */
-        vct_image_free(&app->group_frame);
-        app->group_frame = image;
-    } else {
+    if (denoise)
+        vct_frame_host_copy(app->ctx, 0);
+    if (rc == VCT_OK && denoise)
+        rc = denoise_frame(app, &image, err);
+    vct_image_free(&app->host_frame);
+    if (rc == VCT_OK && (app->group || denoise)) /* the display takes it from the host */
+        app->host_frame = image;
+    else
         vct_image_free(&image);
-    }
     summarise_stages(app);
     app->frame_ms = now_ms() - t0;
     if (rc == VCT_OK)
@@ -328,6 +373,8 @@ int view_app_move_light(view_app *app, float dx, float dy, float dz) {
 void view_app_camera_changed(view_app *app) {
     app->pt_spp = 0;
     app->dirty = 1;
+    vct_image_free(&app->albedo); /* the guides follow the camera */
+    vct_image_free(&app->normal_depth);
 }
 
 void view_app_status(const view_app *app, const char *display_path, char *out, size_t size) {
@@ -343,7 +390,8 @@ void view_app_status(const view_app *app, const char *display_path, char *out, s
                  app->pt_spp);
     else if (app->method == VIEW_VOXELS)
         snprintf(extra, sizeof extra, " level %u/%u", app->voxel_level, app->voxel_levels);
-    snprintf(out, size, "vct-view | %s%s | %dx%d %.0f ms (%s) | plan: %s | %s",
-             view_method_name(app->method), extra, app->width, app->height, app->frame_ms,
-             app->stages, plan[0] ? plan : "nothing", display_path);
+    snprintf(out, size, "vct-view | %s%s%s | %dx%d %.0f ms (%s) | plan: %s | %s",
+             view_method_name(app->method), extra, view_app_denoising(app) ? ", denoised" : "",
+             app->width, app->height, app->frame_ms, app->stages, plan[0] ? plan : "nothing",
+             display_path);
 }

@@ -25,7 +25,12 @@ typedef struct view_app {
     /* Several devices (--device 0,1): they hold their own structures and
      * the frame comes back to the host. NULL: ctx alone. */
     vct_group *group;
-    vct_image group_frame;
+    /* The frame the display takes from the host (several devices, or a
+     * denoised frame); rgba NULL: it stays on the context's device. */
+    vct_image host_frame;
+    int denoise;                    /* --denoise, or N: filter pt, pm and vct frames */
+    vct_image albedo, normal_depth; /* the denoiser's guides for this camera (rgba NULL: none) */
+    vct_image variance;             /* the path tracer's, for the last frame */
     vct_scene *scene;
     vct_accel *accel;
     vct_voxels *voxels;
@@ -64,6 +69,10 @@ void view_app_set_method(view_app *app, view_method m);
 /* Flips an effect against the current plan (a forced setting). */
 void view_app_toggle_effect(view_app *app, vct_effect e);
 void view_app_set_level(view_app *app, int delta);
+/* N: the denoiser on or off. */
+void view_app_toggle_denoise(view_app *app);
+/* Whether the frame shown is denoised. */
+int view_app_denoising(const view_app *app);
 /* Moves the first light (positions; a directional light turns instead). */
 int view_app_move_light(view_app *app, float dx, float dy, float dz);
 void view_app_camera_changed(view_app *app);

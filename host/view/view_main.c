@@ -30,6 +30,7 @@ static void help(void) {
         "      1 ray cast, 2 VCT, 3 path tracer (progressive), 4 voxels ([ ] level)\n"
         "      F1 indirect, F2 specular, F3 AO, F4 shadows, F5 soft shadows (forced against\n"
         "      the plan; --light-radius R gives the lights a size)\n"
+        "      N denoise (path tracer, photon mapping, cone tracing; one device)\n"
         "      arrows, R F move the first light | + - exposure | P screenshot | H help | Esc quit");
 }
 
@@ -90,6 +91,8 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
             key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT ? -0.5f : 0.5f;
     } else if (key == GLFW_KEY_P && action == GLFW_PRESS) {
         screenshot(v);
+    } else if (key == GLFW_KEY_N && action == GLFW_PRESS) {
+        view_app_toggle_denoise(app);
     } else if (key == GLFW_KEY_H && action == GLFW_PRESS) {
         help();
     } else if (key == GLFW_KEY_ESCAPE) {
@@ -170,7 +173,8 @@ static const struct {
                  {"f", GLFW_KEY_F},
                  {"+", GLFW_KEY_EQUAL},
                  {"-", GLFW_KEY_MINUS},
-                 {"p", GLFW_KEY_P}};
+                 {"p", GLFW_KEY_P},
+                 {"n", GLFW_KEY_N}};
 
 /* Renders, takes the frame into the window's texture and puts the status
  * in the title (and on stdout with `print`). A failure keeps the last image
@@ -181,7 +185,7 @@ static int render_frame(viewer *v, int print) {
     char title[512];
     int rc = view_app_render(app, &err);
     if (rc == VCT_OK)
-        rc = display_upload(&v->display, app->ctx, app->group ? &app->group_frame : NULL,
+        rc = display_upload(&v->display, app->ctx, app->host_frame.rgba ? &app->host_frame : NULL,
                             app->width, app->height, &err);
     if (rc == VCT_OK) {
         view_app_status(app, v->display.path, title, sizeof title);

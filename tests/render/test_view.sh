@@ -81,6 +81,8 @@ case_compare whitted "--size 80 80 --method whitted" "--size 80 80 --method whit
 case_compare whitted-subsampled "--size 80 80 --method whitted --subsample 8" "--size 80 80 --method whitted --subsample 8"
 case_compare pathtracer "--size 64 64 --keys 3" "--size 64 64 --method pt --spp 1"
 case_compare photon-mapping "--size 48 48 --method pm --photons 8192" "--size 48 48 --method pm --photons 8192 --spp 1"
+case_compare pathtracer-denoised "--size 64 64 --keys 3,n" "--size 64 64 --method pt --spp 1 --denoise"
+case_compare vct-denoised "--size 64 64 --denoise" "--size 64 64 --denoise"
 case_compare indirect-off "--size 64 64 --keys F1" "--size 64 64 --effect indirect=off"
 case_compare shadows-off "--size 64 64 --keys 1,F4" "--size 64 64 --method raycast --effect shadows=off"
 case_compare resized "--size 64 64 --keys size=72x40" "--size 72 40"
