@@ -2,7 +2,8 @@
  * Schied et al. 2017, "Spatiotemporal Variance-Guided Filtering", on one
  * frame): the image is divided by the first hit's albedo, filtered in
  * DENOISE_ITERATIONS passes of a 5x5 B3-spline kernel whose taps spread
- * 2^i pixels apart, each tap weighted by how alike its normal, depth and
+ * 2^i pixels apart (after bright outliers are clamped to their
+ * neighbourhood), each tap weighted by how alike its normal, depth and
  * luminance are to the centre's, the luminance judged against the centre's
  * standard deviation, and multiplied by the albedo again. Every pass reads
  * one buffer and writes another, in a fixed order: the result does not
@@ -88,7 +89,8 @@ __kernel void denoise_atrous(__global const float4 *in, __global const float4 *g
     const float4 centre = in[p];
     const float4 gp = guide[p];
     const float2 sp = slope[p];
-    const float var_c = denoise_variance_blurred(in, size, x, y);
+    /* the first pass trusts each pixel's own variance; later ones blur it */
+    const float var_c = step == 1 ? centre.w : denoise_variance_blurred(in, size, x, y);
     const float lp = denoise_luminance(centre.xyz);
     const float kernel_weights[3] = {0.375f, 0.25f, 0.0625f};
     float3 sum = (float3)(0.0f);
@@ -112,6 +114,33 @@ __kernel void denoise_atrous(__global const float4 *in, __global const float4 *g
         }
     /* The centre's own weight, k(0, 0) > 0, keeps weights above 0. */
     out[p] = (float4)(sum / weights, variance / (weights * weights));
+}
+
+/* Fireflies: a pixel whose luminance lies above its 3x3 neighbours' mean by
+ * more than k of their standard deviation is brought down to that bound
+ * (k <= 0: none is). Rare bright paths otherwise spread into blotches that
+ * the passes cannot tell from light. */
+__kernel void denoise_clamp(__global const float4 *in, uint2 size, float k, __global float4 *out) {
+    const int x = (int)get_global_id(0), y = (int)get_global_id(1);
+    if (x >= (int)size.x || y >= (int)size.y)
+        return;
+    const int w = (int)size.x;
+    float s = 0.0f, s2 = 0.0f, n = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int qx = x + dx, qy = y + dy;
+            if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= w || qy >= (int)size.y)
+                continue;
+            const float l = denoise_luminance(in[qy * w + qx].xyz);
+            s += l;
+            s2 += l * l;
+            n += 1.0f;
+        }
+    const float4 c = in[y * w + x];
+    const float l = denoise_luminance(c.xyz);
+    const float mean = n > 0.0f ? s / n : l;
+    const float bound = mean + k * sqrt(fmax(n > 0.0f ? s2 / n - mean * mean : 0.0f, 0.0f));
+    out[y * w + x] = k > 0.0f && l > bound ? (float4)(c.xyz * (bound / l), c.w) : c;
 }
 
 /* The filtered signal times the albedo again. */

@@ -68,7 +68,7 @@ static void ref_atrous(const ref_px *in, const ref_px *nd, int w, int h, int ste
                     vs += k * in[(y + dy) * w + x + dx].w;
                     vw += k;
                 }
-            const float var_c = vs / vw, lc = ref_lum(c.r, c.g, c.b);
+            const float var_c = step == 1 ? c.w : vs / vw, lc = ref_lum(c.r, c.g, c.b);
             float sr = 0, sg = 0, sb = 0, weights = 0, var = 0;
             for (int dy = -2; dy <= 2; ++dy)
                 for (int dx = -2; dx <= 2; ++dx) {
@@ -109,9 +109,34 @@ static void ref_atrous(const ref_px *in, const ref_px *nd, int w, int h, int ste
         }
 }
 
-/* The whole filter; variance NULL: estimated over 5x5 pixels. */
+/* Clamps each pixel above its 3x3 neighbours' mean + k sd. */
+static void ref_clamp(const ref_px *in, int w, int h, float k, ref_px *out) {
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float s = 0, s2 = 0, n = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if ((!dx && !dy) || !ref_inside(w, h, x + dx, y + dy))
+                        continue;
+                    const ref_px q = in[(y + dy) * w + x + dx];
+                    const float l = ref_lum(q.r, q.g, q.b);
+                    s += l;
+                    s2 += l * l;
+                    n += 1.0f;
+                }
+            const ref_px c = in[y * w + x];
+            const float l = ref_lum(c.r, c.g, c.b);
+            const float mean = n > 0 ? s / n : l;
+            const float bound = mean + k * sqrtf(fmaxf(n > 0 ? s2 / n - mean * mean : 0.0f, 0.0f));
+            const float f = k > 0 && l > bound ? bound / l : 1.0f;
+            out[y * w + x] = f < 1.0f ? (ref_px){c.r * f, c.g * f, c.b * f, c.w} : c;
+        }
+}
+
+/* The whole filter; variance NULL: estimated over 5x5 pixels. sigma:
+ * luminance, normal, depth, fireflies. */
 static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px *nd,
-                        const float *variance, int w, int h, int iterations, const float sigma[3],
+                        const float *variance, int w, int h, int iterations, const float sigma[4],
                         ref_px *out) {
     const size_t n = (size_t)w * h;
     ref_px *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
@@ -140,6 +165,10 @@ static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px 
                         ab = ref_safe(albedo[i].b), la = ref_lum(ar, ag, ab);
             a[i] = (ref_px){color[i].r / ar, color[i].g / ag, color[i].b / ab, v / (la * la)};
         }
+    ref_clamp(a, w, h, sigma[3], b);
+    ref_px *t0 = a;
+    a = b;
+    b = t0;
     for (int it = 0; it < iterations; ++it) {
         ref_atrous(a, nd, w, h, 1 << it, sigma, b);
         ref_px *t = a;

@@ -22,9 +22,14 @@ typedef struct vct_denoise_options {
     float sigma_luminance; /* luminance differences allowed, in standard deviations */
     float sigma_normal;    /* the exponent on the normals' cosine */
     float sigma_depth;     /* depth differences allowed, in the local slope */
+    /* Before the passes, a pixel brighter than its 3x3 neighbours' mean by
+     * more than this many of their standard deviations is clamped to that
+     * (a firefly; 0: none is). Biased: rare bright paths lose energy. */
+    float firefly_sigma;
 } vct_denoise_options;
 
-/* 5 passes, 4 standard deviations, cosine^128, one slope. */
+/* 5 passes, 4 standard deviations, cosine^128, one slope, fireflies above
+ * 6 standard deviations. */
 vct_denoise_options vct_denoise_options_default(void);
 
 /* What guides the filter: vct_render_guides' images, and the variance of

@@ -15,6 +15,7 @@ vct_denoise_options vct_denoise_options_default(void) {
     o.sigma_luminance = 4.0f;
     o.sigma_normal = 128.0f;
     o.sigma_depth = 1.0f;
+    o.firefly_sigma = 6.0f;
     return o;
 }
 
@@ -36,10 +37,13 @@ static int check_inputs(const vct_image *color, const vct_denoise_guides *g,
                             color->height);
     if (o->iterations < 1 || o->iterations > 10)
         return vct_fail(err, VCT_ERR_INPUT, "%s: %u passes: give 1 to 10", STAGE, o->iterations);
-    if (!(o->sigma_luminance > 0.0f) || !(o->sigma_normal >= 0.0f) || !(o->sigma_depth > 0.0f))
+    if (!(o->sigma_luminance > 0.0f) || !(o->sigma_normal >= 0.0f) || !(o->sigma_depth > 0.0f) ||
+        !(o->firefly_sigma >= 0.0f))
         return vct_fail(err, VCT_ERR_INPUT,
-                        "%s: the sigmas must be positive (luminance %g, normal %g, depth %g)",
-                        STAGE, o->sigma_luminance, o->sigma_normal, o->sigma_depth);
+                        "%s: the sigmas must be positive (luminance %g, normal %g, depth %g, "
+                        "fireflies %g)",
+                        STAGE, o->sigma_luminance, o->sigma_normal, o->sigma_depth,
+                        o->firefly_sigma);
     return VCT_OK;
 }
 
@@ -60,12 +64,13 @@ typedef struct denoise_run {
 
 /* The passes, ping-ponging between the two signal buffers; the last one
  * written is returned in *last. */
-static int atrous_passes(denoise_run *r, const vct_denoise_options *o, int *last, vct_error *err) {
+static int atrous_passes(denoise_run *r, const vct_denoise_options *o, int first, int *last,
+                         vct_error *err) {
     const cl_float4 sigma = {{o->sigma_luminance, o->sigma_normal, o->sigma_depth, 0.0f}};
     cl_kernel k = vct_kernel_create(r->ctx, r->program, "denoise_atrous", err);
     int rc = k ? VCT_OK : (int)err->status;
     const size_t global[2] = {r->size[0], r->size[1]}, local[2] = {8, 8};
-    int from = 0;
+    int from = first;
     for (uint32_t i = 0; rc == VCT_OK && i < o->iterations; ++i, from ^= 1) {
         const cl_int step = 1 << i;
         rc = vct_set_args(err, STAGE, k, 0, 7, VCT_ARG_OF(r->signal[from]), VCT_ARG_OF(r->guide),
@@ -94,6 +99,21 @@ static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, c
         rc = vct_launch_2d(r->ctx, k, global, local, err);
     if (k)
         clReleaseKernel(k);
+    return rc;
+}
+
+/* signal[0] into signal[1], its fireflies clamped. */
+static int clamp_fireflies(denoise_run *r, float k, vct_error *err) {
+    cl_kernel kernel = vct_kernel_create(r->ctx, r->program, "denoise_clamp", err);
+    const cl_float kf = k;
+    int rc = kernel ? vct_set_args(err, STAGE, kernel, 0, 4, VCT_ARG_OF(r->signal[0]),
+                                   VCT_ARG_OF(r->size), VCT_ARG_OF(kf), VCT_ARG_OF(r->signal[1]))
+                    : (int)err->status;
+    const size_t global[2] = {r->size[0], r->size[1]}, local[2] = {8, 8};
+    if (rc == VCT_OK)
+        rc = vct_launch_2d(r->ctx, kernel, global, local, err);
+    if (kernel)
+        clReleaseKernel(kernel);
     return rc;
 }
 
@@ -155,7 +175,9 @@ int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guid
                             VCT_ARG_OF(n), VCT_ARG_OF(r.signal[0]));
     int last = 0;
     if (rc == VCT_OK)
-        rc = atrous_passes(&r, o, &last, err);
+        rc = clamp_fireflies(&r, o->firefly_sigma, err);
+    if (rc == VCT_OK)
+        rc = atrous_passes(&r, o, 1, &last, err);
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, r.program, "denoise_remodulate", STAGE, pixels, err, 4,
                             VCT_ARG_OF(r.signal[last]), VCT_ARG_OF(r.albedo), VCT_ARG_OF(n),
