@@ -85,6 +85,17 @@ static int atrous_passes(denoise_run *r, const vct_denoise_options *o, int first
     return rc;
 }
 
+/* Launches k (its arguments set while rc is VCT_OK) over every pixel in
+ * 8 x 8 groups, and releases it. */
+static int over_pixels(denoise_run *r, cl_kernel k, int rc, vct_error *err) {
+    const size_t global[2] = {r->size[0], r->size[1]}, local[2] = {8, 8};
+    if (rc == VCT_OK)
+        rc = vct_launch_2d(r->ctx, k, global, local, err);
+    if (k)
+        clReleaseKernel(k);
+    return rc;
+}
+
 /* A kernel over every pixel with arguments (in, size, out[, out2]). */
 static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, cl_mem out2,
                       vct_error *err) {
@@ -94,27 +105,17 @@ static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, c
           : (int)err->status;
     if (rc == VCT_OK && out2)
         rc = vct_set_args(err, STAGE, k, 3, 1, VCT_ARG_OF(out2));
-    const size_t global[2] = {r->size[0], r->size[1]}, local[2] = {8, 8};
-    if (rc == VCT_OK)
-        rc = vct_launch_2d(r->ctx, k, global, local, err);
-    if (k)
-        clReleaseKernel(k);
-    return rc;
+    return over_pixels(r, k, rc, err);
 }
 
 /* signal[0] into signal[1], its fireflies clamped. */
-static int clamp_fireflies(denoise_run *r, float k, vct_error *err) {
-    cl_kernel kernel = vct_kernel_create(r->ctx, r->program, "denoise_clamp", err);
-    const cl_float kf = k;
-    int rc = kernel ? vct_set_args(err, STAGE, kernel, 0, 4, VCT_ARG_OF(r->signal[0]),
-                                   VCT_ARG_OF(r->size), VCT_ARG_OF(kf), VCT_ARG_OF(r->signal[1]))
-                    : (int)err->status;
-    const size_t global[2] = {r->size[0], r->size[1]}, local[2] = {8, 8};
-    if (rc == VCT_OK)
-        rc = vct_launch_2d(r->ctx, kernel, global, local, err);
-    if (kernel)
-        clReleaseKernel(kernel);
-    return rc;
+static int clamp_fireflies(denoise_run *r, float sigmas, vct_error *err) {
+    cl_kernel k = vct_kernel_create(r->ctx, r->program, "denoise_clamp", err);
+    const cl_float bound = sigmas;
+    int rc = k ? vct_set_args(err, STAGE, k, 0, 4, VCT_ARG_OF(r->signal[0]), VCT_ARG_OF(r->size),
+                              VCT_ARG_OF(bound), VCT_ARG_OF(r->signal[1]))
+               : (int)err->status;
+    return over_pixels(r, k, rc, err);
 }
 
 static int upload(denoise_run *r, const vct_image *color, const vct_denoise_guides *g,
