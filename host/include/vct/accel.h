@@ -4,6 +4,8 @@
 #ifndef VCT_API_ACCEL_H
 #define VCT_API_ACCEL_H
 
+#include "vct/export.h"
+
 #include <stdint.h>
 
 #include "vct/device.h"
@@ -22,13 +24,13 @@ typedef struct vct_grid_info {
 } vct_grid_info;
 
 /* res NULL or {0,0,0}: chosen from triangle count and extent. */
-vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *scene, const uint32_t *res,
-                         vct_error *err);
-void vct_grid_info_get(const vct_grid *grid, vct_grid_info *info);
+VCT_API vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *scene, const uint32_t *res,
+                                 vct_error *err);
+VCT_API void vct_grid_info_get(const vct_grid *grid, vct_grid_info *info);
 /* Reads back the cell ranges and the sorted triangle list (for tests). */
-int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start, uint32_t *cell_end,
-                  uint32_t *tri_ids, vct_error *err);
-void vct_grid_free(vct_grid *grid);
+VCT_API int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start,
+                          uint32_t *cell_end, uint32_t *tri_ids, vct_error *err);
+VCT_API void vct_grid_free(vct_grid *grid);
 
 typedef enum vct_accel_kind { VCT_ACCEL_BVH = 0, VCT_ACCEL_GRID = 1 } vct_accel_kind;
 
@@ -59,19 +61,20 @@ typedef struct vct_accel_info {
 } vct_accel_info;
 
 /* options NULL: a BVH. */
-vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *scene,
-                           const vct_accel_options *options, vct_error *err);
+VCT_API vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *scene,
+                                   const vct_accel_options *options, vct_error *err);
 /* The scene's vertices moved (same triangles): bounds recomputed without a
  * rebuild (the grid is rebuilt, having nothing to refit). */
-int vct_accel_refit(vct_context *ctx, vct_accel *accel, const vct_scene *scene, vct_error *err);
+VCT_API int vct_accel_refit(vct_context *ctx, vct_accel *accel, const vct_scene *scene,
+                            vct_error *err);
 /* With sah_cost, which reads the nodes back. */
-int vct_accel_info_get(vct_context *ctx, const vct_accel *accel, vct_accel_info *info,
-                       vct_error *err);
-vct_accel_kind vct_accel_kind_of(const vct_accel *accel);
-const char *vct_accel_kind_name(vct_accel_kind kind);
+VCT_API int vct_accel_info_get(vct_context *ctx, const vct_accel *accel, vct_accel_info *info,
+                               vct_error *err);
+VCT_API vct_accel_kind vct_accel_kind_of(const vct_accel *accel);
+VCT_API const char *vct_accel_kind_name(vct_accel_kind kind);
 /* "bvh" or "grid"; -1 for anything else. */
-int vct_accel_kind_parse(const char *name);
-void vct_accel_free(vct_accel *accel);
+VCT_API int vct_accel_kind_parse(const char *name);
+VCT_API void vct_accel_free(vct_accel *accel);
 
 typedef struct vct_hit {
     float t; /* < 0: miss */
@@ -81,8 +84,8 @@ typedef struct vct_hit {
 
 /* Hits for n rays, 8 floats each (origin xyz, tmin; direction xyz, tmax):
  * the closest one, or with any_hit the first found (occlusion queries). */
-int vct_trace_rays(vct_context *ctx, const vct_accel *accel, const float *rays, uint32_t n,
-                   int any_hit, vct_hit *hits, vct_error *err);
+VCT_API int vct_trace_rays(vct_context *ctx, const vct_accel *accel, const float *rays, uint32_t n,
+                           int any_hit, vct_hit *hits, vct_error *err);
 
 #ifdef __cplusplus
 }

@@ -8,6 +8,8 @@
 #ifndef VCT_API_DENOISE_H
 #define VCT_API_DENOISE_H
 
+#include "vct/export.h"
+
 #include <stdint.h>
 
 #include "vct/device.h"
@@ -30,7 +32,7 @@ typedef struct vct_denoise_options {
 
 /* 5 passes, 4 standard deviations, cosine^128, one slope, fireflies above
  * 6 standard deviations. */
-vct_denoise_options vct_denoise_options_default(void);
+VCT_API vct_denoise_options vct_denoise_options_default(void);
 
 /* What guides the filter: vct_render_guides' images, and the variance of
  * each pixel's mean luminance in r (vct_pathtrace_options.variance); NULL
@@ -43,8 +45,8 @@ typedef struct vct_denoise_guides {
 
 /* Filters `color` into `out` (allocated here; free with vct_image_free).
  * Every guide must have the image's size. */
-int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *guides,
-                const vct_denoise_options *options, vct_image *out, vct_error *err);
+VCT_API int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *guides,
+                        const vct_denoise_options *options, vct_image *out, vct_error *err);
 
 #ifdef __cplusplus
 }

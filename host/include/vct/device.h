@@ -8,6 +8,8 @@
 #ifndef VCT_API_DEVICE_H
 #define VCT_API_DEVICE_H
 
+#include "vct/export.h"
+
 #include <stddef.h>
 #include <stdint.h>
 
@@ -35,16 +37,16 @@ typedef struct vct_device_info {
 } vct_device_info;
 
 /* Lists every device of every platform. Returns the count (at most max). */
-int vct_list_devices(vct_device_info *out, int max, vct_error *err);
+VCT_API int vct_list_devices(vct_device_info *out, int max, vct_error *err);
 
 typedef struct vct_context vct_context;
 
 /* selector: NULL or "" = $VCT_DEVICE, else first GPU, else first CPU;
  * a number = global device index; otherwise a case-insensitive substring of
  * the device or platform name. */
-vct_context *vct_context_create(const char *selector, vct_error *err);
-void vct_context_destroy(vct_context *ctx);
-const vct_device_info *vct_context_device(const vct_context *ctx);
+VCT_API vct_context *vct_context_create(const char *selector, vct_error *err);
+VCT_API void vct_context_destroy(vct_context *ctx);
+VCT_API const vct_device_info *vct_context_device(const vct_context *ctx);
 
 /* Messages about work a call does beyond what it was asked, as it does it:
  * today, compiling a kernel program that is not in the on-disk cache (the
@@ -52,7 +54,7 @@ const vct_device_info *vct_context_device(const vct_context *ctx);
  * it). The library prints nothing itself; without a callback messages are
  * dropped. Called on the thread that uses the context. */
 typedef void (*vct_log_fn)(void *user, const char *message);
-void vct_context_set_log(vct_context *ctx, vct_log_fn log, void *user);
+VCT_API void vct_context_set_log(vct_context *ctx, vct_log_fn log, void *user);
 
 /* Kernel programs this context compiled from source and loaded from the
  * on-disk cache, and the wall time both took. */
@@ -60,7 +62,7 @@ typedef struct vct_program_stats {
     int compiled, cached;
     double ms;
 } vct_program_stats;
-void vct_context_program_stats(const vct_context *ctx, vct_program_stats *stats);
+VCT_API void vct_context_program_stats(const vct_context *ctx, vct_program_stats *stats);
 
 /* ---- statistics ----------------------------------------------------------- */
 
@@ -72,10 +74,10 @@ typedef struct vct_stage_stat {
     int launches;
 } vct_stage_stat;
 
-int vct_stats(const vct_context *ctx, const vct_stage_stat **stages);
-void vct_stats_reset(vct_context *ctx);
+VCT_API int vct_stats(const vct_context *ctx, const vct_stage_stat **stages);
+VCT_API void vct_stats_reset(vct_context *ctx);
 /* Kernels launched so far by name (for plan tests): count of launches. */
-int vct_kernel_launches(const vct_context *ctx, const char *kernel_name);
+VCT_API int vct_kernel_launches(const vct_context *ctx, const char *kernel_name);
 
 typedef struct vct_kernel_stat {
     char name[64];
@@ -84,7 +86,7 @@ typedef struct vct_kernel_stat {
 } vct_kernel_stat;
 
 /* Per-kernel launches and device time since the last reset. */
-int vct_kernel_stats(const vct_context *ctx, const vct_kernel_stat **kernels);
+VCT_API int vct_kernel_stats(const vct_context *ctx, const vct_kernel_stat **kernels);
 
 #ifdef __cplusplus
 }

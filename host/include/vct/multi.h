@@ -12,6 +12,8 @@
 #ifndef VCT_API_MULTI_H
 #define VCT_API_MULTI_H
 
+#include "vct/export.h"
+
 #include "vct/accel.h"
 #include "vct/render.h"
 #include "vct/voxels.h"
@@ -27,10 +29,10 @@ typedef struct vct_group vct_group;
  * (every CPU); NULL or "": $VCT_DEVICE, else vct_context_create's choice.
  * A device that does not exist, or one named twice, is refused with the list
  * of devices there are. */
-vct_group *vct_group_create(const char *list, vct_error *err);
-void vct_group_destroy(vct_group *group);
-int vct_group_size(const vct_group *group);
-vct_context *vct_group_context(vct_group *group, int device);
+VCT_API vct_group *vct_group_create(const char *list, vct_error *err);
+VCT_API void vct_group_destroy(vct_group *group);
+VCT_API int vct_group_size(const vct_group *group);
+VCT_API vct_context *vct_group_context(vct_group *group, int device);
 
 /* What every device builds for the renders. */
 typedef struct vct_group_build {
@@ -48,8 +50,8 @@ typedef struct vct_group_build {
 
 /* Builds `scene`'s structures on every device, at once; a device that cannot
  * hold them is left out with a message, unless none can. */
-int vct_group_prepare(vct_group *group, const vct_scene *scene, const vct_group_build *build,
-                      vct_error *err);
+VCT_API int vct_group_prepare(vct_group *group, const vct_scene *scene,
+                              const vct_group_build *build, vct_error *err);
 
 /* Renders `job` over the group's devices, with each device's own structures
  * (the job's accel and voxels are not read; its aovs must be NULL, its band
@@ -58,8 +60,8 @@ int vct_group_prepare(vct_group *group, const vct_scene *scene, const vct_group_
  * or statistics; a device dropped then loses what it held from earlier
  * calls (the path tracer averages the samples that remain; photon mapping
  * starts over). Photon mapping takes a pass count, not a time. */
-int vct_group_render(vct_group *group, const vct_render_job *job, vct_image *image,
-                     vct_render_result *result, vct_error *err);
+VCT_API int vct_group_render(vct_group *group, const vct_render_job *job, vct_image *image,
+                             vct_render_result *result, vct_error *err);
 
 typedef struct vct_group_device {
     vct_device_info info;
@@ -77,16 +79,16 @@ typedef struct vct_group_device {
 
 /* vct_context_set_log on every device's context: the callback may then be
  * called from the devices' threads at once. */
-void vct_group_set_log(vct_group *group, vct_log_fn log, void *user);
+VCT_API void vct_group_set_log(vct_group *group, vct_log_fn log, void *user);
 /* The devices, in the order the list named them. */
-int vct_group_devices(const vct_group *group, const vct_group_device **devices);
+VCT_API int vct_group_devices(const vct_group *group, const vct_group_device **devices);
 /* Devices not dropped. */
-int vct_group_active_count(const vct_group *group);
+VCT_API int vct_group_active_count(const vct_group *group);
 /* The device rendering the row methods alone, having measured faster than
  * the devices together (-1: they render together). */
-int vct_group_alone(const vct_group *group);
+VCT_API int vct_group_alone(const vct_group *group);
 /* Failures seen so far (each reported once, on stderr, when it happened). */
-int vct_group_faults(const vct_group *group);
+VCT_API int vct_group_faults(const vct_group *group);
 
 #ifdef __cplusplus
 }

@@ -8,6 +8,8 @@
 #ifndef VCT_API_OPENCL_H
 #define VCT_API_OPENCL_H
 
+#include "vct/export.h"
+
 #ifndef CL_TARGET_OPENCL_VERSION
 #define CL_TARGET_OPENCL_VERSION 120
 #endif
@@ -24,12 +26,12 @@ extern "C" {
  * device times in the statistics; without it stages report host time).
  * NULL handles, a device outside the context or a queue of another context
  * or device are refused with VCT_ERR_INPUT and a message saying which. */
-vct_context *vct_context_wrap(cl_context context, cl_device_id device, cl_command_queue queue,
-                              vct_error *err);
+VCT_API vct_context *vct_context_wrap(cl_context context, cl_device_id device,
+                                      cl_command_queue queue, vct_error *err);
 /* The OpenCL objects a context runs on (its own, or those it wraps). */
-cl_context vct_context_cl_context(const vct_context *ctx);
-cl_device_id vct_context_cl_device(const vct_context *ctx);
-cl_command_queue vct_context_cl_queue(const vct_context *ctx);
+VCT_API cl_context vct_context_cl_context(const vct_context *ctx);
+VCT_API cl_device_id vct_context_cl_device(const vct_context *ctx);
+VCT_API cl_command_queue vct_context_cl_queue(const vct_context *ctx);
 
 #ifdef __cplusplus
 }

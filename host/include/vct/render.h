@@ -6,6 +6,8 @@
 #ifndef VCT_API_RENDER_H
 #define VCT_API_RENDER_H
 
+#include "vct/export.h"
+
 #include <stdint.h>
 
 #include "vct/accel.h"
@@ -26,8 +28,8 @@ typedef struct vct_render_options {
 } vct_render_options;
 
 /* Direct illumination with hard shadows by ray casting. */
-int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                       const vct_render_options *options, vct_image *image, vct_error *err);
+VCT_API int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                               const vct_render_options *options, vct_image *image, vct_error *err);
 
 typedef struct vct_pathtrace_options {
     int width, height;
@@ -56,25 +58,25 @@ typedef struct vct_pathtrace_result {
  * albedo (textured; 1 where rays leave the scene) and, in normal_depth, its
  * normal facing the viewer (xyz, not normalised) and distance (w, 0 where
  * no ray hit), each the mean of rays_per_axis^2 rays across the pixel. */
-int vct_render_guides(vct_context *ctx, const vct_scene *scene, const vct_accel *accel, int width,
-                      int height, uint32_t rays_per_axis, vct_image *albedo,
-                      vct_image *normal_depth, vct_error *err);
+VCT_API int vct_render_guides(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                              int width, int height, uint32_t rays_per_axis, vct_image *albedo,
+                              vct_image *normal_depth, vct_error *err);
 
 /* Unbiased path tracing: next-event estimation with MIS, Lambert, glossy,
  * mirror and dielectric materials, Russian roulette. result may be NULL. */
-int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                         const vct_pathtrace_options *options, vct_image *image,
-                         vct_pathtrace_result *result, vct_error *err);
+VCT_API int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                                 const vct_pathtrace_options *options, vct_image *image,
+                                 vct_pathtrace_result *result, vct_error *err);
 
 /* The voxels as the scene camera sees them, ray marched through the octree:
  * their injected radiance once light is injected, else albedo under a headlight. */
-int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels, int width,
-                      int height, vct_image *image, vct_error *err);
+VCT_API int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels,
+                              int width, int height, vct_image *image, vct_error *err);
 /* The same at octree level `level` (0 = root .. levels = voxels): below the
  * leaf level every node with geometry in it shows as a grey cube. */
-int vct_render_voxels_level(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels,
-                            uint32_t level, int width, int height, vct_image *image,
-                            vct_error *err);
+VCT_API int vct_render_voxels_level(vct_context *ctx, const vct_scene *scene,
+                                    const vct_voxels *voxels, uint32_t level, int width, int height,
+                                    vct_image *image, vct_error *err);
 
 /* The effect plan: which effects a scene calls for, and why. The renderer
  * enqueues no work for an effect that is off. */
@@ -103,14 +105,14 @@ typedef struct vct_plan {
     int emitters_by_cones;
 } vct_plan;
 
-const char *vct_effect_name(vct_effect effect);
+VCT_API const char *vct_effect_name(vct_effect effect);
 /* -1 for an unknown name. */
-int vct_effect_from_name(const char *name);
+VCT_API int vct_effect_from_name(const char *name);
 /* force: VCT_EFFECTS entries, or NULL to follow the scene. */
-void vct_plan_make(const vct_scene *scene, const vct_effect_force *force, vct_plan *plan);
+VCT_API void vct_plan_make(const vct_scene *scene, const vct_effect_force *force, vct_plan *plan);
 /* Whether the plan reads the voxel hierarchy, and whether it needs its light. */
-int vct_plan_needs_voxels(const vct_plan *plan);
-int vct_plan_needs_voxel_light(const vct_plan *plan);
+VCT_API int vct_plan_needs_voxels(const vct_plan *plan);
+VCT_API int vct_plan_needs_voxel_light(const vct_plan *plan);
 
 typedef struct vct_vct_options {
     int width, height;
@@ -132,7 +134,7 @@ typedef struct vct_vct_options {
 
 /* 512 x 512, 6 diffuse cones, default cone settings, 4 x 4 rays at edges,
  * no AOVs. */
-vct_vct_options vct_vct_options_default(void);
+VCT_API vct_vct_options vct_vct_options_default(void);
 
 typedef struct vct_aovs {
     vct_image direct;   /* direct light and emission */
@@ -143,7 +145,7 @@ typedef struct vct_aovs {
     vct_image position; /* the surface the camera ray found, w 1 (all 0 where none) */
     vct_image normal;   /* its shading normal, facing the viewer, w 1 (all 0 where none) */
 } vct_aovs;
-void vct_aovs_free(vct_aovs *aovs);
+VCT_API void vct_aovs_free(vct_aovs *aovs);
 
 /* Light bounces in the voxels by default (direct light counts as the first),
  * after which the rest of the series is added at the scene's bounce ratio. */
@@ -153,17 +155,18 @@ void vct_aovs_free(vct_aovs *aovs);
  * (when indirect diffuse or specular is on) with `bounces` - 1 extra
  * diffuse bounces gathered at the voxels by the 6-cone preset. *voxels is
  * NULL when the plan needs none. */
-int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                    const vct_plan *plan, const vct_voxel_options *voxel_options,
-                    const vct_brick_options *brick_options, uint32_t bounces,
-                    const vct_cone_settings *cones, vct_voxels **voxels, vct_error *err);
+VCT_API int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                            const vct_plan *plan, const vct_voxel_options *voxel_options,
+                            const vct_brick_options *brick_options, uint32_t bounces,
+                            const vct_cone_settings *cones, vct_voxels **voxels, vct_error *err);
 
 /* Renders by voxel cone tracing: stages "vct primary", "vct diffuse cones"
  * and "vct specular cone", each only when the plan calls for it. voxels may
  * be NULL when the plan needs none. aovs may be NULL. */
-int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                   const vct_voxels *voxels, const vct_plan *plan, const vct_vct_options *options,
-                   vct_image *image, vct_aovs *aovs, vct_error *err);
+VCT_API int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                           const vct_voxels *voxels, const vct_plan *plan,
+                           const vct_vct_options *options, vct_image *image, vct_aovs *aovs,
+                           vct_error *err);
 
 /* ---- one way to every method -------------------------------------------------- */
 
@@ -214,9 +217,9 @@ typedef struct vct_whitted_result {
 } vct_whitted_result;
 
 /* result may be NULL. */
-int vct_render_whitted(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                       const vct_whitted_options *options, vct_image *image,
-                       vct_whitted_result *result, vct_error *err);
+VCT_API int vct_render_whitted(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                               const vct_whitted_options *options, vct_image *image,
+                               vct_whitted_result *result, vct_error *err);
 
 /* Photon mapping (seed 000, made progressive). Each pass traces the camera
  * rays through mirrors and glass to their first diffuse or glossy hit,
@@ -261,7 +264,7 @@ typedef struct vct_pm_options {
     int resume;
 } vct_pm_options;
 /* Defaults as above, at width x height, 64 passes. */
-vct_pm_options vct_pm_options_default(int width, int height);
+VCT_API vct_pm_options vct_pm_options_default(int width, int height);
 typedef struct vct_pm_result {
     uint32_t passes;
     uint64_t photons_emitted;                     /* photon paths, all passes */
@@ -273,9 +276,9 @@ typedef struct vct_pm_result {
     double seconds, trace_ms, grid_ms, gather_ms; /* wall time; per-part device time */
 } vct_pm_result;
 /* result may be NULL. */
-int vct_render_pm(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                  const vct_pm_options *options, vct_image *image, vct_pm_result *result,
-                  vct_error *err);
+VCT_API int vct_render_pm(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                          const vct_pm_options *options, vct_image *image, vct_pm_result *result,
+                          vct_error *err);
 
 /* The ray caster's options (vct_render_raycast's). */
 typedef vct_render_options vct_raycast_options;
@@ -326,17 +329,17 @@ typedef struct vct_render_result {
 
 /* A job with every method's defaults (vct_vct_options_default, 64 spp,
  * depth 16) at width x height, for `method`. */
-vct_render_job vct_render_job_default(vct_method method, int width, int height);
+VCT_API vct_render_job vct_render_job_default(vct_method method, int width, int height);
 /* Its image size, whichever method it names, and a new one for that method. */
-void vct_render_job_size(const vct_render_job *job, int *width, int *height);
-void vct_render_job_set_size(vct_render_job *job, int width, int height);
-const char *vct_method_name(vct_method method);
+VCT_API void vct_render_job_size(const vct_render_job *job, int *width, int *height);
+VCT_API void vct_render_job_set_size(vct_render_job *job, int width, int height);
+VCT_API const char *vct_method_name(vct_method method);
 /* -1 for an unknown name ("vct", "raycast", "pt", "voxels"). */
-int vct_method_from_name(const char *name);
+VCT_API int vct_method_from_name(const char *name);
 /* Renders `job` into the context's frame and returns it in `image` (as every
  * renderer does; see vct_frame_host_copy). result may be NULL. */
-int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
-               vct_render_result *result, vct_error *err);
+VCT_API int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
+                       vct_render_result *result, vct_error *err);
 
 /* ---- the frame and OpenGL display ----------------------------------------------- */
 
@@ -345,23 +348,23 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
  * calls, and copies it into the vct_image it returns. With host copies off
  * the returned image carries its size and rgba NULL: for displays that take
  * the frame on the device. On by default. */
-void vct_frame_host_copy(vct_context *ctx, int on);
+VCT_API void vct_frame_host_copy(vct_context *ctx, int on);
 /* The last frame's size (0 x 0 before any), and a copy of it into `rgba`,
  * which holds `floats` floats (at least width * height * 4). */
-void vct_frame_size(const vct_context *ctx, int *width, int *height);
-int vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err);
+VCT_API void vct_frame_size(const vct_context *ctx, int *width, int *height);
+VCT_API int vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err);
 
 /* A context that shares objects with an OpenGL context (cl_khr_gl_sharing on
  * GLX): glx_context is the GLXContext, x_display the X Display it belongs to.
  * Fails with the reason when the device has no such sharing or cannot share
  * with that context; plain contexts then display through the host. */
-vct_context *vct_context_create_gl(const char *selector, void *glx_context, void *x_display,
-                                   vct_error *err);
-int vct_context_shares_gl(const vct_context *ctx);
+VCT_API vct_context *vct_context_create_gl(const char *selector, void *glx_context, void *x_display,
+                                           vct_error *err);
+VCT_API int vct_context_shares_gl(const vct_context *ctx);
 /* Copies the frame into an OpenGL buffer object of at least width * height
  * * 16 bytes, on the device: acquire, copy, release, finish. Call glFinish()
  * first so that GL is done with the buffer; it is complete on return. */
-int vct_frame_to_gl_buffer(vct_context *ctx, unsigned gl_buffer, vct_error *err);
+VCT_API int vct_frame_to_gl_buffer(vct_context *ctx, unsigned gl_buffer, vct_error *err);
 
 #ifdef __cplusplus
 }

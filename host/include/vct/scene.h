@@ -3,6 +3,8 @@
 #ifndef VCT_API_SCENE_H
 #define VCT_API_SCENE_H
 
+#include "vct/export.h"
+
 #include <stdint.h>
 
 #include "vct/error.h"
@@ -94,19 +96,20 @@ typedef struct vct_scene {
 } vct_scene;
 
 /* Loads OBJ+MTL, glTF 2.0 or anything assimp reads; flattens the node tree. */
-vct_scene *vct_scene_load(const char *path, vct_error *err);
+VCT_API vct_scene *vct_scene_load(const char *path, vct_error *err);
 /* Builds a scene from arrays (copied); validates like a loaded file. */
-vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
-                                 const uint32_t *triangles, uint32_t triangle_count,
-                                 const uint32_t *triangle_material, const vct_material *materials,
-                                 uint32_t material_count, vct_error *err);
-int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_error *err);
+VCT_API vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
+                                         const uint32_t *triangles, uint32_t triangle_count,
+                                         const uint32_t *triangle_material,
+                                         const vct_material *materials, uint32_t material_count,
+                                         vct_error *err);
+VCT_API int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_error *err);
 /* Checks indices, finite values, non-empty; counts degenerates; sets bounds. */
-int vct_scene_validate(vct_scene *scene, vct_error *err);
+VCT_API int vct_scene_validate(vct_scene *scene, vct_error *err);
 /* A default camera framing the scene's bounds, looking down -z. */
-void vct_scene_default_camera(const vct_scene *scene, vct_camera *camera);
-void vct_scene_free(vct_scene *scene);
-vct_material vct_material_default(void);
+VCT_API void vct_scene_default_camera(const vct_scene *scene, vct_camera *camera);
+VCT_API void vct_scene_free(vct_scene *scene);
+VCT_API vct_material vct_material_default(void);
 
 #ifdef __cplusplus
 }

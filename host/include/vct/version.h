@@ -2,6 +2,8 @@
 #ifndef VCT_API_VERSION_H
 #define VCT_API_VERSION_H
 
+#include "vct/export.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -14,12 +16,12 @@ extern "C" {
 
 /* "major.minor.patch" of the library linked, which may differ from the
  * header's VCT_VERSION_STRING when a shared library was replaced. */
-const char *vct_version(void);
+VCT_API const char *vct_version(void);
 /* The kernel interface (kernels/README.md): VCT_KERNEL_ABI_VERSION of the
  * kernel sources this library was built with. */
-int vct_kernel_abi_version(void);
+VCT_API int vct_kernel_abi_version(void);
 /* Where kernel sources are read from: a directory, or "(embedded)". */
-const char *vct_kernel_source_dir(void);
+VCT_API const char *vct_kernel_source_dir(void);
 
 #ifdef __cplusplus
 }

@@ -196,7 +196,7 @@ int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_
         ctx->cache_hits++;
     } else {
         if (ctx->log) {
-            char message[512];
+            char message[1536];
             snprintf(message, sizeof message,
                      "compiling kernels/%s for %s (once; then cached in %s)", file, ctx->info.name,
                      vct_cache_dir());
