@@ -29,8 +29,8 @@ warm_s=$(seconds ./build/vct render scenes/cornell_box.gltf -o out/cornell_box.p
 tests_s=$(seconds ./tools/test.sh -j2)
 summary=$(grep "tests passed" "$work/last.log")
 cp out/cornell_box.png "$root/doc/cornell_box.png"
+stamp=$(bench/stamp.sh bench/first_run.sh) # the clone's: the commit measured
 cd "$root"
-stamp=$(bench/stamp.sh bench/first_run.sh)
 ratio=$(awk "BEGIN { printf \"%.1f\", $cold_s / $warm_s }")
 mkdir -p doc/results
 {

@@ -439,7 +439,8 @@ int cli_parse(const cli_command *cmd, const char *program, int argc, char **argv
     opterr = 0;
     optind = 0; /* glibc: a full reset, as for a first call */
     for (;;) {
-        const int c = getopt_long(argc, argv, ":ho:", ix.longs, NULL);
+        /* -o only where the command writes an image */
+        const int c = getopt_long(argc, argv, ix.rows[OPT_OUTPUT] ? ":ho:" : ":h", ix.longs, NULL);
         if (c == -1)
             break;
         if (c == '?')

@@ -70,6 +70,9 @@ done <"$DIR/options"
 rc=$?
 [ $rc -eq 2 ] && grep -q -- "--spp is not an option of this command (it is one of vct render's)" \
     "$DIR/err" && ok "vct info --spp refused" || { fail "vct info --spp: exit $rc"; cat "$DIR/err"; }
+"$VCT" info scene.obj -o out.png >/dev/null 2>"$DIR/err"
+[ $? -eq 2 ] && grep -q -- "unknown option -o" "$DIR/err" && ok "vct info -o refused" ||
+    { fail "vct info -o accepted"; cat "$DIR/err"; }
 "$VCT" compare a.pfm b.pfm --size 4 4 >/dev/null 2>"$DIR/err"
 [ $? -eq 2 ] && grep -q -- "--size" "$DIR/err" && ok "vct compare --size refused" ||
     fail "vct compare --size accepted"
