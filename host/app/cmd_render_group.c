@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "cli_common.h"
+#include "cli_denoise.h"
 #include "cli_layers.h"
 #include "cmd_render_group.h"
 
@@ -20,12 +21,33 @@ static void print_devices(const vct_group *g, FILE *out) {
     fprintf(out, "(voxels ms: c = copied from another device)\n");
 }
 
+/* --denoise after the devices' frame: on the first active device, with
+ * guides of its own, so the image does not depend on how the frame was
+ * split. */
+static int denoise_on_first_device(vct_group *g, const vct_scene *s, const cli_options *opt,
+                                   vct_method method, vct_image *image, const vct_image *variance,
+                                   vct_error *err) {
+    const vct_group_device *d;
+    const int n = vct_group_devices(g, &d);
+    int first = 0;
+    while (first < n && !d[first].active)
+        ++first;
+    vct_context *ctx = vct_group_context(g, first);
+    vct_accel *accel = vct_accel_build(ctx, s, &opt->accel, err);
+    cli_layers layers = {0};
+    int rc = accel ? cli_denoise_outputs(ctx, s, accel, opt, method, image,
+                                         variance->rgba ? variance : NULL, &layers, err)
+                   : (int)err->status;
+    cli_layers_free(&layers);
+    vct_accel_free(accel);
+    return rc;
+}
+
 int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
                      const char *out) {
     vct_error err = {0};
-    if (opt->aov || opt->denoise) {
-        fprintf(stderr, "vct render: --aov and --denoise take one device: give --device one "
-                        "device\n");
+    if (opt->aov) {
+        fprintf(stderr, "vct render: --aov comes from one device: give --device one device\n");
         return 1;
     }
     vct_group *g = vct_group_create(opt->device, &err);
@@ -53,7 +75,9 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
     int rc = vct_group_prepare(g, s, &build, &err);
     vct_render_job job = cli_render_job(opt, method, s);
     job.plan = &plan;
-    vct_image image = {0};
+    vct_image image = {0}, variance = {0};
+    if (opt->denoise && method == VCT_METHOD_PATHTRACE)
+        job.pathtrace.variance = &variance; /* from the summed samples */
     vct_render_result result = {0};
     if (rc == VCT_OK)
         rc = vct_group_render(g, &job, &image, &result, &err);
@@ -61,8 +85,12 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
         cli_print_result(opt, &result);
         fprintf(stderr, "devices: %d of %d active, frame in %.1f ms\n", vct_group_active_count(g),
                 n, result.seconds * 1e3);
-        rc = cli_write_image(opt, &image, NULL, out, &err);
     }
+    if (rc == VCT_OK && opt->denoise)
+        rc = denoise_on_first_device(g, s, opt, method, &image, &variance, &err);
+    if (rc == VCT_OK)
+        rc = cli_write_image(opt, &image, NULL, out, &err);
+    vct_image_free(&variance);
     if (rc == VCT_OK && opt->stats) {
         print_devices(g, stdout);
         for (int i = 0; i < n; ++i) {

@@ -25,7 +25,8 @@ static const cli_option denoise_rows[] = {
     {"denoise", 0, OPT_DENOISE, 0, NULL,
      "filter the image with the engine's denoiser, guided by the first hit's albedo, normal and "
      "depth and (pt) each pixel's variance; with --aov the noisy image and the guides are "
-     "layers too; one device (the viewer: N toggles it)"},
+     "layers too; with several devices it runs on the first, after they have summed the frame "
+     "(the viewer: one device, N toggles it)"},
 };
 GROUP(cli_group_denoise, "denoising (pt, pm, vct)", denoise_rows);
 

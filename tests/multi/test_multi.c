@@ -115,6 +115,36 @@ static vct_group *group_for(const vct_scene *s) {
     return g;
 }
 
+/* The path tracer's per-pixel variance (the denoiser's guide) from the
+ * devices' summed samples: one device's, bit for bit. */
+static void check_variance(const vct_scene *s) {
+    const method_case *c = &cases[6]; /* pt */
+    vct_error err = {0};
+    vct_context *ctx = vct_context_create("0", &err);
+    REQUIRE_OK(ctx ? VCT_OK : err.status, err);
+    vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(a ? VCT_OK : err.status, err);
+    vct_render_job job = job_of(c, s);
+    vct_image one, one_var, both, both_var;
+    job.accel = a;
+    job.pathtrace.variance = &one_var;
+    REQUIRE_OK(vct_render(ctx, &job, &one, NULL, &err), err);
+    vct_group *g = group_for(s);
+    job.accel = NULL;
+    job.pathtrace.variance = &both_var;
+    REQUIRE_OK(vct_group_render(g, &job, &both, NULL, &err), err);
+    const size_t diff = differing(&one_var, &both_var);
+    CHECK(diff == 0 && mean(&one_var) > 0.0,
+          "pt variance on two devices: %zu values differ from one device's (mean %g)", diff,
+          mean(&one_var));
+    vct_image *all[] = {&one, &one_var, &both, &both_var};
+    for (int i = 0; i < 4; ++i)
+        vct_image_free(all[i]);
+    vct_group_destroy(g);
+    vct_accel_free(a);
+    vct_context_destroy(ctx);
+}
+
 static void check_lists(void) {
     vct_error err = {0};
     vct_group *g = vct_group_create("all", &err);
@@ -424,6 +454,7 @@ int main(void) {
     check_lists();
     vct_scene *box = check_cornell_box_point_light();
     check_methods("cornell box", box);
+    check_variance(box);
     check_fixed_splits(box);
     check_slowed(box);
     check_failure(box, 3); /* whitted, subsampled: rows */

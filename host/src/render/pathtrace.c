@@ -154,7 +154,7 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
     if (rc == VCT_OK && image)
         rc = vct_run_kernel(ctx, pt->program, "pathtrace_resolve", STAGE, pixels, err, 3,
                             VCT_ARG_OF(sums), VCT_ARG_OF(pixel_count), VCT_ARG_OF(frame));
-    if (rc == VCT_OK && opt->variance)
+    if (rc == VCT_OK && image && opt->variance) /* the call that delivers the frame */
         rc = pathtrace_variance(ctx, pt->program, sums, opt, opt->variance, err);
     cl_uint dropped = 0;
     if (rc == VCT_OK && result)
