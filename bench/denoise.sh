@@ -1,7 +1,8 @@
 #!/bin/sh
 # The engine's denoiser against Intel Open Image Denoise on the scene suite:
 # the path tracer at 4 and 16 spp, denoised by each, against the suite's
-# references (bench/suite.sh renders them first). Writes
+# references (bench/suite.sh renders them first); then photon mapping and
+# cone tracing with and without the engine's filter. Writes
 # doc/results/denoise.md. OIDN comes from PyPI's pyoidn, installed here; where
 # it cannot be had, its columns say so.
 # usage: bench/denoise.sh [SIZE]   (the suite's size, default 128)
@@ -16,7 +17,9 @@ PY=$(tools/python.sh --path)
     echo "denoise: pyoidn cannot be installed: OIDN's columns stay empty" >&2
 mkdir -p out/denoise doc/results
 rows=out/denoise/rows.md
+others=out/denoise/others.md
 : >"$rows"
+: >"$others"
 stage_ms() { # stats file, stage -> device ms
     awk -v s="$2" '$0 ~ "^"s" " { print $(NF - 3); exit }' "$1"
 }
@@ -35,6 +38,18 @@ grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
         echo "| $name | $spp | $1 | $2 | $(stage_ms "$out.stats" denoise) | $3 | $4 | $(stage_ms "$out.stats" guides) | $(stage_ms "$out.stats" "path trace") |" >>"$rows"
         echo "$name $spp spp: noisy $1, ours $2, OIDN $3" >&2
     done
+    # photon mapping (16 passes) and cone tracing (its default), without and with --denoise
+    row="| $name"
+    for method in "--method pm --spp 16" ""; do
+        for dn in "" --denoise; do
+            # shellcheck disable=SC2086
+            ./build/vct render "scenes/suite/$file" $method --seed 1 --size "$SIZE" "$SIZE" $dn \
+                --stats $ambient -o out/denoise/other.pfm >out/denoise/other.stats 2>&1
+            row="$row | $(./build/vct compare out/denoise/other.pfm "$ref" | sed -n 's/^nrmse //p' |
+                cut -c1-6)"
+        done
+    done
+    echo "$row |" >>"$others"
 done
 stamp=$(bench/stamp.sh bench/denoise.sh "$@")
 {
@@ -63,5 +78,15 @@ stamp=$(bench/stamp.sh bench/denoise.sh "$@")
     echo "| scene | spp | noisy NRMSE | ours | ours ms | OIDN | OIDN ms | guides ms | path trace ms |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
     cat "$rows"
+    echo
+    echo "## Photon mapping and cone tracing"
+    echo
+    echo "The same filter without the path tracer's variance, estimated from the image instead; for"
+    echo "cone tracing on its indirect term alone. NRMSE against the same references: photon mapping"
+    echo "at 16 passes, cone tracing at its default."
+    echo
+    echo "| scene | pm | pm, denoised | vct | vct, denoised |"
+    echo "|---|---:|---:|---:|---:|"
+    cat "$others"
 } >doc/results/denoise.md
 cat doc/results/denoise.md

@@ -23,9 +23,29 @@ static void depth_image(const vct_image *nd, vct_image *depth) {
     }
 }
 
+int cli_denoise_image(vct_context *ctx, const vct_denoise_guides *g, const vct_image *image,
+                      const vct_aovs *aovs, vct_image *out, vct_error *err) {
+    const vct_denoise_options o = vct_denoise_options_default();
+    if (!aovs || !aovs->indirect.rgba)
+        return vct_denoise(ctx, image, g, &o, out, err);
+    /* Cone tracing: its direct light is exact and its specular cone is not
+     * noise; only the indirect term is filtered. */
+    vct_image filtered;
+    int rc = vct_denoise(ctx, &aovs->indirect, g, &o, &filtered, err);
+    if (rc != VCT_OK)
+        return rc;
+    const size_t values = 4 * (size_t)image->width * image->height;
+    for (size_t i = 0; i < values; ++i)
+        if (i % 4 != 3)
+            filtered.rgba[i] = image->rgba[i] + (filtered.rgba[i] - aovs->indirect.rgba[i]);
+    *out = filtered;
+    return VCT_OK;
+}
+
 int cli_denoise_outputs(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                         const cli_options *opt, vct_method method, vct_image *image,
-                        const vct_image *variance, cli_layers *layers, vct_error *err) {
+                        const vct_image *variance, const vct_aovs *aovs, cli_layers *layers,
+                        vct_error *err) {
     const int guide_layers = opt->aov && method != VCT_METHOD_VCT;
     if (!opt->denoise && !guide_layers)
         return VCT_OK;
@@ -45,9 +65,8 @@ int cli_denoise_outputs(vct_context *ctx, const vct_scene *s, const vct_accel *g
     if (rc != VCT_OK || !opt->denoise)
         return rc;
     const vct_denoise_guides guides = {albedo, nd, variance && variance->rgba ? variance : NULL};
-    const vct_denoise_options options = vct_denoise_options_default();
     vct_image denoised;
-    rc = vct_denoise(ctx, image, &guides, &options, &denoised, err);
+    rc = cli_denoise_image(ctx, &guides, image, aovs, &denoised, err);
     if (rc != VCT_OK)
         return rc;
     vct_image *noisy = opt->aov ? cli_layers_own(layers) : NULL;

@@ -6,12 +6,19 @@
 
 #include "cli_layers.h"
 
+/* `image` denoised into `out`: whole, or with aovs (cone tracing's) its
+ * indirect term alone, the rest kept as it is. */
+int cli_denoise_image(vct_context *ctx, const vct_denoise_guides *g, const vct_image *image,
+                      const vct_aovs *aovs, vct_image *out, vct_error *err);
+
 /* With --aov (and a method other than cone tracing, whose own AOVs come
  * first): the guides as layers albedo, normal, depth and, for the path
  * tracer, variance. With --denoise: `image` replaced by its denoised self
- * (the noisy one a layer, with --aov). variance: the path tracer's, or NULL. */
+ * (the noisy one a layer, with --aov). variance: the path tracer's, or NULL;
+ * aovs: cone tracing's, whose indirect term alone is then filtered, or NULL. */
 int cli_denoise_outputs(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                         const cli_options *opt, vct_method method, vct_image *image,
-                        const vct_image *variance, cli_layers *layers, vct_error *err);
+                        const vct_image *variance, const vct_aovs *aovs, cli_layers *layers,
+                        vct_error *err);
 
 #endif

@@ -36,7 +36,7 @@ static int denoise_on_first_device(vct_group *g, const vct_scene *s, const cli_o
     vct_accel *accel = vct_accel_build(ctx, s, &opt->accel, err);
     cli_layers layers = {0};
     int rc = accel ? cli_denoise_outputs(ctx, s, accel, opt, method, image,
-                                         variance->rgba ? variance : NULL, &layers, err)
+                                         variance->rgba ? variance : NULL, NULL, &layers, err)
                    : (int)err->status;
     cli_layers_free(&layers);
     vct_accel_free(accel);
@@ -46,8 +46,9 @@ static int denoise_on_first_device(vct_group *g, const vct_scene *s, const cli_o
 int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
                      const char *out) {
     vct_error err = {0};
-    if (opt->aov) {
-        fprintf(stderr, "vct render: --aov comes from one device: give --device one device\n");
+    if (opt->aov || (opt->denoise && method == VCT_METHOD_VCT)) {
+        fprintf(stderr, "vct render: --aov, and --denoise with cone tracing (it filters the "
+                        "indirect AOV), come from one device: give --device one device\n");
         return 1;
     }
     vct_group *g = vct_group_create(opt->device, &err);

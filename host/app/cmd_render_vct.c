@@ -34,7 +34,7 @@ int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt
     }
     job->voxels = v;
     job->plan = &plan;
-    job->aovs = opt->aov ? aovs : NULL;
+    job->aovs = opt->aov || opt->denoise ? aovs : NULL; /* --denoise filters the indirect AOV */
     if (rc == VCT_OK)
         rc = vct_render(ctx, job, image, NULL, err);
     job->voxels = NULL;

@@ -150,7 +150,8 @@ int cmd_render(const cli_options *opt) {
         cli_layers_add_aovs(&layers, &aovs);
     if (rc == VCT_OK)
         rc = cli_denoise_outputs(ctx, s, accel, opt, (vct_method)method, &image,
-                                 variance.rgba ? &variance : NULL, &layers, &err);
+                                 variance.rgba ? &variance : NULL,
+                                 method == VCT_METHOD_VCT ? &aovs : NULL, &layers, &err);
     if (rc == VCT_OK)
         rc = cli_write_image(opt, &image, &layers, out, &err);
     if (rc == VCT_OK) {

@@ -24,7 +24,8 @@ GROUP(cli_group_output, "output", output_rows);
 static const cli_option denoise_rows[] = {
     {"denoise", 0, OPT_DENOISE, 0, NULL,
      "filter the image with the engine's denoiser, guided by the first hit's albedo, normal and "
-     "depth and (pt) each pixel's variance; with --aov the noisy image and the guides are "
+     "depth and (pt) each pixel's variance (vct: its indirect term alone); with --aov the noisy "
+     "image and the guides are "
      "layers too; with several devices it runs on the first, after they have summed the frame "
      "(the viewer: one device, N toggles it)"},
 };

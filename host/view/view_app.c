@@ -5,6 +5,7 @@
 #include <time.h>
 
 #include "cli_common.h"
+#include "cli_denoise.h"
 #include "view_app.h"
 
 /* Bounce gathering uses the 6-cone preset, as vct_vct_prepare does. */
@@ -93,6 +94,7 @@ void view_app_free(view_app *app) {
     vct_image_free(&app->albedo);
     vct_image_free(&app->normal_depth);
     vct_image_free(&app->variance);
+    vct_aovs_free(&app->aovs);
     vct_voxels_free(app->voxels);
     vct_accel_free(app->accel);
     vct_scene_free(app->scene);
@@ -240,8 +242,11 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     job.whitted.subsample_contrast = job.raycast.subsample_contrast = app->opt.contrast;
     job.pathtrace.seed = (uint32_t)app->opt.seed;
     vct_image_free(&app->variance);
-    if (view_app_denoising(app))
+    vct_aovs_free(&app->aovs);
+    if (view_app_denoising(app)) {
         job.pathtrace.variance = &app->variance;
+        job.aovs = app->method == VIEW_VCT ? &app->aovs : NULL;
+    }
     job.pathtrace.resume = app->pt_spp > 0;
     job.voxel_view.level = app->voxel_level;
     /* Photon mapping likewise: one pass per frame. */
@@ -286,10 +291,10 @@ static int denoise_frame(view_app *app, vct_image *image, vct_error *err) {
                                &app->albedo, &app->normal_depth, err);
     const vct_denoise_guides g = {&app->albedo, &app->normal_depth,
                                   app->variance.rgba ? &app->variance : NULL};
-    const vct_denoise_options o = vct_denoise_options_default();
     vct_image out;
     if (rc == VCT_OK)
-        rc = vct_denoise(ctx, image, &g, &o, &out, err);
+        rc = cli_denoise_image(ctx, &g, image, app->method == VIEW_VCT ? &app->aovs : NULL, &out,
+                               err);
     if (rc == VCT_OK) {
         vct_image_free(image);
         *image = out;

@@ -31,6 +31,7 @@ typedef struct view_app {
     int denoise;                    /* --denoise, or N: filter pt, pm and vct frames */
     vct_image albedo, normal_depth; /* the denoiser's guides for this camera (rgba NULL: none) */
     vct_image variance;             /* the path tracer's, for the last frame */
+    vct_aovs aovs;                  /* cone tracing's, whose indirect term is filtered */
     vct_scene *scene;
     vct_accel *accel;
     vct_voxels *voxels;

@@ -27,26 +27,33 @@ inline float3 safe_albedo(float3 a) {
                     a.z > DENOISE_MIN_ALBEDO ? a.z : 1.0f);
 }
 
-/* Without the estimator's variance: the luminance variance over the 5x5
- * pixels around (an over-estimate at edges, which filters them less). */
+/* Without the estimator's variance: the smallest luminance variance of the
+ * four 3x3 windows that hold the pixel in a corner (Kuwahara's choice), so
+ * that an edge beside a pixel does not pass for noise: one window lies on
+ * the pixel's side of it. */
 __kernel void denoise_estimate_variance(__global const float4 *color, uint2 size,
                                         __global float *variance) {
     const int x = (int)get_global_id(0), y = (int)get_global_id(1);
     if (x >= (int)size.x || y >= (int)size.y)
         return;
-    float sum = 0.0f, sum2 = 0.0f, count = 0.0f;
-    for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
-            const int qx = x + dx, qy = y + dy;
-            if (qx < 0 || qy < 0 || qx >= (int)size.x || qy >= (int)size.y)
-                continue;
-            const float l = denoise_luminance(color[qy * (int)size.x + qx].xyz);
-            sum += l;
-            sum2 += l * l;
-            count += 1.0f;
+    float least = INFINITY;
+    for (int wy = -2; wy <= 0; wy += 2)
+        for (int wx = -2; wx <= 0; wx += 2) {
+            float sum = 0.0f, sum2 = 0.0f, count = 0.0f;
+            for (int dy = wy; dy <= wy + 2; ++dy)
+                for (int dx = wx; dx <= wx + 2; ++dx) {
+                    const int qx = x + dx, qy = y + dy;
+                    if (qx < 0 || qy < 0 || qx >= (int)size.x || qy >= (int)size.y)
+                        continue;
+                    const float l = denoise_luminance(color[qy * (int)size.x + qx].xyz);
+                    sum += l;
+                    sum2 += l * l;
+                    count += 1.0f;
+                }
+            const float mean = sum / count; /* the pixel itself is in every window */
+            least = fmin(least, fmax(sum2 / count - mean * mean, 0.0f));
         }
-    const float mean = sum / count;
-    variance[y * (int)size.x + x] = fmax(sum2 / count - mean * mean, 0.0f);
+    variance[y * (int)size.x + x] = least;
 }
 
 /* Each pixel's guide and depth slope, once for all passes. */

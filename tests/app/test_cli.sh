@@ -94,5 +94,13 @@ else
     fail "render --method raycast tri.obj --size 8 6 --dir-light 0 0 -1 1 1 1"; cat "$DIR/err"
 fi
 
+# --denoise with cone tracing filters its indirect term alone: without one,
+# the image is the same bits as without --denoise.
+CORNELL=$SRC/scenes/cornell_box.gltf
+"$VCT" render "$CORNELL" --size 24 16 --effect indirect=off -o "$DIR/plain.pfm" >/dev/null 2>&1
+"$VCT" render "$CORNELL" --size 24 16 --effect indirect=off --denoise -o "$DIR/dn.pfm" >/dev/null 2>&1
+cmp -s "$DIR/plain.pfm" "$DIR/dn.pfm" && ok "cone tracing's --denoise leaves direct light alone" ||
+    fail "cone tracing's --denoise changed an image without indirect light"
+
 echo "$failures failed"
 [ "$failures" -eq 0 ]

@@ -133,7 +133,7 @@ static void ref_clamp(const ref_px *in, int w, int h, float k, ref_px *out) {
         }
 }
 
-/* The whole filter; variance NULL: estimated over 5x5 pixels. sigma:
+/* The whole filter; variance NULL: the least of the four 3x3 windows'. sigma:
  * luminance, normal, depth, fireflies. */
 static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px *nd,
                         const float *variance, int w, int h, int iterations, const float sigma[4],
@@ -147,19 +147,23 @@ static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px 
             if (variance) {
                 v = variance[i];
             } else {
-                float s = 0, s2 = 0, cnt = 0;
-                for (int dy = -2; dy <= 2; ++dy)
-                    for (int dx = -2; dx <= 2; ++dx) {
-                        if (!ref_inside(w, h, x + dx, y + dy))
-                            continue;
-                        const ref_px q = color[(y + dy) * w + x + dx];
-                        const float l = ref_lum(q.r, q.g, q.b);
-                        s += l;
-                        s2 += l * l;
-                        cnt += 1.0f;
+                v = INFINITY;
+                for (int wy = -2; wy <= 0; wy += 2)
+                    for (int wx = -2; wx <= 0; wx += 2) {
+                        float s = 0, s2 = 0, cnt = 0;
+                        for (int dy = wy; dy <= wy + 2; ++dy)
+                            for (int dx = wx; dx <= wx + 2; ++dx) {
+                                if (!ref_inside(w, h, x + dx, y + dy))
+                                    continue;
+                                const ref_px q = color[(y + dy) * w + x + dx];
+                                const float l = ref_lum(q.r, q.g, q.b);
+                                s += l;
+                                s2 += l * l;
+                                cnt += 1.0f;
+                            }
+                        const float mean = s / cnt;
+                        v = fminf(v, fmaxf(s2 / cnt - mean * mean, 0.0f));
                     }
-                const float mean = s / cnt;
-                v = fmaxf(s2 / cnt - mean * mean, 0.0f);
             }
             const float ar = ref_safe(albedo[i].r), ag = ref_safe(albedo[i].g),
                         ab = ref_safe(albedo[i].b), la = ref_lum(ar, ag, ab);
