@@ -17,7 +17,7 @@ import subprocess
 import sys
 
 STAGES = ["runtime", "parallel", "scene", "accel", "light", "voxel", "photon", "render", "image",
-          "denoise", "multi"]
+          "denoise", "device_scene", "multi"]
 # image/ (files and metrics of host images) is used by the renderers but
 # uses only the runtime, and denoise/ (a filter over images and their
 # guides) only the runtime and images: they sit beside the pipeline, not

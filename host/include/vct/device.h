@@ -64,6 +64,13 @@ typedef struct vct_program_stats {
 } vct_program_stats;
 VCT_API void vct_context_program_stats(const vct_context *ctx, vct_program_stats *stats);
 
+/* Bytes this context has copied from the host to the device and back since
+ * it was made: scene data, parameters and read-backs alike. */
+typedef struct vct_transfer_stats {
+    uint64_t uploaded, downloaded;
+} vct_transfer_stats;
+VCT_API void vct_context_transfer_stats(const vct_context *ctx, vct_transfer_stats *stats);
+
 /* ---- statistics ----------------------------------------------------------- */
 
 typedef struct vct_stage_stat {

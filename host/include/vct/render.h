@@ -314,6 +314,14 @@ typedef struct vct_render_job {
     vct_vct_options vct;
     vct_voxel_view_options voxel_view;
     vct_band band; /* every method but path tracing and photon mapping */
+    /* How vct_device_scene_render builds what the job reads (vct_render
+     * takes them built, in scene, accel and voxels above): the acceleration
+     * structure; for cone tracing and the voxel view the voxels, their
+     * bricks and light bounces (1 to 4, VCT_DEFAULT_BOUNCES). */
+    vct_accel_options accel_options;
+    vct_voxel_options voxel_options;
+    vct_brick_options brick_options;
+    uint32_t bounces;
 } vct_render_job;
 
 typedef struct vct_render_result {
@@ -328,7 +336,8 @@ typedef struct vct_render_result {
 } vct_render_result;
 
 /* A job with every method's defaults (vct_vct_options_default, 64 spp,
- * depth 16) at width x height, for `method`. */
+ * depth 16; a BVH, 128^3 voxels with isotropic bricks, VCT_DEFAULT_BOUNCES)
+ * at width x height, for `method`. */
 VCT_API vct_render_job vct_render_job_default(vct_method method, int width, int height);
 /* Its image size, whichever method it names, and a new one for that method. */
 VCT_API void vct_render_job_size(const vct_render_job *job, int *width, int *height);

@@ -14,6 +14,7 @@
  *   vct/accel.h     the triangle grid and ray queries
  *   vct/voxels.h    voxels, octree, bricks, light injection, cones
  *   vct/render.h    renderers, the effect plan, the frame, OpenGL display
+ *   vct/device_scene.h  a scene committed to a context: upload once, render many times
  *   vct/image.h     images, files, error metrics
  *   vct/denoise.h   the denoiser
  *   vct/multi.h     one frame on several devices */
@@ -29,6 +30,7 @@
 #include "vct/accel.h"
 #include "vct/voxels.h"
 #include "vct/render.h"
+#include "vct/device_scene.h"
 #include "vct/image.h"
 #include "vct/denoise.h"
 #include "vct/multi.h"

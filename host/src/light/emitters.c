@@ -32,8 +32,8 @@ static double triangle_area(const vct_scene *s, uint32_t t) {
     return 0.5 * sqrt(cx * cx + cy * cy + cz * cz);
 }
 
-int vct_emitters_build(vct_context *ctx, const vct_scene *s, vct_emitter_weight weight,
-                       const char *stage, vct_emitters *e, vct_error *err) {
+static int build(vct_context *ctx, const vct_scene *s, vct_emitter_weight weight, const char *stage,
+                 vct_emitters *e, vct_error *err) {
     memset(e, 0, sizeof *e);
     const size_t n = (size_t)s->triangle_count + 1;
     uint32_t *tris = malloc(4 * n);
@@ -99,8 +99,41 @@ int vct_emitters_set_args(cl_kernel k, int first, const vct_emitters *e, cl_uint
 }
 
 void vct_emitters_release(vct_context *ctx, vct_emitters *e) {
+    if (e->borrowed)
+        return;
     vct_buffer_release(ctx, e->tris);
     vct_buffer_release(ctx, e->cdf);
     vct_buffer_release(ctx, e->scale);
     e->tris = e->cdf = e->scale = NULL;
+}
+
+int vct_emitters_build(vct_context *ctx, const vct_scene *s, vct_emitter_weight weight,
+                       const char *stage, vct_emitters *e, vct_error *err) {
+    vct_resident *r = vct_resident_find(ctx, s);
+    if (!r)
+        return build(ctx, s, weight, stage, e, err);
+    if (!r->emitters[weight]) {
+        vct_emitters *own = calloc(1, sizeof *own);
+        if (!own)
+            return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
+        const uint64_t before = ctx->transfers.uploaded;
+        if (build(ctx, s, weight, stage, own, err) != VCT_OK) {
+            free(own);
+            return err->status;
+        }
+        r->scene_bytes += ctx->transfers.uploaded - before;
+        r->emitters[weight] = own;
+    }
+    *e = *r->emitters[weight];
+    e->borrowed = 1;
+    return VCT_OK;
+}
+
+void vct_emitters_release_resident(vct_context *ctx, vct_resident *r) {
+    for (int w = 0; w < 2; ++w)
+        if (r->emitters[w]) {
+            vct_emitters_release(ctx, r->emitters[w]);
+            free(r->emitters[w]);
+            r->emitters[w] = NULL;
+        }
 }

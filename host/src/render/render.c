@@ -3,7 +3,9 @@
  * multi-device splitter need no case per method. */
 #include <string.h>
 
+#include "accel/accel.h"
 #include "runtime/runtime.h"
+#include "voxel/voxels.h"
 
 static const char *const method_names[VCT_METHODS] = {"vct",    "raycast", "pt",
                                                       "voxels", "whitted", "pm"};
@@ -43,6 +45,9 @@ vct_render_job vct_render_job_default(vct_method method, int width, int height) 
     job.voxel_view.width = width;
     job.voxel_view.height = height;
     job.voxel_view.level = VCT_VOXEL_VIEW_LEAVES;
+    job.voxel_options.resolution = 128;
+    job.brick_options.storage = VCT_BRICKS_AUTO;
+    job.bounces = VCT_DEFAULT_BOUNCES;
     return job;
 }
 
@@ -83,7 +88,7 @@ void vct_render_job_set_size(vct_render_job *job, int width, int height) {
 }
 
 /* What the job's method reads, present. */
-static int job_check(const vct_render_job *job, vct_error *err) {
+static int job_check(const vct_context *ctx, const vct_render_job *job, vct_error *err) {
     const char *name = vct_method_name(job->method);
     if (job->method < 0 || job->method >= VCT_METHODS)
         return vct_fail(err, VCT_ERR_INPUT, "render: unknown method %d", (int)job->method);
@@ -98,6 +103,12 @@ static int job_check(const vct_render_job *job, vct_error *err) {
         return vct_fail(err, VCT_ERR_INPUT,
                         "render (voxels): the job has no voxels: build them with vct_voxelize "
                         "and vct_octree_build");
+    if ((job->accel && job->accel->ctx != ctx) || (job->voxels && job->voxels->ctx != ctx))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "render (%s): the job's %s was built on another context: build it on "
+                        "this one (or copy voxels with vct_voxels_copy)",
+                        name,
+                        job->accel && job->accel->ctx != ctx ? "acceleration structure" : "voxels");
     return VCT_OK;
 }
 
@@ -117,7 +128,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
                vct_render_result *result, vct_error *err) {
     const double start = vct_now_ms();
     memset(image, 0, sizeof *image);
-    int rc = job_check(job, err);
+    int rc = job_check(ctx, job, err);
     vct_pathtrace_result pt = {0};
     vct_whitted_result wr = {0, 0, NULL, 0};
     vct_pm_result pm = {0};

@@ -8,6 +8,7 @@
 #include "light/emitters.h"
 #include "render/frame.h"
 #include "render/vct_caustics.h"
+#include "render/vct_relight.h"
 #include "voxel/bounce_rest.h"
 #include "voxel/cones.h"
 #include "scene/scene_device.h"
@@ -132,15 +133,31 @@ int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_acc
     return inject_bounce(ctx, s, g, v, cs, diffuse_cones, 1, err);
 }
 
+/* The bounces after direct light: the last bounce's radiance is filtered
+ * once, after the rest of the series is added. */
+static int light_bounces(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
+                         const vct_cone_settings *cs, uint32_t bounces, vct_error *err) {
+    int rc = VCT_OK;
+    for (uint32_t b = 1; rc == VCT_OK && b < bounces; ++b)
+        rc = inject_bounce(ctx, s, g, v, cs, 6, b + 1 < bounces || !v->bounce_rest, err);
+    return rc == VCT_OK ? vct_voxels_bounce_rest(ctx, v, err) : rc;
+}
+
+static int check_bounces(uint32_t bounces, vct_error *err) {
+    if (bounces < 1 || bounces > 4)
+        return vct_fail(err, VCT_ERR_INPUT, "%u bounces: give 1 (direct light in the voxels) to 4",
+                        bounces);
+    return VCT_OK;
+}
+
 int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, const vct_plan *plan,
                     const vct_voxel_options *vo, const vct_brick_options *bo, uint32_t bounces,
                     const vct_cone_settings *cs, vct_voxels **out, vct_error *err) {
     *out = NULL;
     if (!vct_plan_needs_voxels(plan))
         return VCT_OK;
-    if (bounces < 1 || bounces > 4)
-        return vct_fail(err, VCT_ERR_INPUT, "%u bounces: give 1 (direct light in the voxels) to 4",
-                        bounces);
+    if (check_bounces(bounces, err) != VCT_OK)
+        return err->status;
     vct_voxels *v = vct_voxelize(ctx, s, vo, err);
     if (v)
         v->emitters_by_cones = plan->emitters_by_cones;
@@ -156,17 +173,22 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
     bricks.radiance_later = 0;
     if (rc == VCT_OK)
         rc = vct_bricks_build(ctx, v, &bricks, err);
-    /* The last bounce's radiance is filtered once, after the rest. */
-    for (uint32_t b = 1; rc == VCT_OK && lit && b < bounces; ++b)
-        rc = inject_bounce(ctx, s, g, v, cs, 6, b + 1 < bounces || !v->bounce_rest, err);
     if (rc == VCT_OK && lit)
-        rc = vct_voxels_bounce_rest(ctx, v, err);
+        rc = light_bounces(ctx, s, g, v, cs, bounces, err);
     if (rc != VCT_OK) {
         vct_voxels_free(v);
         return rc;
     }
     *out = v;
     return VCT_OK;
+}
+
+int vct_vct_relight(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
+                    uint32_t bounces, const vct_cone_settings *cs, vct_error *err) {
+    if (check_bounces(bounces, err) != VCT_OK)
+        return err->status;
+    const int rc = vct_voxels_inject_light(ctx, s, g, v, err);
+    return rc == VCT_OK ? light_bounces(ctx, s, g, v, cs, bounces, err) : rc;
 }
 
 /* -D options: the planned effects, which also choose the kernels the

@@ -52,6 +52,8 @@ cl_mem vct_buffer_create(vct_context *ctx, const char *stage, const char *what, 
         return NULL;
     }
     count_allocation(ctx, bytes);
+    if (host)
+        ctx->transfers.uploaded += bytes;
     return mem;
 }
 
@@ -101,6 +103,7 @@ int vct_buffer_read(vct_context *ctx, const char *stage, cl_mem mem, size_t offs
     cl_event ev = NULL;
     VCT_CL(err, stage,
            clEnqueueReadBuffer(ctx->queue, mem, CL_TRUE, offset, bytes, dst, 0, NULL, &ev));
+    ctx->transfers.downloaded += bytes;
     return vct_record_event(ctx, ev, "read", err);
 }
 
@@ -111,6 +114,7 @@ int vct_buffer_write(vct_context *ctx, const char *stage, cl_mem mem, size_t off
     cl_event ev = NULL;
     VCT_CL(err, stage,
            clEnqueueWriteBuffer(ctx->queue, mem, CL_TRUE, offset, bytes, src, 0, NULL, &ev));
+    ctx->transfers.uploaded += bytes;
     return vct_record_event(ctx, ev, "write", err);
 }
 

@@ -41,8 +41,12 @@ struct vct_context {
     int pending_count;
     vct_kernel_count kernel_counts[VCT_MAX_KERNEL_NAMES];
     int kernel_count_n;
-    double bytes_live;       /* device bytes currently allocated through vct_buffer */
-    double bytes_stage_peak; /* most bytes live during the current stage */
+    double bytes_live;            /* device bytes currently allocated through vct_buffer */
+    double bytes_stage_peak;      /* most bytes live during the current stage */
+    vct_transfer_stats transfers; /* host <-> device copies through vct_buffer */
+    /* The device scenes committed on this context (scene/scene_resident.h):
+     * stages take their scene's buffers from them instead of uploading. */
+    struct vct_resident *resident;
     /* Tuning chosen from the device type (see parallel/primitives.c). */
     size_t scan_group_size;
     size_t scan_groups;

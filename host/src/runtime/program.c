@@ -240,3 +240,7 @@ void vct_context_program_stats(const vct_context *ctx, vct_program_stats *stats)
     stats->cached = ctx->cache_hits;
     stats->ms = ctx->build_ms;
 }
+
+void vct_context_transfer_stats(const vct_context *ctx, vct_transfer_stats *stats) {
+    *stats = ctx->transfers;
+}

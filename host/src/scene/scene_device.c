@@ -6,6 +6,7 @@
 
 #include "runtime/runtime.h"
 #include "scene/scene_device.h"
+#include "scene/scene_resident.h"
 
 int vct_camera_desc_make(const vct_camera *cam, int width, int height, vct_camera_desc *d,
                          vct_error *err) {
@@ -74,6 +75,12 @@ void vct_material_desc_make(const vct_material *m, vct_material_desc *d) {
         d->extra.s[3] = m->alpha > 0.0f ? m->alpha_cutoff / m->alpha : INFINITY;
 }
 
+static size_t buffer_bytes(cl_mem mem) {
+    size_t bytes = 0;
+    clGetMemObjectInfo(mem, CL_MEM_SIZE, sizeof bytes, &bytes, NULL);
+    return bytes;
+}
+
 /* The texture buffers of b (see scene_device.h). */
 static int texture_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
                                 vct_scene_buffers *b, vct_error *err) {
@@ -128,6 +135,8 @@ int vct_scene_texture_args(cl_kernel k, int first, const vct_scene_buffers *b, c
 }
 
 void vct_scene_buffers_release(vct_context *ctx, vct_scene_buffers *b) {
+    if (b->borrowed)
+        return;
     vct_buffer_release(ctx, b->materials);
     vct_buffer_release(ctx, b->tri_material);
     vct_buffer_release(ctx, b->lights);
@@ -136,20 +145,31 @@ void vct_scene_buffers_release(vct_context *ctx, vct_scene_buffers *b) {
     vct_buffer_release(ctx, b->tri_uvs);
 }
 
-int vct_scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
-                           vct_scene_buffers *b, vct_error *err) {
-    memset(b, 0, sizeof *b);
-    vct_material_desc *mats = calloc(s->material_count, sizeof *mats);
-    vct_light_desc *lights = calloc(s->light_count + 1, sizeof *lights);
-    if (!mats || !lights) {
-        free(mats);
-        free(lights);
+/* The kernels' material table and light list of s (lights: one more
+ * element, so that a scene without lights still has a buffer). */
+static int descs_make(const vct_scene *s, const char *stage, vct_material_desc **mats,
+                      vct_light_desc **lights, vct_error *err) {
+    *mats = calloc(s->material_count + 1, sizeof **mats);
+    *lights = calloc(s->light_count + 1, sizeof **lights);
+    if (!*mats || !*lights) {
+        free(*mats);
+        free(*lights);
         return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", stage);
     }
     for (uint32_t i = 0; i < s->material_count; ++i)
-        vct_material_desc_make(&s->materials[i], &mats[i]);
+        vct_material_desc_make(&s->materials[i], &(*mats)[i]);
     for (uint32_t i = 0; i < s->light_count; ++i)
-        vct_light_desc_make(&s->lights[i], &lights[i]);
+        vct_light_desc_make(&s->lights[i], &(*lights)[i]);
+    return VCT_OK;
+}
+
+static int upload(vct_context *ctx, const vct_scene *s, const char *stage, vct_scene_buffers *b,
+                  vct_error *err) {
+    memset(b, 0, sizeof *b);
+    vct_material_desc *mats;
+    vct_light_desc *lights;
+    if (descs_make(s, stage, &mats, &lights, err) != VCT_OK)
+        return err->status;
     b->light_count = s->light_count;
     b->materials = vct_buffer_create(ctx, stage, "materials", sizeof *mats * s->material_count,
                                      CL_MEM_READ_ONLY, mats, err);
@@ -166,5 +186,67 @@ int vct_scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *sta
     const int rc = b->lights ? texture_buffers_make(ctx, s, stage, b, err) : (int)err->status;
     if (rc != VCT_OK)
         vct_scene_buffers_release(ctx, b);
+    return rc;
+}
+
+int vct_scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
+                           vct_scene_buffers *b, vct_error *err) {
+    vct_resident *r = vct_resident_find(ctx, s);
+    if (!r)
+        return upload(ctx, s, stage, b, err);
+    if (!r->has_buffers) {
+        const uint64_t before = ctx->transfers.uploaded;
+        if (upload(ctx, s, stage, &r->buffers, err) != VCT_OK)
+            return err->status;
+        r->has_buffers = 1;
+        r->scene_bytes += ctx->transfers.uploaded - before;
+    }
+    *b = r->buffers;
+    b->borrowed = 1;
+    return VCT_OK;
+}
+
+vct_resident *vct_resident_find(vct_context *ctx, const vct_scene *s) {
+    for (vct_resident *r = ctx->resident; r; r = r->next)
+        if (r->scene == s)
+            return r;
+    return NULL;
+}
+
+void vct_resident_release_buffers(vct_context *ctx, vct_resident *r) {
+    if (r->has_buffers)
+        vct_scene_buffers_release(ctx, &r->buffers);
+    memset(&r->buffers, 0, sizeof r->buffers);
+    r->has_buffers = 0;
+}
+
+int vct_resident_update(vct_context *ctx, vct_resident *r, unsigned changed, vct_error *err) {
+    static const char *const stage = "scene update";
+    const vct_scene *s = r->scene;
+    if (!r->has_buffers)
+        return VCT_OK; /* made at first use, from the scene as it is then */
+    if ((changed & (VCT_CHANGED_GEOMETRY | VCT_CHANGED_TEXTURES)) ||
+        s->material_count * sizeof(vct_material_desc) != buffer_bytes(r->buffers.materials) ||
+        s->light_count != r->buffers.light_count) {
+        vct_resident_release_buffers(ctx, r);
+        return VCT_OK;
+    }
+    if (!(changed & (VCT_CHANGED_MATERIALS | VCT_CHANGED_LIGHTS)))
+        return VCT_OK;
+    vct_material_desc *mats;
+    vct_light_desc *lights;
+    if (descs_make(s, stage, &mats, &lights, err) != VCT_OK)
+        return err->status;
+    const uint64_t before = ctx->transfers.uploaded;
+    int rc = VCT_OK;
+    if (changed & VCT_CHANGED_MATERIALS)
+        rc = vct_buffer_write(ctx, stage, r->buffers.materials, 0, sizeof *mats * s->material_count,
+                              mats, err);
+    if (rc == VCT_OK && (changed & VCT_CHANGED_LIGHTS))
+        rc = vct_buffer_write(ctx, stage, r->buffers.lights, 0, sizeof *lights * s->light_count,
+                              lights, err);
+    r->scene_bytes += ctx->transfers.uploaded - before;
+    free(mats);
+    free(lights);
     return rc;
 }

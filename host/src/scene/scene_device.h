@@ -19,12 +19,15 @@ typedef struct vct_scene_buffers {
     cl_mem materials, tri_material, lights;
     cl_mem texels, texture_table, tri_uvs;
     cl_uint light_count;
+    int borrowed; /* 1: a committed scene's (scene_resident.h); release leaves them */
 } vct_scene_buffers;
 
 /* The three texture buffers' kernel arguments (TEXTURE_ARGS) from `first`. */
 int vct_scene_texture_args(cl_kernel k, int first, const vct_scene_buffers *b, const char *stage,
                            vct_error *err);
 
+/* The scene's buffers: a committed scene's resident ones (borrowed), else
+ * uploaded for this call. */
 int vct_scene_buffers_make(vct_context *ctx, const vct_scene *s, const char *stage,
                            vct_scene_buffers *b, vct_error *err);
 void vct_scene_buffers_release(vct_context *ctx, vct_scene_buffers *b);

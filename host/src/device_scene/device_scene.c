@@ -1,0 +1,223 @@
+/* A scene committed to a context: the resident scene data, the emitter
+ * tables, the acceleration structure and the voxels, each built at first
+ * need and kept until a commit finds a change it depends on. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "device_scene/scene_digest.h"
+#include "light/emitters.h"
+#include "render/vct_relight.h"
+#include "runtime/runtime.h"
+#include "scene/scene_resident.h"
+
+/* What the voxels were built with: geometry (voxelization, octree, bricks)
+ * and light (injection and bounces). Zeroed before it is filled, so that
+ * whole structs compare. */
+typedef struct voxel_key {
+    vct_voxel_options voxel;
+    vct_brick_options bricks;
+    int emitters_by_cones;
+} voxel_key;
+
+typedef struct light_key {
+    int lit;
+    uint32_t bounces;
+    vct_cone_settings cones;
+} light_key;
+
+struct vct_device_scene {
+    vct_context *ctx;
+    const vct_scene *scene;
+    vct_resident resident; /* on ctx's list while the device scene lives */
+    vct_scene_digest digest;
+    vct_accel *accel;
+    vct_accel_options accel_key;
+    vct_voxels *voxels; /* NULL: none built, or the last plan needed none */
+    voxel_key voxel_key;
+    light_key light_key;
+    int light_stale;              /* the lights changed since the voxels' light was made */
+    vct_device_scene_stats stats; /* scene_bytes: the acceleration structures' uploads */
+};
+
+vct_device_scene *vct_device_scene_create(vct_context *ctx, const vct_scene *scene,
+                                          vct_error *err) {
+    if (!ctx || !scene) {
+        vct_fail(err, VCT_ERR_INPUT, "device scene: give a context and a scene");
+        return NULL;
+    }
+    if (vct_resident_find(ctx, scene)) {
+        vct_fail(err, VCT_ERR_INPUT,
+                 "device scene: this scene is already committed to this context: commit that "
+                 "device scene again instead (vct_device_scene_commit)");
+        return NULL;
+    }
+    vct_device_scene *ds = calloc(1, sizeof *ds);
+    if (!ds) {
+        vct_fail(err, VCT_ERR_MEMORY, "device scene: out of host memory");
+        return NULL;
+    }
+    ds->ctx = ctx;
+    ds->scene = scene;
+    ds->resident.scene = scene;
+    ds->resident.next = ctx->resident;
+    ctx->resident = &ds->resident;
+    vct_scene_digest_make(scene, &ds->digest);
+    ds->stats.commits = 1;
+    return ds;
+}
+
+static void drop_voxels(vct_device_scene *ds) {
+    vct_voxels_free(ds->voxels);
+    ds->voxels = NULL;
+    ds->light_stale = 0;
+}
+
+int vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
+    vct_scene_digest now;
+    vct_scene_digest_make(ds->scene, &now);
+    const unsigned changed = vct_scene_digest_changes(&ds->digest, &now);
+    ++ds->stats.commits;
+    if (!changed)
+        return VCT_OK;
+    ++ds->stats.changes;
+    const int masks_changed = now.masks != ds->digest.masks;
+    ds->digest = now;
+    vct_context *ctx = ds->ctx;
+    const unsigned shape = VCT_CHANGED_GEOMETRY | VCT_CHANGED_MATERIALS | VCT_CHANGED_TEXTURES;
+    if (changed & (VCT_CHANGED_GEOMETRY | VCT_CHANGED_MATERIALS))
+        vct_emitters_release_resident(ctx, &ds->resident);
+    if ((changed & VCT_CHANGED_GEOMETRY) || masks_changed) {
+        vct_accel_free(ds->accel);
+        ds->accel = NULL;
+    }
+    if (changed & shape)
+        drop_voxels(ds);
+    else if (changed & VCT_CHANGED_LIGHTS)
+        ds->light_stale = 1;
+    /* the camera is read at each render; nothing holds it */
+    return vct_resident_update(ctx, &ds->resident, changed, err);
+}
+
+static int need_accel(vct_device_scene *ds, const vct_accel_options *options, vct_error *err) {
+    if (ds->accel && memcmp(&ds->accel_key, options, sizeof *options) == 0)
+        return VCT_OK;
+    vct_accel_free(ds->accel);
+    const uint64_t before = ds->ctx->transfers.uploaded;
+    ds->accel = vct_accel_build(ds->ctx, ds->scene, options, err);
+    ds->stats.scene_bytes += ds->ctx->transfers.uploaded - before;
+    if (!ds->accel)
+        return err->status;
+    ds->accel_key = *options;
+    ++ds->stats.accel_builds;
+    return VCT_OK;
+}
+
+static void keys_make(const vct_render_job *job, const vct_plan *plan, voxel_key *vk,
+                      light_key *lk) {
+    memset(vk, 0, sizeof *vk);
+    memset(lk, 0, sizeof *lk);
+    vk->voxel = job->voxel_options;
+    vk->bricks = job->brick_options;
+    vk->bricks.radiance_later = 0;
+    vk->emitters_by_cones = plan->emitters_by_cones;
+    lk->lit = vct_plan_needs_voxel_light(plan);
+    lk->bounces = lk->lit ? job->bounces : 0;
+    if (lk->lit)
+        lk->cones = job->vct.cones;
+}
+
+/* The voxels the job reads: kept when built with the same settings from
+ * the same geometry, relit when only the lights or the light settings
+ * changed, else built again. */
+static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vct_plan *plan,
+                       vct_error *err) {
+    voxel_key vk;
+    light_key lk;
+    keys_make(job, plan, &vk, &lk);
+    const int same_shape = ds->voxels && memcmp(&vk, &ds->voxel_key, sizeof vk) == 0;
+    const int same_light = memcmp(&lk, &ds->light_key, sizeof lk) == 0 && !ds->light_stale;
+    if (same_shape && same_light)
+        return VCT_OK;
+    /* a plan that drops light needs voxels without it: build them again */
+    if (same_shape && lk.lit && ds->light_key.lit) {
+        const int rc =
+            vct_vct_relight(ds->ctx, ds->scene, ds->accel, ds->voxels, lk.bounces, &lk.cones, err);
+        if (rc != VCT_OK) {
+            drop_voxels(ds);
+            return rc;
+        }
+        ds->light_key = lk;
+        ds->light_stale = 1;
+        ++ds->stats.light_builds;
+        return VCT_OK;
+    }
+    drop_voxels(ds);
+    const int rc = vct_vct_prepare(ds->ctx, ds->scene, ds->accel, plan, &vk.voxel, &vk.bricks,
+                                   job->bounces, &job->vct.cones, &ds->voxels, err);
+    if (rc != VCT_OK || !ds->voxels)
+        return rc;
+    ds->voxel_key = vk;
+    ds->light_key = lk;
+    ++ds->stats.voxel_builds;
+    ds->stats.light_builds += (uint32_t)lk.lit;
+    return VCT_OK;
+}
+
+int vct_device_scene_render(vct_device_scene *ds, const vct_render_job *job, vct_image *image,
+                            vct_render_result *result, vct_error *err) {
+    memset(image, 0, sizeof *image);
+    int rc = vct_device_scene_commit(ds, err);
+    vct_render_job own = *job;
+    own.scene = ds->scene;
+    vct_plan plan;
+    if (job->plan)
+        plan = *job->plan;
+    else
+        vct_plan_make(ds->scene, NULL, &plan);
+    own.plan = &plan;
+    vct_plan voxel_plan = plan;
+    if (job->method == VCT_METHOD_VOXELS && !vct_plan_needs_voxels(&plan))
+        voxel_plan.on[VCT_EFFECT_AO] = 1; /* the view needs voxels, without light */
+    const int voxels = job->method == VCT_METHOD_VOXELS ||
+                       (job->method == VCT_METHOD_VCT && vct_plan_needs_voxels(&plan));
+    /* every method traces rays but the voxel view, and light injection
+     * casts shadow rays */
+    if (rc == VCT_OK && (job->method != VCT_METHOD_VOXELS || vct_plan_needs_voxel_light(&plan)))
+        rc = need_accel(ds, &job->accel_options, err);
+    if (rc == VCT_OK && voxels)
+        rc = need_voxels(ds, job, &voxel_plan, err);
+    if (rc != VCT_OK)
+        return rc;
+    own.accel = ds->accel;
+    own.voxels = voxels ? ds->voxels : NULL;
+    return vct_render(ds->ctx, &own, image, result, err);
+}
+
+void vct_device_scene_stats_get(const vct_device_scene *ds, vct_device_scene_stats *stats) {
+    *stats = ds->stats;
+    stats->scene_bytes += ds->resident.scene_bytes;
+}
+
+const vct_accel *vct_device_scene_accel(const vct_device_scene *ds) {
+    return ds->accel;
+}
+
+const vct_voxels *vct_device_scene_voxels(const vct_device_scene *ds) {
+    return ds->voxels;
+}
+
+void vct_device_scene_release(vct_device_scene *ds) {
+    if (!ds)
+        return;
+    vct_context *ctx = ds->ctx;
+    drop_voxels(ds);
+    vct_accel_free(ds->accel);
+    vct_emitters_release_resident(ctx, &ds->resident);
+    vct_resident_release_buffers(ctx, &ds->resident);
+    for (vct_resident **at = &ctx->resident; *at; at = &(*at)->next)
+        if (*at == &ds->resident) {
+            *at = ds->resident.next;
+            break;
+        }
+    free(ds);
+}

@@ -1,0 +1,240 @@
+/* The committed device scene: its renders equal those made from structures
+ * built by hand, bit for bit; an unchanged scene's second render uploads no
+ * scene data and rebuilds nothing; a change rebuilds only what depends on
+ * it (a moved light: no BVH and no voxels; a changed material: no BVH), and
+ * what it renders then equals a fresh device scene of the changed scene;
+ * objects of another context are refused. */
+#include <string.h>
+
+#include "check.h"
+
+#define SIZE 32
+
+static vct_context *ctx;
+
+static vct_render_job job_for(vct_method method) {
+    vct_render_job job = vct_render_job_default(method, SIZE, SIZE);
+    job.voxel_options.resolution = 32;
+    job.bounces = 2;
+    job.pathtrace.spp = 4;
+    job.pathtrace.seed = 7;
+    job.pm.passes = 2;
+    job.pm.photons_per_pass = 4096;
+    return job;
+}
+
+/* The same render from structures built by hand (vct_accel_build,
+ * vct_vct_prepare, vct_render). */
+static vct_image by_hand(const vct_scene *s, vct_method method) {
+    vct_error err = {0};
+    vct_render_job job = job_for(method);
+    vct_accel *a = vct_accel_build(ctx, s, &job.accel_options, &err);
+    REQUIRE_OK(a ? VCT_OK : err.status, err);
+    vct_plan plan;
+    vct_plan_make(s, NULL, &plan);
+    vct_voxels *v = NULL;
+    if (method == VCT_METHOD_VCT || method == VCT_METHOD_VOXELS)
+        REQUIRE_OK(vct_vct_prepare(ctx, s, a, &plan, &job.voxel_options, &job.brick_options,
+                                   job.bounces, &job.vct.cones, &v, &err),
+                   err);
+    job.scene = s;
+    job.accel = a;
+    job.voxels = v;
+    vct_image im;
+    REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
+    vct_voxels_free(v);
+    vct_accel_free(a);
+    return im;
+}
+
+static vct_image by_device_scene(vct_device_scene *ds, vct_method method) {
+    vct_error err = {0};
+    vct_render_job job = job_for(method);
+    vct_image im;
+    REQUIRE_OK(vct_device_scene_render(ds, &job, &im, NULL, &err), err);
+    return im;
+}
+
+static size_t differ(const vct_image *a, const vct_image *b) {
+    if (a->width != b->width || a->height != b->height)
+        return (size_t)-1;
+    size_t n = 0;
+    for (size_t i = 0; i < (size_t)a->width * a->height * 4; ++i)
+        n += memcmp(&a->rgba[i], &b->rgba[i], sizeof(float)) != 0;
+    return n;
+}
+
+static double sum(const vct_image *a) {
+    double total = 0.0;
+    for (size_t i = 0; i < (size_t)a->width * a->height * 4; i += 4)
+        total += a->rgba[i] + a->rgba[i + 1] + a->rgba[i + 2];
+    return total;
+}
+
+static const vct_method methods[] = {VCT_METHOD_RAYCAST, VCT_METHOD_WHITTED, VCT_METHOD_PATHTRACE,
+                                     VCT_METHOD_PM,      VCT_METHOD_VCT,     VCT_METHOD_VOXELS};
+
+/* Every method through one device scene equals the same method by hand;
+ * rendering it again uploads no scene data and builds nothing. */
+static void check_same_images(const char *name, const vct_scene *s) {
+    vct_error err = {0};
+    vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
+    REQUIRE_OK(ds ? VCT_OK : err.status, err);
+    for (size_t m = 0; m < sizeof methods / sizeof *methods; ++m) {
+        const char *method = vct_method_name(methods[m]);
+        vct_image hand = by_hand(s, methods[m]);
+        vct_image first = by_device_scene(ds, methods[m]);
+        vct_device_scene_stats before;
+        vct_device_scene_stats_get(ds, &before);
+        vct_transfer_stats up0, up1;
+        vct_context_transfer_stats(ctx, &up0);
+        vct_image again = by_device_scene(ds, methods[m]);
+        vct_context_transfer_stats(ctx, &up1);
+        vct_device_scene_stats after;
+        vct_device_scene_stats_get(ds, &after);
+        CHECK(differ(&hand, &first) == 0, "%s, %s: %zu values differ from the render by hand", name,
+              method, differ(&hand, &first));
+        CHECK(sum(&hand) > 0.0, "%s, %s: a black image proves nothing", name, method);
+        if (methods[m] != VCT_METHOD_PM) /* photon mapping's second call goes on */
+            CHECK(differ(&first, &again) == 0, "%s, %s: the second render differs", name, method);
+        CHECK(after.scene_bytes == before.scene_bytes,
+              "%s, %s: the second render uploaded %llu bytes of scene data", name, method,
+              (unsigned long long)(after.scene_bytes - before.scene_bytes));
+        CHECK(after.accel_builds == before.accel_builds &&
+                  after.voxel_builds == before.voxel_builds &&
+                  after.light_builds == before.light_builds,
+              "%s, %s: the second render built something", name, method);
+        printf("%s, %s: identical to the render by hand; second render: %llu bytes uploaded "
+               "(camera and parameters), none of them scene data\n",
+               name, method, (unsigned long long)(up1.uploaded - up0.uploaded));
+        vct_image_free(&hand);
+        vct_image_free(&first);
+        vct_image_free(&again);
+    }
+    vct_device_scene_stats st;
+    vct_device_scene_stats_get(ds, &st);
+    CHECK(st.accel_builds == 1, "%s: %u BVH builds for one unchanged scene", name, st.accel_builds);
+    CHECK(st.voxel_builds == 1, "%s: %u voxel builds for one unchanged scene", name,
+          st.voxel_builds);
+    CHECK(st.scene_bytes > 0, "%s: no scene data counted at all", name);
+    vct_device_scene_release(ds);
+}
+
+/* A fresh device scene's cone-traced image of s. */
+static vct_image fresh(const vct_scene *s, vct_method method) {
+    vct_error err = {0};
+    vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
+    REQUIRE_OK(ds ? VCT_OK : err.status, err);
+    vct_image im = by_device_scene(ds, method);
+    vct_device_scene_release(ds);
+    return im;
+}
+
+typedef struct builds {
+    int accel, voxels, light;
+} builds;
+
+/* Renders ds after `what` changed s, compares with a fresh device scene of
+ * the changed s, and checks which structures were built again. */
+static void check_change(vct_device_scene *ds, const vct_scene *s, const char *what,
+                         builds expect) {
+    vct_device_scene_stats before, after;
+    vct_device_scene_stats_get(ds, &before);
+    vct_image kept = by_device_scene(ds, VCT_METHOD_VCT);
+    vct_device_scene_stats_get(ds, &after);
+    vct_image pt = by_device_scene(ds, VCT_METHOD_PATHTRACE);
+    /* the device scene above is set aside while a fresh one renders */
+    vct_image new_vct, new_pt;
+    {
+        vct_scene copy = *s; /* another address: another resident copy */
+        new_vct = fresh(&copy, VCT_METHOD_VCT);
+        new_pt = fresh(&copy, VCT_METHOD_PATHTRACE);
+    }
+    CHECK(differ(&kept, &new_vct) == 0, "%s: cone tracing: %zu values differ from a fresh scene",
+          what, differ(&kept, &new_vct));
+    CHECK(differ(&pt, &new_pt) == 0, "%s: path tracing: %zu values differ from a fresh scene", what,
+          differ(&pt, &new_pt));
+    const int accel = (int)(after.accel_builds - before.accel_builds),
+              voxels = (int)(after.voxel_builds - before.voxel_builds),
+              light = (int)(after.light_builds - before.light_builds);
+    CHECK(accel == expect.accel && voxels == expect.voxels && light == expect.light,
+          "%s: built %d BVH, %d voxels, %d light; expected %d, %d, %d", what, accel, voxels, light,
+          expect.accel, expect.voxels, expect.light);
+    CHECK(after.changes == before.changes + 1, "%s: the commit saw %u changes", what,
+          after.changes - before.changes);
+    printf("%s: rebuilt %d BVH, %d voxels, %d light; images equal a fresh device scene's\n", what,
+           accel, voxels, light);
+    vct_image_free(&kept);
+    vct_image_free(&pt);
+    vct_image_free(&new_vct);
+    vct_image_free(&new_pt);
+}
+
+static void check_changes(void) {
+    vct_error err = {0};
+    vct_scene *s = check_cornell_box_point_light();
+    vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
+    REQUIRE_OK(ds ? VCT_OK : err.status, err);
+    vct_image first = by_device_scene(ds, VCT_METHOD_VCT);
+    vct_image_free(&first);
+
+    s->lights[0].position[0] += 0.2f;
+    check_change(ds, s, "a moved light", (builds){0, 0, 1});
+    s->lights[0].color[1] *= 0.5f;
+    check_change(ds, s, "a dimmer light", (builds){0, 0, 1});
+    s->materials[0].albedo[0] *= 0.5f;
+    check_change(ds, s, "a changed material", (builds){0, 1, 1});
+    for (uint32_t v = 0; v < s->vertex_count; ++v)
+        s->positions[3 * v + 1] *= 0.9f;
+    check_change(ds, s, "moved geometry", (builds){1, 1, 1});
+    s->camera.position[0] += 0.1f;
+    check_change(ds, s, "a moved camera", (builds){0, 0, 0});
+
+    /* nothing changed: a commit finds nothing */
+    vct_device_scene_stats st0, st1;
+    vct_device_scene_stats_get(ds, &st0);
+    REQUIRE_OK(vct_device_scene_commit(ds, &err), err);
+    vct_device_scene_stats_get(ds, &st1);
+    CHECK(st1.changes == st0.changes, "an unchanged scene's commit found a change");
+
+    /* one device scene per scene and context */
+    vct_device_scene *twice = vct_device_scene_create(ctx, s, &err);
+    CHECK(!twice && err.status == VCT_ERR_INPUT && strstr(err.message, "already committed"),
+          "a second device scene of one scene on one context: %s", err.message);
+    vct_device_scene_release(twice);
+    vct_device_scene_release(ds);
+    vct_scene_free(s);
+}
+
+/* A structure of another context is refused by name. */
+static void check_other_context(void) {
+    vct_error err = {0};
+    vct_scene *s = check_cornell_box_point_light();
+    vct_context *other = check_context();
+    vct_accel *a = vct_accel_build(other, s, NULL, &err);
+    REQUIRE_OK(a ? VCT_OK : err.status, err);
+    vct_render_job job = job_for(VCT_METHOD_RAYCAST);
+    job.scene = s;
+    job.accel = a;
+    vct_image im;
+    const int rc = vct_render(ctx, &job, &im, NULL, &err);
+    CHECK(rc == VCT_ERR_INPUT && strstr(err.message, "another context"),
+          "an acceleration structure of another context: rc %d, %s", rc, err.message);
+    vct_accel_free(a);
+    vct_context_destroy(other);
+    vct_scene_free(s);
+}
+
+int main(void) {
+    ctx = check_context();
+    vct_scene *box = check_cornell_box_point_light();
+    check_same_images("cornell box", box);
+    vct_scene_free(box);
+    vct_scene *lit = check_cornell_box();
+    check_same_images("emissive cornell box", lit);
+    vct_scene_free(lit);
+    check_changes();
+    check_other_context();
+    vct_context_destroy(ctx);
+    return check_exit("test_device_scene");
+}
