@@ -213,6 +213,12 @@ vct_render_job cli_render_job(const cli_options *opt, vct_method method, const v
     vo->sparse_diffuse = opt->sparse_diffuse;
     vo->edge_samples = (uint32_t)opt->edge_samples;
     vo->aovs = opt->aov;
+    /* what a device scene builds for it; 128^3 voxels by default (the scene
+     * suite's page shows what it costs) */
+    job.accel_options = opt->accel;
+    cli_voxel_options(opt, 128, &job.voxel_options);
+    job.brick_options = (vct_brick_options){opt->bricks, opt->anisotropic == 1, 0};
+    job.bounces = (uint32_t)opt->bounces;
     return job;
 }
 

@@ -1,13 +1,14 @@
-/* vct render --method vct: plan, voxel hierarchy, cone-traced image, AOVs. */
+/* vct render --method vct: the plan the options ask for, and what the
+ * voxels it built hold. */
 #ifndef VCT_APP_CMD_RENDER_VCT_H
 #define VCT_APP_CMD_RENDER_VCT_H
 
 #include "options.h"
 
-/* Plans, builds what the plan needs and renders `job` (its scene, grid
- * and size set) by voxel cone tracing with the options' settings; with
- * --aov, fills aovs (the caller frees them). */
-int cli_render_vct(vct_context *ctx, vct_render_job *job, const cli_options *opt, vct_image *image,
-                   vct_aovs *aovs, vct_error *err);
+/* The scene's plan with the options' forced effects and emitters (printed
+ * with --print-plan). */
+void cli_vct_plan(const cli_options *opt, const vct_scene *s, vct_plan *plan);
+/* The voxels' size, bricks and bounce ratio, on stderr (nothing for NULL). */
+void cli_print_voxels(const cli_options *opt, const vct_voxels *v);
 
 #endif

@@ -127,22 +127,26 @@ int cmd_render(const cli_options *opt) {
         return cli_fail(&err);
     }
     vct_image image = {0};
-    vct_accel *accel = cli_accel_build(ctx, s, opt, &err);
+    vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
     vct_render_job job = cli_render_job(opt, (vct_method)method, s);
-    job.accel = accel;
     vct_render_result result = {0};
-    vct_pm_result pm = {0};
     vct_aovs aovs;
     memset(&aovs, 0, sizeof aovs);
+    vct_plan plan;
+    if (method == VCT_METHOD_VCT) {
+        cli_vct_plan(opt, s, &plan);
+        job.plan = &plan;
+        job.aovs = opt->aov || opt->denoise ? &aovs : NULL; /* --denoise filters the indirect AOV */
+    }
     vct_image variance = {0};
     if (opt->denoise && method == VCT_METHOD_PATHTRACE)
         job.pathtrace.variance = &variance;
-    int rc = !accel                     ? (int)err.status
-             : method == VCT_METHOD_VCT ? cli_render_vct(ctx, &job, opt, &image, &aovs, &err)
-             : method == VCT_METHOD_PM  ? vct_render_pm(ctx, s, accel, &job.pm, &image, &pm, &err)
-                                        : vct_render(ctx, &job, &image, &result, &err);
+    int rc = ds ? vct_device_scene_render(ds, &job, &image, &result, &err) : (int)err.status;
+    const vct_accel *accel = ds ? vct_device_scene_accel(ds) : NULL;
+    if (rc == VCT_OK && method == VCT_METHOD_VCT)
+        cli_print_voxels(opt, vct_device_scene_voxels(ds));
     if (rc == VCT_OK && method == VCT_METHOD_PM)
-        cli_print_pm(&pm, stderr);
+        cli_print_pm(&result.pm, stderr);
     if (rc == VCT_OK)
         cli_print_result(opt, &result);
     cli_layers layers = {0};
@@ -163,7 +167,7 @@ int cmd_render(const cli_options *opt) {
     vct_image_free(&variance);
     cli_layers_free(&layers);
     vct_aovs_free(&aovs);
-    vct_accel_free(accel);
+    vct_device_scene_release(ds);
     vct_context_destroy(ctx);
     vct_scene_free(s);
     return rc == VCT_OK ? 0 : cli_fail(&err);

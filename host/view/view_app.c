@@ -8,9 +8,6 @@
 #include "cli_denoise.h"
 #include "view_app.h"
 
-/* Bounce gathering uses the 6-cone preset, as vct_vct_prepare does. */
-#define BOUNCE_CONES 6u
-
 static const char *const METHOD_NAMES[VIEW_METHODS] = {"ray cast", "VCT",     "path tracer",
                                                        "voxels",   "Whitted", "photon mapping"};
 
@@ -63,10 +60,22 @@ int view_app_init(view_app *app, const cli_options *opt, vct_error *err) {
     return VCT_OK;
 }
 
+/* The octree's levels follow from the voxel resolution; the voxel view
+ * starts at the finest. */
+static void set_levels(view_app *app) {
+    vct_voxel_options vo;
+    cli_voxel_options(&app->opt, 128, &vo);
+    app->voxel_levels = 0;
+    while ((1u << app->voxel_levels) < vo.resolution)
+        ++app->voxel_levels;
+    app->voxel_level = app->voxel_levels;
+}
+
 int view_app_attach(view_app *app, vct_context *ctx, vct_error *err) {
     app->ctx = ctx;
-    app->accel = vct_accel_build(ctx, app->scene, &app->opt.accel, err);
-    return app->accel ? VCT_OK : (int)err->status;
+    set_levels(app);
+    app->ds = vct_device_scene_create(ctx, app->scene, err);
+    return app->ds ? VCT_OK : (int)err->status;
 }
 
 /* What every device of the group builds: the acceleration structure, and
@@ -86,6 +95,7 @@ static int group_prepare(view_app *app, int with_voxels, vct_error *err) {
 int view_app_attach_group(view_app *app, vct_group *group, vct_error *err) {
     app->group = group;
     app->ctx = vct_group_context(group, 0);
+    set_levels(app);
     return group_prepare(app, 0, err);
 }
 
@@ -95,93 +105,27 @@ void view_app_free(view_app *app) {
     vct_image_free(&app->normal_depth);
     vct_image_free(&app->variance);
     vct_aovs_free(&app->aovs);
-    vct_voxels_free(app->voxels);
-    vct_accel_free(app->accel);
+    vct_device_scene_release(app->ds);
     vct_scene_free(app->scene);
-    app->voxels = NULL;
-    app->accel = NULL;
+    app->ds = NULL;
     app->scene = NULL;
 }
 
-static void drop_voxels(view_app *app) {
-    vct_voxels_free(app->voxels);
-    app->voxels = NULL;
-    app->voxels_lit = app->voxels_for_plan = 0;
-}
-
-static void note_levels(view_app *app) {
-    vct_voxel_info info;
-    vct_voxels_info_get(app->voxels, &info);
-    app->voxel_levels = info.levels;
-    if (app->voxel_level == 0 || app->voxel_level > info.levels) {
-        /* The finest level, moved by the level keys pressed before voxels existed. */
-        const int level = (int)info.levels + app->pending_level;
-        app->voxel_level = (uint32_t)(level < 1                  ? 1
-                                      : level > (int)info.levels ? (int)info.levels
-                                                                 : level);
-    }
-}
-
-/* What the method and plan read: the cone-traced hierarchy, or for the
- * voxel view at least the octree. */
-static int ensure_voxels(view_app *app, vct_error *err) {
-    if (app->group) {
-        if (app->method == VIEW_VOXELS)
-            return input_error(err, "%s: the voxel view runs on one device: give --device one",
-                               "voxels");
-        const int needed = app->method == VIEW_VCT && vct_plan_needs_voxels(&app->plan);
-        const int lit = vct_plan_needs_voxel_light(&app->plan);
-        if (!needed || (app->voxels_for_plan && (app->voxels_lit || !lit) && !app->light_moved))
-            return VCT_OK;
-        /* every device rebuilds its own: there is no relighting across them yet */
-        int rc = group_prepare(app, 1, err);
-        app->voxels_for_plan = rc == VCT_OK;
-        app->voxels_lit = rc == VCT_OK && lit;
-        app->light_moved = 0;
-        return rc;
-    }
-    vct_voxel_options vo;
-    cli_voxel_options(&app->opt, 128, &vo);
-    if (app->method == VIEW_VCT && vct_plan_needs_voxels(&app->plan)) {
-        const int lit = vct_plan_needs_voxel_light(&app->plan);
-        if (app->voxels && app->voxels_for_plan && (app->voxels_lit || !lit))
-            return VCT_OK;
-        drop_voxels(app);
-        const vct_brick_options bricks = {app->opt.bricks, app->opt.anisotropic == 1, 0};
-        int rc = vct_vct_prepare(app->ctx, app->scene, app->accel, &app->plan, &vo, &bricks,
-                                 (uint32_t)app->opt.bounces, &app->opt.cones, &app->voxels, err);
-        if (rc)
-            return rc;
-        app->voxels_for_plan = 1;
-        app->voxels_lit = lit;
-        app->light_moved = 0;
-        note_levels(app);
+/* A group's voxels: built on every device when cone tracing's plan reads
+ * them, again after the light moved (one device's device scene relights
+ * its own). */
+static int group_voxels(view_app *app, vct_error *err) {
+    if (app->method == VIEW_VOXELS)
+        return input_error(err, "%s: the voxel view runs on one device: give --device one",
+                           "voxels");
+    const int needed = app->method == VIEW_VCT && vct_plan_needs_voxels(&app->plan);
+    const int lit = vct_plan_needs_voxel_light(&app->plan);
+    if (!needed || (app->voxels_for_plan && (app->voxels_lit || !lit) && !app->light_moved))
         return VCT_OK;
-    }
-    if (app->method == VIEW_VOXELS && !app->voxels) {
-        app->voxels = vct_voxelize(app->ctx, app->scene, &vo, err);
-        int rc = app->voxels ? vct_octree_build(app->ctx, app->voxels, err) : (int)err->status;
-        if (rc) {
-            drop_voxels(app); /* the next frame tries again from the start */
-            return rc;
-        }
-        note_levels(app);
-    }
-    return VCT_OK;
-}
-
-/* A moved light: re-injected and bounced in the voxels, never re-voxelized. */
-static int update_light(view_app *app, vct_error *err) {
-    if (!app->light_moved || !app->voxels || !app->voxels_lit)
-        return VCT_OK;
-    int rc = vct_voxels_inject_light(app->ctx, app->scene, app->accel, app->voxels, err);
-    for (int b = 1; rc == VCT_OK && b < app->opt.bounces; ++b)
-        rc = vct_voxels_inject_bounce(app->ctx, app->scene, app->accel, app->voxels,
-                                      &app->opt.cones, BOUNCE_CONES, err);
-    if (rc == VCT_OK)
-        rc = vct_voxels_bounce_rest(app->ctx, app->voxels, err);
-    if (rc == VCT_OK)
-        app->light_moved = 0;
+    int rc = group_prepare(app, 1, err);
+    app->voxels_for_plan = rc == VCT_OK;
+    app->voxels_lit = rc == VCT_OK && lit;
+    app->light_moved = 0;
     return rc;
 }
 
@@ -225,9 +169,11 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
         [VIEW_WHITTED] = VCT_METHOD_WHITTED,     [VIEW_PM] = VCT_METHOD_PM};
     vct_render_job job = vct_render_job_default(methods[app->method], app->width, app->height);
     job.scene = app->scene;
-    job.accel = app->accel;
-    job.voxels = app->voxels;
     job.plan = &app->plan;
+    job.accel_options = app->opt.accel;
+    cli_voxel_options(&app->opt, 128, &job.voxel_options);
+    job.brick_options = (vct_brick_options){app->opt.bricks, app->opt.anisotropic == 1, 0};
+    job.bounces = (uint32_t)app->opt.bounces;
     job.vct.diffuse_cones = (uint32_t)app->opt.diffuse_cones;
     job.vct.cones = app->opt.cones;
     job.vct.sparse_diffuse = app->opt.sparse_diffuse;
@@ -260,7 +206,7 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     if (app->group) /* a sample per device per frame */
         job.pathtrace.spp = (uint32_t)vct_group_active_count(app->group);
     const int rc = app->group ? vct_group_render(app->group, &job, image, &result, err)
-                              : vct_render(app->ctx, &job, image, &result, err);
+                              : vct_device_scene_render(app->ds, &job, image, &result, err);
     if (view_app_progressive(app))
         app->pt_spp = rc == VCT_OK ? result.spp : 0;
     return rc;
@@ -287,8 +233,8 @@ static int denoise_frame(view_app *app, vct_image *image, vct_error *err) {
     vct_context *ctx = app->ctx;
     int rc = VCT_OK;
     if (!app->albedo.rgba)
-        rc = vct_render_guides(ctx, app->scene, app->accel, image->width, image->height, 4,
-                               &app->albedo, &app->normal_depth, err);
+        rc = vct_render_guides(ctx, app->scene, vct_device_scene_accel(app->ds), image->width,
+                               image->height, 4, &app->albedo, &app->normal_depth, err);
     const vct_denoise_guides g = {&app->albedo, &app->normal_depth,
                                   app->variance.rgba ? &app->variance : NULL};
     vct_image out;
@@ -306,9 +252,7 @@ int view_app_render(view_app *app, vct_error *err) {
     const double t0 = now_ms();
     view_camera_get(&app->camera, &app->scene->camera);
     vct_stats_reset(app->ctx);
-    int rc = ensure_voxels(app, err);
-    if (rc == VCT_OK)
-        rc = update_light(app, err);
+    int rc = app->group ? group_voxels(app, err) : VCT_OK;
     vct_image image = {0};
     const int denoise = view_app_denoising(app);
     if (denoise)
@@ -347,10 +291,6 @@ void view_app_toggle_effect(view_app *app, vct_effect e) {
 }
 
 void view_app_set_level(view_app *app, int delta) {
-    if (!app->voxel_levels) {
-        app->pending_level += delta;
-        return;
-    }
     const int level = (int)app->voxel_level + delta;
     if (level < 1 || level > (int)app->voxel_levels)
         return;

@@ -33,19 +33,20 @@ typedef struct view_app {
     vct_image variance;             /* the path tracer's, for the last frame */
     vct_aovs aovs;                  /* cone tracing's, whose indirect term is filtered */
     vct_scene *scene;
-    vct_accel *accel;
-    vct_voxels *voxels;
-    int voxels_lit;      /* light injected into the voxels (and bounced) */
-    int voxels_for_plan; /* built for the plan (with bricks), not only for viewing */
+    /* One device: the scene committed to it, which keeps the structures and
+     * rebuilds what a change (a moved light) needs. NULL with a group. */
+    vct_device_scene *ds;
+    /* A group: whether its devices hold the plan's voxels, lit. */
+    int voxels_lit;
+    int voxels_for_plan;
     vct_effect_force force[VCT_EFFECTS];
     vct_plan plan;
     view_method method;
     uint32_t voxel_level, voxel_levels;
-    int pending_level; /* level keys pressed before the voxels were built */
     view_camera camera;
     int width, height; /* the frame's size */
     int dirty;         /* the frame is out of date */
-    int light_moved;   /* the voxels' light is out of date */
+    int light_moved;   /* a group's voxels' light is out of date */
     uint32_t pt_spp;   /* samples (photon mapping: passes) in the progressive frame */
     double frame_ms;
     char stages[256]; /* ms per stage of the last frame */
@@ -54,7 +55,7 @@ typedef struct view_app {
 const char *view_method_name(view_method m);
 /* Loads the scene and checks the options (before any window opens). */
 int view_app_init(view_app *app, const cli_options *opt, vct_error *err);
-/* Builds the triangle grid on the caller's context, which renders from now on. */
+/* Commits the scene to the caller's context, which renders from now on. */
 int view_app_attach(view_app *app, vct_context *ctx, vct_error *err);
 /* The same on every device of a group (the caller's), which renders from now on. */
 int view_app_attach_group(view_app *app, vct_group *group, vct_error *err);

@@ -1,6 +1,7 @@
 /* A host program of someone else's: lists the devices, then renders a scene
  * by ray casting and by voxel cone tracing through the installed library
- * and kernels. Usage: vct_consumer SCENE OUT_PREFIX */
+ * and kernels: load, context, device scene, render, write.
+ * Usage: vct_consumer SCENE OUT_PREFIX */
 #include <stdio.h>
 #include <string.h>
 
@@ -11,28 +12,12 @@ static int fail(const vct_error *err) {
     return 1;
 }
 
-static int render(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                  vct_method method, const char *prefix, vct_error *err) {
+/* One method through the device scene: its job, the render, the file. */
+static int render(vct_device_scene *ds, vct_method method, const char *prefix, vct_error *err) {
     vct_render_job job = vct_render_job_default(method, 128, 128);
-    job.scene = scene;
-    job.accel = accel;
-    vct_voxels *voxels = NULL;
-    vct_plan plan;
-    int rc = VCT_OK;
-    if (method == VCT_METHOD_VCT) {
-        vct_plan_make(scene, NULL, &plan);
-        vct_voxel_options vo = {0};
-        vo.resolution = 64;
-        const vct_brick_options bo = {VCT_BRICKS_AUTO, 0, 0}; /* isotropic, as vct render */
-        const vct_cone_settings cones = vct_cone_settings_default();
-        rc = vct_vct_prepare(ctx, scene, accel, &plan, &vo, &bo, VCT_DEFAULT_BOUNCES, &cones,
-                             &voxels, err);
-        job.voxels = voxels;
-        job.plan = &plan;
-    }
+    job.voxel_options.resolution = 64;
     vct_image image = {0};
-    if (rc == VCT_OK)
-        rc = vct_render(ctx, &job, &image, NULL, err);
+    int rc = vct_device_scene_render(ds, &job, &image, NULL, err);
     char path[1024];
     snprintf(path, sizeof path, "%s_%s.pfm", prefix, vct_method_name(method));
     if (rc == VCT_OK)
@@ -40,7 +25,6 @@ static int render(vct_context *ctx, const vct_scene *scene, const vct_accel *acc
     if (rc == VCT_OK)
         printf("wrote %s\n", path);
     vct_image_free(&image);
-    vct_voxels_free(voxels);
     return rc;
 }
 
@@ -62,13 +46,13 @@ int main(int argc, char **argv) {
     if (!scene)
         return fail(&err);
     vct_context *ctx = vct_context_create(NULL, &err);
-    vct_accel *accel = ctx ? vct_accel_build(ctx, scene, NULL, &err) : NULL;
-    int rc = accel ? VCT_OK : (int)err.status;
+    vct_device_scene *ds = ctx ? vct_device_scene_create(ctx, scene, &err) : NULL;
+    int rc = ds ? VCT_OK : (int)err.status;
     if (rc == VCT_OK)
-        rc = render(ctx, scene, accel, VCT_METHOD_RAYCAST, argv[2], &err);
+        rc = render(ds, VCT_METHOD_RAYCAST, argv[2], &err);
     if (rc == VCT_OK)
-        rc = render(ctx, scene, accel, VCT_METHOD_VCT, argv[2], &err);
-    vct_accel_free(accel);
+        rc = render(ds, VCT_METHOD_VCT, argv[2], &err);
+    vct_device_scene_release(ds);
     vct_context_destroy(ctx);
     vct_scene_free(scene);
     return rc == VCT_OK ? 0 : fail(&err);

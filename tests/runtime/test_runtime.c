@@ -37,7 +37,19 @@ static void check_finite(const vct_image *im, const char *name) {
     CHECK(lit > 0, "%s: the image is black", name);
 }
 
+/* Every status has its own name; values outside the enum say so. */
+static void check_status_names(void) {
+    const char *expect[] = {"VCT_OK",         "VCT_ERR_OPENCL", "VCT_ERR_INPUT",
+                            "VCT_ERR_MEMORY", "VCT_ERR_IO",     "VCT_ERR_OVERFLOW"};
+    for (int i = 0; i < 6; ++i)
+        CHECK(strcmp(vct_status_string((vct_status)i), expect[i]) == 0, "status %d is named %s", i,
+              vct_status_string((vct_status)i));
+    CHECK(strcmp(vct_status_string((vct_status)99), "unknown status") == 0, "status 99 is named %s",
+          vct_status_string((vct_status)99));
+}
+
 int main(void) {
+    check_status_names();
     char cache[] = "/tmp/vct-cache-test-XXXXXX";
     if (!mkdtemp(cache))
         return 1;

@@ -2,6 +2,8 @@
 #ifndef VCT_API_ERROR_H
 #define VCT_API_ERROR_H
 
+#include "vct/export.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -19,6 +21,10 @@ typedef struct vct_error {
     vct_status status;
     char message[2048];
 } vct_error;
+
+/* The status's name ("VCT_ERR_INPUT"), or "unknown status" for a value
+ * outside the enum; the message in vct_error says what happened. */
+VCT_API const char *vct_status_string(vct_status status);
 
 #ifdef __cplusplus
 }

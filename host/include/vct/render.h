@@ -333,6 +333,7 @@ typedef struct vct_render_result {
     uint64_t traced;      /* Whitted: pixels traced (the rest interpolated) */
     uint64_t camera_rays; /* Whitted: ray trees started (pixels traced, some twice) */
     uint64_t photons;     /* photon mapping: photon paths emitted */
+    vct_pm_result pm;     /* photon mapping: the whole account */
 } vct_render_result;
 
 /* A job with every method's defaults (vct_vct_options_default, 64 spp,

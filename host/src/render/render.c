@@ -175,6 +175,7 @@ int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
         result->seconds = (vct_now_ms() - start) * 1e-3;
         result->spp = job->method == VCT_METHOD_PM ? pm.passes : pt.spp;
         result->photons = pm.photons_emitted;
+        result->pm = pm;
         result->discarded = pt.discarded;
         result->traced = wr.traced_pixels;
         result->camera_rays = wr.camera_rays;

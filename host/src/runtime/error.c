@@ -124,3 +124,10 @@ int vct_cl_check(vct_error *err, cl_int code, const char *stage, const char *cal
     return vct_fail(err, VCT_ERR_OPENCL, "%s: %s failed with %s (%d): %s", stage, name,
                     vct_cl_error_name(code), (int)code, hint_for(code));
 }
+
+const char *vct_status_string(vct_status status) {
+    static const char *const names[] = {"VCT_OK",         "VCT_ERR_OPENCL", "VCT_ERR_INPUT",
+                                        "VCT_ERR_MEMORY", "VCT_ERR_IO",     "VCT_ERR_OVERFLOW"};
+    const unsigned at = (unsigned)status;
+    return at < sizeof names / sizeof *names ? names[at] : "unknown status";
+}
