@@ -90,7 +90,7 @@ static void run_end(vct_context *ctx, vct_accel *g, double t0, run *r) {
     r->wall_ms = vct_now_ms() - t0;
     r->accel_ms = stage_device_ms(ctx, "grid build") + stage_device_ms(ctx, "bvh build");
     r->total_ms = r->accel_ms + r->render_ms;
-    vct_accel_free(g);
+    vct_accel_release(g);
 }
 
 static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings *cfg,
@@ -104,7 +104,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     vo.resolution = vs->res;
     vo.exact_bounces = vs->exact;
     const vct_brick_options bo = {VCT_BRICKS_AUTO, vs->anisotropic, 0};
-    vct_vct_options o = vct_vct_options_default();
+    vct_vct_options o = vct_vct_options_default(512, 512);
     o.width = cfg->width;
     o.height = cfg->height;
     o.diffuse_cones = vs->cones;
@@ -128,8 +128,8 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
              vs->step, o.cones.offset, vs->anisotropic ? "aniso" : "iso", vs->bounces,
              vs->bounces == 1 ? "" : "s", vs->exact ? " exactly" : "",
              vs->nearest ? ", nearest level" : "", vs->sparse ? ", sparse diffuse" : "");
-    vct_voxels_free(v);
-    vct_accel_free(g);
+    vct_voxels_release(v);
+    vct_accel_release(g);
     return im;
 }
 
@@ -190,7 +190,7 @@ static int pm_rows(vct_context *ctx, const vct_scene *s, const settings *cfg, co
         vct_image im = render_pm(ctx, s, cfg, rows[i].kind, rows[i].passes, &runs[n]);
         if (vct_image_compare(&im, ref, &runs[n].m, &err))
             bench_die(&err);
-        vct_image_free(&im);
+        vct_image_release(&im);
         fprintf(stderr, "%-48s %9.1f ms  NRMSE %.4f\n", runs[n].name, runs[n].total_ms,
                 runs[n].m.nrmse);
         ++n;
@@ -265,10 +265,10 @@ static int whitted_rows(vct_context *ctx, const vct_scene *s, const settings *cf
             if (!full.rgba)
                 full = im;
             else
-                vct_image_free(&im);
+                vct_image_release(&im);
             ++n;
         }
-    vct_image_free(&full);
+    vct_image_release(&full);
     if (md)
         fclose(md);
     return n;
@@ -391,7 +391,7 @@ int main(int argc, char **argv) {
         else if (strcmp(argv[i], "--quick") == 0)
             cfg.quick = 1;
         else if (strcmp(argv[i], "--accel") == 0 && i + 1 < argc) {
-            const int kind = vct_accel_kind_parse(argv[++i]);
+            const int kind = vct_accel_kind_from_name(argv[++i]);
             if (kind < 0) {
                 fprintf(stderr, "accuracy: --accel takes bvh or grid\n");
                 return 1;
@@ -455,7 +455,7 @@ int main(int argc, char **argv) {
         snprintf(runs[n].name, sizeof runs[n].name, "ray cast (direct only)");
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
             bench_die(&err);
-        vct_image_free(&im);
+        vct_image_release(&im);
         ++n;
     }
     for (uint32_t spp = 1; spp <= cfg.max_spp && n < MAX_RUNS; spp *= 2) {
@@ -463,7 +463,7 @@ int main(int argc, char **argv) {
         snprintf(runs[n].name, sizeof runs[n].name, "path trace %u spp", spp);
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
             bench_die(&err);
-        vct_image_free(&im);
+        vct_image_release(&im);
         fprintf(stderr, "%-24s %9.1f ms  NRMSE %.4f\n", runs[n].name, runs[n].total_ms,
                 runs[n].m.nrmse);
         ++n;
@@ -505,7 +505,7 @@ int main(int argc, char **argv) {
         vct_image im = render_vct(ctx, s, &cfg, &list[i], &runs[n]);
         if (vct_image_compare(&im, &ref, &runs[n].m, &err))
             bench_die(&err);
-        vct_image_free(&im);
+        vct_image_release(&im);
         fprintf(stderr, "%-48s %9.1f ms  NRMSE %.4f\n", runs[n].name, runs[n].total_ms,
                 runs[n].m.nrmse);
         ++n;
@@ -513,8 +513,8 @@ int main(int argc, char **argv) {
     mark_pareto(runs, n);
     write_outputs(&cfg, runs, n, ctx->info.name);
     printf("wrote %s/accuracy.csv, accuracy.md, accuracy.png\n", cfg.out);
-    vct_image_free(&ref);
-    vct_context_destroy(ctx);
-    vct_scene_free(s);
+    vct_image_release(&ref);
+    vct_context_release(ctx);
+    vct_scene_release(s);
     return 0;
 }

@@ -89,7 +89,7 @@ static spine_run run_once(vct_context *ctx, vct_scene *s, vct_accel *accel, uint
     const int kernels = vct_kernel_stats(ctx, &k);
     for (int i = 0; i < kernels; ++i)
         r.update_parts[update_part(k[i].name)] += k[i].device_ms;
-    vct_voxels_free(v);
+    vct_voxels_release(v);
     return r;
 }
 
@@ -113,7 +113,7 @@ static void bins_against_grid(vct_context *ctx, vct_scene *s, vct_accel *accel, 
     printf("light injection at 256^3, shadow rays through the light's triangle bins: %.1f ms; "
            "through the triangle grid: %.1f ms (%.2fx)\n",
            best[0], best[1], best[1] / best[0]);
-    vct_voxels_free(v);
+    vct_voxels_release(v);
 }
 
 static double mib(uint64_t bytes) {
@@ -239,8 +239,8 @@ int main(void) {
     }
     printf("brick pool kind: %s\n", best[1].bricks.storage_reason);
     bins_against_grid(ctx, s, accel, runs);
-    vct_accel_free(accel);
-    vct_context_destroy(ctx);
-    vct_scene_free(s);
+    vct_accel_release(accel);
+    vct_context_release(ctx);
+    vct_scene_release(s);
     return 0;
 }

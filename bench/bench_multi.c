@@ -40,7 +40,7 @@ static vct_group_build build_options(void) {
     b.voxel.resolution = 64;
     b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 1, 0};
     b.bounces = 1;
-    b.cones = vct_vct_options_default().cones;
+    b.cones = vct_vct_options_default(512, 512).cones;
     return b;
 }
 
@@ -62,7 +62,7 @@ static double frames(vct_group *g, const vct_scene *s, const method_row *m, vct_
         job.whitted.subsample = m->subsample;
         job.pm.passes = 4;
         vct_error err = {0};
-        vct_image_free(image);
+        vct_image_release(image);
         const double t0 = vct_now_ms();
         if (vct_group_render(g, &job, image, NULL, &err))
             bench_die(&err);
@@ -147,7 +147,7 @@ int main(int argc, char **argv) {
         printf(" %.2f | %.2f | %.2f | %s | %s |\n", (1.0 / ms[count - 1]) / throughput_sum,
                fastest / ms[count - 1], share, choice, same ? "yes" : "NO");
         for (int i = 0; i < count; ++i)
-            vct_image_free(&images[i]);
+            vct_image_release(&images[i]);
     }
     /* The voxels: every device builds its own, or the first builds and the
      * others receive a copy. */
@@ -170,7 +170,7 @@ int main(int argc, char **argv) {
         printf("| [%d] %s | %.1f | %.1f %s |\n", d[k].info.index, d[k].info.name, own[k],
                d[k].voxels_ms, d[k].voxels_copied ? "(copy)" : "(build)");
     for (int i = 0; i < count; ++i)
-        vct_group_destroy(groups[i]);
-    vct_scene_free(s);
+        vct_group_release(groups[i]);
+    vct_scene_release(s);
     return 0;
 }

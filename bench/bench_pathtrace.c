@@ -24,9 +24,9 @@ static double render_best(vct_context *ctx, const vct_scene *s, vct_accel_kind k
             bench_die(&err);
         const double ms = vct_now_ms() - t0;
         best = ms < best ? ms : best;
-        vct_image_free(&im);
+        vct_image_release(&im);
     }
-    vct_accel_free(a);
+    vct_accel_release(a);
     return best;
 }
 
@@ -48,8 +48,8 @@ int main(void) {
         const double bvh = render_best(ctx, scenes[i], VCT_ACCEL_BVH);
         printf("| %s | %.0f | %.0f | %.2f |\n", names[i], grid, bvh, grid / bvh);
     }
-    vct_context_destroy(ctx);
-    vct_scene_free(box);
-    vct_scene_free(heavy);
+    vct_context_release(ctx);
+    vct_scene_release(box);
+    vct_scene_release(heavy);
     return 0;
 }

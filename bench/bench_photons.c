@@ -64,9 +64,9 @@ static void throughput(vct_context *ctx, const char *name, const vct_scene *s) {
                (unsigned long long)r.photons_emitted, r.passes,
                r.photons_emitted / (r.trace_ms * 1e3), stored / r.photons_emitted, r.trace_ms,
                r.grid_ms / r.passes, r.gather_ms / r.passes, gt640_ms[row][i]);
-        vct_image_free(&im);
+        vct_image_release(&im);
     }
-    vct_accel_free(a);
+    vct_accel_release(a);
 }
 
 /* RMS error over the masked pixels' channels, relative to their mean in ref. */
@@ -149,7 +149,7 @@ static void caustic_race(vct_context *ctx, const vct_scene *s, const char *ref_p
         ep[np] = region_error(&im, &ref, mask);
         printf("| progressive photon mapping | %u passes | %.1f | %.4f | %.4f |\n", passes, tp[np],
                ep[np], m.nrmse);
-        vct_image_free(&im);
+        vct_image_release(&im);
     }
     for (uint32_t spp = 4; spp <= 4096 && nt < 8; spp *= 4, ++nt) {
         vct_pathtrace_options po = {w, h, spp, 0.0, 16, 1, 16, 0, 0, NULL};
@@ -162,7 +162,7 @@ static void caustic_race(vct_context *ctx, const vct_scene *s, const char *ref_p
         tt[nt] = stage_device_ms(ctx, "path trace");
         et[nt] = region_error(&im, &ref, mask);
         printf("| path tracing | %u spp | %.1f | %.4f | %.4f |\n", spp, tt[nt], et[nt], m.nrmse);
-        vct_image_free(&im);
+        vct_image_release(&im);
     }
     static const double targets[] = {0.4, 0.3, 0.25, 0.2, 0.15};
     for (size_t i = 0; i < sizeof targets / sizeof targets[0]; ++i) {
@@ -174,10 +174,10 @@ static void caustic_race(vct_context *ctx, const vct_scene *s, const char *ref_p
             printf(" (%.1fx sooner)\n", b_ms / a_ms);
     }
     free(mask);
-    vct_image_free(&all);
-    vct_image_free(&caustic);
-    vct_image_free(&ref);
-    vct_accel_free(a);
+    vct_image_release(&all);
+    vct_image_release(&caustic);
+    vct_image_release(&ref);
+    vct_accel_release(a);
 }
 
 int main(int argc, char **argv) {
@@ -208,8 +208,8 @@ int main(int argc, char **argv) {
     throughput(ctx, "Cornell box with two boxes", cornell);
     throughput(ctx, "glass-and-mirror box", glass);
     caustic_race(ctx, glass, ref, w, h, ref_spp);
-    vct_scene_free(cornell);
-    vct_scene_free(glass);
-    vct_context_destroy(ctx);
+    vct_scene_release(cornell);
+    vct_scene_release(glass);
+    vct_context_release(ctx);
     return 0;
 }

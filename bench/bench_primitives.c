@@ -101,6 +101,6 @@ int main(void) {
         for (int i = 0; i < 6; ++i)
             vct_buffer_release(ctx, all[i]);
     }
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return 0;
 }

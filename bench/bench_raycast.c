@@ -208,7 +208,7 @@ static vct_accel *build_best(vct_context *ctx, const vct_scene *s, const vct_acc
     vct_accel *a = NULL;
     *device_ms = *wall_ms = 1e30;
     for (int i = 0; i < bench_repeats(); ++i) {
-        vct_accel_free(a);
+        vct_accel_release(a);
         vct_stats_reset(ctx);
         const double t0 = vct_now_ms();
         a = vct_accel_build(ctx, s, o, &err);
@@ -250,7 +250,7 @@ static vct_scene *ball_room_scene(vct_error *err) {
         light.position[0] = -10.0f, light.position[1] = 30.0f, light.position[2] = 10.0f;
         light.color[0] = light.color[1] = light.color[2] = 1000.0f;
         if (vct_scene_add_light(s, &light, err) != VCT_OK) {
-            vct_scene_free(s);
+            vct_scene_release(s);
             s = NULL;
         }
     }
@@ -369,7 +369,7 @@ static void bench_scene(vct_context *ctx, const vct_scene *s, const char *name, 
     free(hits);
     free(scratch);
     for (int i = 0; i < MAX_STRUCTS; ++i)
-        vct_accel_free(acc[i]);
+        vct_accel_release(acc[i]);
 }
 
 int main(void) {
@@ -386,8 +386,8 @@ int main(void) {
     printf("device: %s, %d compute units\n", ctx->info.name, threads);
     bench_scene(ctx, heavy, "heavy scene (Cornell box and 80 spheres)", threads);
     bench_scene(ctx, ball, "dense ball in a large room", threads);
-    vct_context_destroy(ctx);
-    vct_scene_free(heavy);
-    vct_scene_free(ball);
+    vct_context_release(ctx);
+    vct_scene_release(heavy);
+    vct_scene_release(ball);
     return 0;
 }

@@ -27,7 +27,7 @@ static frame_times render_best(vct_context *ctx, const vct_scene *s, const vct_a
         vct_stats_reset(ctx);
         if (vct_render_vct(ctx, s, g, v, plan, o, &im, NULL, &err))
             bench_die(&err);
-        vct_image_free(&im);
+        vct_image_release(&im);
         const frame_times t = {stage_device_ms(ctx, "vct primary"),
                                stage_device_ms(ctx, "vct diffuse cones"),
                                stage_device_ms(ctx, "vct specular cone"), 0.0};
@@ -86,7 +86,7 @@ int main(int argc, char **argv) {
         vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
         if (!g)
             bench_die(&err);
-        vct_vct_options o = vct_vct_options_default();
+        vct_vct_options o = vct_vct_options_default(512, 512);
         o.width = o.height = size;
         o.diffuse_cones = 5;
         vct_plan plan;
@@ -109,7 +109,7 @@ int main(int argc, char **argv) {
                 planned_ms = planned.total;
                 all_ms = forced.total;
             }
-            vct_voxels_free(v);
+            vct_voxels_release(v);
         }
         /* The same scene with its white glossy, at both brick kinds. */
         s->materials[0].specular[0] = s->materials[0].specular[1] = s->materials[0].specular[2] =
@@ -131,15 +131,15 @@ int main(int argc, char **argv) {
                      "5 cones + specular, %s, sparse diffuse (diffuse %.2fx faster)",
                      aniso ? "anisotropic" : "isotropic", t.diffuse / sparse.diffuse);
             frame_row(names[i], what, &sparse);
-            vct_voxels_free(v);
+            vct_voxels_release(v);
         }
-        vct_accel_free(g);
+        vct_accel_release(g);
     }
     printf("\nThe plan: every effect forced on takes %.2fx the planned frame's time "
            "(%.1f ms against %.1f ms).\n",
            planned_ms > 0 ? all_ms / planned_ms : 0.0, all_ms, planned_ms);
-    vct_scene_free(box);
-    vct_scene_free(heavy);
-    vct_context_destroy(ctx);
+    vct_scene_release(box);
+    vct_scene_release(heavy);
+    vct_context_release(ctx);
     return 0;
 }

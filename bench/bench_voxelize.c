@@ -86,7 +86,7 @@ int main(void) {
                 bench_die(&err);
             s->lights[0].position[0] -= 40.0f;
             best_update = fmin(best_update, stage_device_ms(ctx, "light injection"));
-            vct_voxels_free(v);
+            vct_voxels_release(v);
         }
         const double final_mib =
             (info.voxel_bytes + info.node_bytes + info.neighbour_bytes) / 1048576.0;
@@ -112,8 +112,8 @@ int main(void) {
     for (int i = 0; i < nk; ++i)
         printf("  %-24s %8.2f ms %4d launches\n", k[i].name, k[i].device_ms, k[i].launches);
     remove(mesh);
-    vct_accel_free(accel);
-    vct_context_destroy(ctx);
-    vct_scene_free(s);
+    vct_accel_release(accel);
+    vct_context_release(ctx);
+    vct_scene_release(s);
     return 0;
 }

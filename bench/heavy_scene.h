@@ -46,7 +46,7 @@ static vct_scene *heavy_scene_load(const char *source_dir, vct_error *err) {
     free(pos);
     free(tri);
     free(mat);
-    vct_scene_free(box);
+    vct_scene_release(box);
     return s;
 }
 

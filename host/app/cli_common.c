@@ -31,7 +31,7 @@ vct_scene *cli_load_scene(const cli_options *opt, vct_error *err) {
     }
     vct_scene *s = vct_scene_load(opt->inputs[0], err);
     if (s && cli_apply_scene_overrides(opt, s, err) != VCT_OK) {
-        vct_scene_free(s);
+        vct_scene_release(s);
         return NULL;
     }
     return s;

@@ -74,7 +74,7 @@ int cli_denoise_outputs(vct_context *ctx, const vct_scene *s, const vct_accel *g
         *noisy = *image; /* the layers free it */
         cli_layers_add(layers, "noisy", noisy, "RGB");
     } else {
-        vct_image_free(image);
+        vct_image_release(image);
     }
     *image = denoised;
     return VCT_OK;

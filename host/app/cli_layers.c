@@ -30,7 +30,7 @@ vct_image *cli_layers_own(cli_layers *l) {
 
 void cli_layers_free(cli_layers *l) {
     for (int i = 0; i < l->owned_count; ++i)
-        vct_image_free(&l->owned[i]);
+        vct_image_release(&l->owned[i]);
     l->owned_count = l->count = 0;
 }
 

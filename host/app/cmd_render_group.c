@@ -39,7 +39,7 @@ static int denoise_on_first_device(vct_group *g, const vct_scene *s, const cli_o
                                          variance->rgba ? variance : NULL, NULL, &layers, err)
                    : (int)err->status;
     cli_layers_free(&layers);
-    vct_accel_free(accel);
+    vct_accel_release(accel);
     return rc;
 }
 
@@ -91,7 +91,7 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
         rc = denoise_on_first_device(g, s, opt, method, &image, &variance, &err);
     if (rc == VCT_OK)
         rc = cli_write_image(opt, &image, NULL, out, &err);
-    vct_image_free(&variance);
+    vct_image_release(&variance);
     if (rc == VCT_OK && opt->stats) {
         print_devices(g, stdout);
         for (int i = 0; i < n; ++i) {
@@ -99,7 +99,7 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
             cli_print_stats(vct_group_context(g, i));
         }
     }
-    vct_image_free(&image);
-    vct_group_destroy(g);
+    vct_image_release(&image);
+    vct_group_release(g);
     return rc == VCT_OK ? 0 : cli_fail(&err);
 }

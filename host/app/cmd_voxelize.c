@@ -54,7 +54,7 @@ int cmd_voxelize(const cli_options *opt) {
     cli_print_scene(s, stderr);
     vct_context *ctx = cli_open_context(opt, &err);
     if (!ctx) {
-        vct_scene_free(s);
+        vct_scene_release(s);
         return cli_fail(&err);
     }
     vct_voxel_options vo;
@@ -93,10 +93,10 @@ int cmd_voxelize(const cli_options *opt) {
                    image.width, image.height,
                    s->light_count ? "their injected radiance" : "albedo under a headlight");
     }
-    vct_image_free(&image);
-    vct_accel_free(accel);
-    vct_voxels_free(v);
-    vct_context_destroy(ctx);
-    vct_scene_free(s);
+    vct_image_release(&image);
+    vct_accel_release(accel);
+    vct_voxels_release(v);
+    vct_context_release(ctx);
+    vct_scene_release(s);
     return rc == VCT_OK ? 0 : cli_fail(&err);
 }

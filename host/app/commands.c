@@ -79,9 +79,9 @@ int cmd_info(const cli_options *opt) {
     vct_context *ctx = cli_open_context(opt, &err);
     vct_accel *accel = ctx ? cli_accel_build(ctx, s, opt, &err) : NULL;
     int rc = accel ? cli_print_accel(ctx, accel, stdout, &err) : (int)err.status;
-    vct_accel_free(accel);
-    vct_context_destroy(ctx);
-    vct_scene_free(s);
+    vct_accel_release(accel);
+    vct_context_release(ctx);
+    vct_scene_release(s);
     return rc == VCT_OK ? 0 : cli_fail(&err);
 }
 
@@ -118,12 +118,12 @@ int cmd_render(const cli_options *opt) {
                         "show (add --point-light, --dir-light or --ambient)\n");
     if (cli_device_list(opt)) {
         const int rc = cli_render_group(opt, s, (vct_method)method, out);
-        vct_scene_free(s);
+        vct_scene_release(s);
         return rc;
     }
     vct_context *ctx = cli_open_context(opt, &err);
     if (!ctx) {
-        vct_scene_free(s);
+        vct_scene_release(s);
         return cli_fail(&err);
     }
     vct_image image = {0};
@@ -163,13 +163,13 @@ int cmd_render(const cli_options *opt) {
         if (opt->stats)
             cli_print_stats(ctx);
     }
-    vct_image_free(&image);
-    vct_image_free(&variance);
+    vct_image_release(&image);
+    vct_image_release(&variance);
     cli_layers_free(&layers);
-    vct_aovs_free(&aovs);
+    vct_aovs_release(&aovs);
     vct_device_scene_release(ds);
-    vct_context_destroy(ctx);
-    vct_scene_free(s);
+    vct_context_release(ctx);
+    vct_scene_release(s);
     return rc == VCT_OK ? 0 : cli_fail(&err);
 }
 
@@ -200,8 +200,8 @@ int cmd_compare(const cli_options *opt) {
             printf("wrote %s (mean absolute error per pixel, blue 0 to red %s)\n", opt->error_image,
                    opt->error_scale > 0 ? "at --error-scale" : "at the largest");
     }
-    vct_image_free(&test);
-    vct_image_free(&ref);
-    vct_image_free(&map);
+    vct_image_release(&test);
+    vct_image_release(&ref);
+    vct_image_release(&map);
     return rc == VCT_OK ? 0 : cli_fail(&err);
 }

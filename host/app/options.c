@@ -247,7 +247,7 @@ static int apply_rays(const parse_state *ps, cli_option_id id, char **w, int nw,
     case OPT_ACCEL:
         if (choose(ps, w[0], "bvh|grid", &choice))
             return 2;
-        opt->accel.kind = (vct_accel_kind)vct_accel_kind_parse(w[0]);
+        opt->accel.kind = (vct_accel_kind)vct_accel_kind_from_name(w[0]);
         return 0;
     case OPT_BVH_BUILD:
         if (choose(ps, w[0], "clustered|linear", &choice))

@@ -100,13 +100,13 @@ int view_app_attach_group(view_app *app, vct_group *group, vct_error *err) {
 }
 
 void view_app_free(view_app *app) {
-    vct_image_free(&app->host_frame);
-    vct_image_free(&app->albedo);
-    vct_image_free(&app->normal_depth);
-    vct_image_free(&app->variance);
-    vct_aovs_free(&app->aovs);
+    vct_image_release(&app->host_frame);
+    vct_image_release(&app->albedo);
+    vct_image_release(&app->normal_depth);
+    vct_image_release(&app->variance);
+    vct_aovs_release(&app->aovs);
     vct_device_scene_release(app->ds);
-    vct_scene_free(app->scene);
+    vct_scene_release(app->scene);
     app->ds = NULL;
     app->scene = NULL;
 }
@@ -187,8 +187,8 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
         (uint32_t)app->opt.subsample_plain;
     job.whitted.subsample_contrast = job.raycast.subsample_contrast = app->opt.contrast;
     job.pathtrace.seed = (uint32_t)app->opt.seed;
-    vct_image_free(&app->variance);
-    vct_aovs_free(&app->aovs);
+    vct_image_release(&app->variance);
+    vct_aovs_release(&app->aovs);
     if (view_app_denoising(app)) {
         job.pathtrace.variance = &app->variance;
         job.aovs = app->method == VIEW_VCT ? &app->aovs : NULL;
@@ -242,7 +242,7 @@ static int denoise_frame(view_app *app, vct_image *image, vct_error *err) {
         rc = cli_denoise_image(ctx, &g, image, app->method == VIEW_VCT ? &app->aovs : NULL, &out,
                                err);
     if (rc == VCT_OK) {
-        vct_image_free(image);
+        vct_image_release(image);
         *image = out;
     }
     return rc;
@@ -263,11 +263,11 @@ int view_app_render(view_app *app, vct_error *err) {
         vct_frame_host_copy(app->ctx, 0);
     if (rc == VCT_OK && denoise)
         rc = denoise_frame(app, &image, err);
-    vct_image_free(&app->host_frame);
+    vct_image_release(&app->host_frame);
     if (rc == VCT_OK && (app->group || denoise)) /* the display takes it from the host */
         app->host_frame = image;
     else
-        vct_image_free(&image);
+        vct_image_release(&image);
     summarise_stages(app);
     app->frame_ms = now_ms() - t0;
     if (rc == VCT_OK)
@@ -318,8 +318,8 @@ int view_app_move_light(view_app *app, float dx, float dy, float dz) {
 void view_app_camera_changed(view_app *app) {
     app->pt_spp = 0;
     app->dirty = 1;
-    vct_image_free(&app->albedo); /* the guides follow the camera */
-    vct_image_free(&app->normal_depth);
+    vct_image_release(&app->albedo); /* the guides follow the camera */
+    vct_image_release(&app->normal_depth);
 }
 
 void view_app_status(const view_app *app, const char *display_path, char *out, size_t size) {

@@ -61,7 +61,7 @@ static void screenshot(viewer *v) {
     else
         fprintf(stderr, "vct-view: screenshot failed: %s\n",
                 im.rgba ? err.message : "nothing rendered yet, or out of memory");
-    vct_image_free(&im);
+    vct_image_release(&im);
 }
 
 static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
@@ -289,7 +289,7 @@ static int run_group(viewer *v, const view_args *va, const cli_options *opt) {
     } else {
         fprintf(stderr, "vct-view: %s\n", err.message);
     }
-    vct_group_destroy(group);
+    vct_group_release(group);
     return status;
 }
 
@@ -394,7 +394,7 @@ int main(int argc, char **argv) {
         fprintf(stderr, "vct-view: %s\n", err.message);
     }
     view_app_free(&v.app);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     display_close(&v.display);
     return status;
 }

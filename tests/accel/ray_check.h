@@ -141,8 +141,8 @@ static void check_watertight(vct_context *ctx, const test_mesh *m, const float c
     printf("%s: %u rays through shared vertices and edges, %u leaks\n", name, 2 * n, leaks);
     free(rays);
     free(hits);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 #endif

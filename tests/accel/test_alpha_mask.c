@@ -166,7 +166,7 @@ static void check_pixels(const mask_case *mc) {
     force[VCT_EFFECT_INDIRECT] = VCT_FORCE_OFF;
     vct_plan plan;
     vct_plan_make(s, force, &plan);
-    vct_vct_options o = vct_vct_options_default();
+    vct_vct_options o = vct_vct_options_default(512, 512);
     o.width = o.height = 72;
     o.aovs = 1;
     o.edge_samples = 1; /* the reference follows each pixel's centre */
@@ -203,10 +203,10 @@ static void check_pixels(const mask_case *mc) {
     printf("%-40s %d pixels: %d on the quad, %d through its holes, %d lit through them, %d "
            "shadowed; worst relative error %.2g\n",
            name, t.checked, t.quad, t.through, t.lit_through, t.shadowed, worst);
-    vct_image_free(&im);
-    vct_aovs_free(&aovs);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_aovs_release(&aovs);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 /* The floor's voxels (16^3 over [0, 16]^3): each lit by the point light
@@ -297,9 +297,9 @@ static void voxels_see_through(void) {
     free(albedo);
     free(keys);
     free(radiance);
-    vct_voxels_free(v);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_voxels_release(v);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -316,6 +316,6 @@ int main(void) {
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i)
         check_pixels(&cases[i]);
     voxels_see_through();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_alpha_mask");
 }

@@ -184,9 +184,9 @@ static void run_scene(vct_context *ctx, vct_scene *s, uint32_t rays, const char 
         check_structure(ctx, s, a, label);
         check_rays(ctx, s, a, rays, 42, label);
         check_same_hits(ctx, s, a, g, "as the grid", label);
-        vct_accel_free(a);
+        vct_accel_release(a);
     }
-    vct_accel_free(g);
+    vct_accel_release(g);
 }
 
 /* Every vertex moved (a shear, a scale and a wobble): the refit BVH and a
@@ -222,11 +222,11 @@ static void check_refit(vct_context *ctx, const test_mesh *m, const char *name) 
     vct_scene *fs = scene_of(&fewer);
     CHECK(vct_accel_refit(ctx, a, fs, &err) == VCT_ERR_INPUT && strstr(err.message, "rebuild"),
           "%s: refit to a scene with fewer triangles is not refused (%s)", name, err.message);
-    vct_scene_free(fs);
-    vct_accel_free(rebuilt);
-    vct_accel_free(a);
-    vct_scene_free(ms);
-    vct_scene_free(s);
+    vct_scene_release(fs);
+    vct_accel_release(rebuilt);
+    vct_accel_release(a);
+    vct_scene_release(ms);
+    vct_scene_release(s);
     free(moved.pos);
 }
 
@@ -320,7 +320,7 @@ static void check_ball_rays(vct_context *ctx, const vct_scene *s, const char *na
     printf("%s: %u rays at the ball, %u hit it\n", name, n, on_ball);
     free(rays);
     free(hits);
-    vct_accel_free(a);
+    vct_accel_release(a);
 }
 
 /* No triangles: every ray misses (the scene API refuses an empty scene, so
@@ -347,8 +347,8 @@ static void check_empty(vct_context *ctx) {
     printf("empty scene: %u rays, no hits\n", 2 * n);
     free(rays);
     free(hits);
-    vct_accel_free(a);
-    vct_scene_free(s);
+    vct_accel_release(a);
+    vct_scene_release(s);
     mesh_free(&one);
 }
 
@@ -359,32 +359,32 @@ int main(void) {
     test_mesh soup = mesh_soup(3000, 0.0f, 7);
     vct_scene *s = scene_of(&soup);
     run_scene(ctx, s, 4000, "soup");
-    vct_scene_free(s);
+    vct_scene_release(s);
     check_refit(ctx, &soup, "soup");
     mesh_free(&soup);
 
     test_mesh far_soup = mesh_soup(800, 1e5f, 9);
     s = scene_of(&far_soup);
     run_scene(ctx, s, 3000, "soup at 1e5");
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&far_soup);
 
     test_mesh one = mesh_soup(1, 0.0f, 3);
     s = scene_of(&one);
     run_scene(ctx, s, 2000, "one triangle");
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&one);
 
     test_mesh same = mesh_same_centroid(2000, origin, 13);
     s = scene_of(&same);
     run_scene(ctx, s, 3000, "one centroid");
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&same);
 
     test_mesh sphere = mesh_icosphere(3, 1.0f, origin);
     s = scene_of(&sphere);
     run_scene(ctx, s, 3000, "icosphere");
-    vct_scene_free(s);
+    vct_scene_release(s);
     check_watertight(ctx, &sphere, origin, &bvh_options, "icosphere watertight");
     check_refit(ctx, &sphere, "icosphere");
     mesh_free(&sphere);
@@ -397,7 +397,7 @@ int main(void) {
     s = scene_of(&room);
     run_scene(ctx, s, 3000, "ball in a room");
     check_ball_rays(ctx, s, "ball in a room");
-    vct_scene_free(s);
+    vct_scene_release(s);
     const float inside[3] = {0.0f, 0.0f, 0.0f};
     check_watertight(ctx, &room, inside, &bvh_options, "ball in a room watertight");
     mesh_free(&room);
@@ -408,15 +408,15 @@ int main(void) {
     test_mesh flat = mesh_quads(plates, 2);
     s = scene_of(&flat);
     run_scene(ctx, s, 3000, "floor and plate");
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&flat);
 
     s = check_cornell_box();
     run_scene(ctx, s, 4000, "cornell box");
-    vct_scene_free(s);
+    vct_scene_release(s);
 
     check_empty(ctx);
 
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_bvh");
 }

@@ -78,7 +78,7 @@ static void run_scene(vct_context *ctx, vct_scene *s, const uint32_t *res, uint3
     if (cells)
         check_cells(ctx, s, g, name);
     check_rays(ctx, s, a, rays, 42, name);
-    vct_accel_free(a);
+    vct_accel_release(a);
 }
 
 int main(void) {
@@ -94,19 +94,19 @@ int main(void) {
     run_scene(ctx, s, fine, 4000, 1, "soup, 37x5x64");
     CHECK(s->degenerate_triangles >= 15, "soup: %u degenerate triangles counted",
           s->degenerate_triangles);
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&soup);
 
     test_mesh far_soup = mesh_soup(800, 1e5f, 9);
     s = scene_of(&far_soup);
     run_scene(ctx, s, NULL, 3000, 1, "soup at 1e5");
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&far_soup);
 
     test_mesh sphere = mesh_icosphere(3, 1.0f, origin);
     s = scene_of(&sphere);
     run_scene(ctx, s, NULL, 3000, 1, "icosphere");
-    vct_scene_free(s);
+    vct_scene_release(s);
     check_watertight(ctx, &sphere, origin, &grid, "icosphere watertight");
     mesh_free(&sphere);
 
@@ -121,8 +121,8 @@ int main(void) {
     s = vct_scene_load(path, &err);
     REQUIRE_OK(s ? VCT_OK : err.status, err);
     run_scene(ctx, s, NULL, 4000, 1, "cornell box");
-    vct_scene_free(s);
+    vct_scene_release(s);
 
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_grid");
 }

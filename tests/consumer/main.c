@@ -24,7 +24,7 @@ static int render(vct_device_scene *ds, vct_method method, const char *prefix, v
         rc = vct_image_write_pfm(&image, path, err);
     if (rc == VCT_OK)
         printf("wrote %s\n", path);
-    vct_image_free(&image);
+    vct_image_release(&image);
     return rc;
 }
 
@@ -53,7 +53,7 @@ int main(int argc, char **argv) {
     if (rc == VCT_OK)
         rc = render(ds, VCT_METHOD_VCT, argv[2], &err);
     vct_device_scene_release(ds);
-    vct_context_destroy(ctx);
-    vct_scene_free(scene);
+    vct_context_release(ctx);
+    vct_scene_release(scene);
     return rc == VCT_OK ? 0 : fail(&err);
 }

@@ -50,11 +50,11 @@ static void inputs_alloc(inputs *in, int w, int h) {
 }
 
 static void inputs_free(inputs *in) {
-    vct_image_free(&in->color);
-    vct_image_free(&in->albedo);
-    vct_image_free(&in->nd);
-    vct_image_free(&in->variance);
-    vct_image_free(&in->clean);
+    vct_image_release(&in->color);
+    vct_image_release(&in->albedo);
+    vct_image_release(&in->nd);
+    vct_image_release(&in->variance);
+    vct_image_release(&in->clean);
 }
 
 static void set4(vct_image *im, int i, float a, float b, float c, float d) {
@@ -118,7 +118,7 @@ static void against_reference(vct_context *ctx, const char *name, const inputs *
     printf("%s (%dx%d): device against reference %.2g of the largest value\n", name, in->w, in->h,
            worst / largest);
     free(ref);
-    vct_image_free(&out);
+    vct_image_release(&out);
 }
 
 static double nrmse(const vct_image *a, const vct_image *ref) {
@@ -174,16 +174,16 @@ static void test_checker(vct_context *ctx) {
     /* The same input twice, and on a fresh context: the same bits. */
     REQUIRE_OK(run(ctx, &in, &again, &err), err);
     CHECK(memcmp(out.rgba, again.rgba, 16ull * in.w * in.h) == 0, "two runs differ");
-    vct_image_free(&again);
+    vct_image_release(&again);
     vct_context *fresh = check_context();
     REQUIRE_OK(run(fresh, &in, &again, &err), err);
     CHECK(memcmp(out.rgba, again.rgba, 16ull * in.w * in.h) == 0, "a fresh context differs");
-    vct_context_destroy(fresh);
-    vct_image_free(&again);
+    vct_context_release(fresh);
+    vct_image_release(&again);
     /* Without the estimator's variance: estimated, still against the reference. */
     in.with_variance = 0;
     against_reference(ctx, "checker plane, variance estimated", &in);
-    vct_image_free(&out);
+    vct_image_release(&out);
     inputs_free(&in);
 }
 
@@ -211,7 +211,7 @@ static void test_edge(vct_context *ctx) {
         printf("corner: column %d beside the edge %.4f, truth %.4f\n", x, mean, truth);
         CHECK(fabs(mean / truth - 1.0) < 0.05, "column %d: %.4f against %.4f", x, mean, truth);
     }
-    vct_image_free(&out);
+    vct_image_release(&out);
     inputs_free(&in);
 }
 
@@ -244,7 +244,7 @@ static void test_degenerate(vct_context *ctx) {
     CHECK(finite, "a NaN or infinity from degenerate guides");
     /* No noise at all: nothing to take away. */
     CHECK(worst < 1e-5, "a noiseless image moved by %.3g", worst);
-    vct_image_free(&out);
+    vct_image_release(&out);
     inputs_free(&in);
 }
 
@@ -269,7 +269,7 @@ static void test_firefly(vct_context *ctx) {
         largest = fmaxf(largest, out.rgba[4 * i]);
     printf("firefly: the brightest pixel after the filter %.3f (the wall 0.5)\n", largest);
     CHECK(largest < 1.0f, "a firefly of 500 left %.3f", largest);
-    vct_image_free(&out);
+    vct_image_release(&out);
     inputs_free(&in);
 }
 
@@ -300,7 +300,7 @@ static void test_refusals(vct_context *ctx) {
     g.normal_depth = &in.nd;
     o.iterations = 0;
     CHECK(vct_denoise(ctx, &in.color, &g, &o, &out, &err) == VCT_ERR_INPUT, "0 passes accepted");
-    vct_image_free(&small);
+    vct_image_release(&small);
     inputs_free(&in);
 }
 
@@ -345,9 +345,9 @@ static void test_pathtrace(vct_context *ctx) {
     CHECK(fabs(mean_d / mean_r - 1.0) < 0.03, "the mean moved to %.4f", mean_d / mean_r);
     vct_image *all[] = {&reference, &noisy, &variance, &albedo, &nd, &denoised};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
-        vct_image_free(all[i]);
-    vct_accel_free(g);
-    vct_scene_free(s);
+        vct_image_release(all[i]);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -359,6 +359,6 @@ int main(void) {
     test_sizes(ctx);
     test_refusals(ctx);
     test_pathtrace(ctx);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_denoise");
 }

@@ -42,8 +42,8 @@ static vct_image by_hand(const vct_scene *s, vct_method method) {
     job.voxels = v;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
-    vct_voxels_free(v);
-    vct_accel_free(a);
+    vct_voxels_release(v);
+    vct_accel_release(a);
     return im;
 }
 
@@ -107,9 +107,9 @@ static void check_same_images(const char *name, const vct_scene *s) {
         printf("%s, %s: identical to the render by hand; second render: %llu bytes uploaded "
                "(camera and parameters), none of them scene data\n",
                name, method, (unsigned long long)(up1.uploaded - up0.uploaded));
-        vct_image_free(&hand);
-        vct_image_free(&first);
-        vct_image_free(&again);
+        vct_image_release(&hand);
+        vct_image_release(&first);
+        vct_image_release(&again);
     }
     vct_device_scene_stats st;
     vct_device_scene_stats_get(ds, &st);
@@ -164,10 +164,10 @@ static void check_change(vct_device_scene *ds, const vct_scene *s, const char *w
           after.changes - before.changes);
     printf("%s: rebuilt %d BVH, %d voxels, %d light; images equal a fresh device scene's\n", what,
            accel, voxels, light);
-    vct_image_free(&kept);
-    vct_image_free(&pt);
-    vct_image_free(&new_vct);
-    vct_image_free(&new_pt);
+    vct_image_release(&kept);
+    vct_image_release(&pt);
+    vct_image_release(&new_vct);
+    vct_image_release(&new_pt);
 }
 
 static void check_changes(void) {
@@ -176,7 +176,7 @@ static void check_changes(void) {
     vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
     REQUIRE_OK(ds ? VCT_OK : err.status, err);
     vct_image first = by_device_scene(ds, VCT_METHOD_VCT);
-    vct_image_free(&first);
+    vct_image_release(&first);
 
     s->lights[0].position[0] += 0.2f;
     check_change(ds, s, "a moved light", (builds){0, 0, 1});
@@ -203,7 +203,7 @@ static void check_changes(void) {
           "a second device scene of one scene on one context: %s", err.message);
     vct_device_scene_release(twice);
     vct_device_scene_release(ds);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* A structure of another context is refused by name. */
@@ -220,21 +220,21 @@ static void check_other_context(void) {
     const int rc = vct_render(ctx, &job, &im, NULL, &err);
     CHECK(rc == VCT_ERR_INPUT && strstr(err.message, "another context"),
           "an acceleration structure of another context: rc %d, %s", rc, err.message);
-    vct_accel_free(a);
-    vct_context_destroy(other);
-    vct_scene_free(s);
+    vct_accel_release(a);
+    vct_context_release(other);
+    vct_scene_release(s);
 }
 
 int main(void) {
     ctx = check_context();
     vct_scene *box = check_cornell_box_point_light();
     check_same_images("cornell box", box);
-    vct_scene_free(box);
+    vct_scene_release(box);
     vct_scene *lit = check_cornell_box();
     check_same_images("emissive cornell box", lit);
-    vct_scene_free(lit);
+    vct_scene_release(lit);
     check_changes();
     check_other_context();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_device_scene");
 }

@@ -58,10 +58,10 @@ int main(void) {
     REQUIRE_OK(vct_image_error_map(&ref, &ref, 0.0, &map, &err), err);
     CHECK(map.rgba[0] == 0.0f && map.rgba[2] == 0.5f, "zero error colour (%g %g %g)", map.rgba[0],
           map.rgba[1], map.rgba[2]);
-    vct_image_free(&map);
+    vct_image_release(&map);
     REQUIRE_OK(vct_image_error_map(&test, &ref, 0.5, &map, &err), err);
     CHECK(map.rgba[4 * 3 + 0] == 0.9f && map.rgba[4 * 3 + 1] == 0.0f, "full-scale colour");
-    vct_image_free(&map);
+    vct_image_release(&map);
 
     vct_image small = make(3, 4, 1.0f);
     CHECK(vct_image_compare(&small, &ref, &m, &err) == VCT_ERR_INPUT &&
@@ -80,9 +80,9 @@ int main(void) {
     CHECK(back.width == 6 && back.height == 4 && m.rmse == 0.0, "PFM round trip: rmse %g", m.rmse);
     unlink(path);
     rmdir(dir);
-    vct_image_free(&back);
-    vct_image_free(&small);
-    vct_image_free(&ref);
-    vct_image_free(&test);
+    vct_image_release(&back);
+    vct_image_release(&small);
+    vct_image_release(&ref);
+    vct_image_release(&test);
     return check_exit("test_compare");
 }

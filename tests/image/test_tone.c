@@ -103,7 +103,7 @@ static void png_round_trip(void) {
         stbi_image_free(px);
     }
     remove(path);
-    vct_image_free(&im);
+    vct_image_release(&im);
 }
 
 int main(void) {

@@ -289,8 +289,8 @@ static void check_bins(const char *name, float offset, uint32_t face_res) {
            b.entries, rays, hits, missing ? "no" : "yes");
     bins_free(&h);
     vct_light_bins_release(ctx, &b);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 static float *inject_with(const vct_scene *s, const vct_accel *g, vct_voxels *v,
@@ -309,7 +309,7 @@ static void check_injection(const char *name, float offset, int sphere) {
     const float light[3] = {offset + 0.5f, offset + 0.45f, offset + 0.55f};
     vct_scene *s = make_scene(offset, 11, light);
     if (sphere) {
-        vct_scene_free(s);
+        vct_scene_release(s);
         mesh_builder b = {0};
         const float centre[3] = {light[0], light[1], light[2]};
         test_mesh ball = mesh_icosphere(3, 0.3f, centre), soup = mesh_soup(800, offset, 5);
@@ -391,9 +391,9 @@ static void check_injection(const char *name, float offset, int sphere) {
     free(with_bins);
     free(with_grid);
     free(fallback);
-    vct_voxels_free(v);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_voxels_release(v);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -404,6 +404,6 @@ int main(void) {
     check_injection("injection, soup", 0.0f, 0);
     check_injection("injection, soup 1e5 units away", 1e5f, 0);
     check_injection("injection, light in a closed sphere", 0.0f, 1);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_light_bins");
 }

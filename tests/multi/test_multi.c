@@ -48,7 +48,7 @@ static vct_group_build build_options(const vct_scene *s) {
     b.voxel.resolution = 32;
     b.bricks = (vct_brick_options){VCT_BRICKS_AUTO, 0, 0}; /* isotropic, the default */
     b.bounces = 1;
-    b.cones = vct_vct_options_default().cones;
+    b.cones = vct_vct_options_default(512, 512).cones;
     return b;
 }
 
@@ -83,9 +83,9 @@ static vct_image single(const method_case *c, const vct_scene *s) {
     job.voxels = v;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
-    vct_voxels_free(v);
-    vct_accel_free(a);
-    vct_context_destroy(ctx);
+    vct_voxels_release(v);
+    vct_accel_release(a);
+    vct_context_release(ctx);
     return im;
 }
 
@@ -139,10 +139,10 @@ static void check_variance(const vct_scene *s) {
           mean(&one_var));
     vct_image *all[] = {&one, &one_var, &both, &both_var};
     for (int i = 0; i < 4; ++i)
-        vct_image_free(all[i]);
-    vct_group_destroy(g);
-    vct_accel_free(a);
-    vct_context_destroy(ctx);
+        vct_image_release(all[i]);
+    vct_group_release(g);
+    vct_accel_release(a);
+    vct_context_release(ctx);
 }
 
 static void check_lists(void) {
@@ -151,12 +151,12 @@ static void check_lists(void) {
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     CHECK(vct_group_size(g) == 2, "\"all\": %d devices, expected the 2 PoCL exposes",
           vct_group_size(g));
-    vct_group_destroy(g);
+    vct_group_release(g);
     g = vct_group_create("1", &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     const vct_group_device *d;
     CHECK(vct_group_devices(g, &d) == 1 && d[0].info.index == 1, "\"1\" is device 1 alone");
-    vct_group_destroy(g);
+    vct_group_release(g);
     const char *bad[] = {"0,0", "0,7", "gpu", "0,,nothing-like-this"};
     const char *why[] = {"named twice", "no device \"7\"", "no device is a GPU", "no device"};
     for (int i = 0; i < 4; ++i) {
@@ -164,7 +164,7 @@ static void check_lists(void) {
         g = vct_group_create(bad[i], &err);
         CHECK(!g && strstr(err.message, why[i]) && strstr(err.message, "the devices are: [0]"),
               "list \"%s\" refused with the devices there are: %s", bad[i], err.message);
-        vct_group_destroy(g);
+        vct_group_release(g);
     }
 }
 
@@ -185,15 +185,15 @@ static void check_methods(const char *scene_name, const vct_scene *s) {
             CHECK(d == 0, "%s, %s, frame %d: %zu values differ between 1 and 2 devices", scene_name,
                   c->name, frame, d);
             CHECK(mean(&one) > 0.0, "%s, %s: a black image proves nothing", scene_name, c->name);
-            vct_image_free(&two);
+            vct_image_release(&two);
         }
         const vct_group_device *dev;
         vct_group_devices(g, &dev);
         printf("%s, %s: identical on 2 devices; work %.0f + %.0f, shares %.2f/%.2f\n", scene_name,
                c->name, dev[0].last_work, dev[1].last_work, dev[0].share, dev[1].share);
-        vct_image_free(&one);
+        vct_image_release(&one);
     }
-    vct_group_destroy(g);
+    vct_group_release(g);
 }
 
 /* Fixed splits, the smallest bands included: every row method's image is
@@ -217,12 +217,12 @@ static void check_fixed_splits(const vct_scene *s) {
             vct_group_devices(g, &dev);
             CHECK(differing(&one, &two) == 0, "%s, shares %s (rows %.0f + %.0f): the image differs",
                   c->name, splits[k], dev[0].last_work, dev[1].last_work);
-            vct_image_free(&two);
+            vct_image_release(&two);
         }
         unsetenv("VCT_GROUP_SHARES");
-        vct_image_free(&one);
+        vct_image_release(&one);
     }
-    vct_group_destroy(g);
+    vct_group_release(g);
 }
 
 /* Device 1 made 4x slower: its share of rows falls towards 1/5 and the
@@ -241,7 +241,7 @@ static void check_slowed(const vct_scene *s) {
         vct_image two;
         vct_error err = {0};
         REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
-        vct_image_free(&two);
+        vct_image_release(&two);
         shares[frame] = dev[1].share;
         printf("slowed device: frame %d, share %.3f (%.1f ms for %.0f rows; device 0 %.1f ms "
                "for %.0f)\n",
@@ -262,9 +262,9 @@ static void check_slowed(const vct_scene *s) {
     REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
     CHECK(differing(&one, &two) == 0, "uneven shares changed the image");
     unsetenv("VCT_SLOW_LAUNCH");
-    vct_image_free(&two);
-    vct_image_free(&one);
-    vct_group_destroy(g);
+    vct_image_release(&two);
+    vct_image_release(&one);
+    vct_group_release(g);
 }
 
 /* Device 1 fails a few launches into the frame: the other completes it,
@@ -283,7 +283,7 @@ static void check_failure(const vct_scene *s, int method_index) {
         REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
         CHECK(differing(&one, &two) == 0, "%s, frame %d: a failed device changed the image",
               c->name, frame);
-        vct_image_free(&two);
+        vct_image_release(&two);
     }
     unsetenv("VCT_FAIL_LAUNCH");
     const vct_group_device *dev;
@@ -293,8 +293,8 @@ static void check_failure(const vct_scene *s, int method_index) {
           dev[1].active ? "still active" : "dropped");
     CHECK(strstr(dev[1].dropped, "VCT_FAIL_LAUNCH") != NULL, "the reason names the failure: %s",
           dev[1].dropped);
-    vct_image_free(&one);
-    vct_group_destroy(g);
+    vct_image_release(&one);
+    vct_group_release(g);
 }
 
 /* Voxels built once and copied: cone tracing on the copy gives the image
@@ -317,11 +317,11 @@ static void check_copied_voxels(const vct_scene *s) {
         REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
         unsetenv("VCT_GROUP_SHARES");
         CHECK(differing(&one, &two) == 0, "%s on copied voxels differs", cases[m].name);
-        vct_image_free(&two);
-        vct_image_free(&one);
+        vct_image_release(&two);
+        vct_image_release(&one);
     }
     printf("voxels built in %.1f ms, copied in %.1f ms\n", dev[0].voxels_ms, dev[1].voxels_ms);
-    vct_group_destroy(g);
+    vct_group_release(g);
 }
 
 /* Device 1 cannot hold the structures: left out with a message, the frame
@@ -344,9 +344,9 @@ static void check_small_device(const vct_scene *s) {
     vct_image two;
     REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
     CHECK(differing(&one, &two) == 0, "the device left out changed the image");
-    vct_image_free(&two);
-    vct_image_free(&one);
-    vct_group_destroy(g);
+    vct_image_release(&two);
+    vct_image_release(&one);
+    vct_group_release(g);
 }
 
 /* Photon mapping's barrier: three bands report radii per pass; each gets
@@ -462,9 +462,9 @@ int main(void) {
     check_failure(box, 8); /* pm: bands in lockstep, started again */
     check_small_device(box);
     check_copied_voxels(box);
-    vct_scene_free(box);
+    vct_scene_release(box);
     vct_scene *lit = check_cornell_box();
     check_methods("emissive cornell box", lit);
-    vct_scene_free(lit);
+    vct_scene_release(lit);
     return check_exit("test_multi");
 }

@@ -302,6 +302,6 @@ int main(void) {
     test_sort(ctx, 0);
     test_sort(ctx, 1);
     test_segmented_sum(ctx);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_primitives");
 }

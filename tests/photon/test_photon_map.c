@@ -97,7 +97,7 @@ static void traced_free(vct_context *ctx, traced *t) {
     vct_photon_slots_release(ctx, &t->slots);
     vct_photon_sources_release(ctx, &t->src);
     vct_scene_buffers_release(ctx, &t->sb);
-    vct_accel_free(t->accel);
+    vct_accel_release(t->accel);
     free(t->records);
     free(t->kinds);
 }
@@ -140,7 +140,7 @@ static void energy(vct_context *ctx) {
     CHECK(sum[1] == sum[0] && sum[2] == sum[0], "grey box: the channels differ");
     CHECK(caustic == 0, "%u caustic photons without a mirror or glass", caustic);
     traced_free(ctx, &t);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* Every query's found photons and power against brute force: n points, half
@@ -255,19 +255,19 @@ static void grids(vct_context *ctx) {
     CHECK(same, "the same pass traced twice stored different photons");
     traced_free(ctx, &again);
     traced_free(ctx, &t);
-    vct_scene_free(s);
+    vct_scene_release(s);
     /* Nothing of the kinds asked for: an empty grid whose searches find nothing. */
     vct_scene *plain = box_scene(0.6f, 1.0f, 0);
     trace_pass(ctx, plain, 1u << 12, 4, 0, &t);
     grid_queries(ctx, plain, &t, VCT_PHOTON_CAUSTIC, 0.1f, 0.1f, 0, "empty caustic map");
     traced_free(ctx, &t);
-    vct_scene_free(plain);
+    vct_scene_release(plain);
 }
 
 int main(void) {
     vct_context *ctx = check_context();
     energy(ctx);
     grids(ctx);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_photon_map");
 }

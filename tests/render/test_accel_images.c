@@ -23,12 +23,12 @@ static vct_image render(const vct_scene *s, vct_method method, vct_accel_kind ki
         vct_voxel_options vo = {0};
         vo.resolution = 32;
         const vct_brick_options bo = {VCT_BRICKS_AUTO, 1, 0};
-        vct_vct_options vopt = vct_vct_options_default();
+        vct_vct_options vopt = vct_vct_options_default(512, 512);
         vopt.width = vopt.height = SIZE;
         vct_voxels *v = NULL;
         REQUIRE_OK(vct_vct_prepare(ctx, s, a, &plan, &vo, &bo, 1, &vopt.cones, &v, &err), err);
         REQUIRE_OK(vct_render_vct(ctx, s, a, v, &plan, &vopt, &im, NULL, &err), err);
-        vct_voxels_free(v);
+        vct_voxels_release(v);
     } else {
         vct_render_job job = vct_render_job_default(method, SIZE, SIZE);
         job.scene = s;
@@ -37,7 +37,7 @@ static vct_image render(const vct_scene *s, vct_method method, vct_accel_kind ki
         job.pathtrace.seed = 3;
         REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
     }
-    vct_accel_free(a);
+    vct_accel_release(a);
     return im;
 }
 
@@ -60,8 +60,8 @@ static void check_scene(const char *name, const vct_scene *s) {
         CHECK(sum > 0.0, "%s, %s: a black image proves nothing", name, method);
         printf("%s, %s: bvh and grid images %s (%zu values differ)\n", name, method,
                differ ? "differ" : "identical", differ);
-        vct_image_free(&bvh);
-        vct_image_free(&grid);
+        vct_image_release(&bvh);
+        vct_image_release(&grid);
     }
 }
 
@@ -69,10 +69,10 @@ int main(void) {
     ctx = check_context();
     vct_scene *box = check_cornell_box_point_light();
     check_scene("cornell box", box);
-    vct_scene_free(box);
+    vct_scene_release(box);
     vct_scene *lit = check_cornell_box();
     check_scene("emissive cornell box", lit);
-    vct_scene_free(lit);
-    vct_context_destroy(ctx);
+    vct_scene_release(lit);
+    vct_context_release(ctx);
     return check_exit("test_accel_images");
 }

@@ -138,9 +138,9 @@ static void pixels_against_analytic(const char *name, int blocker, int lamp_up) 
         printf("%-32s %d floor pixels: mean ratio %.4f, NRMSE %.4f\n", name, floor_pixels, ratio,
                nrmse);
     }
-    vct_image_free(&im);
-    vct_aovs_free(&aovs);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_aovs_release(&aovs);
+    vct_scene_release(s);
 }
 
 /* A lamp panel standing upright on the floor, 2 mm above it, seen from
@@ -203,9 +203,9 @@ static void near_panel_against_analytic(int tiles, double mean_tolerance, double
     printf("panel of %2d triangles, 2 mm up      %d floor pixels: mean ratio %.4f, NRMSE %.4f, "
            "worst pixel %.4f\n",
            2 * tiles * tiles, floor_pixels, ratio, nrmse, worst);
-    vct_image_free(&im);
-    vct_aovs_free(&aovs);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_aovs_release(&aovs);
+    vct_scene_release(s);
 }
 
 /* An emissive square inlaid in the floor under the lamp: the floor around
@@ -256,9 +256,9 @@ static void inlaid_tile(void) {
           bad, pixels, tile_pixels, worst);
     printf("tile inlaid in the floor          %d pixels (%d on the tile), worst %.2e\n", pixels,
            tile_pixels, worst);
-    vct_image_free(&im);
-    vct_aovs_free(&aovs);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_aovs_release(&aovs);
+    vct_scene_release(s);
 }
 
 /* The floor's voxels: their radiance against albedo / pi * E at their
@@ -310,9 +310,9 @@ static void voxels_against_analytic(void) {
     printf("voxels: %d floor voxels, mean ratio %.4f\n", floor_voxels, ratio);
     free(keys);
     free(radiance);
-    vct_voxels_free(v);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_voxels_release(v);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 /* --emitters cones: the lamp is no light; its voxels keep its emission and
@@ -349,8 +349,8 @@ static void cones_against_analytic(void) {
           ratio, direct);
     printf("%-32s %d floor pixels: mean ratio %.4f, NRMSE %.4f\n", "emitters by cones",
            floor_pixels, ratio, nrmse);
-    vct_image_free(&im);
-    vct_aovs_free(&aovs);
+    vct_image_release(&im);
+    vct_aovs_release(&aovs);
 
     /* The lamp's voxels keep its emission. */
     vct_error err = {0};
@@ -375,9 +375,9 @@ static void cones_against_analytic(void) {
           (double)LE);
     free(radiance);
     free(emission);
-    vct_voxels_free(v);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_voxels_release(v);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -393,6 +393,6 @@ int main(void) {
     near_panel_against_analytic(3, 0.02, 0.6);
     inlaid_tile();
     voxels_against_analytic();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_area_light");
 }

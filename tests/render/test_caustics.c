@@ -75,7 +75,7 @@ static void slab(void) {
           "floor under the slab: mean %.4f against %.4f (sun through the plate), %d of %d "
           "values off by more than 30 %%",
           mean, expected, far, n);
-    vct_image_free(&im);
+    vct_image_release(&im);
 
     /* Forced off, the floor under the slab is in the slab's shadow. */
     vct_plan off;
@@ -87,20 +87,20 @@ static void slab(void) {
     CHECK(vct_kernel_launches(ctx, "vct_caustics") == 0 && worst < 1e-3 * expected,
           "caustics off: %llu caustic passes, floor up to %g",
           (unsigned long long)vct_kernel_launches(ctx, "vct_caustics"), worst);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 
     /* An opaque slab sends nothing through: no caustics planned. */
     s = slab_scene(0.0f);
     vct_plan_make(s, NULL, &plan);
     CHECK(!plan.on[VCT_EFFECT_CAUSTICS], "an opaque slab plans caustics: %s",
           plan.why[VCT_EFFECT_CAUSTICS]);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 int main(void) {
     ctx = check_context();
     slab();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_caustics");
 }

@@ -54,7 +54,7 @@ static vct_image render_vct(const vct_scene *s, const vct_plan *plan, int w, int
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_voxel_options vo = {0};
     vo.resolution = 32;
-    vct_vct_options o = vct_vct_options_default();
+    vct_vct_options o = vct_vct_options_default(512, 512);
     o.width = w;
     o.height = h;
     o.edge_samples = edge_samples;
@@ -64,8 +64,8 @@ static vct_image render_vct(const vct_scene *s, const vct_plan *plan, int w, int
     vct_image im;
     vct_stats_reset(ctx);
     REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &im, aovs, &err), err);
-    vct_voxels_free(v);
-    vct_accel_free(g);
+    vct_voxels_release(v);
+    vct_accel_release(g);
     return im;
 }
 
@@ -110,7 +110,7 @@ static void direct_edges(void) {
     const vct_render_options ro = {N * N * W, N * N * H, 0, 0, 0.0f};
     vct_image fine;
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
 
     for (uint32_t n = 1; n <= N; n += N - 1) {
         vct_image im = render_vct(s, &plan, W, H, n, NULL);
@@ -148,10 +148,10 @@ static void direct_edges(void) {
                   "one ray per pixel: only %d of %d edge pixels differ from their mean (the "
                   "test sees no edges)",
                   centred, edges);
-        vct_image_free(&im);
+        vct_image_release(&im);
     }
-    vct_image_free(&fine);
-    vct_scene_free(s);
+    vct_image_release(&fine);
+    vct_scene_release(s);
 }
 
 static void indirect_share(void) {
@@ -205,11 +205,11 @@ static void indirect_share(void) {
           "indirect light at the border in proportion to the share that sees the plate: %d of "
           "%d border pixels off by more than 0.08 (worst %.3f; interior %.4f over %d pixels)",
           off, border, worst, interior, inside);
-    vct_image_free(&im);
-    vct_image_free(&fine);
-    vct_aovs_free(&aovs);
-    vct_aovs_free(&fine_aovs);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_image_release(&fine);
+    vct_aovs_release(&aovs);
+    vct_aovs_release(&fine_aovs);
+    vct_scene_release(s);
 }
 
 /* A floor wider than the view, textured with a TEX x TEX checker (0.1 and
@@ -261,7 +261,7 @@ static void texture_detail(void) {
     const vct_render_options ro = {N * N * W, N * N * H, 0, 0, 0.0f};
     vct_image fine; /* the albedo at each fine pixel */
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.5f;
     vct_plan plan;
     vct_plan_make(s, NULL, &plan);
@@ -302,11 +302,11 @@ static void texture_detail(void) {
         printf("texture detail, %u rays per axis: %d of %d varied pixels off their mean (worst "
                "%.3g), indirect / albedo spread %.3f\n",
                n, off, varied, worst, indirect_spread);
-        vct_image_free(&im);
-        vct_aovs_free(&aovs);
+        vct_image_release(&im);
+        vct_aovs_release(&aovs);
     }
-    vct_image_free(&fine);
-    vct_scene_free(s);
+    vct_image_release(&fine);
+    vct_scene_release(s);
 }
 
 /* More rays per axis than VCT_EDGE_SAMPLES_MAX: a clear error, no image. */
@@ -321,15 +321,15 @@ static void too_many_rays(void) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_vct_options o = vct_vct_options_default();
+    vct_vct_options o = vct_vct_options_default(512, 512);
     o.width = o.height = 8;
     o.edge_samples = VCT_EDGE_SAMPLES_MAX + 1;
     vct_image im;
     const int rc = vct_render_vct(ctx, s, g, NULL, &plan, &o, &im, NULL, &err);
     CHECK(rc == VCT_ERR_INPUT && strstr(err.message, "rays per axis") && im.rgba == NULL,
           "%u rays per axis: rc %d, '%s'", o.edge_samples, rc, err.message);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -338,6 +338,6 @@ int main(void) {
     direct_edges();
     indirect_share();
     texture_detail();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_edge_samples");
 }

@@ -80,10 +80,10 @@ static void run_case(vct_context *ctx, const char *name, double eye_y) {
     CHECK(bad == 0, "%s: %d pixels wrong", name, bad);
     CHECK(full > W * H / 4 && empty > W * H / 10, "%s: the view misses its mix (%d, %d)", name,
           full, empty);
-    vct_image_free(&albedo);
-    vct_image_free(&nd);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_image_release(&albedo);
+    vct_image_release(&nd);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -95,6 +95,6 @@ int main(void) {
     vct_scene *s = NULL;
     CHECK(vct_render_guides(ctx, s, NULL, W, H, 0, &a, &b, &err) == VCT_ERR_INPUT,
           "0 rays per axis accepted");
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_guides");
 }

@@ -32,7 +32,7 @@ static vct_image trace(vct_context *ctx, const vct_scene *s, int w, int h, uint3
     vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0, NULL};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, res, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     return im;
 }
 
@@ -65,8 +65,8 @@ static void furnace(vct_context *ctx, const char *name, vct_material m, double e
                    5.0 * se);
     }
     CHECK(r.discarded == 0, "%s: %u samples discarded", name, r.discarded);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 /* A plane with an optional point light; camera looking down at it. */
@@ -94,12 +94,12 @@ static void direct_matches_raycast(vct_context *ctx) {
     vct_render_options ro = {64 * 8, 48 * 8, 0, 0, 0.0f};
     vct_image fine, ref = {64, 48, calloc(16, 64 * 48)};
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     for (int y = 0; y < 48 * 8; ++y)
         for (int x = 0; x < 64 * 8; ++x)
             for (int c = 0; c < 4; ++c)
                 ref.rgba[4 * ((y / 8) * 64 + x / 8) + c] += fine.rgba[4 * (y * 512 + x) + c] / 64;
-    vct_image_free(&fine);
+    vct_image_release(&fine);
     vct_pathtrace_result r;
     vct_image im = trace(ctx, s, 64, 48, 256, 1, 3, &r);
     /* What remains is the random placement of the samples in each pixel
@@ -122,9 +122,9 @@ static void direct_matches_raycast(vct_context *ctx) {
     CHECK(mean_diff < 5e-4, "depth 1 vs ray caster: image means differ by %.2e", mean_diff);
     printf("depth 1 vs ray caster: relative RMSE %.2e, worst pixel %.2e, means %.2e apart\n",
            m.relative_rmse, worst, mean_diff);
-    vct_image_free(&im);
-    vct_image_free(&ref);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_image_release(&ref);
+    vct_scene_release(s);
 }
 
 /* An open plane of albedo 1 under a sun of irradiance E reflects exactly
@@ -138,8 +138,8 @@ static void open_scene_energy(vct_context *ctx) {
     for (int i = 0; i < 32 * 24; ++i)
         worst = fmax(worst, fabs(im.rgba[4 * i] - 1.0 / CHECK_PI));
     CHECK(worst < 1e-5, "open plane: off E/pi by %.3g", worst);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 static void convergence_and_determinism(vct_context *ctx) {
@@ -159,7 +159,7 @@ static void convergence_and_determinism(vct_context *ctx) {
         if (i == 0)
             first = im;
         else
-            vct_image_free(&im);
+            vct_image_release(&im);
     }
     /* 1/sqrt(spp): each 4x more samples halves the error (the reference's own
      * noise pulls the last ratio slightly below 2). */
@@ -169,11 +169,11 @@ static void convergence_and_determinism(vct_context *ctx) {
     CHECK(memcmp(again.rgba, first.rgba, 16 * 32 * 32) == 0, "same seed and spp differ");
     vct_image other = trace(ctx, s, 32, 32, 4, 16, 8, &r);
     CHECK(memcmp(other.rgba, first.rgba, 16 * 32 * 32) != 0, "another seed gives the same image");
-    vct_image_free(&again);
-    vct_image_free(&other);
-    vct_image_free(&first);
-    vct_image_free(&ref);
-    vct_scene_free(s);
+    vct_image_release(&again);
+    vct_image_release(&other);
+    vct_image_release(&first);
+    vct_image_release(&ref);
+    vct_scene_release(s);
 }
 
 /* Slivers, zero-area triangles, albedo 1, emission and every material kind:
@@ -204,8 +204,8 @@ static void adversarial(vct_context *ctx) {
         bad += !isfinite(im.rgba[i]);
     CHECK(bad == 0, "adversarial scene: %zu non-finite values", bad);
     printf("adversarial scene: %u samples discarded (reported, never in the image)\n", r.discarded);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
     free(mats);
     mesh_free(&soup);
 }
@@ -244,8 +244,8 @@ static void glass_slab(vct_context *ctx, float angle_deg) {
           angle_deg, mean, expect);
     printf("glass slab at %2.0f degrees: transmitted %.5f, expected %.5f (5 sigma %.5f)\n",
            angle_deg, mean, expect, 5.0 * sigma);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 /* Four resumed calls of one sample equal one call of four, bit for bit (the
@@ -266,7 +266,7 @@ static void resume_continues(vct_context *ctx) {
     part.spp = 1;
     for (int i = 0; i < 4; ++i) {
         part.resume = i > 0;
-        vct_image_free(&step);
+        vct_image_release(&step);
         REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &part, &step, &r, &err), err);
     }
     CHECK(r.spp == 4, "resumed calls report %u samples, expected 4", r.spp);
@@ -276,11 +276,11 @@ static void resume_continues(vct_context *ctx) {
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &part, &fresh, &r, &err), err);
     CHECK(r.spp == 1 && memcmp(once.rgba, fresh.rgba, 16ull * 24 * 16) != 0,
           "a call without resume should start over (%u samples)", r.spp);
-    vct_image_free(&once);
-    vct_image_free(&step);
-    vct_image_free(&fresh);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_image_release(&once);
+    vct_image_release(&step);
+    vct_image_release(&fresh);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -309,6 +309,6 @@ int main(void) {
     open_scene_energy(ctx);
     convergence_and_determinism(ctx);
     adversarial(ctx);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_pathtrace");
 }

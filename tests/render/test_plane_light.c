@@ -146,9 +146,9 @@ static void run_case(vct_context *ctx, const char *name, vct_light light, double
     if (occluder)
         CHECK(shadowed > 20, "%s: the occluder shadows only %d pixels", name, shadowed);
     printf("%s: %d pixels, worst relative error %.3g\n", name, compared, worst);
-    vct_image_free(&im);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -167,6 +167,6 @@ int main(void) {
     vct_light far_point = point;
     far_point.position[1] += 1000.0f;
     run_case(ctx, "point at height 1000", far_point, 1000.0, 1);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_plane_light");
 }

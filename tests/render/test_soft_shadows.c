@@ -149,7 +149,7 @@ static vct_image render_pt(const vct_scene *s, uint32_t spp) {
     vct_pathtrace_options o = {W, H, spp, 0.0, 1, 7, 64, 0, 0, NULL};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, NULL, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     return im;
 }
 
@@ -302,9 +302,9 @@ static double plate_case(const char *name, vct_light light) {
            name, ap.mean_abs, ap.mean_signed, ap.compared, ac.mean_abs, ac.mean_signed,
            e_cone.middle, e_ref.middle, e_ref.middle + shift_max, e_cone.width, e_ref.width,
            umbra_max, lit_min);
-    vct_image_free(&pt);
-    vct_image_free(&cones);
-    vct_scene_free(s);
+    vct_image_release(&pt);
+    vct_image_release(&cones);
+    vct_scene_release(s);
     return e_cone.width;
 }
 
@@ -327,8 +327,8 @@ static void open_floor(void) {
     CHECK(compared > W * H / 3 && lowest > 0.99 && lowest <= 1.0 + 1e-5,
           "open floor: %d pixels, lowest fraction of light %.4f", compared, lowest);
     printf("open floor: %d pixels, lowest fraction of light %.5f\n", compared, lowest);
-    vct_image_free(&cones);
-    vct_scene_free(s);
+    vct_image_release(&cones);
+    vct_scene_release(s);
 }
 
 static int same_image(const vct_image *a, const vct_image *b) {
@@ -377,9 +377,9 @@ static void plan_and_forcing(void) {
           "soft image deterministic and unlike the hard one");
     vct_image *all[5] = {&base, &forced_on, &forced_off, &again, &twice};
     for (int i = 0; i < 5; ++i)
-        vct_image_free(all[i]);
-    vct_scene_free(hard);
-    vct_scene_free(soft);
+        vct_image_release(all[i]);
+    vct_scene_release(hard);
+    vct_scene_release(soft);
 }
 
 static void bad_radius(void) {
@@ -393,7 +393,7 @@ static void bad_radius(void) {
                   (strstr(err.message, "radius") || strstr(err.message, "non-finite")),
               "%s radius: status %d, \"%s\"", why[i], rc, err.message);
     }
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -405,6 +405,6 @@ int main(void) {
     const double wide = plate_case("point, radius 0.75", point_light(0.75f));
     CHECK(wide > 2.0 * narrow, "penumbra widens with the radius: %.3f, then %.3f", narrow, wide);
     plate_case("sun, 0.1 rad", sun(0.1f));
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_soft_shadows");
 }

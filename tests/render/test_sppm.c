@@ -52,7 +52,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const vct_pm_optio
     REQUIRE_OK(a ? VCT_OK : err.status, err);
     vct_image im;
     REQUIRE_OK(vct_render_pm(ctx, s, a, o, &im, res, &err), err);
-    vct_accel_free(a);
+    vct_accel_release(a);
     return im;
 }
 
@@ -90,8 +90,8 @@ static void furnace(vct_context *ctx) {
           expect);
     CHECK(r.global_map && !r.caustic_map, "furnace: maps global %d caustic %d (expected 1, 0)",
           r.global_map, r.caustic_map);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 /* A 4 x 4 plane at y = 0 of albedo a under a point light at height h. */
@@ -144,7 +144,7 @@ static void plane_convergence(vct_context *ctx) {
         o.passes = passes[i];
         vct_image im = render(ctx, s, &o, NULL);
         err[i] = plane_error(&im, a, h, intensity, &mean);
-        vct_image_free(&im);
+        vct_image_release(&im);
     }
     printf("plane under a point light, photons only: relative RMS error %.4f, %.4f, %.4f at "
            "4, 32, 256 passes\n",
@@ -153,7 +153,7 @@ static void plane_convergence(vct_context *ctx) {
     CHECK(err[1] < err[0] / 1.5 && err[2] < err[1] / 1.5,
           "the error does not fall with passes: %.4g, %.4g, %.4g", err[0], err[1], err[2]);
     CHECK(err[2] < 0.05 * mean, "256 passes: error %.3g of the mean %.3g", err[2] / mean, mean);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* A mirror quad at y = 2 above a point light at y = 1 over a floor at y = 0:
@@ -203,8 +203,8 @@ static void mirror_caustic(vct_context *ctx) {
     CHECK(fabs(channel_mean(&im, 0) - mean) < 0.03 * mean, "caustic power %.5g, expected %.5g",
           channel_mean(&im, 0), mean);
     CHECK(sqrt(e2 / n) < 0.1 * mean, "caustic error %.3g of its mean", sqrt(e2 / n) / mean);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 /* A glass ball over a floor under a small emissive quad: the bright spot
@@ -279,10 +279,10 @@ static void glass_caustic(vct_context *ctx) {
     CHECK(fabs(pm / pt - 1.0) < 0.1, "caustic region: photon mapping %.4g, path tracer %.4g",
           pm / n, pt / n);
     free(floor_px);
-    vct_image_free(&im);
-    vct_image_free(&ref);
-    vct_accel_free(a);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_image_release(&ref);
+    vct_accel_release(a);
+    vct_scene_release(s);
     free(pos);
     free(tri);
     free(tm);
@@ -325,11 +325,11 @@ static void corners(vct_context *ctx) {
     CHECK(m_on < 1.01 * pt, "with the normal filter the corners gain light: %.5g against %.5g",
           m_on, pt);
     CHECK(m_off > m_on, "without the filter the next wall's photons should add light");
-    vct_image_free(&ref);
-    vct_image_free(&on);
-    vct_image_free(&off);
-    vct_accel_free(a);
-    vct_scene_free(s);
+    vct_image_release(&ref);
+    vct_image_release(&on);
+    vct_image_release(&off);
+    vct_accel_release(a);
+    vct_scene_release(s);
 }
 
 /* The same seed and passes give the same image; 2 resumed calls of 3
@@ -359,12 +359,12 @@ static void determinism(vct_context *ctx) {
     CHECK(r.passes == 6 && memcmp(x.rgba, z.rgba, bytes) == 0,
           "3 + 3 resumed passes (%u) differ from 6", r.passes);
     CHECK(memcmp(x.rgba, w.rgba, bytes) != 0, "another seed gave the same image");
-    vct_image_free(&x);
-    vct_image_free(&y);
-    vct_image_free(&z);
-    vct_image_free(&w);
-    vct_accel_free(a);
-    vct_scene_free(s);
+    vct_image_release(&x);
+    vct_image_release(&y);
+    vct_image_release(&z);
+    vct_image_release(&w);
+    vct_accel_release(a);
+    vct_scene_release(s);
 }
 
 static void refused(vct_context *ctx, const vct_scene *s, const vct_pm_options *o,
@@ -376,7 +376,7 @@ static void refused(vct_context *ctx, const vct_scene *s, const vct_pm_options *
     const int rc = vct_render_pm(ctx, s, a, o, &im, NULL, &err);
     CHECK(rc != VCT_OK && strstr(err.message, expect) && !im.rgba,
           "%s: rc %d, message \"%s\" (expected one with \"%s\")", what, rc, err.message, expect);
-    vct_accel_free(a);
+    vct_accel_release(a);
 }
 
 static void bad_input(vct_context *ctx) {
@@ -395,8 +395,8 @@ static void bad_input(vct_context *ctx) {
     o.photons_per_pass = 1024;
     o.passes = 0;
     refused(ctx, s, &o, "--spp", "no passes and no time");
-    vct_scene_free(dark);
-    vct_scene_free(s);
+    vct_scene_release(dark);
+    vct_scene_release(s);
 }
 
 /* A plane under a uniform sky of radiance L: radiance a L, from the BSDF
@@ -413,19 +413,19 @@ static void sky(vct_context *ctx) {
     o.photons_per_pass = 1u << 15;
     vct_image im = render(ctx, s, &o, NULL);
     const double by_rays = channel_mean(&im, 0);
-    vct_image_free(&im);
+    vct_image_release(&im);
     o.direct_photons = 1;
     o.radius = 0.1f;
     im = render(ctx, s, &o, NULL);
     const double by_photons = channel_mean(&im, 0);
-    vct_image_free(&im);
+    vct_image_release(&im);
     printf("plane under a sky: %.5f by BSDF rays, %.5f by photons, exact %.5f\n", by_rays,
            by_photons, expect);
     CHECK(fabs(by_rays - expect) < 0.02 * expect, "sky by rays: %.5f, expected %.5f", by_rays,
           expect);
     CHECK(fabs(by_photons - expect) < 0.03 * expect, "sky by photons: %.5f, expected %.5f",
           by_photons, expect);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* Two closed rooms sharing one wall of zero thickness, a light in the first,
@@ -441,7 +441,7 @@ static double dark_room_mean(vct_context *ctx, const vct_scene *s, uint32_t pass
     o.normal_cos = normal_cos;
     vct_image im = render(ctx, s, &o, NULL);
     const double m = channel_mean(&im, 0);
-    vct_image_free(&im);
+    vct_image_release(&im);
     return m;
 }
 
@@ -476,7 +476,7 @@ static void thin_wall(vct_context *ctx) {
           lit);
     CHECK(late < early || early == 0.0, "the leak does not shrink with the radius: %.4g, %.4g",
           early, late);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -490,6 +490,6 @@ int main(void) {
     thin_wall(ctx);
     determinism(ctx);
     bad_input(ctx);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_sppm");
 }

@@ -99,9 +99,9 @@ static void pixels_against_reference(const char *name, float reps, uint32_t wrap
     }
     CHECK(checked > 5000 && bad == 0, "%s: %d of %d pixels off", name, bad, checked);
     printf("%-34s %d pixels, worst difference %.2g\n", name, checked, worst);
-    vct_image_free(&im);
-    vct_aovs_free(&aovs);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_aovs_release(&aovs);
+    vct_scene_release(s);
 }
 
 static double image_mean(const vct_image *im) {
@@ -130,10 +130,10 @@ static void path_tracer_agrees(void) {
     const double ratio = image_mean(&pt) / image_mean(&rc);
     CHECK(fabs(ratio - 1.0) < 0.01, "path tracer mean %.4f of the ray caster's", ratio);
     printf("path tracer, direct only: mean %.4f of the ray caster's\n", ratio);
-    vct_image_free(&rc);
-    vct_image_free(&pt);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_image_release(&rc);
+    vct_image_release(&pt);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 /* The floor through voxel centres at 16^3 with 4 checker texels per voxel
@@ -181,8 +181,8 @@ static void voxel_albedo_is_a_mean(void) {
     printf("voxel albedo: %d voxels, worst difference from the mean %.4f\n", checked, worst);
     free(keys);
     free(albedo);
-    vct_voxels_free(v);
-    vct_scene_free(s);
+    vct_voxels_release(v);
+    vct_scene_release(s);
 }
 
 /* An OBJ whose MTL names a PNG by map_Kd: read, decoded from sRGB. */
@@ -219,7 +219,7 @@ static void obj_map_kd(void) {
                   t[2] == 0.0f && fabsf(t[8] - 0.0030353f) < 1e-6f && t[3] == 1.0f,
               "decoded texels (%g %g %g %g), (%g)", t[0], t[1], t[2], t[3], t[8]);
     }
-    vct_scene_free(s);
+    vct_scene_release(s);
     /* the same without texture coordinates: every point reads uv (0, 0), the
      * same colour everywhere, and nothing past the buffers */
     snprintf(path, sizeof path, "%s/t.obj", dir);
@@ -251,16 +251,16 @@ static void obj_map_kd(void) {
     }
     CHECK(lit > 20 && differ == 0, "no coordinates: %d pixels lit, %d of another colour", lit,
           differ);
-    vct_image_free(&im);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_accel_release(g);
+    vct_scene_release(s);
     /* a missing image is refused, naming it */
     snprintf(path, sizeof path, "%s/t.png", dir);
     unlink(path);
     snprintf(path, sizeof path, "%s/t.obj", dir);
     s = vct_scene_load(path, &err);
     CHECK(!s && strstr(err.message, "t.png"), "missing texture: %s", s ? "loaded" : err.message);
-    vct_scene_free(s);
+    vct_scene_release(s);
     snprintf(path, sizeof path, "%s/t.mtl", dir);
     unlink(path);
     snprintf(path, sizeof path, "%s/t.obj", dir);
@@ -276,6 +276,6 @@ int main(void) {
                              VCT_WRAP_CLAMP_S | VCT_WRAP_CLAMP_T);
     path_tracer_agrees();
     voxel_albedo_is_a_mean();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_texture");
 }

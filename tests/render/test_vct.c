@@ -28,8 +28,8 @@ static rendered render(const vct_scene *s, const vct_plan *plan, uint32_t res, i
 }
 
 static void rendered_free(rendered *r) {
-    vct_image_free(&r->image);
-    vct_aovs_free(&r->aovs);
+    vct_image_release(&r->image);
+    vct_aovs_release(&r->aovs);
 }
 
 static size_t nonfinite(const vct_image *im) {
@@ -84,7 +84,7 @@ static void plans(void) {
     CHECK(vct_effect_from_name("indirect") == VCT_EFFECT_INDIRECT &&
               vct_effect_from_name("sparkle") == -1,
           "effect names");
-    vct_scene_free(box);
+    vct_scene_release(box);
 
     /* Nothing lights a scene with no lights, emission or ambient light:
      * no direct, no indirect, nothing that needs voxels. */
@@ -94,7 +94,7 @@ static void plans(void) {
     CHECK(!p.on[VCT_EFFECT_DIRECT] && !p.on[VCT_EFFECT_INDIRECT] && !vct_plan_needs_voxels(&p),
           "an unlit scene plans nothing: indirect %d (%s)", p.on[VCT_EFFECT_INDIRECT],
           p.why[VCT_EFFECT_INDIRECT]);
-    vct_scene_free(dark);
+    vct_scene_release(dark);
 }
 
 /* A diffuse scene enqueues no specular kernel; forcing specular on runs it
@@ -140,13 +140,13 @@ static void specular_only_when_planned(void) {
     REQUIRE_OK(vct_render_raycast(ctx, box, g, &ro, &rc, &err), err);
     CHECK(memcmp(d.image.rgba, rc.rgba, 16ull * 48 * 40) == 0,
           "direct light differs from the ray caster's");
-    vct_image_free(&rc);
-    vct_accel_free(g);
+    vct_image_release(&rc);
+    vct_accel_release(g);
     rendered_free(&a);
     rendered_free(&b);
     rendered_free(&c);
     rendered_free(&d);
-    vct_scene_free(box);
+    vct_scene_release(box);
 }
 
 /* A floor in the top voxel layer under a constant sky L: every cone leaves
@@ -176,7 +176,7 @@ static void sky_floor(vct_material m, const uint32_t *presets, int count, int mi
         vo.has_bounds = 1;
         vo.bounds_min[0] = -1.0, vo.bounds_min[1] = -1.0, vo.bounds_min[2] = -1.0;
         vo.bounds_size = 2.0;
-        vct_vct_options o = vct_vct_options_default();
+        vct_vct_options o = vct_vct_options_default(512, 512);
         o.width = o.height = 32;
         o.diffuse_cones = presets[i];
         o.edge_samples = 1; /* a pixel is floor or sky */
@@ -205,12 +205,12 @@ static void sky_floor(vct_material m, const uint32_t *presets, int count, int mi
               presets[i], worst_ao);
         printf("constant sky, %s floor, %2u cones: within %.1g of albedo * L (%d pixels)\n",
                mirror ? "mirror " : "diffuse", presets[i], worst, floor_pixels);
-        vct_image_free(&im);
-        vct_aovs_free(&aovs);
-        vct_voxels_free(v);
-        vct_accel_free(g);
+        vct_image_release(&im);
+        vct_aovs_release(&aovs);
+        vct_voxels_release(v);
+        vct_accel_release(g);
     }
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 static void constant_environment(void) {
@@ -236,7 +236,7 @@ static void cornell_against_path_tracer(void) {
     REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, &pr, &err), err);
     const vct_render_options ro = {w, h, 0, 0, 0.0f};
     REQUIRE_OK(vct_render_raycast(ctx, box, g, &ro, &rc, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     vct_plan p;
     vct_plan_make(box, NULL, &p);
     rendered r = render(box, &p, 64, w, h, 2);
@@ -251,7 +251,7 @@ static void cornell_against_path_tracer(void) {
     REQUIRE_OK(vct_image_compare(&iso, &ref, &mi, &err), err);
     CHECK(mi.relative_rmse < 0.1,
           "Cornell box, isotropic: relative RMSE %.4f against the path tracer", mi.relative_rmse);
-    vct_image_free(&iso);
+    vct_image_release(&iso);
     REQUIRE_OK(vct_image_compare(&r.image, &ref, &mv, &err), err);
     REQUIRE_OK(vct_image_compare(&rc, &ref, &mr, &err), err);
     /* Measured: 0.098 (64^3 voxels, 2 bounces, 64 x 64, cone step 1; 0.095
@@ -271,9 +271,9 @@ static void cornell_against_path_tracer(void) {
            "alone %.4f)\n",
            w, h, mv.relative_rmse, pr.spp, mi.relative_rmse, mr.relative_rmse);
     rendered_free(&r);
-    vct_image_free(&ref);
-    vct_image_free(&rc);
-    vct_scene_free(box);
+    vct_image_release(&ref);
+    vct_image_release(&rc);
+    vct_scene_release(box);
 }
 
 /* The path tracer's image of s, w x h at spp samples (depth 16), the reference
@@ -285,7 +285,7 @@ static vct_image path_traced(const vct_scene *s, int w, int h, uint32_t spp, uin
     const vct_pathtrace_options po = {w, h, spp, 0.0, 16, seed, 64, 0, 0, NULL};
     vct_image ref;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &po, &ref, NULL, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     return ref;
 }
 
@@ -321,8 +321,8 @@ static void glossy_cornell_against_path_tracer(void) {
         w, h, m_with.relative_rmse, m_without.relative_rmse);
     rendered_free(&with);
     rendered_free(&without);
-    vct_image_free(&ref);
-    vct_scene_free(box);
+    vct_image_release(&ref);
+    vct_scene_release(box);
 }
 
 /* A perfect mirror (metal, roughness 0, albedo a) under an emissive quad
@@ -390,8 +390,8 @@ static void exact_mirror(void) {
           "perfect mirror: %d values off (worst %.3g of the brightest emission) over %d pixels, "
           "%d showing the quad in the mirror",
           bad, worst, checked, in_mirror);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 /* A clear glass pane (IOR 1.5, tinted a) under a constant sky L, seen from
@@ -462,7 +462,7 @@ static void glass_pane(void) {
            pane, worst, worst_off);
     rendered_free(&with);
     rendered_free(&without);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* Only degenerate triangles and sky: no voxels, no bricks; cones see the
@@ -483,7 +483,7 @@ static void empty_volume(void) {
         not_sky += i % 4 != 3 && r.image.rgba[i] != 0.5f;
     CHECK(nonfinite(&r.image) == 0 && not_sky == 0, "empty volume: %d values not the sky", not_sky);
     rendered_free(&r);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* How sparse diffuse fills a pixel (kernels/render/vct_render.cl): from the traced
@@ -564,7 +564,7 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_plan p;
     vct_plan_make(s, NULL, &p);
-    vct_vct_options o = vct_vct_options_default();
+    vct_vct_options o = vct_vct_options_default(512, 512);
     o.width = w;
     o.height = h;
     o.aovs = 1;
@@ -622,12 +622,12 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
            "relative RMSE %.4f against every pixel's cones\n",
            name, w, h, counts[SPARSE_TRACED], counts[SPARSE_FILLED], counts[SPARSE_OWN],
            counts[SPARSE_BORDERLINE], m.relative_rmse);
-    vct_image_free(&full);
-    vct_image_free(&sparse);
-    vct_aovs_free(&fa);
-    vct_aovs_free(&sa);
-    vct_voxels_free(v);
-    vct_accel_free(g);
+    vct_image_release(&full);
+    vct_image_release(&sparse);
+    vct_aovs_release(&fa);
+    vct_aovs_release(&sa);
+    vct_voxels_release(v);
+    vct_accel_release(g);
 }
 
 static void sparse_diffuse(void) {
@@ -636,7 +636,7 @@ static void sparse_diffuse(void) {
     vo.resolution = 128; /* the cone offset (4 voxels) is about 2 pixels: some pixels agree */
     /* Measured: 0.0058. */
     sparse_diffuse_case("Cornell box", box, &vo, 64, 64, (const int[]){900, 1000, 200, 0}, 0.02);
-    vct_scene_free(box);
+    vct_scene_release(box);
     /* A sky-lit floor with a raised square 1.6 voxels above it: same normal,
      * within reach, but off the tangent plane, so edge pixels must not take
      * the other level's light. */
@@ -651,7 +651,7 @@ static void sparse_diffuse(void) {
     vo.bounds_min[0] = vo.bounds_min[1] = vo.bounds_min[2] = -1.0;
     vo.bounds_size = 2.0;
     sparse_diffuse_case("raised square", s, &vo, 32, 32, (const int[]){80, 240, 0, 0}, 0.02);
-    vct_scene_free(s);
+    vct_scene_release(s);
     /* A ridge of two faces 40 degrees apart, seen closely, a wall shading one
      * side: near the ridge the other face's points lie on a pixel's tangent
      * plane, and only their normals tell them apart. */
@@ -667,7 +667,7 @@ static void sparse_diffuse(void) {
      * neighbours follows, the faster since cones see a side only as they
      * come at it (cone_trace.h): 0.035 measured. */
     sparse_diffuse_case("ridge", s, &vo, 64, 64, (const int[]){900, 2000, 0, 0}, 0.04);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* The default tone (automatic exposure, filmic) leaves no large area of the
@@ -695,8 +695,8 @@ static void default_tone_clips_little(void) {
           clipped[0], pixels);
     printf("Cornell box, default tone: %.2f%% of pixels clipped (%.2f%% with the clip curve)\n",
            100.0 * clipped[0] / pixels, 100.0 * clipped[1] / pixels);
-    vct_image_free(&im);
-    vct_scene_free(box);
+    vct_image_release(&im);
+    vct_scene_release(box);
 }
 
 /* The six quads (12 floats each) of a closed box [0, w] x [0, h] x [0, d]:
@@ -752,7 +752,7 @@ static void closed_room_lit_outside(void) {
         vct_voxel_options vo = {0};
         vo.resolution = 64;
         const vct_brick_options bo = {VCT_BRICKS_AUTO, directional, 0};
-        vct_vct_options o = vct_vct_options_default();
+        vct_vct_options o = vct_vct_options_default(512, 512);
         o.width = o.height = 48;
         vct_voxels *v = NULL;
         REQUIRE_OK(vct_vct_prepare(ctx, s, g, &p, &vo, &bo, 2, &o.cones, &v, &err), err);
@@ -769,11 +769,11 @@ static void closed_room_lit_outside(void) {
         printf("closed room lit outside%-12s %-11s inside %.2g (%.3f%% of the outer faces' "
                "light)\n",
                sky ? ", under a sky" : "", what, mean, 100.0 * mean / outside);
-        vct_image_free(&im);
-        vct_voxels_free(v);
-        vct_accel_free(g);
+        vct_image_release(&im);
+        vct_voxels_release(v);
+        vct_accel_release(g);
     }
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* A closed room of albedo 0.5 whose ceiling lies inside the voxel volume
@@ -806,7 +806,7 @@ static void closed_room_against_path_tracer(void) {
     vct_pathtrace_result pr;
     vct_image ref;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &po, &ref, &pr, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     vct_plan p;
     vct_plan_make(s, NULL, &p);
     for (int directional = 0; directional < 2; ++directional) {
@@ -826,10 +826,10 @@ static void closed_room_against_path_tracer(void) {
         printf("closed room %dx%d, %-11s mean %.3f of the path tracer's, relative RMSE %.4f "
                "against %u spp\n",
                w, h, what, mean / want, mv.relative_rmse, pr.spp);
-        vct_image_free(&im);
+        vct_image_release(&im);
     }
-    vct_image_free(&ref);
-    vct_scene_free(s);
+    vct_image_release(&ref);
+    vct_scene_release(s);
 }
 
 /* A floor under a wide plate hung 0.1 above it (3 voxels at 64^3: nearer
@@ -881,11 +881,11 @@ static void gap_under_a_plate(void) {
         printf("gap under a plate, %-11s mean %.3f of the open floor's light, the path tracer's "
                "%.3f; open to AO %.3f\n",
                what, mean / open, want / open, ao);
-        vct_image_free(&im);
-        vct_aovs_free(&aovs);
+        vct_image_release(&im);
+        vct_aovs_release(&aovs);
     }
-    vct_image_free(&ref);
-    vct_scene_free(s);
+    vct_image_release(&ref);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -903,6 +903,6 @@ int main(void) {
     cornell_against_path_tracer();
     glossy_cornell_against_path_tracer();
     default_tone_clips_little();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_vct");
 }

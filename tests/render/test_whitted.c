@@ -70,7 +70,7 @@ static vct_image render(const vct_scene *s, vct_method method, int w, int h, uin
         job.whitted.min_throughput = cut;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
-    vct_accel_free(a);
+    vct_accel_release(a);
     return im;
 }
 
@@ -85,8 +85,8 @@ static void check_same_as_raycast(vct_scene *s, const char *name) {
     }
     CHECK(differ == 0 && sum > 0.0, "%s: %zu values differ from the ray caster's", name, differ);
     printf("%s: whitted equals the ray caster, %zu values differ\n", name, differ);
-    vct_image_free(&w);
-    vct_image_free(&r);
+    vct_image_release(&w);
+    vct_image_release(&r);
 }
 
 static const float radiant[3] = {2.0f, 3.0f, 4.0f};
@@ -154,8 +154,8 @@ static void check_mirror(void) {
           mirrored, direct);
     printf("mirror: %d reflected and %d direct floor pixels, worst relative error %.2g\n", mirrored,
            direct, worst);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 /* One pixel through a glass slab (faces z = 1 and z = 0) at an emissive wall
@@ -183,8 +183,8 @@ static void check_slab(double angle_deg, uint32_t depth, float cut, int terms) {
     printf("slab at %g°, depth %u, throughput cut %g: E x %.7f (%d terms of (1-F)^2 F^2k, F = "
            "%.5f), error %.1g\n",
            angle_deg, depth, cut, im.rgba[0] / radiant[0], terms, F, worst);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 /* From inside a slab (faces y = 0 and y = 1) towards its top face at `angle`
@@ -211,8 +211,8 @@ static void check_total_reflection(double angle_deg, uint32_t depth) {
           depth, im.rgba[0] / radiant[0], expect);
     printf("inside glass at %g° (critical %.2f°), depth %u: E x %.7f, expected %.7f\n", angle_deg,
            asin(1.0 / 1.5) * 180.0 / PI, depth, im.rgba[0] / radiant[0], expect);
-    vct_image_free(&im);
-    vct_scene_free(s);
+    vct_image_release(&im);
+    vct_scene_release(s);
 }
 
 static vct_image render_sub(const vct_scene *s, int w, int h, uint32_t n, float contrast,
@@ -225,7 +225,7 @@ static vct_image render_sub(const vct_scene *s, int w, int h, uint32_t n, float 
     vct_image im;
     REQUIRE_OK(vct_render_whitted(ctx, s, a, &o, &im, &r, &err), err);
     *traced = r.traced_pixels;
-    vct_accel_free(a);
+    vct_accel_release(a);
     return im;
 }
 
@@ -254,7 +254,7 @@ static void check_centre_peak(void) {
     const float by_keys = keys.rgba[centre];
     CHECK(!mask[4 * 9 + 4] && by_keys < 0.5f * full.rgba[centre],
           "keys alone should miss the spot: centre %g against %g", by_keys, full.rgba[centre]);
-    vct_image_free(&keys);
+    vct_image_release(&keys);
     vct_image contrast = render_sub(s, 9, 9, 8, 0.05f, mask, &traced);
     CHECK(mask[4 * 9 + 4] && contrast.rgba[centre] == full.rgba[centre],
           "the contrast test traces the spot: centre %g against %g", contrast.rgba[centre],
@@ -262,9 +262,9 @@ static void check_centre_peak(void) {
     printf("a spot between symmetric corners: keys alone give %g at its centre, the contrast "
            "test traces it (%g)\n",
            by_keys, contrast.rgba[centre]);
-    vct_image_free(&contrast);
-    vct_image_free(&full);
-    vct_scene_free(s);
+    vct_image_release(&contrast);
+    vct_image_release(&full);
+    vct_scene_release(s);
 }
 
 /* Subsampling: every traced pixel equals the full render bit for bit; on a
@@ -294,7 +294,7 @@ static void check_subsampling(void) {
     /* With a contrast threshold, squares whose corners' light spreads split
      * too: more pixels traced, each still the full render's. */
     uint64_t traced_contrast = 0;
-    vct_image_free(&sub);
+    vct_image_release(&sub);
     sub = render_sub(box, W, H, 8, 0.05f, mask, &traced_contrast);
     differ = 0;
     for (size_t i = 0; i < (size_t)W * H; ++i)
@@ -304,8 +304,8 @@ static void check_subsampling(void) {
           (unsigned long long)traced_contrast, (unsigned long long)traced, differ);
     printf("subsampling at 8 with contrast 0.05: %llu pixels traced (%llu without)\n",
            (unsigned long long)traced_contrast, (unsigned long long)traced);
-    vct_image_free(&full);
-    vct_image_free(&sub);
+    vct_image_release(&full);
+    vct_image_release(&sub);
 
     /* The ray caster subsampled: its traced pixels are the ray caster's. */
     vct_accel *acc = vct_accel_build(ctx, box, NULL, &err);
@@ -326,10 +326,10 @@ static void check_subsampling(void) {
           marked);
     printf("the ray caster at 8: %zu of %d pixels traced, each as its full render's\n", marked,
            W * H);
-    vct_image_free(&full);
-    vct_image_free(&sub);
-    vct_accel_free(acc);
-    vct_scene_free(box);
+    vct_image_release(&full);
+    vct_image_release(&sub);
+    vct_accel_release(acc);
+    vct_scene_release(box);
 
     /* A plane filling the view under a lamp: one material, one light seen
      * everywhere, so every square of the first level agrees. */
@@ -370,8 +370,8 @@ static void check_subsampling(void) {
     printf("subsampling at 16 on a plane: the corners traced (%llu), every other pixel bilinear "
            "(within %.1g)\n",
            (unsigned long long)traced, worst);
-    vct_image_free(&full);
-    vct_image_free(&sub);
+    vct_image_release(&full);
+    vct_image_release(&sub);
     /* Sizes that are not powers of two, or exceed the image, are refused. */
     vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
@@ -383,8 +383,8 @@ static void check_subsampling(void) {
                   strstr(err.message, "power of two"),
               "--subsample %u is not refused (%s)", bad[i], err.message);
     }
-    vct_accel_free(a);
-    vct_scene_free(s);
+    vct_accel_release(a);
+    vct_scene_release(s);
     free(mask);
 }
 
@@ -476,20 +476,20 @@ static void check_small_objects(void) {
            "traced), the guard none (%llu traced)\n",
            lost[0], NX * NY, (unsigned long long)traced[1], W * H, (unsigned long long)traced[2]);
     for (int i = 0; i < 3; ++i)
-        vct_image_free(&im[i]);
-    vct_accel_free(a);
-    vct_scene_free(s);
+        vct_image_release(&im[i]);
+    vct_accel_release(a);
+    vct_scene_release(s);
 }
 
 int main(void) {
     ctx = check_context();
     vct_scene *box = check_cornell_box_point_light();
     check_same_as_raycast(box, "cornell box");
-    vct_scene_free(box);
+    vct_scene_release(box);
     vct_error err = {0};
     vct_scene *lit = check_cornell_box();
     check_same_as_raycast(lit, "emissive cornell box");
-    vct_scene_free(lit);
+    vct_scene_release(lit);
 
     check_mirror();
     check_subsampling();
@@ -520,9 +520,9 @@ int main(void) {
     CHECK(vct_render_whitted(ctx, one, a, &o, &im, NULL, &err) == VCT_ERR_INPUT &&
               strstr(err.message, "outside 1..16"),
           "a depth of 17 is not refused (%s)", err.message);
-    vct_accel_free(a);
-    vct_scene_free(one);
+    vct_accel_release(a);
+    vct_scene_release(one);
 
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_whitted");
 }

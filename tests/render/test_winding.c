@@ -63,7 +63,7 @@ static vct_image render(const vct_scene *s, vct_method method, int directional) 
     job.pm.seed = 7;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     return im;
 }
 
@@ -87,13 +87,13 @@ static void check_scene(const char *name, vct_scene *s) {
                   method_names[m], copy_names[c], e.nrmse, ratio);
             printf("%-12s %-8s %-13s NRMSE %.2e, mean ratio %.5f\n", name, method_names[m],
                    copy_names[c], e.nrmse, ratio);
-            vct_image_free(&im);
+            vct_image_release(&im);
         }
-        vct_image_free(&ref);
+        vct_image_release(&ref);
     }
-    vct_scene_free(copies[0]);
-    vct_scene_free(copies[1]);
-    vct_scene_free(s);
+    vct_scene_release(copies[0]);
+    vct_scene_release(copies[1]);
+    vct_scene_release(s);
 }
 
 static vct_scene *quads_scene(const float *quads, uint32_t count, const uint32_t *quad_material,
@@ -206,6 +206,6 @@ int main(void) {
     check_scene("open room", open_room());
     check_scene("thin fins", thin_fins());
     check_scene("lamp room", lamp_room());
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_winding");
 }

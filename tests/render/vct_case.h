@@ -18,7 +18,7 @@ static inline vct_image vct_case_render_bricks(vct_context *ctx, const vct_scene
     vct_voxel_options vo = {0};
     vo.resolution = res;
     const vct_brick_options bo = {VCT_BRICKS_AUTO, directional, 0};
-    vct_vct_options o = vct_vct_options_default();
+    vct_vct_options o = vct_vct_options_default(512, 512);
     o.width = w;
     o.height = h;
     o.aovs = aovs != NULL;
@@ -30,8 +30,8 @@ static inline vct_image vct_case_render_bricks(vct_context *ctx, const vct_scene
     vct_image image;
     vct_stats_reset(ctx);
     REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &image, aovs, &err), err);
-    vct_voxels_free(v);
-    vct_accel_free(g);
+    vct_voxels_release(v);
+    vct_accel_release(g);
     return image;
 }
 

@@ -140,9 +140,9 @@ int main(int argc, char **argv) {
            v->info.fragments, CONES, dir);
     free(cones), free(result), free(radiance), free(shade), free(plane), free(child);
     free(keys), free(albedo), free(normal), free(emission);
-    vct_voxels_free(v);
-    vct_accel_free(g);
-    vct_scene_free(s);
-    vct_context_destroy(ctx);
+    vct_voxels_release(v);
+    vct_accel_release(g);
+    vct_scene_release(s);
+    vct_context_release(ctx);
     return 0;
 }

@@ -37,7 +37,7 @@ int main(void) {
     CHECK(strcmp(vct_version(), VCT_VERSION_STRING) == 0, "vct_version %s, header %s",
           vct_version(), VCT_VERSION_STRING);
     vct_buffer_release(ctx, out);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     free(host);
     free(device);
     return check_exit("test_abi");

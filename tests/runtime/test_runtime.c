@@ -18,7 +18,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s) {
     vct_image im;
     vct_render_options ro = {160, 120, 0, 0, 0.0f};
     REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &im, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     return im;
 }
 
@@ -65,7 +65,7 @@ int main(void) {
     vct_image b = render(ctx, s);
     CHECK(same(&a, &b), "two renders in one context differ");
     check_finite(&a, "cornell box");
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
 
     /* Warm start: a new context finds every program in the cache. */
     ctx = check_context();
@@ -80,7 +80,7 @@ int main(void) {
     CHECK(same(&a, &c), "a render in a fresh context differs");
     printf("cold start %.0f ms (%d programs compiled), warm start %.0f ms (%d loaded)\n", cold,
            cold_misses, warm, ctx->cache_hits);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
 
     /* The other kernel shapes (wide work-groups, local splits) sort the grid
      * identically, so the image is identical too. */
@@ -90,13 +90,13 @@ int main(void) {
     ctx = check_context();
     vct_image d = render(ctx, s);
     CHECK(same(&a, &d), "the %s-shaped kernels give a different image", other);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
 
-    vct_image_free(&a);
-    vct_image_free(&b);
-    vct_image_free(&c);
-    vct_image_free(&d);
-    vct_scene_free(s);
+    vct_image_release(&a);
+    vct_image_release(&b);
+    vct_image_release(&c);
+    vct_image_release(&d);
+    vct_scene_release(s);
     char cmd[1100];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", cache);
     if (system(cmd) != 0)

@@ -18,7 +18,7 @@ static vct_image render(vct_context *ctx, const vct_scene *s) {
     job.accel = g;
     vct_image im;
     REQUIRE_OK(vct_render(ctx, &job, &im, NULL, &err), err);
-    vct_accel_free(g);
+    vct_accel_release(g);
     return im;
 }
 
@@ -49,7 +49,7 @@ static void expect_refused(vct_context *ctx, const vct_error *err, const char *w
     CHECK(err->status == VCT_ERR_INPUT, "%s: status %d", what, (int)err->status);
     CHECK(strstr(err->message, words) != NULL, "%s: message \"%s\" lacks \"%s\"", what,
           err->message, words);
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
 }
 
 int main(void) {
@@ -75,8 +75,8 @@ int main(void) {
     CHECK(im.width == reference.width && im.height == reference.height &&
               memcmp(im.rgba, reference.rgba, 16ull * im.width * im.height) == 0,
           "the wrapped context's image differs from the engine's own context's");
-    vct_image_free(&im);
-    vct_context_destroy(wrapped);
+    vct_image_release(&im);
+    vct_context_release(wrapped);
     settle_refs(queue, queue_refs);
     CHECK(ref_count_queue(queue) == queue_refs, "queue references %u, were %u",
           ref_count_queue(queue), queue_refs);
@@ -99,8 +99,8 @@ int main(void) {
         device_ms += st[i].device_ms, host_ms += st[i].host_ms;
     CHECK(stages > 0 && device_ms == 0.0 && host_ms > 0.0,
           "%d stages, %g device ms, %g host ms without profiling", stages, device_ms, host_ms);
-    vct_image_free(&im);
-    vct_context_destroy(wrapped);
+    vct_image_release(&im);
+    vct_context_release(wrapped);
 
     /* Refused handles. */
     err = (vct_error){0};
@@ -128,8 +128,8 @@ int main(void) {
     clReleaseCommandQueue(plain);
     clReleaseCommandQueue(queue);
     clReleaseContext(context);
-    vct_image_free((vct_image *)&reference);
-    vct_context_destroy(own);
-    vct_scene_free(s);
+    vct_image_release((vct_image *)&reference);
+    vct_context_release(own);
+    vct_scene_release(s);
     return check_exit("test_wrap");
 }

@@ -49,7 +49,7 @@ int main(void) {
             CHECK(s != NULL, "%s: %s", e->d_name, err.message);
             ++loaded;
         }
-        vct_scene_free(s);
+        vct_scene_release(s);
     }
     if (d)
         closedir(d);

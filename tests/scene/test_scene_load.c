@@ -31,7 +31,7 @@ static void check_cornell(const char *dir) {
           s->camera.look_at[2], s->camera.fov_y_deg);
     CHECK(near(s->bounds_max[0], 556.0f, 1e-6f) && near(s->bounds_max[2], 559.2f, 1e-6f),
           "cornell glTF bounds");
-    vct_scene_free(s);
+    vct_scene_release(s);
 
     snprintf(path, sizeof path, "%s/scenes/cornell_box.obj", dir);
     s = vct_scene_load(path, &err);
@@ -44,7 +44,7 @@ static void check_cornell(const char *dir) {
                near(s->materials[m].albedo[0], 0.63f, 1e-6f) &&
                near(s->materials[m].albedo[1], 0.065f, 1e-6f);
     CHECK(red == 1, "cornell OBJ: the red material's albedo");
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* One triangle in a child node (translated by (10, 0, 0)) of a parent scaled
@@ -114,7 +114,7 @@ static void check_hierarchy(void) {
                   "sun: type %d, irradiance %g", l->type, l->color[0]);
         }
     }
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 /* glTF materials as authored: emissiveFactor times
@@ -183,7 +183,7 @@ static void check_materials(void) {
           veil ? veil->alpha_cutoff : -1);
     CHECK(gold && gold->alpha_cutoff == 0.0f, "gold (OPAQUE): alpha cutoff %g",
           gold ? gold->alpha_cutoff : -1);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 int main(void) {

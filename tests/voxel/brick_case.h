@@ -28,9 +28,9 @@ typedef struct brick_case {
 } brick_case;
 
 static void case_free(brick_case *c) {
-    vct_voxels_free(c->voxels);
-    vct_accel_free(c->accel);
-    vct_scene_free(c->scene);
+    vct_voxels_release(c->voxels);
+    vct_accel_release(c->accel);
+    vct_scene_release(c->scene);
     free(c->child);
     free(c->cell);
     free(c->voxel_of);

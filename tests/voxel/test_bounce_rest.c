@@ -192,7 +192,7 @@ static void against_reference(void) {
     light_free(&still);
     light_free(&two);
     light_free(&rest);
-    vct_voxels_free(v);
+    vct_voxels_release(v);
 
     /* exact_bounces: the same two bounces, nothing after them. */
     v = lit_voxels(s, g, 1);
@@ -206,14 +206,14 @@ static void against_reference(void) {
           "exact_bounces: the rest adds nothing");
     light_free(&exact);
     light_free(&exact_after);
-    vct_voxels_free(v);
-    vct_accel_free(g);
-    vct_scene_free(s);
+    vct_voxels_release(v);
+    vct_accel_release(g);
+    vct_scene_release(s);
 }
 
 int main(void) {
     ctx = check_context();
     against_reference();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_bounce_rest");
 }

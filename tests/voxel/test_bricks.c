@@ -495,8 +495,8 @@ static void empty_volume(void) {
     float point[4] = {8, 8, 8, 0}, got[4] = {1, 1, 1, 1};
     REQUIRE_OK(vct_bricks_sample(ctx, v, VCT_BRICK_RADIANCE, 2, point, 1, got, &err), err);
     CHECK(got[0] == 0 && got[3] == 0, "empty volume samples %g %g", got[0], got[3]);
-    vct_voxels_free(v);
-    vct_scene_free(s);
+    vct_voxels_release(v);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -508,6 +508,6 @@ int main(void) {
     empty_volume();
     random_volumes();
     moved_light_and_determinism();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_bricks");
 }

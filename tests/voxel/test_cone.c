@@ -779,6 +779,6 @@ int main(void) {
     random_volumes();
     hard_cases();
     bounces();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_cone");
 }

@@ -24,9 +24,9 @@ typedef struct inject_case {
 } inject_case;
 
 static void case_free(inject_case *c) {
-    vct_voxels_free(c->voxels);
-    vct_accel_free(c->accel);
-    vct_scene_free(c->scene);
+    vct_voxels_release(c->voxels);
+    vct_accel_release(c->accel);
+    vct_scene_release(c->scene);
     free(c->keys);
     free(c->radiance);
     free(c->sides);
@@ -43,8 +43,8 @@ static void inject(inject_case *c) {
  * back (the previous ones released). */
 static void case_build(inject_case *c) {
     vct_error err = {0};
-    vct_accel_free(c->accel);
-    vct_voxels_free(c->voxels);
+    vct_accel_release(c->accel);
+    vct_voxels_release(c->voxels);
     free(c->keys);
     free(c->radiance);
     free(c->sides);
@@ -325,7 +325,7 @@ static void two_faces(void) {
             CHECK(fabs(got - want) < 1e-4 * want,
                   "two faces, wound %d: the voxel view from %s shows %g, expected %g", wound,
                   from_below ? "below" : "above", got, want);
-            vct_image_free(&im);
+            vct_image_release(&im);
         }
         printf("plane lit on both faces, wound %d  %u voxels, worst relative error %.2g\n", wound,
                c.info.voxels, worst);
@@ -501,6 +501,6 @@ int main(void) {
     case_free(&c);
     thin_walls();
     two_faces();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_inject");
 }

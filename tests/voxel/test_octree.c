@@ -186,7 +186,7 @@ static void check_octree(const char *name, const vct_scene *s, const vct_voxel_o
     REQUIRE_OK(vct_octree_read(ctx, w, child2, nb2, &err), err);
     CHECK(memcmp(child, child2, 4ull * nodes) == 0 && memcmp(nb, nb2, 24ull * nodes) == 0,
           "%s: two builds are bit-identical", name);
-    vct_voxels_free(w);
+    vct_voxels_release(w);
     free(child2);
     free(nb2);
     free(q);
@@ -202,7 +202,7 @@ static void check_octree(const char *name, const vct_scene *s, const vct_voxel_o
     free(keys);
     free(child);
     free(nb);
-    vct_voxels_free(v);
+    vct_voxels_release(v);
 }
 
 static vct_scene *scene_of(const float *pos, uint32_t nv, const uint32_t *tri, uint32_t nt) {
@@ -256,12 +256,12 @@ static void test_voxel_image(void) {
     const float facing = coarse.rgba[4 * (16 * 33 + 16)];
     CHECK(fabsf(facing - 0.75f) < 1e-2f, "cube facing the camera: %g, expected 0.75", facing);
     CHECK(grown > 0, "level 2 covers no more than the voxels");
-    vct_image_free(&coarse);
+    vct_image_release(&coarse);
     CHECK(vct_render_voxels_level(ctx, s, v, 5, 33, 33, &coarse, &err) == VCT_ERR_INPUT,
           "level 5 of a 16^3 octree should be refused");
-    vct_image_free(&img);
-    vct_voxels_free(v);
-    vct_scene_free(s);
+    vct_image_release(&img);
+    vct_voxels_release(v);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -272,32 +272,32 @@ int main(void) {
     vct_scene *s = scene_of(zero, 3, tri, 1);
     vct_voxel_options o = voxel_options(16, 1);
     check_octree("empty (zero-area triangle)", s, &o);
-    vct_scene_free(s);
+    vct_scene_release(s);
     const float tiny[] = {3.2f, 4.2f, 5.2f, 3.3f, 4.2f, 5.2f, 3.2f, 4.3f, 5.25f};
     s = scene_of(tiny, 3, tri, 1);
     check_octree("one voxel", s, &o);
-    vct_scene_free(s);
+    vct_scene_release(s);
     const float corner[] = {1.2f, 0.2f, 1.2f, 1.3f, 0.2f, 1.2f, 1.2f, 0.3f, 1.25f};
     s = scene_of(corner, 3, tri, 1);
     o = voxel_options(2, 1);
     check_octree("one voxel, resolution 2", s, &o);
-    vct_scene_free(s);
+    vct_scene_release(s);
 
     test_mesh soup = mesh_soup(2000, 0.0f, 5);
     s = scene_of(soup.pos, soup.nv, soup.tri, soup.nt);
     check_octree("random soup", s, &(vct_voxel_options){.resolution = 64});
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&soup);
     const float centre[3] = {0.5f, 0.5f, 0.5f};
     test_mesh sphere = mesh_icosphere(4, 0.45f, centre);
     s = scene_of(sphere.pos, sphere.nv, sphere.tri, sphere.nt);
     check_octree("icosphere", s, &(vct_voxel_options){.resolution = 128});
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&sphere);
     s = check_cornell_box();
     check_octree("Cornell box", s, &(vct_voxel_options){.resolution = 256});
-    vct_scene_free(s);
+    vct_scene_release(s);
     test_voxel_image();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_octree");
 }

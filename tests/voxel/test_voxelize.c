@@ -210,7 +210,7 @@ static uint32_t check_against_reference(const char *name, const vct_scene *s,
     free(emission);
     ref_free(&r);
     const uint32_t voxels = info.voxels;
-    vct_voxels_free(v);
+    vct_voxels_release(v);
     printf("%-34s %2s %4u^3: %7u voxels, %7u fragments\n", name, o->thin ? "6" : "26",
            o->resolution, voxels, info.fragments);
     return voxels;
@@ -226,7 +226,7 @@ static void test_random_and_sphere(void) {
         o.thin = 1;
         check_against_reference("random soup", s, &o);
     }
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&soup);
 
     const float centre[3] = {0.5f, 0.5f, 0.5f};
@@ -237,7 +237,7 @@ static void test_random_and_sphere(void) {
     o.thin = 1;
     const uint32_t thin = check_against_reference("icosphere", s, &o);
     CHECK(thin < near, "thin voxels (%u) are fewer than conservative ones (%u)", thin, near);
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&sphere);
 
     /* The same sphere a million units away: as many voxels, give or take
@@ -249,7 +249,7 @@ static void test_random_and_sphere(void) {
     const uint32_t far_voxels = check_against_reference("icosphere offset by 1e6", s, &o);
     CHECK(fabs((double)far_voxels - near) < 0.02 * near, "offset sphere: %u voxels, near %u",
           far_voxels, near);
-    vct_scene_free(s);
+    vct_scene_release(s);
     mesh_free(&far);
 }
 
@@ -265,7 +265,7 @@ static uint32_t check_unit_case(const char *name, const float *pos, uint32_t nt,
     const uint32_t got = check_against_reference(name, s, &o);
     if (expected >= 0)
         CHECK(got == (uint32_t)expected, "%s: %u voxels, expected %ld", name, got, expected);
-    vct_scene_free(s);
+    vct_scene_release(s);
     free(tri);
     return got;
 }
@@ -350,8 +350,8 @@ static void test_many_fragments(void) {
     CHECK(total > 2.0 && albedo[3] == 1.0f, "opacity %g of area %g", albedo[3], total);
     CHECK(fabs(emission[0] - 4.0 * area[1] / total) < 1e-4, "emission %g, expected %g", emission[0],
           4.0 * area[1] / total);
-    vct_voxels_free(v);
-    vct_scene_free(s);
+    vct_voxels_release(v);
+    vct_scene_release(s);
     free(pos);
     free(tri);
 }
@@ -374,7 +374,7 @@ static void test_determinism_and_errors(void) {
     CHECK(memcmp(ka, kb, 4 * n) == 0 && memcmp(fa, fb, 48 * n) == 0,
           "two voxelizations of the Cornell box are bit-identical");
     /* The same with the GPU-shaped scan and sort kernels. */
-    vct_voxels_free(b);
+    vct_voxels_release(b);
     setenv("VCT_TUNING", "gpu", 1);
     vct_context *gpu_shaped = check_context();
     unsetenv("VCT_TUNING");
@@ -383,15 +383,15 @@ static void test_determinism_and_errors(void) {
     REQUIRE_OK(vct_voxels_read(gpu_shaped, b, kb, fb, fb + 4 * n, fb + 8 * n, &err), err);
     CHECK(memcmp(ka, kb, 4 * n) == 0 && memcmp(fa, fb, 48 * n) == 0,
           "CPU- and GPU-shaped kernels voxelize the Cornell box bit-identically");
-    vct_voxels_free(b);
+    vct_voxels_release(b);
     b = NULL;
-    vct_context_destroy(gpu_shaped);
+    vct_context_release(gpu_shaped);
     free(fa);
     free(fb);
     free(ka);
     free(kb);
-    vct_voxels_free(a);
-    vct_voxels_free(b);
+    vct_voxels_release(a);
+    vct_voxels_release(b);
 
     o.resolution = 100;
     CHECK(vct_voxelize(ctx, s, &o, &err) == NULL && err.status == VCT_ERR_INPUT &&
@@ -400,7 +400,7 @@ static void test_determinism_and_errors(void) {
     o.resolution = 2048;
     CHECK(vct_voxelize(ctx, s, &o, &err) == NULL && err.status == VCT_ERR_INPUT,
           "resolution 2048 refused: %s", err.message);
-    vct_scene_free(s);
+    vct_scene_release(s);
 
     /* A triangle that crosses the bounds and reaches far beyond them. */
     const float far[] = {1, 1, 1, 1e4f, 1, 1, 1, 9, 1};
@@ -410,7 +410,7 @@ static void test_determinism_and_errors(void) {
     CHECK(vct_voxelize(ctx, s, &o, &err) == NULL && err.status == VCT_ERR_INPUT &&
               strstr(err.message, "--voxel-bounds"),
           "far-reaching triangle refused: %s", err.message);
-    vct_scene_free(s);
+    vct_scene_release(s);
 }
 
 int main(void) {
@@ -419,6 +419,6 @@ int main(void) {
     test_many_fragments();
     test_random_and_sphere();
     test_determinism_and_errors();
-    vct_context_destroy(ctx);
+    vct_context_release(ctx);
     return check_exit("test_voxelize");
 }

@@ -50,7 +50,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     vct_error err = {0};
     vct_scene *s = vct_scene_load(path, &err);
     if (s)
-        vct_scene_free(s);
+        vct_scene_release(s);
     else if (!err.message[0])
         abort(); /* a failure must say why */
     unlink(path);

@@ -30,7 +30,7 @@ VCT_API void vct_grid_info_get(const vct_grid *grid, vct_grid_info *info);
 /* Reads back the cell ranges and the sorted triangle list (for tests). */
 VCT_API int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start,
                           uint32_t *cell_end, uint32_t *tri_ids, vct_error *err);
-VCT_API void vct_grid_free(vct_grid *grid);
+VCT_API void vct_grid_release(vct_grid *grid);
 
 typedef enum vct_accel_kind { VCT_ACCEL_BVH = 0, VCT_ACCEL_GRID = 1 } vct_accel_kind;
 
@@ -60,7 +60,9 @@ typedef struct vct_accel_info {
     vct_grid_info grid; /* grid only */
 } vct_accel_info;
 
-/* options NULL: a BVH. */
+/* A BVH, clustered (VCT_BVH_PLOC). */
+VCT_API vct_accel_options vct_accel_options_default(void);
+/* options NULL: the defaults. */
 VCT_API vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *scene,
                                    const vct_accel_options *options, vct_error *err);
 /* The scene's vertices moved (same triangles): bounds recomputed without a
@@ -73,8 +75,8 @@ VCT_API int vct_accel_info_get(vct_context *ctx, const vct_accel *accel, vct_acc
 VCT_API vct_accel_kind vct_accel_kind_of(const vct_accel *accel);
 VCT_API const char *vct_accel_kind_name(vct_accel_kind kind);
 /* "bvh" or "grid"; -1 for anything else. */
-VCT_API int vct_accel_kind_parse(const char *name);
-VCT_API void vct_accel_free(vct_accel *accel);
+VCT_API int vct_accel_kind_from_name(const char *name);
+VCT_API void vct_accel_release(vct_accel *accel);
 
 typedef struct vct_hit {
     float t; /* < 0: miss */

@@ -45,7 +45,7 @@ typedef struct vct_context vct_context;
  * a number = global device index; otherwise a case-insensitive substring of
  * the device or platform name. */
 VCT_API vct_context *vct_context_create(const char *selector, vct_error *err);
-VCT_API void vct_context_destroy(vct_context *ctx);
+VCT_API void vct_context_release(vct_context *ctx);
 VCT_API const vct_device_info *vct_context_device(const vct_context *ctx);
 
 /* Messages about work a call does beyond what it was asked, as it does it:

@@ -17,7 +17,7 @@ typedef struct vct_image {
     float *rgba; /* linear radiance, width*height*4 */
 } vct_image;
 
-VCT_API void vct_image_free(vct_image *image);
+VCT_API void vct_image_release(vct_image *image);
 
 /* How linear radiance becomes a displayed image (PNG files, the viewer):
  * times 2^stops, through a tone curve, sRGB encoded. */

@@ -30,7 +30,7 @@ typedef struct vct_group vct_group;
  * A device that does not exist, or one named twice, is refused with the list
  * of devices there are. */
 VCT_API vct_group *vct_group_create(const char *list, vct_error *err);
-VCT_API void vct_group_destroy(vct_group *group);
+VCT_API void vct_group_release(vct_group *group);
 VCT_API int vct_group_size(const vct_group *group);
 VCT_API vct_context *vct_group_context(vct_group *group, int device);
 

@@ -2,7 +2,7 @@
  *
  * For hosts that already have a context and a queue: the engine enqueues
  * its work on that queue and creates no context or queue of its own. Every
- * buffer, program and kernel it creates it releases in vct_context_destroy;
+ * buffer, program and kernel it creates it releases in vct_context_release;
  * it never releases the handles given here, which must outlive the
  * vct_context. */
 #ifndef VCT_API_OPENCL_H

@@ -27,6 +27,9 @@ typedef struct vct_render_options {
     float subsample_contrast;
 } vct_render_options;
 
+/* No subsampling. */
+VCT_API vct_render_options vct_render_options_default(int width, int height);
+
 /* Direct illumination with hard shadows by ray casting. */
 VCT_API int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
                                const vct_render_options *options, vct_image *image, vct_error *err);
@@ -47,6 +50,9 @@ typedef struct vct_pathtrace_options {
      * (in r; the denoiser's guide), from the same sums as the image. */
     vct_image *variance;
 } vct_pathtrace_options;
+
+/* 64 samples per pixel, depth 16, one sample per pass, seed 0. */
+VCT_API vct_pathtrace_options vct_pathtrace_options_default(int width, int height);
 
 typedef struct vct_pathtrace_result {
     uint32_t spp;       /* samples per pixel in the image (all resumed calls) */
@@ -132,9 +138,8 @@ typedef struct vct_vct_options {
 #define VCT_EDGE_SAMPLES_DEFAULT 4u
 #define VCT_EDGE_SAMPLES_MAX 8u
 
-/* 512 x 512, 6 diffuse cones, default cone settings, 4 x 4 rays at edges,
- * no AOVs. */
-VCT_API vct_vct_options vct_vct_options_default(void);
+/* 9 diffuse cones, default cone settings, 4 x 4 rays at edges, no AOVs. */
+VCT_API vct_vct_options vct_vct_options_default(int width, int height);
 
 typedef struct vct_aovs {
     vct_image direct;   /* direct light and emission */
@@ -145,7 +150,7 @@ typedef struct vct_aovs {
     vct_image position; /* the surface the camera ray found, w 1 (all 0 where none) */
     vct_image normal;   /* its shading normal, facing the viewer, w 1 (all 0 where none) */
 } vct_aovs;
-VCT_API void vct_aovs_free(vct_aovs *aovs);
+VCT_API void vct_aovs_release(vct_aovs *aovs);
 
 /* Light bounces in the voxels by default (direct light counts as the first),
  * after which the rest of the series is added at the scene's bounce ratio. */
@@ -209,6 +214,10 @@ typedef struct vct_whitted_options {
  * (doc/results/subsample.md measures both). */
 #define VCT_SUBSAMPLE_CONTRAST_DEFAULT 0.05f
 
+/* Depth 8, throughput 1e-3, no subsampling (contrast
+ * VCT_SUBSAMPLE_CONTRAST_DEFAULT once subsample is set). */
+VCT_API vct_whitted_options vct_whitted_options_default(int width, int height);
+
 typedef struct vct_whitted_result {
     uint64_t traced_pixels; /* pixels whose ray tree was traced (all without subsampling) */
     uint64_t small_objects; /* pieces of the mesh smaller than a square on screen (guarded) */
@@ -263,7 +272,8 @@ typedef struct vct_pm_options {
      * scene, camera, size and settings); 0: start over. */
     int resume;
 } vct_pm_options;
-/* Defaults as above, at width x height, 64 passes. */
+/* Defaults as above, at width x height, 64 passes. Every options struct
+ * has such a function; a zeroed struct is not a default. */
 VCT_API vct_pm_options vct_pm_options_default(int width, int height);
 typedef struct vct_pm_result {
     uint32_t passes;
@@ -289,6 +299,8 @@ typedef struct vct_voxel_view_options {
     uint32_t level;
 } vct_voxel_view_options;
 #define VCT_VOXEL_VIEW_LEAVES 0xffffffffu
+/* The voxels themselves (VCT_VOXEL_VIEW_LEAVES). */
+VCT_API vct_voxel_view_options vct_voxel_view_options_default(int width, int height);
 
 /* A band of a taller image: rows [first, first + the job's height) of an
  * image `height` rows tall, rendered as an image of their own with the

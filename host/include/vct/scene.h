@@ -108,7 +108,7 @@ VCT_API int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_er
 VCT_API int vct_scene_validate(vct_scene *scene, vct_error *err);
 /* A default camera framing the scene's bounds, looking down -z. */
 VCT_API void vct_scene_default_camera(const vct_scene *scene, vct_camera *camera);
-VCT_API void vct_scene_free(vct_scene *scene);
+VCT_API void vct_scene_release(vct_scene *scene);
 VCT_API vct_material vct_material_default(void);
 
 #ifdef __cplusplus

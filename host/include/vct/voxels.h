@@ -29,6 +29,10 @@ typedef struct vct_voxel_options {
     int exact_bounces;
 } vct_voxel_options;
 
+/* 128^3 conservative voxels in a cube around the scene, the rest of the
+ * bounces added. */
+VCT_API vct_voxel_options vct_voxel_options_default(void);
+
 /* The largest bounce ratio the rest of the bounces assumes. */
 #define VCT_BOUNCE_RATIO_MAX 0.9
 
@@ -94,7 +98,7 @@ VCT_API int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *voxels,
  * (normal . (p - 0.5), p in volume units [0, 1)^3). */
 VCT_API int vct_voxels_read_sides(vct_context *ctx, const vct_voxels *voxels, float *sides,
                                   vct_error *err);
-VCT_API void vct_voxels_free(vct_voxels *voxels);
+VCT_API void vct_voxels_release(vct_voxels *voxels);
 
 /* Every octree node with geometry below it (levels 0 .. L-1) owns a brick of
  * 3x3x3 corner-centred samples: texel (i, j, k) at node_min + (i, j, k) *
@@ -123,6 +127,10 @@ typedef struct vct_brick_options {
      * injection, which is all that occlusion needs). */
     int radiance_later;
 } vct_brick_options;
+
+/* Isotropic bricks, the pool kind chosen for the device, radiance built
+ * with the rest. */
+VCT_API vct_brick_options vct_brick_options_default(void);
 
 typedef enum vct_brick_channel {
     VCT_BRICK_ALBEDO,        /* albedo * opacity, opacity */

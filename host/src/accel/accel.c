@@ -10,7 +10,7 @@ const char *vct_accel_kind_name(vct_accel_kind kind) {
     return kind == VCT_ACCEL_GRID ? "grid" : "bvh";
 }
 
-int vct_accel_kind_parse(const char *name) {
+int vct_accel_kind_from_name(const char *name) {
     if (!strcmp(name, "bvh"))
         return VCT_ACCEL_BVH;
     if (!strcmp(name, "grid"))
@@ -55,7 +55,7 @@ int vct_accel_refit(vct_context *ctx, vct_accel *a, const vct_scene *s, vct_erro
         vct_grid *g = vct_grid_build(ctx, s, a->options.grid_res, err);
         rc = g ? VCT_OK : (int)err->status;
         if (g) {
-            vct_grid_free(a->grid);
+            vct_grid_release(a->grid);
             a->grid = g;
         }
     }
@@ -95,10 +95,10 @@ int vct_accel_info_get(vct_context *ctx, const vct_accel *a, vct_accel_info *inf
     return vct_bvh_cost(ctx, b, &info->sah_cost, &info->leaves, err);
 }
 
-void vct_accel_free(vct_accel *a) {
+void vct_accel_release(vct_accel *a) {
     if (!a)
         return;
-    vct_grid_free(a->grid);
+    vct_grid_release(a->grid);
     vct_bvh_free(a->bvh);
     free(a);
 }
@@ -129,4 +129,12 @@ int vct_accel_set_args(cl_kernel k, const vct_accel *a, const char *stage, vct_e
     return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(b->nodes),
                         VCT_ARG_OF(b->leaf_vertices), VCT_ARG_OF(b->tri_ids),
                         VCT_ARG_OF(b->tri_vertices));
+}
+
+vct_accel_options vct_accel_options_default(void) {
+    vct_accel_options o;
+    memset(&o, 0, sizeof o);
+    o.kind = VCT_ACCEL_BVH;
+    o.bvh_builder = VCT_BVH_PLOC;
+    return o;
 }

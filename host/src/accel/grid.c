@@ -46,7 +46,7 @@ void vct_grid_kernel_args(const vct_grid *grid, void *out) {
     d->res.s[3] = grid->triangle_count;
 }
 
-void vct_grid_free(vct_grid *g) {
+void vct_grid_release(vct_grid *g) {
     if (!g)
         return;
     vct_buffer_release(g->ctx, g->cell_ranges);
@@ -176,7 +176,7 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
     vct_buffer_release(ctx, keys);
     vct_stage_end(ctx);
     if (rc != VCT_OK) {
-        vct_grid_free(g);
+        vct_grid_release(g);
         return NULL;
     }
     return g;

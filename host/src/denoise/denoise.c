@@ -196,6 +196,6 @@ int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guid
         vct_buffer_release(ctx, all[i]);
     vct_stage_end(ctx);
     if (rc != VCT_OK)
-        vct_image_free(out);
+        vct_image_release(out);
     return rc;
 }

@@ -67,7 +67,7 @@ vct_device_scene *vct_device_scene_create(vct_context *ctx, const vct_scene *sce
 }
 
 static void drop_voxels(vct_device_scene *ds) {
-    vct_voxels_free(ds->voxels);
+    vct_voxels_release(ds->voxels);
     ds->voxels = NULL;
     ds->light_stale = 0;
 }
@@ -87,7 +87,7 @@ int vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
     if (changed & (VCT_CHANGED_GEOMETRY | VCT_CHANGED_MATERIALS))
         vct_emitters_release_resident(ctx, &ds->resident);
     if ((changed & VCT_CHANGED_GEOMETRY) || masks_changed) {
-        vct_accel_free(ds->accel);
+        vct_accel_release(ds->accel);
         ds->accel = NULL;
     }
     if (changed & shape)
@@ -101,7 +101,7 @@ int vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
 static int need_accel(vct_device_scene *ds, const vct_accel_options *options, vct_error *err) {
     if (ds->accel && memcmp(&ds->accel_key, options, sizeof *options) == 0)
         return VCT_OK;
-    vct_accel_free(ds->accel);
+    vct_accel_release(ds->accel);
     const uint64_t before = ds->ctx->transfers.uploaded;
     ds->accel = vct_accel_build(ds->ctx, ds->scene, options, err);
     ds->stats.scene_bytes += ds->ctx->transfers.uploaded - before;
@@ -211,7 +211,7 @@ void vct_device_scene_release(vct_device_scene *ds) {
         return;
     vct_context *ctx = ds->ctx;
     drop_voxels(ds);
-    vct_accel_free(ds->accel);
+    vct_accel_release(ds->accel);
     vct_emitters_release_resident(ctx, &ds->resident);
     vct_resident_release_buffers(ctx, &ds->resident);
     for (vct_resident **at = &ctx->resident; *at; at = &(*at)->next)

@@ -201,7 +201,7 @@ int vct_image_read_exr(const char *path, vct_image *image, vct_error *err) {
     xr = read_chunks(ctx, image->rgba, image->width, image->height, box.min.y);
     exr_finish(&ctx);
     if (xr != EXR_ERR_SUCCESS) {
-        vct_image_free(image);
+        vct_image_release(image);
         return exr_fail(err, xr, "decoding", path);
     }
     for (size_t i = 0; i < (size_t)(w * h); ++i)

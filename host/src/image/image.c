@@ -126,13 +126,13 @@ int vct_image_read_pfm(const char *path, vct_image *im, vct_error *err) {
     free(row);
     fclose(f);
     if (!ok || !im->rgba) {
-        vct_image_free(im);
+        vct_image_release(im);
         return vct_fail(err, VCT_ERR_INPUT, "image: %s is truncated", path);
     }
     return VCT_OK;
 }
 
-void vct_image_free(vct_image *image) {
+void vct_image_release(vct_image *image) {
     free(image->rgba);
     image->rgba = NULL;
 }

@@ -74,7 +74,7 @@ int vct_image_error_map(const vct_image *test, const vct_image *ref, double scal
     out->rgba = malloc(16 * (pixels ? pixels : 1));
     if (!e || !out->rgba) {
         free(e);
-        vct_image_free(out);
+        vct_image_release(out);
         return vct_fail(err, VCT_ERR_MEMORY, "compare: out of host memory");
     }
     out->width = ref->width;

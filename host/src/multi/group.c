@@ -22,7 +22,7 @@ vct_group *vct_group_create(const char *list, vct_error *err) {
         snprintf(selector, sizeof selector, "%d", indices[i]);
         g->ctx[i] = vct_context_create(selector, err);
         if (!g->ctx[i]) {
-            vct_group_destroy(g);
+            vct_group_release(g);
             return NULL;
         }
         g->count = i + 1;
@@ -35,18 +35,18 @@ vct_group *vct_group_create(const char *list, vct_error *err) {
 }
 
 static void structures_free(vct_group *g, int i) {
-    vct_voxels_free(g->voxels[i]);
-    vct_accel_free(g->accel[i]);
+    vct_voxels_release(g->voxels[i]);
+    vct_accel_release(g->accel[i]);
     g->voxels[i] = NULL;
     g->accel[i] = NULL;
 }
 
-void vct_group_destroy(vct_group *g) {
+void vct_group_release(vct_group *g) {
     if (!g)
         return;
     for (int i = 0; i < g->count; ++i) {
         structures_free(g, i);
-        vct_context_destroy(g->ctx[i]);
+        vct_context_release(g->ctx[i]);
     }
     free(g);
 }

@@ -176,7 +176,7 @@ static int lockstep_outcome(vct_group *g, const vct_render_job *job, rows_round 
             if (r->bands[i].rows && r->rc[i] != VCT_OK && (r->sync->culprit[i] || i == failed))
                 vct_group_drop(g, i, &r->errors[i]);
         for (int i = 0; i < g->count; ++i)
-            vct_image_free(&r->images[i]);
+            vct_image_release(&r->images[i]);
         g->pm_height = 0; /* the statistics of every band are gone */
         if (vct_group_active_count(g) == 0) {
             *err = r->errors[failed];
@@ -193,7 +193,7 @@ static int lockstep_outcome(vct_group *g, const vct_render_job *job, rows_round 
         g->pm_rows[i] = b.rows;
         if (b.rows)
             take_band(g, r, i, image, result, 1);
-        vct_image_free(&r->images[i]);
+        vct_image_release(&r->images[i]);
     }
     return VCT_OK;
 }
@@ -270,7 +270,7 @@ render:;
         take_band(g, r, i, image, result, measure);
     }
     for (int i = 0; i < g->count; ++i)
-        vct_image_free(&r->images[i]);
+        vct_image_release(&r->images[i]);
     if (failures && vct_group_active_count(g) == 0)
         *err = r->errors[last_failure];
     free(r);
@@ -316,7 +316,7 @@ int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *im
     if (rc == VCT_OK)
         rc = render_range(g, job, 0, height, image, &sum, 1, err);
     if (rc != VCT_OK) {
-        vct_image_free(image);
+        vct_image_release(image);
         return rc;
     }
     double speed[VCT_GROUP_MAX], share[VCT_GROUP_MAX];

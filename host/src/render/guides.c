@@ -71,8 +71,8 @@ int vct_render_guides(vct_context *ctx, const vct_scene *s, const vct_accel *g, 
     vct_scene_buffers_release(ctx, &sb);
     vct_stage_end(ctx);
     if (rc != VCT_OK) {
-        vct_image_free(albedo);
-        vct_image_free(normal_depth);
+        vct_image_release(albedo);
+        vct_image_release(normal_depth);
     }
     return rc;
 }

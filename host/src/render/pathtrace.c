@@ -135,7 +135,7 @@ static int pathtrace_variance(vct_context *ctx, cl_program program, cl_mem sums,
         rc = vct_buffer_read(ctx, STAGE, out, 0, 16 * pixels, variance->rgba, err);
     vct_buffer_release(ctx, out);
     if (rc != VCT_OK)
-        vct_image_free(variance);
+        vct_image_release(variance);
     return rc;
 }
 
@@ -165,7 +165,7 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
         rc = vct_frame_deliver(ctx, STAGE, image, err);
     if (rc != VCT_OK) {
         if (image)
-            vct_image_free(image);
+            vct_image_release(image);
         pathtrace_release(ctx); /* the running sums are no longer whole */
     }
     if (pt->kernel)

@@ -21,32 +21,55 @@ int vct_method_from_name(const char *name) {
     return -1;
 }
 
+vct_render_options vct_render_options_default(int width, int height) {
+    vct_render_options o;
+    memset(&o, 0, sizeof o);
+    o.width = width;
+    o.height = height;
+    o.subsample_contrast = VCT_SUBSAMPLE_CONTRAST_DEFAULT;
+    return o;
+}
+
+vct_pathtrace_options vct_pathtrace_options_default(int width, int height) {
+    vct_pathtrace_options o;
+    memset(&o, 0, sizeof o);
+    o.width = width;
+    o.height = height;
+    o.spp = 64;
+    o.max_depth = 16;
+    o.samples_per_pass = 1;
+    return o;
+}
+
+vct_whitted_options vct_whitted_options_default(int width, int height) {
+    vct_whitted_options o;
+    memset(&o, 0, sizeof o);
+    o.width = width;
+    o.height = height;
+    o.max_depth = 8;
+    o.min_throughput = 1e-3f;
+    o.subsample_contrast = VCT_SUBSAMPLE_CONTRAST_DEFAULT;
+    return o;
+}
+
+vct_voxel_view_options vct_voxel_view_options_default(int width, int height) {
+    const vct_voxel_view_options o = {width, height, VCT_VOXEL_VIEW_LEAVES};
+    return o;
+}
+
 vct_render_job vct_render_job_default(vct_method method, int width, int height) {
     vct_render_job job;
     memset(&job, 0, sizeof job);
     job.method = method;
-    job.raycast.width = width;
-    job.raycast.height = height;
-    job.whitted.width = width;
-    job.whitted.height = height;
-    job.whitted.max_depth = 8;
-    job.whitted.min_throughput = 1e-3f;
-    job.whitted.subsample_contrast = job.raycast.subsample_contrast =
-        VCT_SUBSAMPLE_CONTRAST_DEFAULT;
-    job.pathtrace.width = width;
-    job.pathtrace.height = height;
-    job.pathtrace.spp = 64;
-    job.pathtrace.max_depth = 16;
-    job.pathtrace.samples_per_pass = 1;
+    job.raycast = vct_render_options_default(width, height);
+    job.whitted = vct_whitted_options_default(width, height);
+    job.pathtrace = vct_pathtrace_options_default(width, height);
     job.pm = vct_pm_options_default(width, height);
-    job.vct = vct_vct_options_default();
-    job.vct.width = width;
-    job.vct.height = height;
-    job.voxel_view.width = width;
-    job.voxel_view.height = height;
-    job.voxel_view.level = VCT_VOXEL_VIEW_LEAVES;
-    job.voxel_options.resolution = 128;
-    job.brick_options.storage = VCT_BRICKS_AUTO;
+    job.vct = vct_vct_options_default(width, height);
+    job.voxel_view = vct_voxel_view_options_default(width, height);
+    job.accel_options = vct_accel_options_default();
+    job.voxel_options = vct_voxel_options_default();
+    job.brick_options = vct_brick_options_default();
     job.bounces = VCT_DEFAULT_BOUNCES;
     return job;
 }

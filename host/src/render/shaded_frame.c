@@ -66,7 +66,7 @@ int vct_shaded_end(vct_shaded *sh, int rc, vct_image *image, vct_error *err) {
         rc = vct_frame_deliver(sh->ctx, sh->stage, image, err);
     release(sh);
     if (rc != VCT_OK)
-        vct_image_free(image);
+        vct_image_release(image);
     return rc;
 }
 

@@ -480,7 +480,7 @@ int vct_render_pm(vct_context *ctx, const vct_scene *s, const vct_accel *accel,
         result->cell[m] = r.grid[m].origin.s[3];
     }
     if (rc != VCT_OK) {
-        vct_image_free(image);
+        vct_image_release(image);
         sppm_release(ctx); /* the statistics are no longer whole */
     }
     run_release(ctx, &r);

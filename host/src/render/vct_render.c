@@ -23,25 +23,25 @@
 #define CAUSTICS_STAGE "vct caustics"
 #define BOUNCE_STAGE "light bounce"
 
-vct_vct_options vct_vct_options_default(void) {
+vct_vct_options vct_vct_options_default(int width, int height) {
     vct_vct_options o;
     memset(&o, 0, sizeof o);
-    o.width = 512;
-    o.height = 512;
+    o.width = width;
+    o.height = height;
     o.diffuse_cones = 9;
     o.cones = vct_cone_settings_default();
     o.edge_samples = VCT_EDGE_SAMPLES_DEFAULT;
     return o;
 }
 
-void vct_aovs_free(vct_aovs *a) {
-    vct_image_free(&a->direct);
-    vct_image_free(&a->indirect);
-    vct_image_free(&a->specular);
-    vct_image_free(&a->ao);
-    vct_image_free(&a->level);
-    vct_image_free(&a->position);
-    vct_image_free(&a->normal);
+void vct_aovs_release(vct_aovs *a) {
+    vct_image_release(&a->direct);
+    vct_image_release(&a->indirect);
+    vct_image_release(&a->specular);
+    vct_image_release(&a->ao);
+    vct_image_release(&a->level);
+    vct_image_release(&a->position);
+    vct_image_release(&a->normal);
 }
 
 /* The preset on the device: vct_cone_dir per cone. */
@@ -176,7 +176,7 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
     if (rc == VCT_OK && lit)
         rc = light_bounces(ctx, s, g, v, cs, bounces, err);
     if (rc != VCT_OK) {
-        vct_voxels_free(v);
+        vct_voxels_release(v);
         return rc;
     }
     *out = v;
@@ -492,9 +492,9 @@ int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, con
     vct_buffer_release(ctx, f.gbuf);
     vct_buffer_release(ctx, f.reflection);
     if (rc != VCT_OK) {
-        vct_image_free(image);
+        vct_image_release(image);
         if (aovs)
-            vct_aovs_free(aovs);
+            vct_aovs_release(aovs);
     }
     return rc;
 }

@@ -52,6 +52,6 @@ int vct_render_voxels_level(vct_context *ctx, const vct_scene *s, const vct_voxe
         clReleaseKernel(k);
     vct_stage_end(ctx);
     if (rc != VCT_OK)
-        vct_image_free(image);
+        vct_image_release(image);
     return rc;
 }

@@ -204,7 +204,7 @@ void vct_context_on_release(vct_context *ctx, vct_release_hook hook) {
         ctx->release_hooks[ctx->release_hook_count++] = hook;
 }
 
-void vct_context_destroy(vct_context *ctx) {
+void vct_context_release(vct_context *ctx) {
     if (!ctx)
         return;
     vct_stage_end(ctx);

@@ -18,7 +18,7 @@ vct_material vct_material_default(void) {
     return m;
 }
 
-void vct_scene_free(vct_scene *scene) {
+void vct_scene_release(vct_scene *scene) {
     if (!scene)
         return;
     free(scene->positions);
@@ -146,7 +146,7 @@ vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
     s->triangle_material = calloc(triangle_count + 1ull, sizeof(uint32_t));
     s->materials = malloc(s->material_count * sizeof(vct_material));
     if (!s->positions || !s->triangles || !s->triangle_material || !s->materials) {
-        vct_scene_free(s);
+        vct_scene_release(s);
         vct_fail(err, VCT_ERR_MEMORY, "scene: out of host memory for %u triangles", triangle_count);
         return NULL;
     }
@@ -159,7 +159,7 @@ vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
     else
         s->materials[0] = vct_material_default();
     if (vct_scene_validate(s, err) != VCT_OK) {
-        vct_scene_free(s);
+        vct_scene_release(s);
         return NULL;
     }
     vct_scene_default_camera(s, &s->camera);

@@ -375,7 +375,7 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
     }
     aiReleaseImport(sc);
     if (rc != VCT_OK) {
-        vct_scene_free(s);
+        vct_scene_release(s);
         return NULL;
     }
     return s;

@@ -531,3 +531,8 @@ int vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32
     vct_buffer_release(ctx, q);
     return rc;
 }
+
+vct_brick_options vct_brick_options_default(void) {
+    const vct_brick_options o = {VCT_BRICKS_AUTO, 0, 0};
+    return o;
+}

@@ -280,7 +280,7 @@ vct_voxels *vct_voxelize(vct_context *ctx, const vct_scene *s, const vct_voxel_o
     vct_scene_buffers_release(ctx, &st.scene);
     vct_stage_end(ctx);
     if (rc != VCT_OK) {
-        vct_voxels_free(v);
+        vct_voxels_release(v);
         return NULL;
     }
     return v;
@@ -299,4 +299,11 @@ int vct_voxels_read(vct_context *ctx, const vct_voxels *v, uint32_t *keys, float
     if (rc == VCT_OK && emission)
         rc = vct_buffer_read(ctx, "voxel read", v->emission, 0, 16 * n, emission, err);
     return rc;
+}
+
+vct_voxel_options vct_voxel_options_default(void) {
+    vct_voxel_options o;
+    memset(&o, 0, sizeof o);
+    o.resolution = 128;
+    return o;
 }

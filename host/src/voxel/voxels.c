@@ -28,7 +28,7 @@ uint32_t vct_voxel_res_that_fits(uint32_t res, double bytes, double limit) {
     return res;
 }
 
-void vct_voxels_free(vct_voxels *v) {
+void vct_voxels_release(vct_voxels *v) {
     if (!v)
         return;
     cl_mem *mems[] = {

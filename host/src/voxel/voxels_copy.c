@@ -124,7 +124,7 @@ vct_voxels *vct_voxels_copy(vct_context *ctx, const vct_voxels *src, vct_error *
     }
     vct_stage_end(ctx);
     if (rc != VCT_OK) {
-        vct_voxels_free(v);
+        vct_voxels_release(v);
         return NULL;
     }
     return v;
