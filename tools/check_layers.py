@@ -16,8 +16,12 @@ import re
 import subprocess
 import sys
 
-STAGES = ["runtime", "parallel", "scene", "accel", "light", "voxel", "photon", "render", "image",
-          "denoise", "device_scene", "multi"]
+STAGES = ["runtime", "parallel", "scene", "accel", "light", "voxel", "frame", "photon", "raytrace",
+          "pathtrace", "conetrace", "render", "image", "denoise", "device_scene", "multi"]
+# frame/ is what every method shares (the frame, the plan, the shaded first
+# hit, progress); photon/ holds photon mapping and the photons cone tracing
+# gathers for caustics; raytrace/, pathtrace/ and conetrace/ are the other
+# methods; render/ is the one entry to all of them.
 # image/ (files and metrics of host images) is used by the renderers but
 # uses only the runtime, and denoise/ (a filter over images and their
 # guides) only the runtime and images: they sit beside the pipeline, not
@@ -25,7 +29,8 @@ STAGES = ["runtime", "parallel", "scene", "accel", "light", "voxel", "photon", "
 BELOW = {s: set(STAGES[: i + 1]) for i, s in enumerate(STAGES)}
 BELOW["image"] = {"runtime", "image"}
 BELOW["denoise"] = {"runtime", "image", "denoise"}
-BELOW["render"] |= {"image", "denoise"}
+for stage in ["frame", "photon", "raytrace", "pathtrace", "conetrace", "render"]:
+    BELOW[stage] |= {"image", "denoise"}
 
 
 def objects(src, build):

@@ -6,7 +6,7 @@
 
 #include "device_scene/scene_digest.h"
 #include "light/emitters.h"
-#include "render/vct_relight.h"
+#include "conetrace/vct_relight.h"
 #include "runtime/runtime.h"
 #include "scene/scene_resident.h"
 

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "multi/group.h"
-#include "render/pathtrace.h"
+#include "pathtrace/pathtrace.h"
 
 #define STAGE "path trace"
 

@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "runtime/runtime.h"
-#include "render/frame.h"
+#include "frame/frame.h"
 #include "scene/scene_device.h"
 #include "vct_types.h"
 #include "voxel/voxels.h"

@@ -4,7 +4,7 @@
 #ifndef VCT_RENDER_SUBSAMPLE_H
 #define VCT_RENDER_SUBSAMPLE_H
 
-#include "render/shaded_frame.h"
+#include "frame/shaded_frame.h"
 
 /* points_kernel traces listed pixels: its own arguments `own`, then points,
  * n, keys, traced and the frame (whitted_points). Writes the number of

@@ -3,9 +3,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "render/small_objects.h"
-#include "render/subsample.h"
-#include "render/whitted_as.h"
+#include "raytrace/small_objects.h"
+#include "raytrace/subsample.h"
+#include "raytrace/whitted_as.h"
 
 #define KERNEL_FILE "render/whitted.cl"
 #define STAGE "whitted"

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "render/subsample.h"
+#include "raytrace/subsample.h"
 #include "vct/parallel.h"
 
 typedef struct sub_buffers {

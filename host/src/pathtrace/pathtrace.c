@@ -8,9 +8,9 @@
 
 #include "runtime/runtime.h"
 #include "accel/accel.h"
-#include "render/frame.h"
-#include "render/pathtrace.h"
-#include "render/progress.h"
+#include "frame/frame.h"
+#include "pathtrace/pathtrace.h"
+#include "frame/progress.h"
 
 #define STAGE "path trace"
 

@@ -1,9 +1,9 @@
 /* The shared inputs and launch of the ray caster and Whitted ray tracing. */
 #include <string.h>
 
-#include "render/shaded_frame.h"
+#include "frame/shaded_frame.h"
 #include "accel/accel.h"
-#include "render/frame.h"
+#include "frame/frame.h"
 
 static void release(vct_shaded *sh) {
     vct_scene_buffers_release(sh->ctx, &sh->sb);

@@ -5,7 +5,7 @@
 
 #include "runtime/runtime.h"
 #include "accel/accel.h"
-#include "render/frame.h"
+#include "frame/frame.h"
 #include "scene/scene_device.h"
 
 #define STAGE "guides"

@@ -5,8 +5,8 @@
 
 #include "runtime/runtime.h"
 #include "accel/accel.h"
-#include "render/shaded_frame.h"
-#include "render/whitted_as.h"
+#include "frame/shaded_frame.h"
+#include "raytrace/whitted_as.h"
 
 int vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint32_t n, int any_hit,
                    vct_hit *hits, vct_error *err) {

@@ -14,7 +14,7 @@
 
 #include "check.h"
 #include "mesh_gen.h"
-#include "render/whitted_as.h"
+#include "raytrace/whitted_as.h"
 #include "vec3d.h"
 
 #define L 50.0f

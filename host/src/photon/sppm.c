@@ -11,8 +11,8 @@
 #include "accel/tri_vertices.h"
 #include "light/emitters.h"
 #include "photon/photon_grid.h"
-#include "render/frame.h"
-#include "render/progress.h"
+#include "frame/frame.h"
+#include "frame/progress.h"
 #include "runtime/runtime.h"
 #include "scene/scene_device.h"
 

@@ -2,7 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "render/progress.h"
+#include "frame/progress.h"
 
 void vct_progress_line(uint32_t done, uint32_t total, double elapsed_s, double limit_s,
                        const char *unit) {

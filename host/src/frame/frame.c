@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "runtime/runtime.h"
-#include "render/frame.h"
+#include "frame/frame.h"
 #include "scene/scene_device.h"
 
 static void frame_release(vct_context *ctx);

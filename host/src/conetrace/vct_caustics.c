@@ -9,7 +9,7 @@
 #include "photon/photon_grid.h"
 #include "photon/photon_sources.h"
 #include "photon/photon_trace.h"
-#include "render/vct_caustics.h"
+#include "conetrace/vct_caustics.h"
 #include "runtime/runtime.h"
 
 #define STAGE "vct caustics"

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "render/small_objects.h"
+#include "raytrace/small_objects.h"
 
 static uint32_t find(uint32_t *parent, uint32_t v) {
     while (parent[v] != v) {

@@ -6,9 +6,9 @@
 
 #include "accel/accel.h"
 #include "light/emitters.h"
-#include "render/frame.h"
-#include "render/vct_caustics.h"
-#include "render/vct_relight.h"
+#include "frame/frame.h"
+#include "conetrace/vct_caustics.h"
+#include "conetrace/vct_relight.h"
 #include "voxel/bounce_rest.h"
 #include "voxel/cones.h"
 #include "scene/scene_device.h"
