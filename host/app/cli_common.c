@@ -43,6 +43,12 @@ void cli_print_scene(const vct_scene *s, FILE *out) {
             "%u lights\n",
             s->source, s->triangle_count, s->degenerate_triangles, s->vertex_count,
             s->material_count, s->light_count);
+    if (s->ignored_lights)
+        fprintf(out,
+                "vct: %u light%s of the file %s of a type vct does not render (area or "
+                "ambient lights): ignored\n",
+                s->ignored_lights, s->ignored_lights == 1 ? "" : "s",
+                s->ignored_lights == 1 ? "is" : "are");
 }
 
 void cli_print_stats(const vct_context *ctx) {

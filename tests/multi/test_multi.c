@@ -267,12 +267,21 @@ static void check_slowed(const vct_scene *s) {
     vct_group_release(g);
 }
 
+/* What the group says through its log. */
+static char group_said[4096];
+static void group_log(void *user, const char *message) {
+    (void)user;
+    snprintf(group_said, sizeof group_said, "%s", message);
+}
+
 /* Device 1 fails a few launches into the frame: the other completes it,
- * unchanged, and the failure is counted once. */
+ * unchanged, and the failure is counted once and said through the log. */
 static void check_failure(const vct_scene *s, int method_index) {
     const method_case *c = &cases[method_index];
     vct_image one = single(c, s);
     vct_group *g = group_for(s);
+    group_said[0] = '\0';
+    vct_group_set_log(g, group_log, NULL);
     char at[32];
     snprintf(at, sizeof at, "1:%ld", vct_group_context(g, 1)->launch_count + 3);
     setenv("VCT_FAIL_LAUNCH", at, 1);
@@ -293,6 +302,8 @@ static void check_failure(const vct_scene *s, int method_index) {
           dev[1].active ? "still active" : "dropped");
     CHECK(strstr(dev[1].dropped, "VCT_FAIL_LAUNCH") != NULL, "the reason names the failure: %s",
           dev[1].dropped);
+    CHECK(strstr(group_said, "dropped") && strstr(group_said, "VCT_FAIL_LAUNCH"),
+          "the log was told of the dropped device: \"%s\"", group_said);
     vct_image_release(&one);
     vct_group_release(g);
 }

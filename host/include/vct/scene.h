@@ -92,6 +92,7 @@ typedef struct vct_scene {
      * constant environment, 0 by default): lights what is open to the sky. */
     float ambient[3];
     uint32_t degenerate_triangles; /* zero-area triangles, kept but never hit */
+    uint32_t ignored_lights;       /* lights of the file of a type vct has not (area, ambient) */
     float bounds_min[3], bounds_max[3];
 } vct_scene;
 

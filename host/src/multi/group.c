@@ -60,6 +60,8 @@ vct_context *vct_group_context(vct_group *g, int i) {
 }
 
 void vct_group_set_log(vct_group *g, vct_log_fn log, void *user) {
+    g->log = log;
+    g->log_user = user;
     for (int i = 0; i < g->count; ++i)
         if (g->ctx[i])
             vct_context_set_log(g->ctx[i], log, user);

@@ -15,11 +15,13 @@ struct vct_group {
     vct_accel *accel[VCT_GROUP_MAX];
     vct_voxels *voxels[VCT_GROUP_MAX];
     int faults;
-    uint32_t pt_done; /* samples of the path tracer's running sums (resume) */
-    vct_solo solo;    /* row methods: the devices together, or the fastest alone */
+    uint32_t pt_done;  /* samples of the path tracer's running sums (resume) */
+    vct_solo solo;     /* row methods: the devices together, or the fastest alone */
     uint64_t solo_job; /* what solo's frame times were measured on */
     /* Photon mapping: the bands of the last render, kept while it resumes. */
     int pm_first[VCT_GROUP_MAX], pm_rows[VCT_GROUP_MAX], pm_height;
+    vct_log_fn log; /* vct_group_set_log's, for what the group itself says */
+    void *log_user;
 };
 
 /* Runs work(group, device, arg) for every active device at once, one host
@@ -27,7 +29,7 @@ struct vct_group {
 typedef void (*vct_group_work)(vct_group *g, int device, void *arg);
 int vct_group_each(vct_group *g, vct_group_work work, void *arg, vct_error *err);
 
-/* Drops a device that failed with `why`: said once on stderr. */
+/* Drops a device that failed with `why`: said once through the log. */
 void vct_group_drop(vct_group *g, int device, const vct_error *why);
 
 /* Row methods and the path tracer, over the active devices. */

@@ -20,8 +20,12 @@ void vct_group_drop(vct_group *g, int i, const vct_error *why) {
     d->share = 0.0;
     snprintf(d->dropped, sizeof d->dropped, "%s", why->message);
     ++g->faults;
-    fprintf(stderr, "vct: device %d (%s) dropped: %s; the others take its work\n", d->info.index,
-            d->info.name, d->dropped);
+    if (!g->log)
+        return;
+    char message[2048 + 512];
+    snprintf(message, sizeof message, "device %d (%s) dropped: %s; the others take its work",
+             d->info.index, d->info.name, d->dropped);
+    g->log(g->log_user, message);
 }
 
 typedef struct worker {

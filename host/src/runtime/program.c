@@ -152,14 +152,22 @@ static int build_from_source(vct_context *ctx, const char *file, const char *sou
         if (log) {
             clGetProgramBuildInfo(p, ctx->device, CL_PROGRAM_BUILD_LOG, log_size, log, NULL);
             log[log_size] = '\0';
-            fprintf(stderr, "vct: build log for %s (options: %s):\n%s\n", file, options, log);
-            free(log);
+        }
+        if (log && ctx->log) {
+            char *message = malloc(log_size + 256 + strlen(options));
+            if (message) {
+                sprintf(message, "build log for %s (options: %s):\n%s", file, options, log);
+                ctx->log(ctx->log_user, message);
+                free(message);
+            }
         }
         clReleaseProgram(p);
-        return vct_fail(err, VCT_ERR_OPENCL,
-                        "kernels: building %s failed with %s (%d) on %s: the build log above "
-                        "names the file and line",
-                        file, vct_cl_error_name(rc), (int)rc, ctx->info.name);
+        /* the log's start names the first error's file and line */
+        vct_fail(err, VCT_ERR_OPENCL, "kernels: building %s failed with %s (%d) on %s:\n%.1500s",
+                 file, vct_cl_error_name(rc), (int)rc, ctx->info.name,
+                 log ? log : "(no build log)");
+        free(log);
+        return err->status;
     }
     *out = p;
     return VCT_OK;

@@ -218,8 +218,7 @@ static int read_lights(const struct aiScene *sc, const char *path, vct_scene *s,
             l.type = VCT_LIGHT_DIRECTIONAL;
             break;
         default:
-            fprintf(stderr, "vct: %s: light \"%s\" of an unsupported type is ignored\n", path,
-                    al->mName.data);
+            ++s->ignored_lights;
             continue;
         }
         struct aiMatrix4x4 identity, world;
