@@ -11,7 +11,7 @@
 
 static double render_best(vct_context *ctx, const vct_scene *s, vct_accel_kind kind) {
     vct_error err = {0};
-    const vct_accel_options o = {kind, {0, 0, 0}, VCT_BVH_PLOC};
+    const vct_accel_options o = {kind, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO};
     vct_accel *a = vct_accel_build(ctx, s, &o, &err);
     if (!a)
         bench_die(&err);

@@ -263,9 +263,10 @@ static vct_scene *ball_room_scene(vct_error *err) {
 static void bench_scene(vct_context *ctx, const vct_scene *s, const char *name, int threads) {
     printf("\n### %s: %u triangles, %dx%d rays\n\n", name, s->triangle_count, SIDE, SIDE);
     /* The grid, the linear BVH and the clustered BVH (the default). */
-    const vct_accel_options kinds[MAX_STRUCTS] = {{VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC},
-                                                  {VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_LINEAR},
-                                                  {VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_PLOC}};
+    const vct_accel_options kinds[MAX_STRUCTS] = {
+        {VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO},
+        {VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_LINEAR, VCT_BVH_LEVELS_AUTO},
+        {VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO}};
     vct_accel *acc[MAX_STRUCTS];
     double build_dev[MAX_STRUCTS], build_wall[MAX_STRUCTS];
     for (int i = 0; i < MAX_STRUCTS; ++i)

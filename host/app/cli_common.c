@@ -141,6 +141,11 @@ int cli_print_accel(vct_context *ctx, const vct_accel *accel, FILE *out, vct_err
         fprintf(out, "accel: grid %ux%ux%u cells, %u references, %.2f MiB, built in %.1f ms\n",
                 in.grid.res[0], in.grid.res[1], in.grid.res[2], in.grid.references,
                 in.bytes / 1048576.0, in.build_ms);
+    else if (in.two_levels)
+        fprintf(out,
+                "accel: bvh 4-wide, two levels: %u instances over meshes of %u triangles, %u "
+                "nodes, %.2f MiB, built in %.1f ms\n",
+                in.instances, in.mesh_triangles, in.nodes, in.bytes / 1048576.0, in.build_ms);
     else
         fprintf(out,
                 "accel: bvh 4-wide, %s (%u passes), %u nodes, %u leaves, %u levels, SAH cost %.2f, "

@@ -43,6 +43,11 @@ int cmd_info(const cli_options *opt) {
     cli_print_scene(s, stdout);
     printf("bounds (%g %g %g) .. (%g %g %g)\n", s->bounds_min[0], s->bounds_min[1],
            s->bounds_min[2], s->bounds_max[0], s->bounds_max[1], s->bounds_max[2]);
+    uint32_t held = 0;
+    for (uint32_t m = 0; m < s->mesh_count; ++m)
+        held += s->meshes[m].triangle_count;
+    printf("%u meshes (%u triangles) placed by %u instances\n", s->mesh_count, held,
+           s->instance_count);
     printf("camera %s: position (%g %g %g), look-at (%g %g %g), up (%g %g %g), fov %g\n",
            s->has_camera ? "from the file" : "default", s->camera.position[0],
            s->camera.position[1], s->camera.position[2], s->camera.look_at[0], s->camera.look_at[1],

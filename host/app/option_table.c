@@ -77,6 +77,9 @@ static const cli_option accel_rows[] = {
     {"bvh-build", 0, OPT_BVH_BUILD, 1, "clustered|linear",
      "the BVH's tree: agglomerative clustering (default, faster rays) or the linear hierarchy "
      "(faster build)"},
+    {"bvh-levels", 0, OPT_BVH_LEVELS, 1, "auto|one|two",
+     "one BVH over every triangle, or a BVH per mesh under one over the instances (holds a "
+     "shared mesh once); auto (default): two where a mesh is placed more than once"},
     {"grid-res", 0, OPT_GRID_RES, CLI_ONE_OR_THREE, "N | NX NY NZ",
      "triangle grid cells per axis (default: from the triangle count)"},
 };

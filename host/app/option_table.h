@@ -25,6 +25,7 @@ typedef enum cli_option_id {
     OPT_AMBIENT,
     OPT_ACCEL,
     OPT_BVH_BUILD,
+    OPT_BVH_LEVELS,
     OPT_GRID_RES,
     OPT_METHOD,
     OPT_SPP,

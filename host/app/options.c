@@ -254,6 +254,11 @@ static int apply_rays(const parse_state *ps, cli_option_id id, char **w, int nw,
             return 2;
         opt->accel.bvh_builder = choice == 0 ? VCT_BVH_PLOC : VCT_BVH_LINEAR;
         return 0;
+    case OPT_BVH_LEVELS:
+        if (choose(ps, w[0], "auto|one|two", &choice))
+            return 2;
+        opt->accel.bvh_levels = (vct_bvh_levels)choice;
+        return 0;
     case OPT_GRID_RES:
         for (int k = 0; k < 3; ++k) {
             int r = 0;

@@ -1,8 +1,9 @@
 /* The one acceleration interface of every ray query: ACCEL_ARGS (the first
  * five arguments of a kernel that traces rays, set by the host's
  * vct_accel_set_args), ACCEL_VIEW() (the view made of them) and accel_trace
- * (closest or any hit). -DVCT_ACCEL_BVH selects the 4-wide BVH, otherwise the
- * uniform triangle grid; both keep the triangles' vertices in the scene's
+ * (closest or any hit). -DVCT_ACCEL_BVH selects the 4-wide BVH,
+ * -DVCT_ACCEL_BVH2 its two-level form (a BVH per mesh under one over the
+ * instances), otherwise the uniform triangle grid; both keep the triangles' vertices in the scene's
  * order (tri_vertices) and the scene's extent and tolerance in desc. */
 #ifndef VCT_ACCEL_H
 #define VCT_ACCEL_H
@@ -11,12 +12,15 @@
  * wherever it first appears, even inside a branch that is not compiled. */
 #include "accel/alpha_mask.h"
 #include "accel/bvh_node.h"
+#include "accel/bvh_walk.h"
 #include "accel/hit.h"
 #include "accel/ray_tri.h"
 #include "accel/ray_tri4.h"
 #include "vct_types.h"
 
-#ifdef VCT_ACCEL_BVH
+#if defined(VCT_ACCEL_BVH2)
+#include "accel/bvh2_traverse.h"
+#elif defined(VCT_ACCEL_BVH)
 #include "accel/bvh_traverse.h"
 #else
 #include "accel/grid_traverse.h"

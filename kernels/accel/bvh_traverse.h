@@ -13,16 +13,7 @@
 #ifndef VCT_BVH_TRAVERSE_H
 #define VCT_BVH_TRAVERSE_H
 
-#include "accel/bvh_node.h"
-#include "accel/hit.h"
-#include "accel/ray_tri.h"
-#include "accel/ray_tri4.h"
-#include "vct_types.h"
-
-/* Deep enough for 3 pushes per level of a tree the host checked is no
- * deeper than BVH_MAX_DEPTH levels. */
-#define BVH_MAX_DEPTH 40
-#define BVH_STACK (3 * BVH_MAX_DEPTH)
+#include "accel/bvh_walk.h"
 
 typedef struct accel_view {
     vct_accel_desc desc;                  /* res.x: node count */
@@ -37,27 +28,6 @@ typedef struct accel_view {
         __global const float4 *bvh_leaf_vertices, __global const uint *tri_ids,                    \
         __global const float4 *tri_vertices
 #define ACCEL_VIEW() ((accel_view){accel, bvh_nodes, bvh_leaf_vertices, tri_ids, tri_vertices})
-
-/* a * b - c as one fused operation where the device has it in hardware
- * (VCT_FAST_FMA, which the engine sets from CL_FP_FMA), else a product and a
- * sum, which is as conservative (see accel_trace) and never emulated. */
-#if defined(VCT_FAST_FMA) || defined(FP_FAST_FMAF)
-#define bvh_slab(a, b, c) fma((a), (b), -(c))
-#else
-#define bvh_slab(a, b, c) mad((a), (b), -(c))
-#endif
-
-/* Swaps (a, ra) and (b, rb) when b is nearer. */
-inline void bvh_order(float *a, uint *ra, float *b, uint *rb) {
-    if (*b < *a) {
-        const float t = *a;
-        const uint r = *ra;
-        *a = *b;
-        *ra = *rb;
-        *b = t;
-        *rb = r;
-    }
-}
 
 /* Closest hit in (tmin, tmax]; any_hit: stop at the first one (shadow rays).
  * Not inlined: a method calls it from several places, and one copy of the
@@ -99,36 +69,9 @@ __attribute__((noinline)) int accel_trace(const accel_view *g, float3 org, float
             const float4 enter = fmax(fmax(t0x, t0y), fmax(t0z, (float4)(tmin)));
             const float4 leave = fmin(fmin(t1x, t1y), fmin(t1z, (float4)(best)));
             const int4 hit = enter <= leave;
-            const int count = -(hit.x + hit.y + hit.z + hit.w);
-            if (count > 0) {
-                /* Missed children go last; a sorting network puts the rest
-                 * nearest first, in registers. */
-                const float4 t = select((float4)(INFINITY), enter, hit);
-                const uint4 refs = as_uint4(node[BVH_NODE_REFS]);
-                float t0 = t.x, t1 = t.y, t2 = t.z, t3 = t.w;
-                uint r0 = refs.x, r1 = refs.y, r2 = refs.z, r3 = refs.w;
-                bvh_order(&t0, &r0, &t1, &r1);
-                bvh_order(&t2, &r2, &t3, &r3);
-                bvh_order(&t0, &r0, &t2, &r2);
-                bvh_order(&t1, &r1, &t3, &r3);
-                bvh_order(&t1, &r1, &t2, &r2);
-                /* The others onto the stack farthest first, so that they
-                 * come off nearest first. */
-                if (count > 3) {
-                    stack_ref[sp] = r3;
-                    stack_t[sp++] = t3;
-                }
-                if (count > 2) {
-                    stack_ref[sp] = r2;
-                    stack_t[sp++] = t2;
-                }
-                if (count > 1) {
-                    stack_ref[sp] = r1;
-                    stack_t[sp++] = t1;
-                }
-                ref = r0;
+            if (bvh_descend(enter, hit, as_uint4(node[BVH_NODE_REFS]), &ref, stack_ref, stack_t,
+                            &sp))
                 continue;
-            }
         } else {
             /* The leaf's triangles four at a time, lanes past its end
              * repeating its first triangle. */
@@ -144,32 +87,14 @@ __attribute__((noinline)) int accel_trace(const accel_view *g, float3 org, float
                              c2 = left > 2u ? lv[8] : c0;
                 const float4 a3 = left > 3u ? lv[9] : a0, b3 = left > 3u ? lv[10] : b0,
                              c3 = left > 3u ? lv[11] : c0;
-                const tri4_hits h = ray_triangle4(
-                    &shear, (float4)(a0.x, a1.x, a2.x, a3.x), (float4)(a0.y, a1.y, a2.y, a3.y),
-                    (float4)(a0.z, a1.z, a2.z, a3.z), (float4)(b0.x, b1.x, b2.x, b3.x),
-                    (float4)(b0.y, b1.y, b2.y, b3.y), (float4)(b0.z, b1.z, b2.z, b3.z),
-                    (float4)(c0.x, c1.x, c2.x, c3.x), (float4)(c0.y, c1.y, c2.y, c3.y),
-                    (float4)(c0.z, c1.z, c2.z, c3.z), tmin, best);
+                const tri4_hits h =
+                    bvh_leaf4(&shear, a0, b0, c0, a1, b1, c1, a2, b2, c2, a3, b3, c3, tmin, best);
                 if (!any(h.hit))
                     continue;
-                /* In order, as one at a time would take them. */
-                const int4 ids = as_int4((float4)(a0.w, a1.w, a2.w, a3.w));
-                const int4 masks = as_int4((float4)(b0.w, b1.w, b2.w, b3.w));
-                for (int k = 0; k < 4; ++k) {
-                    const float t = lane_get(h.t, k);
-                    if (lane_geti(h.hit, k) && t <= best &&
-                        !accel_masked(g->tri_vertices, (uint)lane_geti(masks, k), lane_get(h.u, k),
-                                      lane_get(h.v, k))) {
-                        best = t;
-                        found = 1;
-                        hit->t = t;
-                        hit->u = lane_get(h.u, k);
-                        hit->v = lane_get(h.v, k);
-                        hit->tri = (uint)lane_geti(ids, k);
-                        if (any_hit)
-                            return 1;
-                    }
-                }
+                if (bvh_take_hits(g->tri_vertices, &h, as_int4((float4)(a0.w, a1.w, a2.w, a3.w)),
+                                  as_int4((float4)(b0.w, b1.w, b2.w, b3.w)), any_hit, &best,
+                                  &found, hit))
+                    return 1;
             }
         }
         /* Next: the nearest stacked node that can still hold a closer hit. */

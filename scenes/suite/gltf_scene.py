@@ -35,6 +35,7 @@ class Scene:
         self.meshes = []  # (material index, positions, indices, texture coordinates or None)
         self.lights = []
         self.camera = None
+        self.placements = {}  # mesh index -> [(translation, rotation, scale)]
 
     def material(self, name, color, roughness=1.0, metallic=0.0, emission=None,
                  strength=1.0, transmission=0.0, ior=1.5, texture=None, alpha_cutoff=None):
@@ -64,9 +65,17 @@ class Scene:
         return len(self.materials) - 1
 
     def mesh(self, material, positions, indices, uvs=None):
+        """Returns the mesh's index (None for a mesh without triangles)."""
         if indices:
             self.meshes.append((material, list(positions), list(indices),
                                 list(uvs) if uvs else None))
+            return len(self.meshes) - 1
+        return None
+
+    def place(self, mesh, translation=(0, 0, 0), rotation=(0, 0, 0, 1), scale=(1, 1, 1)):
+        """One more node showing `mesh` (glTF TRS; rotation a quaternion x, y,
+        z, w). A placed mesh has only the nodes placed, not its own."""
+        self.placements.setdefault(mesh, []).append((translation, rotation, scale))
 
     def quads(self, material, quads, textured=False, repeat=(1, 1)):
         """Each quad: four corners in order around it; textured: the texture
@@ -112,7 +121,7 @@ class Scene:
                     idx.extend([a, b, a + 1])
                 if r < rings - 1:
                     idx.extend([a + 1, b, b + 1])
-        self.mesh(material, pos, idx)
+        return self.mesh(material, pos, idx)
 
     def point_light(self, position, intensity, color=(1, 1, 1)):
         self.lights.append(({"type": "point", "color": list(color), "intensity": intensity},
@@ -164,7 +173,16 @@ class Scene:
                 attributes["TEXCOORD_0"] = len(accessors) - 1
             meshes.append({"primitives": [{"attributes": attributes, "indices": indices,
                                            "material": material}]})
-            nodes.append({"mesh": len(meshes) - 1})
+            mesh = len(meshes) - 1
+            for t, r, sc in self.placements.get(mesh, [((0, 0, 0), (0, 0, 0, 1), (1, 1, 1))]):
+                node = {"mesh": mesh}
+                if tuple(t) != (0, 0, 0):
+                    node["translation"] = list(t)
+                if tuple(r) != (0, 0, 0, 1):
+                    node["rotation"] = list(r)
+                if tuple(sc) != (1, 1, 1):
+                    node["scale"] = list(sc)
+                nodes.append(node)
         gltf = {"asset": {"version": "2.0", "generator": "vct scenes/suite"},
                 "scene": 0, "materials": self.materials, "meshes": meshes,
                 "accessors": accessors, "bufferViews": views,

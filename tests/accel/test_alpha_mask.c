@@ -157,7 +157,7 @@ static void check_pixels(const mask_case *mc) {
     const char *name = mc->name;
     vct_scene *s = masked_scene(mc);
     vct_error err = {0};
-    vct_accel_options ao = {mc->kind, {0, 0, 0}, VCT_BVH_PLOC};
+    vct_accel_options ao = {mc->kind, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO};
     vct_accel *g = vct_accel_build(ctx, s, &ao, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     vct_effect_force force[VCT_EFFECTS];

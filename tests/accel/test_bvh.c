@@ -161,9 +161,12 @@ static void check_same_hits(vct_context *ctx, const vct_scene *s, const vct_acce
     free(hb);
 }
 
-static const vct_accel_options bvh_options = {VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_PLOC};
-static const vct_accel_options linear_options = {VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_LINEAR};
-static const vct_accel_options grid_options = {VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC};
+static const vct_accel_options bvh_options = {
+    VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO};
+static const vct_accel_options linear_options = {
+    VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_LINEAR, VCT_BVH_LEVELS_AUTO};
+static const vct_accel_options grid_options = {
+    VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO};
 
 /* Both builders: structure, rays against the brute force, hits as the grid's. */
 static void run_scene(vct_context *ctx, vct_scene *s, uint32_t rays, const char *name) {

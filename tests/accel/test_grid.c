@@ -67,7 +67,7 @@ static void check_cells(vct_context *ctx, const vct_scene *s, const vct_grid *g,
 static void run_scene(vct_context *ctx, vct_scene *s, const uint32_t *res, uint32_t rays, int cells,
                       const char *name) {
     vct_error err = {0};
-    vct_accel_options o = {VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC};
+    vct_accel_options o = {VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO};
     if (res)
         memcpy(o.grid_res, res, sizeof o.grid_res);
     vct_accel *a = vct_accel_build(ctx, s, &o, &err);
@@ -84,7 +84,7 @@ static void run_scene(vct_context *ctx, vct_scene *s, const uint32_t *res, uint3
 int main(void) {
     vct_context *ctx = check_context();
     const float origin[3] = {0, 0, 0}, far_centre[3] = {1e5f, -2e5f, 3e5f};
-    const vct_accel_options grid = {VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC};
+    const vct_accel_options grid = {VCT_ACCEL_GRID, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO};
 
     test_mesh soup = mesh_soup(1500, 0.0f, 7);
     vct_scene *s = scene_of(&soup);

@@ -13,7 +13,7 @@ static vct_context *ctx;
 
 static vct_image render(const vct_scene *s, vct_method method, vct_accel_kind kind) {
     vct_error err = {0};
-    const vct_accel_options o = {kind, {0, 0, 0}, VCT_BVH_PLOC};
+    const vct_accel_options o = {kind, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO};
     vct_accel *a = vct_accel_build(ctx, s, &o, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
     vct_image im;

@@ -41,10 +41,23 @@ typedef struct vct_accel vct_accel;
  * or the linear hierarchy alone (Karras 2012: faster to build). */
 typedef enum vct_bvh_builder { VCT_BVH_PLOC = 0, VCT_BVH_LINEAR = 1 } vct_bvh_builder;
 
+/* One BVH over every triangle of the scene, or two levels: a BVH per mesh
+ * (each mesh once, however many instances place it) under a BVH over the
+ * instances. Rays meet the same triangles either way and report the same
+ * hits; two levels hold shared meshes once and move an instance by
+ * rebuilding the top level alone. AUTO: two levels where some mesh is
+ * placed more than once. */
+typedef enum vct_bvh_levels {
+    VCT_BVH_LEVELS_AUTO = 0,
+    VCT_BVH_ONE_LEVEL = 1,
+    VCT_BVH_TWO_LEVELS = 2
+} vct_bvh_levels;
+
 typedef struct vct_accel_options {
     vct_accel_kind kind;
     uint32_t grid_res[3]; /* the grid's cells per axis; 0: chosen from the scene */
     vct_bvh_builder bvh_builder;
+    vct_bvh_levels bvh_levels; /* two levels need the scene's instances */
 } vct_accel_options;
 
 typedef struct vct_accel_info {
@@ -56,8 +69,11 @@ typedef struct vct_accel_info {
     uint32_t depth;  /* BVH: levels */
     uint32_t passes; /* BVH: clustering passes (0 for the linear hierarchy) */
     vct_bvh_builder bvh_builder;
-    double sah_cost;    /* BVH: surface-area cost relative to the root, 1 per node and triangle */
-    vct_grid_info grid; /* grid only */
+    double sah_cost; /* BVH: surface-area cost relative to the root, 1 per node and triangle
+                        (one level only) */
+    int two_levels;  /* BVH: a BVH per mesh under one over the instances */
+    uint32_t instances, mesh_triangles; /* two levels: instances placed, triangles held */
+    vct_grid_info grid;                 /* grid only */
 } vct_accel_info;
 
 /* A BVH, clustered (VCT_BVH_PLOC). */

@@ -72,6 +72,23 @@ typedef struct vct_camera {
     float fov_y_deg;
 } vct_camera;
 
+/* A mesh in its own space: what several instances may share. */
+typedef struct vct_mesh {
+    uint32_t vertex_count, triangle_count;
+    float *positions;    /* 3 * vertex_count, object space */
+    uint32_t *triangles; /* 3 * triangle_count, into this mesh's vertices */
+} vct_mesh;
+
+/* A mesh placed in the world. The scene's flat arrays hold every instance's
+ * triangles, transformed, in instance order: instance i's are
+ * first_triangle .. first_triangle + its mesh's triangle_count - 1, and its
+ * vertices from first_vertex on. */
+typedef struct vct_instance {
+    uint32_t mesh;
+    float transform[12]; /* row-major 3x4: world = transform * (p, 1) */
+    uint32_t first_triangle, first_vertex;
+} vct_instance;
+
 typedef struct vct_scene {
     char source[512];
     uint32_t vertex_count;
@@ -93,6 +110,12 @@ typedef struct vct_scene {
     float ambient[3];
     uint32_t degenerate_triangles; /* zero-area triangles, kept but never hit */
     uint32_t ignored_lights;       /* lights of the file of a type vct has not (area, ambient) */
+    /* The meshes and their instances the flat arrays were made from (a
+     * file's node tree, or one mesh and one instance for arrays); 0 and
+     * NULL for a scene that is only flat arrays. */
+    uint32_t mesh_count, instance_count;
+    vct_mesh *meshes;
+    vct_instance *instances;
     float bounds_min[3], bounds_max[3];
 } vct_scene;
 
@@ -105,6 +128,17 @@ VCT_API vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex
                                          const vct_material *materials, uint32_t material_count,
                                          vct_error *err);
 VCT_API int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_error *err);
+/* Places instance `instance` with a new transform: its vertices in the flat
+ * arrays are transformed again (as loading does, in double), the bounds
+ * updated. A transform with a value that is not finite, or that makes a
+ * vertex not finite, is refused and nothing changes. */
+/* Places mesh `mesh` once more, at `transform`: its triangles and vertices
+ * are appended to the flat arrays, with the materials and texture
+ * coordinates of the mesh's first instance. */
+VCT_API int vct_scene_add_instance(vct_scene *scene, uint32_t mesh, const float transform[12],
+                                   vct_error *err);
+VCT_API int vct_scene_set_instance_transform(vct_scene *scene, uint32_t instance,
+                                             const float transform[12], vct_error *err);
 /* Checks indices, finite values, non-empty; counts degenerates; sets bounds. */
 VCT_API int vct_scene_validate(vct_scene *scene, vct_error *err);
 /* A default camera framing the scene's bounds, looking down -z. */

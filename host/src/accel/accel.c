@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "accel/accel.h"
+#include "scene/instances.h"
 #include "vct_types.h"
 
 const char *vct_accel_kind_name(vct_accel_kind kind) {
@@ -34,12 +35,18 @@ vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *s, const vct_accel
     a->kind = a->options.kind;
     a->ctx = ctx;
     const double start = vct_now_ms();
+    const vct_bvh_levels levels = a->options.bvh_levels;
+    const int two =
+        s->instance_count > 0 && (levels == VCT_BVH_TWO_LEVELS ||
+                                  (levels == VCT_BVH_LEVELS_AUTO && vct_instances_shared(s)));
     if (a->kind == VCT_ACCEL_GRID)
         a->grid = vct_grid_build(ctx, s, a->options.grid_res, err);
+    else if (two)
+        a->bvh2 = vct_bvh2_build(ctx, s, a->options.bvh_builder, err);
     else
         a->bvh = vct_bvh_build(ctx, s, a->options.bvh_builder, err);
     a->build_ms = vct_now_ms() - start;
-    if (!a->grid && !a->bvh) {
+    if (!a->grid && !a->bvh && !a->bvh2) {
         free(a);
         return NULL;
     }
@@ -49,7 +56,14 @@ vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *s, const vct_accel
 int vct_accel_refit(vct_context *ctx, vct_accel *a, const vct_scene *s, vct_error *err) {
     const double start = vct_now_ms();
     int rc;
-    if (a->kind == VCT_ACCEL_BVH) {
+    if (a->bvh2) { /* the meshes keep their shape: a new top level and vertices */
+        vct_bvh2 *b = vct_bvh2_build(ctx, s, a->options.bvh_builder, err);
+        rc = b ? VCT_OK : (int)err->status;
+        if (b) {
+            vct_bvh2_free(a->bvh2);
+            a->bvh2 = b;
+        }
+    } else if (a->kind == VCT_ACCEL_BVH) {
         rc = vct_bvh_refit(ctx, a->bvh, s, err);
     } else {
         vct_grid *g = vct_grid_build(ctx, s, a->options.grid_res, err);
@@ -83,6 +97,18 @@ int vct_accel_info_get(vct_context *ctx, const vct_accel *a, vct_accel_info *inf
                       mem_bytes(g->tri_vertices);
         return VCT_OK;
     }
+    if (a->bvh2) {
+        const vct_bvh2 *b = a->bvh2;
+        info->two_levels = 1;
+        info->nodes = b->top_nodes + b->mesh_nodes;
+        info->depth = b->depth;
+        info->instances = b->instance_count;
+        info->mesh_triangles = b->mesh_triangles;
+        info->bvh_builder = a->options.bvh_builder;
+        info->bytes = mem_bytes(b->nodes) + mem_bytes(b->instances) + mem_bytes(b->tri_ids) +
+                      mem_bytes(b->tri_vertices);
+        return VCT_OK;
+    }
     const vct_bvh *b = a->bvh;
     info->nodes = b->node_count;
     info->depth = b->depth;
@@ -100,11 +126,12 @@ void vct_accel_release(vct_accel *a) {
         return;
     vct_grid_release(a->grid);
     vct_bvh_free(a->bvh);
+    vct_bvh2_free(a->bvh2);
     free(a);
 }
 
 const char *vct_accel_program_options(const vct_accel *a) {
-    return a->kind == VCT_ACCEL_BVH ? "-DVCT_ACCEL_BVH" : "";
+    return a->bvh2 ? "-DVCT_ACCEL_BVH2" : a->kind == VCT_ACCEL_BVH ? "-DVCT_ACCEL_BVH" : "";
 }
 
 const char *vct_accel_options_join(const vct_accel *a, const char *own, char *out, size_t size) {
@@ -113,15 +140,27 @@ const char *vct_accel_options_join(const vct_accel *a, const char *own, char *ou
 }
 
 cl_mem vct_accel_tri_vertices(const vct_accel *a) {
-    return a->kind == VCT_ACCEL_BVH ? a->bvh->tri_vertices : a->grid->tri_vertices;
+    return a->bvh2                    ? a->bvh2->tri_vertices
+           : a->kind == VCT_ACCEL_BVH ? a->bvh->tri_vertices
+                                      : a->grid->tri_vertices;
 }
 
 int vct_accel_set_args(cl_kernel k, const vct_accel *a, const char *stage, vct_error *err) {
     if (a->kind == VCT_ACCEL_GRID)
         return vct_grid_set_args(k, a->grid, stage, err);
-    const vct_bvh *b = a->bvh;
     vct_accel_desc desc;
     memset(&desc, 0, sizeof desc);
+    if (a->bvh2) {
+        const vct_bvh2 *b = a->bvh2;
+        desc.origin.s[3] = b->scene_extent;
+        desc.cell_size.s[3] = b->tolerance;
+        desc.res.s[0] = b->instance_count ? b->top_nodes : 0;
+        desc.res.s[3] = b->triangle_count;
+        return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(b->nodes),
+                            VCT_ARG_OF(b->instances), VCT_ARG_OF(b->tri_ids),
+                            VCT_ARG_OF(b->tri_vertices));
+    }
+    const vct_bvh *b = a->bvh;
     desc.origin.s[3] = b->scene_extent;
     desc.cell_size.s[3] = b->tolerance;
     desc.res.s[0] = b->node_count;

@@ -5,13 +5,15 @@
 #define VCT_ACCEL_ACCEL_H
 
 #include "accel/bvh.h"
+#include "accel/bvh2.h"
 #include "accel/grid.h"
 
 struct vct_accel {
     vct_accel_kind kind;
     vct_accel_options options;
     vct_grid *grid; /* kind VCT_ACCEL_GRID */
-    vct_bvh *bvh;   /* kind VCT_ACCEL_BVH */
+    vct_bvh *bvh;   /* kind VCT_ACCEL_BVH, one level */
+    vct_bvh2 *bvh2; /* kind VCT_ACCEL_BVH, two levels */
     double build_ms;
     vct_context *ctx;
 };

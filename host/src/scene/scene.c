@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "runtime/runtime.h"
+#include "scene/instances.h"
 
 vct_material vct_material_default(void) {
     vct_material m;
@@ -30,6 +31,7 @@ void vct_scene_release(vct_scene *scene) {
     for (uint32_t t = 0; t < scene->texture_count; ++t)
         free(scene->textures[t].rgba);
     free(scene->textures);
+    vct_instances_release(scene);
     free(scene);
 }
 
@@ -126,7 +128,7 @@ int vct_scene_validate(vct_scene *s, vct_error *err) {
         s->bounds_min[k] = lo[k];
         s->bounds_max[k] = hi[k];
     }
-    return VCT_OK;
+    return vct_instances_validate(s, err);
 }
 
 vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
@@ -158,7 +160,7 @@ vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
         memcpy(s->materials, materials, material_count * sizeof(vct_material));
     else
         s->materials[0] = vct_material_default();
-    if (vct_scene_validate(s, err) != VCT_OK) {
+    if (vct_scene_validate(s, err) != VCT_OK || vct_instances_identity(s, err) != VCT_OK) {
         vct_scene_release(s);
         return NULL;
     }

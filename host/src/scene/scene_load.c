@@ -22,9 +22,10 @@
 
 typedef struct builder {
     vct_scene *s;
-    uint32_t vertex_cap, triangle_cap, uv_cap;
+    uint32_t vertex_cap, triangle_cap, uv_cap, instance_cap;
     const char *path;
     vct_error *err;
+    int32_t *mesh_of; /* assimp mesh -> the scene's mesh, -1 before its first use */
 } builder;
 
 static int grow(void **p, uint32_t *cap, uint32_t need, size_t elem) {
@@ -39,6 +40,59 @@ static int grow(void **p, uint32_t *cap, uint32_t need, size_t elem) {
     *p = q;
     *cap = c;
     return 1;
+}
+
+/* The scene's mesh of an assimp mesh, in its own space, made at its first
+ * use: its vertices and its triangles (faces of 3 vertices). */
+static int mesh_index(builder *b, const struct aiScene *sc, unsigned mi, uint32_t *out) {
+    vct_scene *s = b->s;
+    if (b->mesh_of[mi] >= 0) {
+        *out = (uint32_t)b->mesh_of[mi];
+        return VCT_OK;
+    }
+    const struct aiMesh *mesh = sc->mMeshes[mi];
+    vct_mesh *grown = realloc(s->meshes, (s->mesh_count + 1) * sizeof *grown);
+    if (!grown)
+        return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
+    s->meshes = grown;
+    vct_mesh *m = &s->meshes[s->mesh_count];
+    memset(m, 0, sizeof *m);
+    m->positions = malloc(12ull * mesh->mNumVertices + 16);
+    m->triangles = malloc(12ull * mesh->mNumFaces + 16);
+    *out = s->mesh_count++;
+    b->mesh_of[mi] = (int32_t)*out;
+    if (!m->positions || !m->triangles)
+        return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
+    m->vertex_count = mesh->mNumVertices;
+    for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+        m->positions[3 * i] = mesh->mVertices[i].x;
+        m->positions[3 * i + 1] = mesh->mVertices[i].y;
+        m->positions[3 * i + 2] = mesh->mVertices[i].z;
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+        const struct aiFace *face = &mesh->mFaces[f];
+        if (face->mNumIndices != 3)
+            continue;
+        for (int k = 0; k < 3; ++k)
+            m->triangles[3 * m->triangle_count + k] = face->mIndices[k];
+        m->triangle_count++;
+    }
+    return VCT_OK;
+}
+
+/* An instance of mesh `mesh` at `world`, whose triangles come next. */
+static int add_instance(builder *b, uint32_t mesh, const struct aiMatrix4x4 *world) {
+    vct_scene *s = b->s;
+    if (!grow((void **)&s->instances, &b->instance_cap, s->instance_count + 1,
+              sizeof(vct_instance)))
+        return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
+    vct_instance *in = &s->instances[s->instance_count++];
+    memset(in, 0, sizeof *in);
+    in->mesh = mesh;
+    memcpy(in->transform, &world->a1, sizeof in->transform); /* rows a, b, c */
+    in->first_triangle = s->triangle_count;
+    in->first_vertex = s->vertex_count;
+    return VCT_OK;
 }
 
 static int add_mesh(builder *b, const struct aiMesh *mesh, const struct aiMatrix4x4 *m) {
@@ -125,7 +179,12 @@ static int walk(builder *b, const struct aiScene *sc, const struct aiNode *node,
         if (mi >= sc->mNumMeshes)
             return vct_fail(b->err, VCT_ERR_INPUT, "scene %s: node \"%s\" names mesh %u of %u",
                             b->path, node->mName.data, mi, sc->mNumMeshes);
-        int rc = add_mesh(b, sc->mMeshes[mi], &world);
+        uint32_t mesh = 0;
+        int rc = mesh_index(b, sc, mi, &mesh);
+        if (rc == VCT_OK)
+            rc = add_instance(b, mesh, &world);
+        if (rc == VCT_OK)
+            rc = add_mesh(b, sc->mMeshes[mi], &world);
         if (rc)
             return rc;
     }
@@ -351,7 +410,9 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
         return NULL;
     }
     snprintf(s->source, sizeof s->source, "%s", path);
-    builder b = {s, 0, 0, 0, path, err};
+    builder b = {s, 0, 0, 0, 0, path, err, malloc(sizeof(int32_t) * (sc->mNumMeshes + 1))};
+    for (unsigned i = 0; b.mesh_of && i < sc->mNumMeshes; ++i)
+        b.mesh_of[i] = -1;
     struct aiMatrix4x4 identity;
     aiIdentityMatrix4(&identity);
     int rc = read_materials(sc, path, s, err);
@@ -359,8 +420,11 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
         rc = vct_gltf_extensions_apply(path, s, err);
     if (rc == VCT_OK)
         rc = vct_scene_load_textures(sc, path, s, err);
+    if (rc == VCT_OK && !b.mesh_of)
+        rc = vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", path);
     if (rc == VCT_OK)
         rc = walk(&b, sc, sc->mRootNode, &identity);
+    free(b.mesh_of);
     if (rc == VCT_OK)
         rc = read_lights(sc, path, s, err);
     if (rc == VCT_OK && s->triangle_count == 0)

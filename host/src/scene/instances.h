@@ -1,0 +1,21 @@
+/* Meshes and their instances (vct/scene.h): the node tree a file's flat
+ * arrays were made from, kept so that an instance can move alone and an
+ * acceleration structure can hold a shared mesh once. */
+#ifndef VCT_SCENE_INSTANCES_H
+#define VCT_SCENE_INSTANCES_H
+
+#include "runtime/runtime.h"
+
+/* world = m * (p, 1), in double and rounded once: the loader's arithmetic,
+ * so that moving an instance back gives the positions loading gave. */
+void vct_instance_transform_point(const float m[12], const float *p, float *out);
+/* Checks every instance against its mesh and the flat arrays. */
+int vct_instances_validate(const vct_scene *s, vct_error *err);
+/* Whether some mesh is placed more than once (a two-level structure then
+ * holds it once). */
+int vct_instances_shared(const vct_scene *s);
+/* One mesh made of the flat arrays and one instance of it, untransformed. */
+int vct_instances_identity(vct_scene *s, vct_error *err);
+void vct_instances_release(vct_scene *s);
+
+#endif
