@@ -5,7 +5,8 @@
  * brute force: on a file with one sphere placed 64 times, and on hard
  * placements (1e4 from the origin, scaled by 1e-3 and by 300, mirrored, turned
  * and stretched, flattened to zero). Moving an instance gives the hits of the
- * other structure built on the moved scene. AUTO picks two levels only where
+ * other structure built on the moved scene. Rays at a closed mesh's vertices
+ * and edges do not leak through. AUTO picks two levels only where
  * a mesh is shared, and the shared mesh is held once. */
 #include "accel/accel.h"
 #include "ray_check.h"
@@ -142,6 +143,14 @@ static void check_hard_placements(vct_context *ctx) {
     CHECK(vct_scene_add_instance(s, 0, m, &err) == VCT_ERR_INPUT && s->instance_count == before &&
               strstr(err.message, "not finite"),
           "a transform with NaN: %s", err.message);
+    /* rays at the vertices and edges of a closed mesh through two levels */
+    vct_accel_options two = vct_accel_options_default();
+    two.bvh_levels = VCT_BVH_TWO_LEVELS;
+    check_watertight(ctx, &ball, centre, &two, "icosphere watertight, two levels");
+    const float far_centre[3] = {3e5f, -2e5f, 1e5f};
+    test_mesh far_ball = mesh_icosphere(3, 2.0f, far_centre);
+    check_watertight(ctx, &far_ball, far_centre, &two, "icosphere at 3e5 watertight, two levels");
+    mesh_free(&far_ball);
     vct_scene_release(far);
     vct_scene_release(s);
     mesh_free(&ball);

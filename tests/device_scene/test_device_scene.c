@@ -206,6 +206,62 @@ static void check_changes(void) {
     vct_scene_release(s);
 }
 
+/* Instances moved through the scene's API: a two-level structure rebuilds
+ * its top level alone, and the images equal a fresh device scene's; flat
+ * positions edited alone (the instances no longer say where the vertices
+ * are) get one level built again, with the same images as a fresh scene. */
+static void check_moved_instances(void) {
+    vct_error err = {0};
+    vct_scene *s = check_scene_file("scenes/instanced_spheres.gltf");
+    vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
+    REQUIRE_OK(ds ? VCT_OK : err.status, err);
+    vct_image first = by_device_scene(ds, VCT_METHOD_RAYCAST);
+    vct_image_release(&first);
+    vct_device_scene_stats before, after;
+    vct_device_scene_stats_get(ds, &before);
+    float m[12];
+    memcpy(m, s->instances[10].transform, sizeof m);
+    m[3] += 0.7f;
+    m[11] -= 0.4f;
+    REQUIRE_OK(vct_scene_set_instance_transform(s, 10, m, &err), err);
+    vct_image kept = by_device_scene(ds, VCT_METHOD_RAYCAST);
+    vct_device_scene_stats_get(ds, &after);
+    vct_scene copy = *s;
+    vct_image fresh_image = fresh(&copy, VCT_METHOD_RAYCAST);
+    CHECK(differ(&kept, &fresh_image) == 0,
+          "a moved instance: %zu values differ from a fresh scene", differ(&kept, &fresh_image));
+    CHECK(after.accel_moves == before.accel_moves + 1 && after.accel_builds == before.accel_builds,
+          "a moved instance: %u top-level rebuilds, %u full builds",
+          after.accel_moves - before.accel_moves, after.accel_builds - before.accel_builds);
+    printf("a moved instance: the top level built again, the meshes kept; the image equals a "
+           "fresh device scene's\n");
+    vct_image_release(&kept);
+    vct_image_release(&fresh_image);
+    /* the flat positions of one sphere edited alone */
+    const uint32_t v0 = s->instances[20].first_vertex;
+    for (uint32_t v = 0; v < s->meshes[s->instances[20].mesh].vertex_count; ++v)
+        s->positions[3 * (v0 + v) + 1] += 0.3f;
+    vct_device_scene_stats_get(ds, &before);
+    kept = by_device_scene(ds, VCT_METHOD_RAYCAST);
+    vct_device_scene_stats_get(ds, &after);
+    copy = *s;
+    fresh_image = fresh(&copy, VCT_METHOD_RAYCAST);
+    CHECK(differ(&kept, &fresh_image) == 0,
+          "positions edited alone: %zu values differ from a fresh scene",
+          differ(&kept, &fresh_image));
+    CHECK(after.accel_builds == before.accel_builds + 1,
+          "positions edited alone: %u builds (the structure must be built again)",
+          after.accel_builds - before.accel_builds);
+    const vct_accel *a = vct_device_scene_accel(ds);
+    vct_accel_info info;
+    REQUIRE_OK(vct_accel_info_get(ctx, a, &info, &err), err);
+    CHECK(!info.two_levels, "positions that are not the instances' got two levels");
+    vct_image_release(&kept);
+    vct_image_release(&fresh_image);
+    vct_device_scene_release(ds);
+    vct_scene_release(s);
+}
+
 /* A structure of another context is refused by name. */
 static void check_other_context(void) {
     vct_error err = {0};
@@ -234,6 +290,7 @@ int main(void) {
     check_same_images("emissive cornell box", lit);
     vct_scene_release(lit);
     check_changes();
+    check_moved_instances();
     check_other_context();
     vct_context_release(ctx);
     return check_exit("test_device_scene");

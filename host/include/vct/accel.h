@@ -46,7 +46,9 @@ typedef enum vct_bvh_builder { VCT_BVH_PLOC = 0, VCT_BVH_LINEAR = 1 } vct_bvh_bu
  * instances. Rays meet the same triangles either way and report the same
  * hits; two levels hold shared meshes once and move an instance by
  * rebuilding the top level alone. AUTO: two levels where some mesh is
- * placed more than once. */
+ * placed more than once. Two levels need the flat positions to be the
+ * instances' (as loading and vct_scene_set_instance_transform keep them);
+ * where a host edited the positions alone, one level is built. */
 typedef enum vct_bvh_levels {
     VCT_BVH_LEVELS_AUTO = 0,
     VCT_BVH_ONE_LEVEL = 1,
@@ -82,7 +84,10 @@ VCT_API vct_accel_options vct_accel_options_default(void);
 VCT_API vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *scene,
                                    const vct_accel_options *options, vct_error *err);
 /* The scene's vertices moved (same triangles): bounds recomputed without a
- * rebuild (the grid is rebuilt, having nothing to refit). */
+ * rebuild (the grid is rebuilt, having nothing to refit). Two levels: the
+ * instances moved (vct_scene_set_instance_transform), the meshes kept their
+ * shape: the top level is built again, the meshes' BVHs kept; the hits are
+ * a new build's. */
 VCT_API int vct_accel_refit(vct_context *ctx, vct_accel *accel, const vct_scene *scene,
                             vct_error *err);
 /* With sah_cost, which reads the nodes back. */

@@ -17,8 +17,10 @@
  * then commit: only what depends on the change is rebuilt, at the next
  * render that needs it. A moved light re-injects the voxels' light and
  * keeps the acceleration structure and the voxels; a changed material keeps
- * the acceleration structure (unless its alpha mask changed); new geometry
- * rebuilds everything. A render commits first, so a change is never missed.
+ * the acceleration structure (unless its alpha mask changed); a moved
+ * instance (vct_scene_set_instance_transform) rebuilds a two-level
+ * structure's top level alone, and the voxels; new geometry rebuilds
+ * everything. A render commits first, so a change is never missed.
  *
  * Lifetime: the scene and the context must outlive the device scene; release
  * it before destroying either. Calls on one device scene, like calls on its
@@ -58,6 +60,7 @@ typedef struct vct_device_scene_stats {
     uint32_t commits;      /* commits, those of renders included */
     uint32_t changes;      /* commits that found the scene changed */
     uint32_t accel_builds; /* acceleration structures built */
+    uint32_t accel_moves;  /* two levels: the top level built again, the meshes' BVHs kept */
     uint32_t voxel_builds; /* voxelization, octree and bricks */
     uint32_t light_builds; /* direct light and bounces into the voxels (new or kept) */
     uint64_t scene_bytes;  /* scene data uploaded: geometry, materials, lights, textures */

@@ -36,9 +36,10 @@ vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *s, const vct_accel
     a->ctx = ctx;
     const double start = vct_now_ms();
     const vct_bvh_levels levels = a->options.bvh_levels;
-    const int two =
-        s->instance_count > 0 && (levels == VCT_BVH_TWO_LEVELS ||
-                                  (levels == VCT_BVH_LEVELS_AUTO && vct_instances_shared(s)));
+    const int two = s->instance_count > 0 &&
+                    (levels == VCT_BVH_TWO_LEVELS ||
+                     (levels == VCT_BVH_LEVELS_AUTO && vct_instances_shared(s))) &&
+                    vct_instances_consistent(s);
     if (a->kind == VCT_ACCEL_GRID)
         a->grid = vct_grid_build(ctx, s, a->options.grid_res, err);
     else if (two)
@@ -56,13 +57,8 @@ vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *s, const vct_accel
 int vct_accel_refit(vct_context *ctx, vct_accel *a, const vct_scene *s, vct_error *err) {
     const double start = vct_now_ms();
     int rc;
-    if (a->bvh2) { /* the meshes keep their shape: a new top level and vertices */
-        vct_bvh2 *b = vct_bvh2_build(ctx, s, a->options.bvh_builder, err);
-        rc = b ? VCT_OK : (int)err->status;
-        if (b) {
-            vct_bvh2_free(a->bvh2);
-            a->bvh2 = b;
-        }
+    if (a->bvh2) { /* the meshes keep their shape: the top level and vertices again */
+        rc = vct_bvh2_move(ctx, a->bvh2, s, err);
     } else if (a->kind == VCT_ACCEL_BVH) {
         rc = vct_bvh_refit(ctx, a->bvh, s, err);
     } else {

@@ -8,6 +8,7 @@
 
 #include "accel/bvh2.h"
 #include "accel/tri_vertices.h"
+#include "scene/instances.h"
 
 #define STAGE "bvh build"
 #define INSTANCE_FLOAT4S 5
@@ -15,14 +16,7 @@
 #define LEAF_BIT 0x80000000u
 #define EMPTY_REF 0xFFFFFFFFu
 
-/* One mesh's BVH, read back to be joined with the others. */
-typedef struct mesh_tree {
-    float *nodes;      /* NODE_FLOATS per node */
-    uint32_t *tri_ids; /* its sorted triangles */
-    uint32_t node_count, depth;
-    float lo[3], hi[3];      /* the root's box, padded as the nodes are */
-    uint32_t root, first_id; /* where its nodes and ids go in the joined buffers */
-} mesh_tree;
+typedef vct_mesh_tree mesh_tree;
 
 /* A mesh as a scene of its own, in its space, for the one-level builder. */
 static int mesh_tree_build(vct_context *ctx, const vct_mesh *m, vct_bvh_builder builder,
@@ -237,64 +231,135 @@ void vct_bvh2_free(vct_bvh2 *b) {
     vct_buffer_release(b->ctx, b->instances);
     vct_buffer_release(b->ctx, b->tri_ids);
     vct_buffer_release(b->ctx, b->tri_vertices);
+    free(b->trees);
     free(b);
 }
 
-/* The joined buffers: the top level's nodes then each mesh's, the instance
- * records in leaf order, every mesh's sorted triangles. */
-static int upload(vct_bvh2 *b, const vct_scene *s, const mesh_tree *trees, const top_build *tb,
-                  const float *records_by_instance, vct_error *err) {
-    vct_context *ctx = b->ctx;
-    float *nodes = malloc(128ull * (b->top_nodes + b->mesh_nodes + 1));
-    uint32_t *ids = malloc(4ull * (b->mesh_triangles + 1));
-    float *records = malloc(16ull * INSTANCE_FLOAT4S * (tb->slots + 1));
-    int rc = nodes && ids && records
+/* The instances placed: their records in the top level's leaf order and
+ * the top level's nodes (top_cap slots), from the meshes' trees. */
+static int place_all(vct_bvh2 *b, const vct_scene *s, float *top, float **records_out,
+                     vct_error *err) {
+    const mesh_tree *trees = b->trees;
+    placed *items = calloc(s->instance_count + 1, sizeof *items);
+    float *records = calloc(4ull * INSTANCE_FLOAT4S * (s->instance_count + 1), sizeof(float));
+    float *by_instance = calloc(4ull * INSTANCE_FLOAT4S * (s->instance_count + 1), sizeof(float));
+    top_build tb = {top, 0, 0, 0, items, calloc(s->instance_count + 1, sizeof(uint32_t)), 0, 1};
+    int rc = items && records && by_instance && tb.order
                  ? VCT_OK
                  : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
-    if (rc == VCT_OK) {
-        memcpy(nodes, tb->nodes, 128ull * b->top_nodes);
-        for (uint32_t m = 0; m < s->mesh_count; ++m) {
-            if (!trees[m].node_count)
-                continue;
-            memcpy(nodes + NODE_FLOATS * (b->top_nodes + trees[m].root), trees[m].nodes,
-                   128ull * trees[m].node_count);
-            memcpy(ids + trees[m].first_id, trees[m].tri_ids, 4ull * s->meshes[m].triangle_count);
-        }
-        for (uint32_t slot = 0; slot < tb->slots; ++slot)
-            memcpy(records + 4 * INSTANCE_FLOAT4S * slot,
-                   records_by_instance + 4 * INSTANCE_FLOAT4S * tb->items[tb->order[slot]].instance,
-                   16ull * INSTANCE_FLOAT4S);
-        b->nodes = vct_buffer_create(ctx, STAGE, "two-level BVH nodes",
-                                     128ull * (b->top_nodes + b->mesh_nodes), CL_MEM_READ_ONLY,
-                                     nodes, err);
-        b->tri_ids = b->nodes
-                         ? vct_buffer_create(ctx, STAGE, "meshes' sorted triangles",
-                                             4ull * b->mesh_triangles, CL_MEM_READ_ONLY, ids, err)
-                         : NULL;
-        b->instances = b->tri_ids ? vct_buffer_create(ctx, STAGE, "instances",
-                                                      16ull * INSTANCE_FLOAT4S * tb->slots,
-                                                      CL_MEM_READ_ONLY, records, err)
-                                  : NULL;
-        rc = b->instances ? VCT_OK : (int)err->status;
+    uint32_t n = 0;
+    for (uint32_t i = 0; rc == VCT_OK && i < s->instance_count; ++i) {
+        const vct_instance *in = &s->instances[i];
+        const mesh_tree *t = &trees[in->mesh];
+        double inv[12];
+        if (!t->node_count || !invert(in->transform, inv))
+            continue; /* no triangles, or flattened to zero area: never hit */
+        float padding[2];
+        items[n].instance = i;
+        place(in, t, b->tolerance, &items[n], padding);
+        float *r = by_instance + 4 * INSTANCE_FLOAT4S * i;
+        for (int k = 0; k < 12; ++k)
+            r[k] = (float)inv[k];
+        const uint32_t at[4] = {b->top_cap + t->root, t->first_id, in->first_triangle, 0};
+        memcpy(r + 12, at, sizeof at);
+        r[16] = padding[0];
+        r[17] = padding[1];
+        ++n;
     }
-    free(nodes);
-    free(ids);
+    uint32_t *order = rc == VCT_OK ? calloc(n + 1, sizeof *order) : NULL;
+    if (rc == VCT_OK && !order)
+        rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    for (uint32_t k = 0; rc == VCT_OK && k < n; ++k)
+        order[k] = k;
+    float lo[3], hi[3];
+    if (rc == VCT_OK && n == 1) {
+        /* a root node above the lone leaf, as traversal starts at node 0 */
+        tb.count = 1;
+        const uint32_t leaf = top_subtree(&tb, order, 1, 1, lo, hi);
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 4; ++c) {
+                top[8 * k + c] = c ? INFINITY : lo[k];
+                top[8 * k + 4 + c] = c ? -INFINITY : hi[k];
+            }
+        const uint32_t refs[8] = {leaf,      EMPTY_REF, EMPTY_REF, EMPTY_REF,
+                                  EMPTY_REF, EMPTY_REF, EMPTY_REF, EMPTY_REF};
+        memcpy(top + 24, refs, sizeof refs);
+    } else if (rc == VCT_OK && n > 1) {
+        top_subtree(&tb, order, n, 1, lo, hi);
+    }
+    if (rc == VCT_OK && !tb.sorted)
+        rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    b->top_nodes = tb.count;
+    b->instance_count = tb.slots;
+    if (rc == VCT_OK && tb.depth + b->depth > VCT_BVH_MAX_DEPTH)
+        rc = vct_fail(err, VCT_ERR_OVERFLOW,
+                      "%s: the two levels are %u deep, beyond the %d traversal keeps: use "
+                      "--accel grid",
+                      STAGE, tb.depth + b->depth, VCT_BVH_MAX_DEPTH);
+    for (uint32_t slot = 0; rc == VCT_OK && slot < tb.slots; ++slot)
+        memcpy(records + 4 * INSTANCE_FLOAT4S * slot,
+               by_instance + 4 * INSTANCE_FLOAT4S * items[tb.order[slot]].instance,
+               16ull * INSTANCE_FLOAT4S);
+    free(order);
+    free(items);
+    free(by_instance);
+    free(tb.order);
+    if (rc != VCT_OK) {
+        free(records);
+        return rc;
+    }
+    *records_out = records;
+    return VCT_OK;
+}
+
+/* The instances buffer made again from records (their count may change). */
+static int instances_upload(vct_bvh2 *b, const float *records, vct_error *err) {
+    vct_buffer_release(b->ctx, b->instances);
+    b->instances =
+        vct_buffer_create(b->ctx, STAGE, "instances", 16ull * INSTANCE_FLOAT4S * b->instance_count,
+                          CL_MEM_READ_ONLY, records, err);
+    return b->instances ? VCT_OK : (int)err->status;
+}
+
+int vct_bvh2_move(vct_context *ctx, vct_bvh2 *b, const vct_scene *s, vct_error *err) {
+    if (s->instance_count > b->top_cap || s->triangle_count != b->triangle_count ||
+        !vct_instances_consistent(s))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: the scene gained instances or triangles, or its positions are not "
+                        "its instances': build the structure again",
+                        STAGE);
+    vct_stage_begin(ctx, STAGE);
+    float *top = calloc(b->top_cap, 128), *records = NULL;
+    cl_mem vertices = NULL;
+    int rc = top ? vct_tri_vertices_upload(ctx, s, STAGE, &vertices, err)
+                 : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    if (rc == VCT_OK)
+        rc = place_all(b, s, top, &records, err);
+    if (rc == VCT_OK && b->top_nodes)
+        rc = vct_buffer_write(ctx, STAGE, b->nodes, 0, 128ull * b->top_nodes, top, err);
+    if (rc == VCT_OK)
+        rc = instances_upload(b, records, err);
+    if (rc == VCT_OK) {
+        vct_buffer_release(ctx, b->tri_vertices);
+        b->tri_vertices = vertices;
+        vertices = NULL;
+    }
+    vct_buffer_release(ctx, vertices);
+    free(top);
     free(records);
+    vct_stage_end(ctx);
     return rc;
 }
 
 vct_bvh2 *vct_bvh2_build(vct_context *ctx, const vct_scene *s, vct_bvh_builder builder,
                          vct_error *err) {
     vct_bvh2 *b = calloc(1, sizeof *b);
-    mesh_tree *trees = calloc(s->mesh_count + 1, sizeof *trees);
-    placed *items = calloc(s->instance_count + 1, sizeof *items);
-    float *records = calloc(4ull * INSTANCE_FLOAT4S * (s->instance_count + 1), sizeof(float));
     uint8_t *used = calloc(s->mesh_count + 1, 1);
-    top_build tb = {NULL, 0, 0, 0, items, calloc(s->instance_count + 1, sizeof(uint32_t)), 0, 1};
-    tb.nodes = calloc(s->instance_count + 1, 128); /* n leaves need at most n - 1 nodes */
-    int rc = b && trees && items && records && used && tb.order && tb.nodes
-                 ? VCT_OK
-                 : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    int rc = b && used ? VCT_OK : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    if (rc == VCT_OK) {
+        b->trees = calloc(s->mesh_count + 1, sizeof *b->trees);
+        rc = b->trees ? VCT_OK : vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    }
     vct_scene_frame f;
     vct_scene_frame_of(s, &f);
     if (rc == VCT_OK) {
@@ -303,6 +368,9 @@ vct_bvh2 *vct_bvh2_build(vct_context *ctx, const vct_scene *s, vct_bvh_builder b
         b->tolerance = f.tolerance;
         b->triangle_count = s->triangle_count;
         b->mesh_count = s->mesh_count;
+        /* room for the largest top level the instances can need, so that
+         * moving them rewrites it in place */
+        b->top_cap = s->instance_count ? s->instance_count : 1;
         rc = vct_tri_vertices_upload(ctx, s, STAGE, &b->tri_vertices, err);
     }
     for (uint32_t i = 0; rc == VCT_OK && i < s->instance_count; ++i)
@@ -311,87 +379,50 @@ vct_bvh2 *vct_bvh2_build(vct_context *ctx, const vct_scene *s, vct_bvh_builder b
     for (uint32_t m = 0; rc == VCT_OK && m < s->mesh_count; ++m) {
         if (!used[m] || s->meshes[m].triangle_count == 0)
             continue;
-        rc = mesh_tree_build(ctx, &s->meshes[m], builder, &trees[m], err);
-        trees[m].root = b->mesh_nodes;
-        trees[m].first_id = b->mesh_triangles;
-        b->mesh_nodes += trees[m].node_count;
+        mesh_tree *t = &b->trees[m];
+        rc = mesh_tree_build(ctx, &s->meshes[m], builder, t, err);
+        t->root = b->mesh_nodes;
+        t->first_id = b->mesh_triangles;
+        b->mesh_nodes += t->node_count;
         b->mesh_triangles += s->meshes[m].triangle_count;
-        if (trees[m].depth > b->depth)
-            b->depth = trees[m].depth;
+        if (t->depth > b->depth)
+            b->depth = t->depth;
     }
-    uint32_t n = 0;
-    for (uint32_t i = 0; rc == VCT_OK && i < s->instance_count; ++i) {
-        const vct_instance *in = &s->instances[i];
-        const mesh_tree *t = &trees[in->mesh];
+    float *nodes = rc == VCT_OK ? calloc(b->top_cap + b->mesh_nodes + 1ull, 128) : NULL;
+    uint32_t *ids = rc == VCT_OK ? malloc(4ull * (b->mesh_triangles + 1)) : NULL;
+    float *records = NULL;
+    if (rc == VCT_OK && (!nodes || !ids))
+        rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
+    if (rc == VCT_OK)
+        rc = place_all(b, s, nodes, &records, err);
+    for (uint32_t m = 0; rc == VCT_OK && m < s->mesh_count; ++m) {
+        const mesh_tree *t = &b->trees[m];
         if (!t->node_count)
             continue;
-        double inv[12];
-        if (!invert(in->transform, inv))
-            continue; /* flattened to zero area: never hit, as a degenerate triangle */
-        float padding[2];
-        items[n].instance = i;
-        place(in, t, f.tolerance, &items[n], padding);
-        float *r = records + 4 * INSTANCE_FLOAT4S * i;
-        for (int k = 0; k < 12; ++k)
-            r[k] = (float)inv[k];
-        const uint32_t at[4] = {0, t->first_id, in->first_triangle, 0}; /* root set below */
-        memcpy(r + 12, at, sizeof at);
-        r[16] = padding[0];
-        r[17] = padding[1];
-        ++n;
+        memcpy(nodes + NODE_FLOATS * (b->top_cap + t->root), t->nodes, 128ull * t->node_count);
+        memcpy(ids + t->first_id, t->tri_ids, 4ull * s->meshes[m].triangle_count);
     }
-    if (rc == VCT_OK && n) {
-        float lo[3], hi[3];
-        uint32_t *order = calloc(n, sizeof *order);
-        for (uint32_t k = 0; k < n; ++k)
-            order[k] = k;
-        if (!order)
-            rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
-        else if (n == 1) {
-            /* a root node above the lone leaf, as traversal starts at node 0 */
-            tb.count = 1;
-            const uint32_t leaf = top_subtree(&tb, order, 1, 1, lo, hi);
-            float *out = tb.nodes;
-            for (int k = 0; k < 3; ++k)
-                for (int c = 0; c < 4; ++c) {
-                    out[8 * k + c] = c ? INFINITY : lo[k];
-                    out[8 * k + 4 + c] = c ? -INFINITY : hi[k];
-                }
-            const uint32_t refs[8] = {leaf,      EMPTY_REF, EMPTY_REF, EMPTY_REF,
-                                      EMPTY_REF, EMPTY_REF, EMPTY_REF, EMPTY_REF};
-            memcpy(out + 24, refs, sizeof refs);
-        } else {
-            top_subtree(&tb, order, n, 1, lo, hi);
-        }
-        free(order);
-        if (!tb.sorted)
-            rc = vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
-        b->top_nodes = tb.count;
-        b->instance_count = tb.slots;
-        if (tb.depth + b->depth > VCT_BVH_MAX_DEPTH)
-            rc = vct_fail(err, VCT_ERR_OVERFLOW,
-                          "%s: the two levels are %u deep, beyond the %d traversal keeps: use "
-                          "--accel grid",
-                          STAGE, tb.depth + b->depth, VCT_BVH_MAX_DEPTH);
+    if (rc == VCT_OK) {
+        b->nodes =
+            vct_buffer_create(ctx, STAGE, "two-level BVH nodes",
+                              128ull * (b->top_cap + b->mesh_nodes), CL_MEM_READ_WRITE, nodes, err);
+        b->tri_ids = b->nodes
+                         ? vct_buffer_create(ctx, STAGE, "meshes' sorted triangles",
+                                             4ull * b->mesh_triangles, CL_MEM_READ_ONLY, ids, err)
+                         : NULL;
+        rc = b->tri_ids ? instances_upload(b, records, err) : (int)err->status;
     }
-    /* mesh roots, now that the top level's size is known */
-    for (uint32_t i = 0; rc == VCT_OK && i < s->instance_count; ++i) {
-        const mesh_tree *t = &trees[s->instances[i].mesh];
-        const uint32_t root = b->top_nodes + t->root;
-        memcpy(records + 4 * INSTANCE_FLOAT4S * i + 12, &root, sizeof root);
+    /* the meshes' nodes live on the device now; their boxes and places stay */
+    for (uint32_t m = 0; b && b->trees && m < s->mesh_count; ++m) {
+        free(b->trees[m].nodes);
+        free(b->trees[m].tri_ids);
+        b->trees[m].nodes = NULL;
+        b->trees[m].tri_ids = NULL;
     }
-    if (rc == VCT_OK)
-        rc = upload(b, s, trees, &tb, records, err);
-    for (uint32_t m = 0; trees && m < s->mesh_count; ++m) {
-        free(trees[m].nodes);
-        free(trees[m].tri_ids);
-    }
-    free(trees);
-    free(items);
+    free(nodes);
+    free(ids);
     free(records);
     free(used);
-    free(tb.order);
-    free(tb.nodes);
     if (rc != VCT_OK) {
         vct_bvh2_free(b);
         return NULL;

@@ -126,9 +126,8 @@ int vct_tri_vertices_upload(vct_context *ctx, const vct_scene *s, const char *st
     cl_mem tri = pos ? vct_buffer_create(ctx, stage, "triangle indices", 12ull * (n ? n : 1),
                                          CL_MEM_READ_ONLY, NULL, err)
                      : NULL;
-    cl_mem slots = tri ? vct_buffer_create(ctx, stage, "alpha mask slots",
-                                           has_masks ? 4ull * n : 4, CL_MEM_READ_ONLY,
-                                           has_masks ? mb.slot : NULL, err)
+    cl_mem slots = tri ? vct_buffer_create(ctx, stage, "alpha mask slots", has_masks ? 4ull * n : 4,
+                                           CL_MEM_READ_ONLY, has_masks ? mb.slot : NULL, err)
                        : NULL;
     *out = slots ? vct_buffer_create(ctx, stage, "triangle vertices",
                                      48ull * (n ? n : 1) + 16ull * mb.float4s, CL_MEM_READ_WRITE,

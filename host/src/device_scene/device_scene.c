@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "accel/accel.h"
 #include "device_scene/scene_digest.h"
 #include "light/emitters.h"
 #include "conetrace/vct_relight.h"
@@ -83,10 +84,23 @@ int vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
     const int masks_changed = now.masks != ds->digest.masks;
     ds->digest = now;
     vct_context *ctx = ds->ctx;
-    const unsigned shape = VCT_CHANGED_GEOMETRY | VCT_CHANGED_MATERIALS | VCT_CHANGED_TEXTURES;
-    if (changed & (VCT_CHANGED_GEOMETRY | VCT_CHANGED_MATERIALS))
+    const unsigned shape =
+        VCT_CHANGED_GEOMETRY | VCT_CHANGED_POSITIONS | VCT_CHANGED_MATERIALS | VCT_CHANGED_TEXTURES;
+    if (changed & (VCT_CHANGED_GEOMETRY | VCT_CHANGED_POSITIONS | VCT_CHANGED_MATERIALS))
         vct_emitters_release_resident(ctx, &ds->resident);
-    if ((changed & VCT_CHANGED_GEOMETRY) || masks_changed) {
+    int rc = VCT_OK;
+    if (ds->accel && !(changed & VCT_CHANGED_GEOMETRY) && !masks_changed &&
+        (changed & VCT_CHANGED_POSITIONS) && ds->accel->bvh2) {
+        /* instances moved, meshes kept: the top level again */
+        const uint64_t before = ctx->transfers.uploaded;
+        rc = vct_accel_refit(ctx, ds->accel, ds->scene, err);
+        ds->stats.scene_bytes += ctx->transfers.uploaded - before;
+        ++ds->stats.accel_moves;
+    } else if ((changed & (VCT_CHANGED_GEOMETRY | VCT_CHANGED_POSITIONS)) || masks_changed) {
+        vct_accel_release(ds->accel);
+        ds->accel = NULL;
+    }
+    if (rc != VCT_OK) { /* built again at the next render */
         vct_accel_release(ds->accel);
         ds->accel = NULL;
     }

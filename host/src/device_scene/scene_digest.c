@@ -19,11 +19,32 @@ static uint64_t geometry(XXH3_state_t *h, const vct_scene *s) {
     XXH3_64bits_reset(h);
     add_u32(h, s->vertex_count);
     add_u32(h, s->triangle_count);
-    add(h, s->positions, 12ull * s->vertex_count);
     add(h, s->triangles, 12ull * s->triangle_count);
     add(h, s->triangle_material, 4ull * s->triangle_count);
     add_u32(h, s->uvs != NULL);
     add(h, s->uvs, 8ull * s->vertex_count);
+    add_u32(h, s->mesh_count);
+    for (uint32_t m = 0; m < s->mesh_count; ++m) {
+        const vct_mesh *x = &s->meshes[m];
+        add_u32(h, x->vertex_count);
+        add_u32(h, x->triangle_count);
+        add(h, x->positions, 12ull * x->vertex_count);
+        add(h, x->triangles, 12ull * x->triangle_count);
+    }
+    add_u32(h, s->instance_count);
+    for (uint32_t i = 0; i < s->instance_count; ++i) {
+        add_u32(h, s->instances[i].mesh);
+        add_u32(h, s->instances[i].first_triangle);
+        add_u32(h, s->instances[i].first_vertex);
+    }
+    return XXH3_64bits_digest(h);
+}
+
+static uint64_t positions(XXH3_state_t *h, const vct_scene *s) {
+    XXH3_64bits_reset(h);
+    add(h, s->positions, 12ull * s->vertex_count);
+    for (uint32_t i = 0; i < s->instance_count; ++i)
+        add(h, s->instances[i].transform, sizeof s->instances[i].transform);
     return XXH3_64bits_digest(h);
 }
 
@@ -63,6 +84,7 @@ void vct_scene_digest_make(const vct_scene *s, vct_scene_digest *d) {
     if (!h) /* no memory: digests that never match, so everything is rebuilt */
         return;
     d->geometry = geometry(h, s);
+    d->positions = positions(h, s);
     d->textures = textures(h, s);
     d->materials = XXH3_64bits(s->materials, sizeof *s->materials * s->material_count);
     d->masks = masks(h, s, d->textures);
@@ -85,5 +107,6 @@ unsigned vct_scene_digest_changes(const vct_scene_digest *a, const vct_scene_dig
            (a->materials != b->materials ? VCT_CHANGED_MATERIALS : 0u) |
            (a->textures != b->textures ? VCT_CHANGED_TEXTURES : 0u) |
            (a->lights != b->lights ? VCT_CHANGED_LIGHTS : 0u) |
+           (a->positions != b->positions ? VCT_CHANGED_POSITIONS : 0u) |
            (a->camera != b->camera ? VCT_CHANGED_CAMERA : 0u);
 }

@@ -8,7 +8,9 @@
 #include "vct/scene.h"
 
 typedef struct vct_scene_digest {
-    uint64_t geometry;  /* positions, triangles, texture coordinates, triangle materials */
+    uint64_t geometry;  /* triangles, texture coordinates, triangle materials; the meshes and
+                           which mesh each instance places where in the flat arrays */
+    uint64_t positions; /* the flat positions and the instances' transforms */
     uint64_t materials; /* the material table */
     uint64_t masks;     /* what the alpha masks read: mask fields, and texels when masked */
     uint64_t textures;  /* every texture's size and texels */

@@ -1,5 +1,5 @@
-/* Meshes and instances: validation, moving an instance, the identity
- * instance of a scene built from arrays. */
+/* Meshes and instances: validation, consistency with the flat arrays, the
+ * identity instance of a scene built from arrays. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,7 +12,7 @@ void vct_instance_transform_point(const float m[12], const float *p, float *out)
                          (double)m[4 * r + 2] * p[2] + m[4 * r + 3]);
 }
 
-static const char *source_of(const vct_scene *s) {
+const char *vct_scene_name(const vct_scene *s) {
     return s->source[0] ? s->source : "(arrays)";
 }
 
@@ -21,18 +21,18 @@ int vct_instances_validate(const vct_scene *s, vct_error *err) {
         const vct_instance *in = &s->instances[i];
         if (in->mesh >= s->mesh_count)
             return vct_fail(err, VCT_ERR_INPUT, "scene %s: instance %u places mesh %u of %u",
-                            source_of(s), i, in->mesh, s->mesh_count);
+                            vct_scene_name(s), i, in->mesh, s->mesh_count);
         const vct_mesh *m = &s->meshes[in->mesh];
         if ((uint64_t)in->first_triangle + m->triangle_count > s->triangle_count ||
             (uint64_t)in->first_vertex + m->vertex_count > s->vertex_count)
             return vct_fail(err, VCT_ERR_INPUT,
                             "scene %s: instance %u's triangles or vertices lie past the scene's",
-                            source_of(s), i);
+                            vct_scene_name(s), i);
         for (int k = 0; k < 12; ++k)
             if (!isfinite(in->transform[k]))
                 return vct_fail(err, VCT_ERR_INPUT,
                                 "scene %s: instance %u's transform has a value that is not finite",
-                                source_of(s), i);
+                                vct_scene_name(s), i);
         for (uint32_t t = 0; t < m->triangle_count; ++t)
             for (int k = 0; k < 3; ++k)
                 if (m->triangles[3 * t + k] >= m->vertex_count ||
@@ -40,9 +40,23 @@ int vct_instances_validate(const vct_scene *s, vct_error *err) {
                         in->first_vertex + m->triangles[3 * t + k])
                     return vct_fail(err, VCT_ERR_INPUT,
                                     "scene %s: instance %u's triangle %u is not its mesh's",
-                                    source_of(s), i, t);
+                                    vct_scene_name(s), i, t);
     }
     return VCT_OK;
+}
+
+int vct_instances_consistent(const vct_scene *s) {
+    for (uint32_t i = 0; i < s->instance_count; ++i) {
+        const vct_instance *in = &s->instances[i];
+        const vct_mesh *m = &s->meshes[in->mesh];
+        for (uint32_t v = 0; v < m->vertex_count; ++v) {
+            float p[3];
+            vct_instance_transform_point(in->transform, &m->positions[3 * v], p);
+            if (memcmp(p, &s->positions[3ull * (in->first_vertex + v)], sizeof p) != 0)
+                return 0;
+        }
+    }
+    return 1;
 }
 
 int vct_instances_shared(const vct_scene *s) {
@@ -52,97 +66,6 @@ int vct_instances_shared(const vct_scene *s) {
         shared = seen[s->instances[i].mesh]++ != 0;
     free(seen);
     return shared;
-}
-
-int vct_scene_set_instance_transform(vct_scene *s, uint32_t instance, const float transform[12],
-                                     vct_error *err) {
-    if (instance >= s->instance_count)
-        return vct_fail(err, VCT_ERR_INPUT, "scene %s: no instance %u (the scene has %u)",
-                        source_of(s), instance, s->instance_count);
-    for (int k = 0; k < 12; ++k)
-        if (!isfinite(transform[k]))
-            return vct_fail(err, VCT_ERR_INPUT,
-                            "scene %s: instance %u: transform value %d is %g, not finite",
-                            source_of(s), instance, k, transform[k]);
-    vct_instance *in = &s->instances[instance];
-    const vct_mesh *m = &s->meshes[in->mesh];
-    float *moved = malloc(12ull * (m->vertex_count ? m->vertex_count : 1));
-    if (!moved)
-        return vct_fail(err, VCT_ERR_MEMORY, "scene: out of host memory");
-    for (uint32_t v = 0; v < m->vertex_count; ++v) {
-        vct_instance_transform_point(transform, &m->positions[3 * v], &moved[3 * v]);
-        if (!isfinite(moved[3 * v]) || !isfinite(moved[3 * v + 1]) || !isfinite(moved[3 * v + 2])) {
-            free(moved);
-            return vct_fail(err, VCT_ERR_INPUT,
-                            "scene %s: instance %u: the transform takes vertex %u beyond float "
-                            "range",
-                            source_of(s), instance, v);
-        }
-    }
-    memcpy(&s->positions[3ull * in->first_vertex], moved, 12ull * m->vertex_count);
-    memcpy(in->transform, transform, sizeof in->transform);
-    free(moved);
-    return vct_scene_validate(s, err);
-}
-
-/* Grows *p to hold `count` elements of `size` bytes. */
-static int grow_to(void **p, size_t count, size_t size) {
-    void *q = realloc(*p, count * size + 16);
-    if (!q)
-        return 0;
-    *p = q;
-    return 1;
-}
-
-int vct_scene_add_instance(vct_scene *s, uint32_t mesh, const float transform[12], vct_error *err) {
-    const vct_instance *model = NULL;
-    for (uint32_t i = 0; i < s->instance_count && !model; ++i)
-        if (s->instances[i].mesh == mesh)
-            model = &s->instances[i];
-    if (mesh >= s->mesh_count || !model)
-        return vct_fail(err, VCT_ERR_INPUT, "scene %s: no placed mesh %u (the scene has %u)",
-                        source_of(s), mesh, s->mesh_count);
-    const vct_mesh *m = &s->meshes[mesh];
-    const uint64_t vertices = (uint64_t)s->vertex_count + m->vertex_count,
-                   triangles = (uint64_t)s->triangle_count + m->triangle_count;
-    if (vertices > UINT32_MAX / 2 || triangles > UINT32_MAX / 4)
-        return vct_fail(err, VCT_ERR_INPUT, "scene %s: more triangles than vct indexes",
-                        source_of(s));
-    const vct_instance placed = *model; /* the arrays below may move it */
-    if (!grow_to((void **)&s->positions, vertices, 12) ||
-        !grow_to((void **)&s->triangles, triangles, 12) ||
-        !grow_to((void **)&s->triangle_material, triangles, 4) ||
-        (s->uvs && !grow_to((void **)&s->uvs, vertices, 8)) ||
-        !grow_to((void **)&s->instances, s->instance_count + 1ull, sizeof(vct_instance)))
-        return vct_fail(err, VCT_ERR_MEMORY, "scene: out of host memory");
-    vct_instance *in = &s->instances[s->instance_count];
-    memset(in, 0, sizeof *in);
-    in->mesh = mesh;
-    in->first_triangle = s->triangle_count;
-    in->first_vertex = s->vertex_count;
-    memcpy(in->transform, placed.transform, sizeof in->transform);
-    memcpy(&s->positions[3ull * in->first_vertex], &s->positions[3ull * placed.first_vertex],
-           12ull * m->vertex_count);
-    if (s->uvs)
-        memcpy(&s->uvs[2ull * in->first_vertex], &s->uvs[2ull * placed.first_vertex],
-               8ull * m->vertex_count);
-    for (uint32_t t = 0; t < m->triangle_count; ++t) {
-        for (int k = 0; k < 3; ++k)
-            s->triangles[3ull * (in->first_triangle + t) + k] =
-                in->first_vertex + m->triangles[3 * t + k];
-        s->triangle_material[in->first_triangle + t] =
-            s->triangle_material[placed.first_triangle + t];
-    }
-    s->vertex_count = (uint32_t)vertices;
-    s->triangle_count = (uint32_t)triangles;
-    s->instance_count++;
-    const int rc = vct_scene_set_instance_transform(s, s->instance_count - 1, transform, err);
-    if (rc != VCT_OK) { /* take it back */
-        s->instance_count--;
-        s->vertex_count = in->first_vertex;
-        s->triangle_count = in->first_triangle;
-    }
-    return rc;
 }
 
 int vct_instances_identity(vct_scene *s, vct_error *err) {

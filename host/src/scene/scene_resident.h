@@ -7,12 +7,13 @@
 #include "scene/scene_device.h"
 
 /* What changed in a scene since its last commit (VCT_CHANGED_* bits). */
-#define VCT_CHANGED_GEOMETRY 1u  /* positions, triangles, uvs, triangle materials */
+#define VCT_CHANGED_GEOMETRY 1u  /* triangles, uvs, triangle materials, meshes, instances */
 #define VCT_CHANGED_MATERIALS 2u /* the material table */
 #define VCT_CHANGED_TEXTURES 4u  /* texels */
 #define VCT_CHANGED_LIGHTS 8u    /* the light list and the ambient light */
 #define VCT_CHANGED_CAMERA 16u
-#define VCT_CHANGED_ALL 31u
+#define VCT_CHANGED_POSITIONS 32u /* where the vertices are: instances moved */
+#define VCT_CHANGED_ALL 63u
 
 struct vct_emitters;
 
