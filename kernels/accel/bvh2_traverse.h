@@ -20,10 +20,10 @@
 #define BVH2_INSTANCE_FLOAT4S 5
 
 typedef struct accel_view {
-    vct_accel_desc desc;                 /* res.x: top-level nodes (0: nothing to hit) */
-    __global const float4 *nodes;        /* BVH_NODE_FLOAT4S each: the top level's, then the meshes' */
-    __global const float4 *instances;    /* BVH2_INSTANCE_FLOAT4S each, in the top level's order */
-    __global const uint *tri_ids;        /* every mesh's sorted triangles, as indices in the mesh */
+    vct_accel_desc desc;              /* res.x: top-level nodes (0: nothing to hit) */
+    __global const float4 *nodes;     /* BVH_NODE_FLOAT4S each: the top level's, then the meshes' */
+    __global const float4 *instances; /* BVH2_INSTANCE_FLOAT4S each, in the top level's order */
+    __global const uint *tri_ids;     /* every mesh's sorted triangles, as indices in the mesh */
     __global const float4 *tri_vertices; /* 3 per triangle, world space, in the scene's order */
 } accel_view;
 
@@ -41,16 +41,16 @@ __attribute__((noinline)) int bvh2_instance(const accel_view *g, __global const 
     const float4 r0 = inst[0], r1 = inst[1], r2 = inst[2];
     const uint4 at = as_uint4(inst[3]);
     const float4 padding = inst[4];
-    const float3 o = (float3)(dot(r0.xyz, org) + r0.w, dot(r1.xyz, org) + r1.w,
-                              dot(r2.xyz, org) + r2.w);
+    const float3 o =
+        (float3)(dot(r0.xyz, org) + r0.w, dot(r1.xyz, org) + r1.w, dot(r2.xyz, org) + r2.w);
     const float3 d = (float3)(dot(r0.xyz, dir), dot(r1.xyz, dir), dot(r2.xyz, dir));
     const float3 ao = fabs(org);
     const float pad = padding.x * (fmax(ao.x, fmax(ao.y, ao.z)) + padding.y);
     const float3 inv = select(1.0f / d, copysign((float3)(1e30f), d), fabs(d) < 1e-30f);
     const float3 inv_far = inv * (1.0f + 4.0f * FLT_EPSILON);
     /* near planes moved towards the ray's origin by the pad, far planes away */
-    const float3 near_pad = (float3)(signbit(d.x) ? pad : -pad, signbit(d.y) ? pad : -pad,
-                                     signbit(d.z) ? pad : -pad);
+    const float3 near_pad =
+        (float3)(signbit(d.x) ? pad : -pad, signbit(d.y) ? pad : -pad, signbit(d.z) ? pad : -pad);
     const int nx = signbit(d.x) ? 1 : 0, ny = signbit(d.y) ? 3 : 2, nz = signbit(d.z) ? 5 : 4;
     uint stack_ref[BVH_STACK];
     float stack_t[BVH_STACK];
@@ -83,14 +83,15 @@ __attribute__((noinline)) int bvh2_instance(const accel_view *g, __global const 
                                       *v1 = g->tri_vertices + 3 * ids[1],
                                       *v2 = g->tri_vertices + 3 * ids[2],
                                       *v3 = g->tri_vertices + 3 * ids[3];
-                const tri4_hits h = bvh_leaf4(shear, v0[0], v0[1], v0[2], v1[0], v1[1], v1[2], v2[0],
-                                              v2[1], v2[2], v3[0], v3[1], v3[2], tmin, *best);
+                const tri4_hits h =
+                    bvh_leaf4(shear, v0[0], v0[1], v0[2], v1[0], v1[1], v1[2], v2[0], v2[1], v2[2],
+                              v3[0], v3[1], v3[2], tmin, *best);
                 if (!any(h.hit))
                     continue;
                 const int4 masks = as_int4((float4)(v0[0].w, v1[0].w, v2[0].w, v3[0].w));
                 if (bvh_take_hits(g->tri_vertices, &h,
-                                  (int4)((int)ids[0], (int)ids[1], (int)ids[2], (int)ids[3]),
-                                  masks, any_hit, best, found, hit))
+                                  (int4)((int)ids[0], (int)ids[1], (int)ids[2], (int)ids[3]), masks,
+                                  any_hit, best, found, hit))
                     return 1;
             }
         }
@@ -125,16 +126,11 @@ __attribute__((noinline)) int accel_trace(const accel_view *g, float3 org, float
     for (;;) {
         if (!(ref & BVH_LEAF)) {
             __global const float4 *node = g->nodes + BVH_NODE_FLOAT4S * ref;
-            const float4 t0x = bvh_slab(node[nx], inv.x, org_inv.x),
-                         t1x = bvh_slab(node[nx ^ 1], inv_far.x, org_inv_far.x);
-            const float4 t0y = bvh_slab(node[ny], inv.y, org_inv.y),
-                         t1y = bvh_slab(node[ny ^ 1], inv_far.y, org_inv_far.y);
-            const float4 t0z = bvh_slab(node[nz], inv.z, org_inv.z),
-                         t1z = bvh_slab(node[nz ^ 1], inv_far.z, org_inv_far.z);
-            const float4 enter = fmax(fmax(t0x, t0y), fmax(t0z, (float4)(tmin)));
-            const float4 leave = fmin(fmin(t1x, t1y), fmin(t1z, (float4)(best)));
-            if (bvh_descend(enter, enter <= leave, as_uint4(node[BVH_NODE_REFS]), &ref, stack_ref,
-                            stack_t, &sp))
+            float4 enter;
+            const int4 hit =
+                bvh_boxes(node, inv, inv_far, org_inv, org_inv_far, nx, ny, nz, tmin, best, &enter);
+            if (bvh_descend(enter, hit, as_uint4(node[BVH_NODE_REFS]), &ref, stack_ref, stack_t,
+                            &sp))
                 continue;
         } else {
             const uint first = ref & BVH_LEAF_FIRST_MASK;

@@ -60,15 +60,9 @@ __attribute__((noinline)) int accel_trace(const accel_view *g, float3 org, float
     for (;;) {
         if (!(ref & BVH_LEAF)) {
             __global const float4 *node = g->nodes + BVH_NODE_FLOAT4S * ref;
-            const float4 t0x = bvh_slab(node[nx], inv.x, org_inv.x),
-                         t1x = bvh_slab(node[nx ^ 1], inv_far.x, org_inv_far.x);
-            const float4 t0y = bvh_slab(node[ny], inv.y, org_inv.y),
-                         t1y = bvh_slab(node[ny ^ 1], inv_far.y, org_inv_far.y);
-            const float4 t0z = bvh_slab(node[nz], inv.z, org_inv.z),
-                         t1z = bvh_slab(node[nz ^ 1], inv_far.z, org_inv_far.z);
-            const float4 enter = fmax(fmax(t0x, t0y), fmax(t0z, (float4)(tmin)));
-            const float4 leave = fmin(fmin(t1x, t1y), fmin(t1z, (float4)(best)));
-            const int4 hit = enter <= leave;
+            float4 enter;
+            const int4 hit =
+                bvh_boxes(node, inv, inv_far, org_inv, org_inv_far, nx, ny, nz, tmin, best, &enter);
             if (bvh_descend(enter, hit, as_uint4(node[BVH_NODE_REFS]), &ref, stack_ref, stack_t,
                             &sp))
                 continue;
@@ -92,8 +86,8 @@ __attribute__((noinline)) int accel_trace(const accel_view *g, float3 org, float
                 if (!any(h.hit))
                     continue;
                 if (bvh_take_hits(g->tri_vertices, &h, as_int4((float4)(a0.w, a1.w, a2.w, a3.w)),
-                                  as_int4((float4)(b0.w, b1.w, b2.w, b3.w)), any_hit, &best,
-                                  &found, hit))
+                                  as_int4((float4)(b0.w, b1.w, b2.w, b3.w)), any_hit, &best, &found,
+                                  hit))
                     return 1;
             }
         }

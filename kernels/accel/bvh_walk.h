@@ -26,6 +26,24 @@
 #define bvh_slab(a, b, c) mad((a), (b), -(c))
 #endif
 
+/* A ray's slab test against a node's four child boxes (rows nx, ny, nz the
+ * near planes; inv_far and org_inv_far widened for the far planes): the
+ * entry distances in *enter, and which boxes it meets within (tmin, best]. */
+__attribute__((always_inline)) inline int4 bvh_boxes(__global const float4 *node, float3 inv,
+                                                     float3 inv_far, float3 org_inv,
+                                                     float3 org_inv_far, int nx, int ny, int nz,
+                                                     float tmin, float best, float4 *enter) {
+    const float4 t0x = bvh_slab(node[nx], inv.x, org_inv.x),
+                 t1x = bvh_slab(node[nx ^ 1], inv_far.x, org_inv_far.x);
+    const float4 t0y = bvh_slab(node[ny], inv.y, org_inv.y),
+                 t1y = bvh_slab(node[ny ^ 1], inv_far.y, org_inv_far.y);
+    const float4 t0z = bvh_slab(node[nz], inv.z, org_inv.z),
+                 t1z = bvh_slab(node[nz ^ 1], inv_far.z, org_inv_far.z);
+    *enter = fmax(fmax(t0x, t0y), fmax(t0z, (float4)(tmin)));
+    const float4 leave = fmin(fmin(t1x, t1y), fmin(t1z, (float4)(best)));
+    return *enter <= leave;
+}
+
 /* Swaps (a, ra) and (b, rb) when b is nearer. */
 inline void bvh_order(float *a, uint *ra, float *b, uint *rb) {
     if (*b < *a) {
@@ -41,8 +59,8 @@ inline void bvh_order(float *a, uint *ra, float *b, uint *rb) {
 /* The children a node's slab test met (hit, at distances enter): *ref
  * takes the nearest, the stack the others, farthest first so that they
  * come off nearest first. 0 when none was met. */
-inline int bvh_descend(float4 enter, int4 hit, uint4 refs, uint *ref, uint *stack_ref,
-                       float *stack_t, int *sp) {
+__attribute__((always_inline)) inline int bvh_descend(float4 enter, int4 hit, uint4 refs, uint *ref,
+                                                      uint *stack_ref, float *stack_t, int *sp) {
     const int count = -(hit.x + hit.y + hit.z + hit.w);
     if (count == 0)
         return 0;
@@ -73,9 +91,10 @@ inline int bvh_descend(float4 enter, int4 hit, uint4 refs, uint *ref, uint *stac
 }
 
 /* The watertight test of four triangles (vertices a, b, c of each) at once. */
-inline tri4_hits bvh_leaf4(const ray_shear *shear, float4 a0, float4 b0, float4 c0, float4 a1,
-                           float4 b1, float4 c1, float4 a2, float4 b2, float4 c2, float4 a3,
-                           float4 b3, float4 c3, float tmin, float best) {
+__attribute__((always_inline)) inline tri4_hits
+bvh_leaf4(const ray_shear *shear, float4 a0, float4 b0, float4 c0, float4 a1, float4 b1, float4 c1,
+          float4 a2, float4 b2, float4 c2, float4 a3, float4 b3, float4 c3, float tmin,
+          float best) {
     return ray_triangle4(shear, (float4)(a0.x, a1.x, a2.x, a3.x), (float4)(a0.y, a1.y, a2.y, a3.y),
                          (float4)(a0.z, a1.z, a2.z, a3.z), (float4)(b0.x, b1.x, b2.x, b3.x),
                          (float4)(b0.y, b1.y, b2.y, b3.y), (float4)(b0.z, b1.z, b2.z, b3.z),
@@ -86,8 +105,10 @@ inline tri4_hits bvh_leaf4(const ray_shear *shear, float4 a0, float4 b0, float4 
 /* Four triangles' hits (ids and alpha-mask slots per lane) taken in lane
  * order, as one at a time would take them: each one no farther than the
  * best so far and not masked out becomes the hit. 1 when any_hit found one. */
-inline int bvh_take_hits(__global const float4 *tri_vertices, const tri4_hits *h, int4 ids,
-                         int4 masks, int any_hit, float *best, int *found, hit_record *hit) {
+__attribute__((always_inline)) inline int bvh_take_hits(__global const float4 *tri_vertices,
+                                                        const tri4_hits *h, int4 ids, int4 masks,
+                                                        int any_hit, float *best, int *found,
+                                                        hit_record *hit) {
     for (int k = 0; k < 4; ++k) {
         const float t = lane_get(h->t, k);
         if (lane_geti(h->hit, k) && t <= *best &&

@@ -79,6 +79,8 @@ VARIANTS = {
                                   "-DVCT_CONE_NEAREST_LEVEL", "-DVCT_CAUSTICS"),
                              ("-DVCT_AO", "-DVCT_SPARSE_DIFFUSE", "-DVCT_CONE_PROBE")],
     "voxel/bricks.cl": [(), ("-DVCT_ANISOTROPIC",)],
+    "render/raycast.cl": [(), ("-DVCT_ACCEL_BVH",), ("-DVCT_ACCEL_BVH2",)],
+    "render/pathtrace.cl": [(), ("-DVCT_ACCEL_BVH2",)],
     "parallel/radix_sort.cl": [(), ("-D", "KEY_T=ulong", "-D", "RADIX_BITS=4", "-D", "WG=64")],
     "parallel/scan.cl": [(), ("-D", "WG=1", "-D", "ITEM_SPAN=1024")],
 }
