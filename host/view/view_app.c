@@ -197,8 +197,6 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     job.voxel_view.level = app->voxel_level;
     /* Photon mapping likewise: one pass per frame. */
     cli_pm_options(&app->opt, &job.pm);
-    job.pm.width = app->width;
-    job.pm.height = app->height;
     job.pm.passes = 1;
     job.pm.progress = 0;
     job.pm.resume = app->pt_spp > 0;

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "vct/debug.h"
 #include "vct/vct.h"
 
 #define CHECK_PI 3.14159265358979323846

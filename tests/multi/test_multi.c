@@ -237,7 +237,7 @@ static void check_slowed(const vct_scene *s) {
     double shares[8];
     for (int frame = 0; frame < 8; ++frame) {
         vct_render_job job = job_of(c, s);
-        job.whitted.width = job.whitted.height = 256; /* work enough to measure */
+        job.width = job.height = 256; /* work enough to measure */
         vct_image two;
         vct_error err = {0};
         REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);

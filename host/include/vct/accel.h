@@ -27,9 +27,6 @@ typedef struct vct_grid_info {
 VCT_API vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *scene, const uint32_t *res,
                                  vct_error *err);
 VCT_API void vct_grid_info_get(const vct_grid *grid, vct_grid_info *info);
-/* Reads back the cell ranges and the sorted triangle list (for tests). */
-VCT_API int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start,
-                          uint32_t *cell_end, uint32_t *tri_ids, vct_error *err);
 VCT_API void vct_grid_release(vct_grid *grid);
 
 typedef enum vct_accel_kind { VCT_ACCEL_BVH = 0, VCT_ACCEL_GRID = 1 } vct_accel_kind;

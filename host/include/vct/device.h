@@ -83,8 +83,6 @@ typedef struct vct_stage_stat {
 
 VCT_API int vct_stats(const vct_context *ctx, const vct_stage_stat **stages);
 VCT_API void vct_stats_reset(vct_context *ctx);
-/* Kernels launched so far by name (for plan tests): count of launches. */
-VCT_API int vct_kernel_launches(const vct_context *ctx, const char *kernel_name);
 
 typedef struct vct_kernel_stat {
     char name[64];

@@ -310,10 +310,12 @@ typedef struct vct_band {
     int first, height;
 } vct_band;
 
-/* One render: the method, what it reads and its options. Only the options
- * of `method` are read. */
+/* One render: the method, the image size, what it reads and its options.
+ * Only the options of `method` are read; their width and height are set
+ * from the job's. */
 typedef struct vct_render_job {
     vct_method method;
+    int width, height; /* the image (or, with a band, the band's rows) */
     const vct_scene *scene;
     const vct_accel *accel;   /* every method but VCT_METHOD_VOXELS */
     const vct_voxels *voxels; /* VCT_METHOD_VCT (may be NULL when the plan reads none), VOXELS */
@@ -352,9 +354,6 @@ typedef struct vct_render_result {
  * depth 16; a BVH, 128^3 voxels with isotropic bricks, VCT_DEFAULT_BOUNCES)
  * at width x height, for `method`. */
 VCT_API vct_render_job vct_render_job_default(vct_method method, int width, int height);
-/* Its image size, whichever method it names, and a new one for that method. */
-VCT_API void vct_render_job_size(const vct_render_job *job, int *width, int *height);
-VCT_API void vct_render_job_set_size(vct_render_job *job, int width, int height);
 VCT_API const char *vct_method_name(vct_method method);
 /* -1 for an unknown name ("vct", "raycast", "pt", "voxels"). */
 VCT_API int vct_method_from_name(const char *name);

@@ -6,6 +6,7 @@
 
 #include "runtime/runtime.h"
 #include "accel/grid.h"
+#include "vct/debug.h"
 #include "accel/tri_vertices.h"
 #include "parallel/parallel.h"
 #include "vct_types.h"

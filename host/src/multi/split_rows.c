@@ -67,7 +67,8 @@ static void render_band(vct_group *g, int i, void *arg) {
     job.accel = g->accel[i];
     job.voxels = g->voxels[i];
     const band drawn = rendered_rows(r, b);
-    vct_render_job_set_size(&job, r->width, drawn.rows);
+    job.width = r->width;
+    job.height = drawn.rows;
     job.band = (vct_band){drawn.first, r->height};
     if (r->sync) {
         g->ctx[i]->band_sync = vct_pass_sync_wait;
@@ -296,8 +297,7 @@ int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *im
                           vct_render_result *result, vct_error *err) {
     vct_render_result sum;
     memset(&sum, 0, sizeof sum);
-    int width, height;
-    vct_render_job_size(job, &width, &height);
+    const int width = job->width, height = job->height;
     if (width <= 0 || height <= 0 || width > 32768 || height > 32768)
         return vct_fail(err, VCT_ERR_INPUT, "render: image size %dx%d is outside 1..32768", width,
                         height);

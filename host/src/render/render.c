@@ -61,6 +61,8 @@ vct_render_job vct_render_job_default(vct_method method, int width, int height) 
     vct_render_job job;
     memset(&job, 0, sizeof job);
     job.method = method;
+    job.width = width;
+    job.height = height;
     job.raycast = vct_render_options_default(width, height);
     job.whitted = vct_whitted_options_default(width, height);
     job.pathtrace = vct_pathtrace_options_default(width, height);
@@ -74,40 +76,14 @@ vct_render_job vct_render_job_default(vct_method method, int width, int height) 
     return job;
 }
 
-/* The job's image size, in its method's options. */
-static int *job_size_fields(vct_render_job *job, int **height) {
-    switch (job->method) {
-    case VCT_METHOD_RAYCAST:
-        *height = &job->raycast.height;
-        return &job->raycast.width;
-    case VCT_METHOD_PATHTRACE:
-        *height = &job->pathtrace.height;
-        return &job->pathtrace.width;
-    case VCT_METHOD_WHITTED:
-        *height = &job->whitted.height;
-        return &job->whitted.width;
-    case VCT_METHOD_PM:
-        *height = &job->pm.height;
-        return &job->pm.width;
-    case VCT_METHOD_VOXELS:
-        *height = &job->voxel_view.height;
-        return &job->voxel_view.width;
-    default:
-        *height = &job->vct.height;
-        return &job->vct.width;
-    }
-}
-
-void vct_render_job_size(const vct_render_job *job, int *width, int *height) {
-    int *h;
-    *width = *job_size_fields((vct_render_job *)job, &h);
-    *height = *h;
-}
-
-void vct_render_job_set_size(vct_render_job *job, int width, int height) {
-    int *h;
-    *job_size_fields(job, &h) = width;
-    *h = height;
+/* The job with every method's options at the job's image size. */
+static vct_render_job sized(const vct_render_job *job) {
+    vct_render_job own = *job;
+    own.raycast.width = own.whitted.width = own.pathtrace.width = own.pm.width = own.vct.width =
+        own.voxel_view.width = job->width;
+    own.raycast.height = own.whitted.height = own.pathtrace.height = own.pm.height =
+        own.vct.height = own.voxel_view.height = job->height;
+    return own;
 }
 
 /* What the job's method reads, present. */
@@ -147,9 +123,10 @@ static int render_vct_job(vct_context *ctx, const vct_render_job *job, vct_image
                           job->aovs, err);
 }
 
-int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
+int vct_render(vct_context *ctx, const vct_render_job *given, vct_image *image,
                vct_render_result *result, vct_error *err) {
     const double start = vct_now_ms();
+    const vct_render_job own = sized(given), *job = &own;
     memset(image, 0, sizeof *image);
     int rc = job_check(ctx, job, err);
     vct_pathtrace_result pt = {0};

@@ -4,6 +4,7 @@
 #include <time.h>
 
 #include "runtime/stats.h"
+#include "vct/debug.h"
 
 double vct_now_ms(void) {
     struct timespec ts;
