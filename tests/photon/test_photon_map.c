@@ -179,9 +179,10 @@ static void grid_queries(vct_context *ctx, const vct_scene *s, const traced *t, 
     cl_mem sums = vct_buffer_create(ctx, STAGE, "sums", sizeof pts, CL_MEM_READ_WRITE, NULL, &err);
     REQUIRE_OK(points && sums ? VCT_OK : err.status, err);
     const cl_uint n = N, flags = 0;
-    REQUIRE_OK(vct_run_kernel(ctx, p, "photon_query", STAGE, N, &err, 9, VCT_ARG_OF(g.photons),
-                              VCT_ARG_OF(g.ranges), VCT_ARG_OF(g.origin), VCT_ARG_OF(g.dims),
-                              VCT_ARG_OF(points), VCT_ARG_OF(n), VCT_ARG_OF(radius),
+    REQUIRE_OK(vct_run_kernel(ctx, p, "photon_query", STAGE, N, &err, 9,
+                              VCT_ARG(map_photons, g.photons), VCT_ARG(map_ranges, g.ranges),
+                              VCT_ARG(map_origin, g.origin), VCT_ARG(map_dims, g.dims),
+                              VCT_ARG_OF(points), VCT_ARG(count, n), VCT_ARG_OF(radius),
                               VCT_ARG_OF(flags), VCT_ARG_OF(sums)),
                err);
     float got[4 * N];

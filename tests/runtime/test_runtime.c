@@ -48,6 +48,32 @@ static void check_status_names(void) {
           vct_status_string((vct_status)99));
 }
 
+/* With $VCT_CHECK_ARGS=1 an argument bound under another name than the
+ * kernel's parameter is refused, naming both; the right names pass. */
+static void check_argument_names(void) {
+    setenv("VCT_CHECK_ARGS", "1", 1);
+    vct_context *ctx = check_context();
+    vct_error err = {0};
+    cl_program p;
+    REQUIRE_OK(vct_program_get(ctx, "parallel/scan.cl", "-D WG=64 -D ITEM_SPAN=64", &p, &err), err);
+    cl_kernel k = vct_kernel_create(ctx, p, "scan_group_offsets", &err);
+    REQUIRE_OK(k ? VCT_OK : err.status, err);
+    cl_mem sums = vct_buffer_create(ctx, "test", "sums", 64, CL_MEM_READ_WRITE, NULL, &err);
+    cl_uint groups = 1, count = 1;
+    CHECK(vct_set_args(&err, "test", k, 0, 2, VCT_ARG_OF(sums), VCT_ARG_OF(groups)) == VCT_OK,
+          "the kernel's own names are refused: %s", err.message);
+    CHECK(vct_set_args(&err, "test", k, 0, 2, VCT_ARG_OF(sums), VCT_ARG_OF(count)) ==
+                  VCT_ERR_INPUT &&
+              strstr(err.message, "\"groups\"") && strstr(err.message, "count at"),
+          "an argument bound under another name: %s", err.message);
+    CHECK(vct_set_args(&err, "test", k, 0, 2, VCT_ARG(sums, sums), VCT_ARG(groups, count)) ==
+              VCT_OK,
+          "a name given with VCT_ARG is refused: %s", err.message);
+    clReleaseKernel(k);
+    vct_buffer_release(ctx, sums);
+    vct_context_release(ctx);
+}
+
 int main(void) {
     check_status_names();
     char cache[] = "/tmp/vct-cache-test-XXXXXX";
@@ -101,5 +127,6 @@ int main(void) {
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", cache);
     if (system(cmd) != 0)
         fprintf(stderr, "could not remove %s\n", cache);
+    check_argument_names(); /* after the cache tests, which set the cache directory first */
     return check_exit("test_runtime");
 }

@@ -152,8 +152,8 @@ int vct_accel_set_args(cl_kernel k, const vct_accel *a, const char *stage, vct_e
         desc.cell_size.s[3] = b->tolerance;
         desc.res.s[0] = b->instance_count ? b->top_nodes : 0;
         desc.res.s[3] = b->triangle_count;
-        return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(b->nodes),
-                            VCT_ARG_OF(b->instances), VCT_ARG_OF(b->tri_ids),
+        return vct_set_args(err, stage, k, 0, 5, VCT_ARG(accel, desc), VCT_ARG(bvh_nodes, b->nodes),
+                            VCT_ARG(bvh_leaf_vertices, b->instances), VCT_ARG_OF(b->tri_ids),
                             VCT_ARG_OF(b->tri_vertices));
     }
     const vct_bvh *b = a->bvh;
@@ -161,8 +161,8 @@ int vct_accel_set_args(cl_kernel k, const vct_accel *a, const char *stage, vct_e
     desc.cell_size.s[3] = b->tolerance;
     desc.res.s[0] = b->node_count;
     desc.res.s[3] = b->triangle_count;
-    return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(b->nodes),
-                        VCT_ARG_OF(b->leaf_vertices), VCT_ARG_OF(b->tri_ids),
+    return vct_set_args(err, stage, k, 0, 5, VCT_ARG(accel, desc), VCT_ARG(bvh_nodes, b->nodes),
+                        VCT_ARG(bvh_leaf_vertices, b->leaf_vertices), VCT_ARG_OF(b->tri_ids),
                         VCT_ARG_OF(b->tri_vertices));
 }
 

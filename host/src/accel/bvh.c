@@ -49,7 +49,7 @@ static int binary_boxes(vct_context *ctx, vct_bvh *b, cl_program p, const char *
                         vct_error *err) {
     const uint32_t n = b->triangle_count;
     int rc = vct_run_kernel(ctx, p, "bvh_leaves", stage, n, err, 6, VCT_ARG_OF(b->tri_vertices),
-                            VCT_ARG_OF(b->tri_ids), VCT_ARG_OF(n), VCT_ARG_OF(b->tolerance),
+                            VCT_ARG(ids, b->tri_ids), VCT_ARG_OF(n), VCT_ARG(pad, b->tolerance),
                             VCT_ARG_OF(b->leaf_vertices), VCT_ARG_OF(b->boxes));
     if (rc == VCT_OK && n > 1)
         rc = vct_buffer_fill_u32(ctx, stage, b->arrivals, 0, n - 1, err);
@@ -70,8 +70,8 @@ static int sorted_codes(vct_context *ctx, vct_bvh *b, const vct_scene_frame *f, 
         scale.s[k] = 1024.0f / (f->hi[k] - f->lo[k]);
     scale.s[3] = 0.0f;
     int rc = vct_run_kernel(ctx, p, "bvh_morton", STAGE, n, err, 6, VCT_ARG_OF(b->tri_vertices),
-                            VCT_ARG_OF(n), VCT_ARG_OF(lo), VCT_ARG_OF(scale), VCT_ARG_OF(codes),
-                            VCT_ARG_OF(b->tri_ids));
+                            VCT_ARG_OF(n), VCT_ARG(frame_lo, lo), VCT_ARG(frame_scale, scale),
+                            VCT_ARG_OF(codes), VCT_ARG(ids, b->tri_ids));
     if (rc == VCT_OK)
         rc = vct_sort_pairs_u32(ctx, codes, b->tri_ids, n, MORTON_BITS, err);
     return rc;
@@ -100,18 +100,19 @@ static int collapse(vct_context *ctx, vct_bvh *b, cl_program p, cl_mem ranges, v
     while (rc == VCT_OK && size > 0) {
         rc = vct_run_kernel(ctx, p, "bvh_collapse_count", STAGE, size, err, 8,
                             VCT_ARG_OF(b->children), VCT_ARG_OF(ranges), VCT_ARG_OF(b->boxes),
-                            VCT_ARG_OF(n), VCT_ARG_OF(leaf_max), VCT_ARG_OF(frontier[cur]),
-                            VCT_ARG_OF(size), VCT_ARG_OF(counts));
+                            VCT_ARG_OF(n), VCT_ARG_OF(leaf_max), VCT_ARG(frontier, frontier[cur]),
+                            VCT_ARG(frontier_size, size), VCT_ARG_OF(counts));
         uint64_t next = 0;
         if (rc == VCT_OK)
             rc = vct_scan_u32(ctx, counts, counts, size, 0, &next, err);
         const uint32_t next_base = base + size;
         if (rc == VCT_OK)
-            rc = vct_run_kernel(
-                ctx, p, "bvh_collapse_write", STAGE, size, err, 12, VCT_ARG_OF(b->children),
-                VCT_ARG_OF(ranges), VCT_ARG_OF(b->boxes), VCT_ARG_OF(n), VCT_ARG_OF(leaf_max),
-                VCT_ARG_OF(frontier[cur]), VCT_ARG_OF(size), VCT_ARG_OF(counts), VCT_ARG_OF(base),
-                VCT_ARG_OF(next_base), VCT_ARG_OF(frontier[!cur]), VCT_ARG_OF(b->nodes));
+            rc = vct_run_kernel(ctx, p, "bvh_collapse_write", STAGE, size, err, 12,
+                                VCT_ARG_OF(b->children), VCT_ARG_OF(ranges), VCT_ARG_OF(b->boxes),
+                                VCT_ARG_OF(n), VCT_ARG_OF(leaf_max),
+                                VCT_ARG(frontier, frontier[cur]), VCT_ARG(frontier_size, size),
+                                VCT_ARG(offsets, counts), VCT_ARG_OF(base), VCT_ARG_OF(next_base),
+                                VCT_ARG(next_frontier, frontier[!cur]), VCT_ARG_OF(b->nodes));
         base = next_base;
         size = (uint32_t)next;
         cur = !cur;
@@ -213,7 +214,7 @@ vct_bvh *vct_bvh_build(vct_context *ctx, const vct_scene *s, vct_bvh_builder bui
     if (rc == VCT_OK && builder == VCT_BVH_PLOC) {
         /* Clustering starts from the sorted leaves' boxes. */
         rc = vct_run_kernel(ctx, p, "bvh_leaves", STAGE, n, err, 6, VCT_ARG_OF(b->tri_vertices),
-                            VCT_ARG_OF(b->tri_ids), VCT_ARG_OF(n), VCT_ARG_OF(b->tolerance),
+                            VCT_ARG(ids, b->tri_ids), VCT_ARG_OF(n), VCT_ARG(pad, b->tolerance),
                             VCT_ARG_OF(b->leaf_vertices), VCT_ARG_OF(b->boxes));
         if (rc == VCT_OK)
             rc = vct_bvh_ploc(ctx, b, ranges, STAGE, &b->passes, err);
@@ -258,7 +259,7 @@ int vct_bvh_refit(vct_context *ctx, vct_bvh *b, const vct_scene *s, vct_error *e
         rc = binary_boxes(ctx, b, p, REFIT_STAGE, err);
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, p, "bvh_refit", REFIT_STAGE, b->node_count, err, 4,
-                            VCT_ARG_OF(b->boxes), VCT_ARG_OF(b->triangle_count),
+                            VCT_ARG_OF(b->boxes), VCT_ARG(n, b->triangle_count),
                             VCT_ARG_OF(b->node_count), VCT_ARG_OF(b->nodes));
     if (rc == VCT_OK)
         rc = vct_finish(ctx, REFIT_STAGE, err);

@@ -64,7 +64,7 @@ static int cluster(vct_context *ctx, vct_bvh *b, cl_program p, ploc_buffers *t, 
                                 VCT_ARG_OF(m), VCT_ARG_OF(radius), VCT_ARG_OF(t->nearest));
         if (rc == VCT_OK)
             rc = vct_run_kernel(ctx, p, "ploc_flags", stage, m, err, 3, VCT_ARG_OF(t->nearest),
-                                VCT_ARG_OF(m), VCT_ARG_OF(t->offsets));
+                                VCT_ARG_OF(m), VCT_ARG(flags, t->offsets));
         uint64_t merges = 0;
         if (rc == VCT_OK)
             rc = vct_scan_u32(ctx, t->offsets, t->offsets, m, 0, &merges, err);
@@ -110,9 +110,10 @@ int vct_bvh_ploc(vct_context *ctx, vct_bvh *b, cl_mem ranges, const char *stage,
         rc = vct_run_kernel(ctx, p, "ploc_relabel_nodes", stage, n - 1, err, 3,
                             VCT_ARG_OF(b->children), VCT_ARG_OF(n), VCT_ARG_OF(t.leaf_place));
     if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, p, "ploc_relabel_leaves", stage, n, err, 6, VCT_ARG_OF(b->tri_ids),
-                            VCT_ARG_OF(b->parents), VCT_ARG_OF(n), VCT_ARG_OF(t.leaf_place),
-                            VCT_ARG_OF(t.placed_ids), VCT_ARG_OF(t.placed_parents));
+        rc = vct_run_kernel(ctx, p, "ploc_relabel_leaves", stage, n, err, 6,
+                            VCT_ARG(ids, b->tri_ids), VCT_ARG_OF(b->parents), VCT_ARG_OF(n),
+                            VCT_ARG_OF(t.leaf_place), VCT_ARG_OF(t.placed_ids),
+                            VCT_ARG_OF(t.placed_parents));
     if (rc == VCT_OK) { /* the placed order and parents replace the sorted ones */
         cl_mem ids = b->tri_ids, parents = b->parents;
         b->tri_ids = t.placed_ids;

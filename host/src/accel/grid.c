@@ -118,8 +118,9 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
         rc = k_ranges ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k_count, 0, 5, VCT_ARG_OF(g->tri_vertices), VCT_ARG_OF(n),
-                          VCT_ARG_OF(desc), VCT_ARG_OF(pad), VCT_ARG_OF(counts));
+        rc = vct_set_args(err, STAGE, k_count, 0, 5, VCT_ARG_OF(g->tri_vertices),
+                          VCT_ARG(triangles, n), VCT_ARG(g, desc), VCT_ARG_OF(pad),
+                          VCT_ARG_OF(counts));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_count, n, 0, err);
     uint64_t total = 0;
@@ -140,8 +141,9 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
         rc = g->tri_ids ? VCT_OK : (int)err->status;
     }
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k_write, 0, 7, VCT_ARG_OF(g->tri_vertices), VCT_ARG_OF(n),
-                          VCT_ARG_OF(desc), VCT_ARG_OF(pad), VCT_ARG_OF(counts), VCT_ARG_OF(keys),
+        rc = vct_set_args(err, STAGE, k_write, 0, 7, VCT_ARG_OF(g->tri_vertices),
+                          VCT_ARG(triangles, n), VCT_ARG(g, desc), VCT_ARG_OF(pad),
+                          VCT_ARG(offsets, counts), VCT_ARG(cell_keys, keys),
                           VCT_ARG_OF(g->tri_ids));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_write, n, 0, err);
@@ -161,8 +163,9 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
     if (rc == VCT_OK)
         rc = vct_buffer_fill_u32(ctx, STAGE, g->cell_bits, 0, (cells + 31) / 32, err);
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k_ranges, 0, 4, VCT_ARG_OF(keys), VCT_ARG_OF(g->references),
-                          VCT_ARG_OF(g->cell_ranges), VCT_ARG_OF(g->cell_bits));
+        rc = vct_set_args(err, STAGE, k_ranges, 0, 4, VCT_ARG(cell_keys, keys),
+                          VCT_ARG(n, g->references), VCT_ARG_OF(g->cell_ranges),
+                          VCT_ARG_OF(g->cell_bits));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_ranges, g->references, 0, err);
     if (rc == VCT_OK)
@@ -211,7 +214,7 @@ int vct_grid_read(vct_context *ctx, const vct_grid *g, uint32_t *cell_start, uin
 int vct_grid_set_args(cl_kernel k, const vct_grid *g, const char *stage, vct_error *err) {
     vct_accel_desc desc;
     vct_grid_kernel_args(g, &desc);
-    return vct_set_args(err, stage, k, 0, 5, VCT_ARG_OF(desc), VCT_ARG_OF(g->cell_bits),
+    return vct_set_args(err, stage, k, 0, 5, VCT_ARG(accel, desc), VCT_ARG_OF(g->cell_bits),
                         VCT_ARG_OF(g->cell_ranges), VCT_ARG_OF(g->tri_ids),
                         VCT_ARG_OF(g->tri_vertices));
 }

@@ -139,9 +139,10 @@ int vct_tri_vertices_upload(vct_context *ctx, const vct_scene *s, const char *st
         if (rc == VCT_OK)
             rc = vct_buffer_write(ctx, stage, tri, 0, 12ull * n, s->triangles, err);
         if (rc == VCT_OK)
-            rc = vct_run_kernel(ctx, p, "gather_tri_vertices", stage, n, err, 6, VCT_ARG_OF(pos),
-                                VCT_ARG_OF(tri), VCT_ARG_OF(n), VCT_ARG_OF(slots),
-                                VCT_ARG_OF(has_masks), VCT_ARG_OF(*out));
+            rc = vct_run_kernel(ctx, p, "gather_tri_vertices", stage, n, err, 6,
+                                VCT_ARG(positions, pos), VCT_ARG(triangles, tri), VCT_ARG(count, n),
+                                VCT_ARG(mask_slot, slots), VCT_ARG_OF(has_masks),
+                                VCT_ARG(tri_vertices, *out));
         /* the block after the vertices, and where it starts in triangle 0's second w */
         const uint32_t head = 3 * n;
         if (rc == VCT_OK && has_masks)

@@ -51,7 +51,8 @@ static int pixel_pass(caustic_run *r, cl_program program, const char *name, cons
     for (int i = 0; rc == VCT_OK && i < count; ++i) {
         const size_t bytes = va_arg(ap, size_t);
         const void *value = va_arg(ap, const void *);
-        rc = vct_set_args(err, STAGE, k, 4 + i, 1, bytes, value);
+        const char *bound = va_arg(ap, const char *);
+        rc = vct_set_args(err, STAGE, k, 4 + i, 1, bytes, value, bound);
     }
     va_end(ap);
     const size_t global[2] = {size[0], size[1]}, local[2] = {8, 8};
@@ -88,7 +89,7 @@ int vct_caustics_add(vct_context *ctx, const vct_scene *s, const vct_accel *g,
         rc = photon_pass(&r, VCT_CAUSTIC_PASSES, &empty, err);
     if (rc == VCT_OK && !empty)
         rc = pixel_pass(&r, program, "vct_caustic_radius", size, err, 5, VCT_ARG_OF(radius),
-                        VCT_ARG_OF(gbuf), VCT_ARG_OF(sb->materials), VCT_ARG_OF(dims),
+                        VCT_ARG_OF(gbuf), VCT_ARG_OF(sb->materials), VCT_ARG(size, dims),
                         VCT_ARG_OF(radii));
     /* No photon passed a dielectric: nothing to gather. */
     for (cl_uint pass = 0; rc == VCT_OK && !empty && pass < VCT_CAUSTIC_PASSES; ++pass) {
@@ -97,7 +98,7 @@ int vct_caustics_add(vct_context *ctx, const vct_scene *s, const vct_accel *g,
         if (rc == VCT_OK && !none)
             rc = pixel_pass(&r, program, "vct_caustics", size, err, 7, VCT_ARG_OF(radii),
                             VCT_ARG_OF(inv_emitted), VCT_ARG_OF(gbuf), VCT_ARG_OF(sb->materials),
-                            VCT_ARG_OF(dims), VCT_ARG_OF(image), VCT_ARG_OF(aov));
+                            VCT_ARG(size, dims), VCT_ARG_OF(image), VCT_ARG_OF(aov));
     }
     if (rc == VCT_OK)
         rc = vct_finish(ctx, STAGE, err);

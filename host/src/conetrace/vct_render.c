@@ -104,9 +104,10 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
         rc = vct_cone_set_args(k, v, &desc, BOUNCE_STAGE, &next, err);
     if (rc == VCT_OK)
         rc = vct_set_args(err, BOUNCE_STAGE, k, next, 9, VCT_ARG_OF(cones),
-                          VCT_ARG_OF(diffuse_cones), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
-                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->direct_radiance),
-                          VCT_ARG_OF(v->direct_side), VCT_ARG_OF(v->radiance), VCT_ARG_OF(v->side));
+                          VCT_ARG(cone_count, diffuse_cones), VCT_ARG_OF(v->keys),
+                          VCT_ARG(voxels, n), VCT_ARG_OF(v->albedo),
+                          VCT_ARG(direct, v->direct_radiance), VCT_ARG_OF(v->direct_side),
+                          VCT_ARG(voxel_radiance, v->radiance), VCT_ARG_OF(v->side));
     if (rc == VCT_OK)
         rc = vct_bounce_rest_keep(ctx, v, err);
     if (rc == VCT_OK)
@@ -262,7 +263,7 @@ static int primary_launch(frame *f, const char *name, const vct_scene *s, const 
     cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
     int rc = k ? primary_args(f, k, s, g, cam, err) : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, PRIMARY_STAGE, k, 23, 1, VCT_ARG_OF(buffer));
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 23, 1, VCT_ARG_UNCHECKED(buffer));
     if (rc == VCT_OK && n)
         rc = vct_set_args(err, PRIMARY_STAGE, k, 24, 1, VCT_ARG_OF(n));
     if (rc == VCT_OK)
@@ -314,7 +315,8 @@ static int cone_pass_with(frame *f, const char *stage, const char *name, int ray
     if (rc == VCT_OK)
         rc = vct_cone_set_args(k, f->v, &f->desc, stage, &next, err);
     if (rc == VCT_OK && list) {
-        rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_OF(list), VCT_ARG_OF(list_count));
+        rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_UNCHECKED(list),
+                          VCT_ARG_UNCHECKED(list_count));
         next += 2;
     }
     if (rc == VCT_OK)

@@ -39,9 +39,10 @@ int vct_render_voxels_level(vct_context *ctx, const vct_scene *s, const vct_voxe
     cl_mem side = has_radiance ? v->side : v->emission; /* unread without radiance */
     const cl_uint show_level = level;
     rc = k ? vct_set_args(err, stage, k, 0, 11, VCT_ARG_OF(cam), VCT_ARG_OF(vol),
-                          VCT_ARG_OF(v->child), VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal),
-                          VCT_ARG_OF(v->emission), VCT_ARG_OF(radiance), VCT_ARG_OF(side),
-                          VCT_ARG_OF(has_radiance), VCT_ARG_OF(show_level), VCT_ARG_OF(img))
+                          VCT_ARG_OF(v->child), VCT_ARG(voxel_albedo, v->albedo),
+                          VCT_ARG(voxel_normal, v->normal), VCT_ARG(voxel_emission, v->emission),
+                          VCT_ARG(voxel_radiance, radiance), VCT_ARG(voxel_side, side),
+                          VCT_ARG_OF(has_radiance), VCT_ARG_OF(show_level), VCT_ARG(image, img))
            : (int)err->status;
     const size_t global[2] = {(size_t)width, (size_t)height}, local[2] = {8, 8};
     if (rc == VCT_OK)

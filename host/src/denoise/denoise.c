@@ -73,9 +73,9 @@ static int atrous_passes(denoise_run *r, const vct_denoise_options *o, int first
     int from = first;
     for (uint32_t i = 0; rc == VCT_OK && i < o->iterations; ++i, from ^= 1) {
         const cl_int step = 1 << i;
-        rc = vct_set_args(err, STAGE, k, 0, 7, VCT_ARG_OF(r->signal[from]), VCT_ARG_OF(r->guide),
+        rc = vct_set_args(err, STAGE, k, 0, 7, VCT_ARG(in, r->signal[from]), VCT_ARG_OF(r->guide),
                           VCT_ARG_OF(r->slope), VCT_ARG_OF(r->size), VCT_ARG_OF(step),
-                          VCT_ARG_OF(sigma), VCT_ARG_OF(r->signal[from ^ 1]));
+                          VCT_ARG_OF(sigma), VCT_ARG(out, r->signal[from ^ 1]));
         if (rc == VCT_OK)
             rc = vct_launch_2d(r->ctx, k, global, local, err);
     }
@@ -100,11 +100,11 @@ static int over_pixels(denoise_run *r, cl_kernel k, int rc, vct_error *err) {
 static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, cl_mem out2,
                       vct_error *err) {
     cl_kernel k = vct_kernel_create(r->ctx, r->program, name, err);
-    int rc =
-        k ? vct_set_args(err, STAGE, k, 0, 3, VCT_ARG_OF(in), VCT_ARG_OF(r->size), VCT_ARG_OF(out))
-          : (int)err->status;
+    int rc = k ? vct_set_args(err, STAGE, k, 0, 3, VCT_ARG_UNCHECKED(in), VCT_ARG_OF(r->size),
+                              VCT_ARG_UNCHECKED(out))
+               : (int)err->status;
     if (rc == VCT_OK && out2)
-        rc = vct_set_args(err, STAGE, k, 3, 1, VCT_ARG_OF(out2));
+        rc = vct_set_args(err, STAGE, k, 3, 1, VCT_ARG(slope, out2));
     return over_pixels(r, k, rc, err);
 }
 
@@ -112,8 +112,8 @@ static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, c
 static int clamp_fireflies(denoise_run *r, float sigmas, vct_error *err) {
     cl_kernel k = vct_kernel_create(r->ctx, r->program, "denoise_clamp", err);
     const cl_float bound = sigmas;
-    int rc = k ? vct_set_args(err, STAGE, k, 0, 4, VCT_ARG_OF(r->signal[0]), VCT_ARG_OF(r->size),
-                              VCT_ARG_OF(bound), VCT_ARG_OF(r->signal[1]))
+    int rc = k ? vct_set_args(err, STAGE, k, 0, 4, VCT_ARG(in, r->signal[0]), VCT_ARG_OF(r->size),
+                              VCT_ARG(k, bound), VCT_ARG(out, r->signal[1]))
                : (int)err->status;
     return over_pixels(r, k, rc, err);
 }
@@ -173,7 +173,7 @@ int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guid
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, r.program, "denoise_demodulate", STAGE, pixels, err, 5,
                             VCT_ARG_OF(r.color), VCT_ARG_OF(r.albedo), VCT_ARG_OF(r.variance),
-                            VCT_ARG_OF(n), VCT_ARG_OF(r.signal[0]));
+                            VCT_ARG(pixels, n), VCT_ARG(signal, r.signal[0]));
     int last = 0;
     if (rc == VCT_OK)
         rc = clamp_fireflies(&r, o->firefly_sigma, err);
@@ -181,8 +181,8 @@ int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guid
         rc = atrous_passes(&r, o, 1, &last, err);
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, r.program, "denoise_remodulate", STAGE, pixels, err, 4,
-                            VCT_ARG_OF(r.signal[last]), VCT_ARG_OF(r.albedo), VCT_ARG_OF(n),
-                            VCT_ARG_OF(r.color));
+                            VCT_ARG(signal, r.signal[last]), VCT_ARG_OF(r.albedo),
+                            VCT_ARG(pixels, n), VCT_ARG_OF(r.color));
     if (rc == VCT_OK) {
         out->rgba = malloc(16 * pixels);
         rc = out->rgba ? vct_buffer_read(ctx, STAGE, r.color, 0, 16 * pixels, out->rgba, err)

@@ -56,7 +56,8 @@ int vct_render_guides(vct_context *ctx, const vct_scene *s, const vct_accel *g, 
     if (rc == VCT_OK)
         rc = vct_scene_texture_args(k, 8, &sb, STAGE, err);
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 11, 3, VCT_ARG_OF(n), VCT_ARG_OF(ab), VCT_ARG_OF(nb));
+        rc = vct_set_args(err, STAGE, k, 11, 3, VCT_ARG_OF(n), VCT_ARG(albedo, ab),
+                          VCT_ARG(normal_depth, nb));
     const size_t global[2] = {(size_t)width, (size_t)height}, local[2] = {8, 8};
     if (rc == VCT_OK)
         rc = vct_launch_2d(ctx, k, global, local, err);

@@ -53,7 +53,7 @@ cl_kernel vct_shaded_kernel(vct_shaded *sh, const char *name, const vct_kernel_a
         rc = vct_emitters_set_args(k, 13, &sh->em, VCT_EMITTER_SAMPLES, stage, err);
     for (int i = 0; rc == VCT_OK && i < extra_count; ++i)
         rc = vct_set_args(err, stage, k, VCT_SHADED_FIRST_OWN_ARG + i, 1, extra[i].size,
-                          extra[i].value);
+                          extra[i].value, extra[i].name);
     if (rc != VCT_OK && k) {
         clReleaseKernel(k);
         k = NULL;
@@ -81,7 +81,7 @@ int vct_shaded_frame(vct_context *ctx, const vct_scene *s, const vct_accel *g, c
         return rc;
     cl_kernel k = vct_shaded_kernel(&sh, kernel, extra, extra_count, err);
     rc = k ? vct_set_args(err, stage, k, VCT_SHADED_FIRST_OWN_ARG + extra_count, 1,
-                          VCT_ARG_OF(sh.frame))
+                          VCT_ARG(image, sh.frame))
            : (int)err->status;
     const size_t global[2] = {(size_t)width, (size_t)height};
     const size_t local[2] = {8, 8};

@@ -11,6 +11,7 @@
 #define VCT_SHADED_FIRST_OWN_ARG 18
 
 typedef struct vct_kernel_arg {
+    const char *name; /* the kernel parameter's (checked with $VCT_CHECK_ARGS) */
     size_t size;
     const void *value;
 } vct_kernel_arg;

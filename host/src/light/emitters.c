@@ -94,8 +94,9 @@ static int build(vct_context *ctx, const vct_scene *s, vct_emitter_weight weight
 
 int vct_emitters_set_args(cl_kernel k, int first, const vct_emitters *e, cl_uint samples,
                           const char *stage, vct_error *err) {
-    return vct_set_args(err, stage, k, first, 5, VCT_ARG_OF(e->tris), VCT_ARG_OF(e->cdf),
-                        VCT_ARG_OF(e->scale), VCT_ARG_OF(e->count), VCT_ARG_OF(samples));
+    return vct_set_args(err, stage, k, first, 5, VCT_ARG(emitter_tris, e->tris),
+                        VCT_ARG(emitter_cdf, e->cdf), VCT_ARG(emitter_scale, e->scale),
+                        VCT_ARG(emitter_count, e->count), VCT_ARG(emitter_samples, samples));
 }
 
 void vct_emitters_release(vct_context *ctx, vct_emitters *e) {

@@ -100,8 +100,8 @@ static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_accel *g,
     cl_mem counts =
         vct_buffer_create(ctx, stage, "light bin counts", 4ull * n, CL_MEM_READ_WRITE, NULL, err);
     int rc = counts ? vct_run_kernel(ctx, p, "light_bins_count", stage, n, err, 5,
-                                     VCT_ARG_OF(tri_vertices), VCT_ARG_OF(n), VCT_ARG_OF(b->desc),
-                                     VCT_ARG_OF(lights), VCT_ARG_OF(counts))
+                                     VCT_ARG_OF(tri_vertices), VCT_ARG(triangles, n),
+                                     VCT_ARG_OF(b->desc), VCT_ARG_OF(lights), VCT_ARG_OF(counts))
                     : (int)err->status;
     uint64_t total = 0;
     if (rc == VCT_OK)
@@ -124,8 +124,8 @@ static int write_pairs(vct_context *ctx, const vct_scene *s, const vct_accel *g,
     }
     if (rc == VCT_OK && total)
         rc = vct_run_kernel(ctx, p, "light_bins_write", stage, n, err, 7, VCT_ARG_OF(tri_vertices),
-                            VCT_ARG_OF(n), VCT_ARG_OF(b->desc), VCT_ARG_OF(lights),
-                            VCT_ARG_OF(counts), VCT_ARG_OF(*keys), VCT_ARG_OF(b->tris));
+                            VCT_ARG(triangles, n), VCT_ARG_OF(b->desc), VCT_ARG_OF(lights),
+                            VCT_ARG(offsets, counts), VCT_ARG_OF(*keys), VCT_ARG(ids, b->tris));
     vct_buffer_release(ctx, counts);
     return rc;
 }
@@ -168,7 +168,7 @@ int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_accel *
     const cl_uint distance_bits = (cl_uint)bits;
     if (rc == VCT_OK && b->entries)
         rc = vct_run_kernel(ctx, p, "light_bins_ranges", stage, b->entries, err, 4,
-                            VCT_ARG_OF(keys), VCT_ARG_OF(b->entries), VCT_ARG_OF(distance_bits),
+                            VCT_ARG_OF(keys), VCT_ARG(n, b->entries), VCT_ARG(bits, distance_bits),
                             VCT_ARG_OF(b->ranges));
     b->keys = keys;
     if (rc == VCT_OK && !b->keys) { /* no light binned: the kernels still take buffers */
@@ -185,8 +185,9 @@ int vct_light_bins_build(vct_context *ctx, const vct_scene *s, const vct_accel *
 
 int vct_light_bins_set_args(cl_kernel k, int first, const vct_light_bins *b, const char *stage,
                             vct_error *err) {
-    return vct_set_args(err, stage, k, first, 4, VCT_ARG_OF(b->desc), VCT_ARG_OF(b->ranges),
-                        VCT_ARG_OF(b->keys), VCT_ARG_OF(b->tris));
+    return vct_set_args(err, stage, k, first, 4, VCT_ARG(bins_desc, b->desc),
+                        VCT_ARG(bin_ranges, b->ranges), VCT_ARG(bin_keys, b->keys),
+                        VCT_ARG(bin_tris, b->tris));
 }
 
 void vct_light_bins_release(vct_context *ctx, vct_light_bins *b) {

@@ -61,12 +61,13 @@ static int scan_impl(vct_context *ctx, cl_mem in, cl_mem out, uint32_t n, int in
             rc = (x);                                                                              \
     } while (0)
     TRY(vct_set_args(err, STAGE, reduce, 0, 5, VCT_ARG_OF(in), VCT_ARG_OF(n), VCT_ARG_OF(span),
-                     VCT_ARG_OF(flags), VCT_ARG_OF(sums)));
+                     VCT_ARG(as_flags, flags), VCT_ARG(group_sums, sums)));
     TRY(vct_launch(ctx, reduce, groups * wg, wg, err));
     TRY(vct_set_args(err, STAGE, offsets, 0, 2, VCT_ARG_OF(sums), VCT_ARG_OF(groups)));
     TRY(vct_launch(ctx, offsets, 1, 1, err));
     TRY(vct_set_args(err, STAGE, down, 0, 7, VCT_ARG_OF(in), VCT_ARG_OF(out), VCT_ARG_OF(n),
-                     VCT_ARG_OF(span), VCT_ARG_OF(flags), VCT_ARG_OF(incl), VCT_ARG_OF(sums)));
+                     VCT_ARG_OF(span), VCT_ARG(as_flags, flags), VCT_ARG(inclusive, incl),
+                     VCT_ARG(group_offsets, sums)));
     TRY(vct_launch(ctx, down, groups * wg, wg, err));
     /* The total costs a blocking read: only callers that need it (to size
      * an output, or because it may overflow) pass total_out. */
@@ -169,17 +170,19 @@ static int sort_impl(vct_context *ctx, cl_mem keys, cl_mem values, uint32_t n, i
     cl_mem src_k = keys, src_v = values, dst_k = keys_tmp, dst_v = values_tmp;
     for (int shift = 0; rc == VCT_OK && shift < key_bits; shift += bits) {
         cl_uint sh = (cl_uint)shift;
-        rc = vct_set_args(err, STAGE, histogram, 0, 6, VCT_ARG_OF(src_k), VCT_ARG_OF(n),
-                          VCT_ARG_OF(span), VCT_ARG_OF(sh), VCT_ARG_OF(groups), VCT_ARG_OF(hist));
+        rc = vct_set_args(err, STAGE, histogram, 0, 6, VCT_ARG(keys, src_k), VCT_ARG_OF(n),
+                          VCT_ARG_OF(span), VCT_ARG(shift, sh), VCT_ARG_OF(groups),
+                          VCT_ARG_OF(hist));
         if (rc == VCT_OK)
             rc = vct_launch(ctx, histogram, groups * wg, wg, err);
         if (rc == VCT_OK)
             rc = scan_impl(ctx, hist, hist, hist_n, 0, 0, NULL, err); /* total is n */
         if (rc != VCT_OK)
             break;
-        rc = vct_set_args(err, STAGE, scatter, 0, 9, VCT_ARG_OF(src_k), VCT_ARG_OF(src_v),
-                          VCT_ARG_OF(n), VCT_ARG_OF(span), VCT_ARG_OF(sh), VCT_ARG_OF(groups),
-                          VCT_ARG_OF(hist), VCT_ARG_OF(dst_k), VCT_ARG_OF(dst_v));
+        rc = vct_set_args(err, STAGE, scatter, 0, 9, VCT_ARG(keys_in, src_k),
+                          VCT_ARG(values_in, src_v), VCT_ARG_OF(n), VCT_ARG_OF(span),
+                          VCT_ARG(shift, sh), VCT_ARG_OF(groups), VCT_ARG(offsets, hist),
+                          VCT_ARG(keys_out, dst_k), VCT_ARG(values_out, dst_v));
         if (rc == VCT_OK)
             rc = vct_launch(ctx, scatter, groups * wg, wg, err);
         cl_mem t = src_k;
@@ -265,14 +268,14 @@ int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uin
     }
     if (rc == VCT_OK)
         rc = vct_set_args(err, STAGE, k_starts, 0, 6, VCT_ARG_OF(keys), VCT_ARG_OF(heads),
-                          VCT_ARG_OF(index), VCT_ARG_OF(n), VCT_ARG_OF(starts),
-                          VCT_ARG_OF(out_keys));
+                          VCT_ARG(run_index, index), VCT_ARG_OF(n), VCT_ARG_OF(starts),
+                          VCT_ARG(run_keys, out_keys));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_starts, n, 0, err);
     cl_uint run_count = (cl_uint)total;
     if (rc == VCT_OK)
         rc = vct_set_args(err, STAGE, k_sum, 0, 5, VCT_ARG_OF(values), VCT_ARG_OF(starts),
-                          VCT_ARG_OF(run_count), VCT_ARG_OF(n), VCT_ARG_OF(sums));
+                          VCT_ARG(runs, run_count), VCT_ARG_OF(n), VCT_ARG_OF(sums));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k_sum, run_count, 0, err);
     if (rc == VCT_OK)

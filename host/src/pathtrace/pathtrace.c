@@ -87,11 +87,12 @@ int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
         rc = vct_scene_texture_args(k, 8, sb, STAGE, err);
     if (rc == VCT_OK)
         rc = vct_set_args(err, STAGE, k, 11, 6, VCT_ARG_OF(sb->lights), VCT_ARG_OF(sb->light_count),
-                          VCT_ARG_OF(eb->tris), VCT_ARG_OF(eb->cdf), VCT_ARG_OF(eb->count),
-                          VCT_ARG_OF(eb->inv_area));
+                          VCT_ARG(emitter_tris, eb->tris), VCT_ARG(emitter_cdf, eb->cdf),
+                          VCT_ARG(emitter_count, eb->count),
+                          VCT_ARG(emitter_inv_area, eb->inv_area));
     if (rc == VCT_OK)
         rc = vct_set_args(err, STAGE, k, 19, 5, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
-                          VCT_ARG_OF(ctx->pt_accum), VCT_ARG_OF(ctx->pt_discarded),
+                          VCT_ARG(accum, ctx->pt_accum), VCT_ARG(discarded, ctx->pt_discarded),
                           VCT_ARG_OF(ambient));
     return rc;
 }
@@ -104,7 +105,8 @@ int vct_pt_run(vct_pt_session *pt, uint32_t first, uint32_t count, int wait, vct
     for (cl_uint done = 0; rc == VCT_OK && done < count;) {
         cl_uint n = count - done < per_pass ? count - done : per_pass;
         cl_uint sample = first + done;
-        rc = vct_set_args(err, STAGE, pt->kernel, 17, 2, VCT_ARG_OF(sample), VCT_ARG_OF(n));
+        rc = vct_set_args(err, STAGE, pt->kernel, 17, 2, VCT_ARG(sample_begin, sample),
+                          VCT_ARG(samples, n));
         if (rc == VCT_OK)
             rc = vct_launch_2d(pt->ctx, pt->kernel, global, local, err);
         done += n;
@@ -129,7 +131,8 @@ static int pathtrace_variance(vct_context *ctx, cl_program program, cl_mem sums,
     cl_mem out =
         vct_buffer_create(ctx, STAGE, "variance", 16 * pixels, CL_MEM_WRITE_ONLY, NULL, err);
     int rc = out ? vct_run_kernel(ctx, program, "pathtrace_variance", STAGE, pixels, err, 3,
-                                  VCT_ARG_OF(sums), VCT_ARG_OF(pixel_count), VCT_ARG_OF(out))
+                                  VCT_ARG(accum, sums), VCT_ARG(pixels, pixel_count),
+                                  VCT_ARG(variance, out))
                  : (int)err->status;
     if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, STAGE, out, 0, 16 * pixels, variance->rgba, err);
@@ -153,7 +156,7 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
     const cl_uint pixel_count = (cl_uint)pixels;
     if (rc == VCT_OK && image)
         rc = vct_run_kernel(ctx, pt->program, "pathtrace_resolve", STAGE, pixels, err, 3,
-                            VCT_ARG_OF(sums), VCT_ARG_OF(pixel_count), VCT_ARG_OF(frame));
+                            VCT_ARG(accum, sums), VCT_ARG(pixels, pixel_count), VCT_ARG_OF(frame));
     if (rc == VCT_OK && image && opt->variance) /* the call that delivers the frame */
         rc = pathtrace_variance(ctx, pt->program, sums, opt, opt->variance, err);
     cl_uint dropped = 0;

@@ -101,7 +101,7 @@ int vct_photon_grid_build(vct_context *ctx, const char *stage, const vct_photon_
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, p, "photon_reorder", stage, count, err, 4,
                             VCT_ARG_OF(slots->records), VCT_ARG_OF(g->ids), VCT_ARG_OF(count),
-                            VCT_ARG_OF(g->photons));
+                            VCT_ARG(sorted, g->photons));
     if (rc == VCT_OK)
         rc = vct_buffer_fill_u32(ctx, stage, g->ranges, 0, 2 * g->table, err);
     if (rc == VCT_OK)
@@ -113,8 +113,9 @@ int vct_photon_grid_build(vct_context *ctx, const char *stage, const vct_photon_
 
 int vct_photon_grid_args(cl_kernel k, int first, const vct_photon_grid *g, const char *stage,
                          vct_error *err) {
-    return vct_set_args(err, stage, k, first, 4, VCT_ARG_OF(g->photons), VCT_ARG_OF(g->ranges),
-                        VCT_ARG_OF(g->origin), VCT_ARG_OF(g->dims));
+    return vct_set_args(err, stage, k, first, 4, VCT_ARG_UNCHECKED(g->photons),
+                        VCT_ARG_UNCHECKED(g->ranges), VCT_ARG_UNCHECKED(g->origin),
+                        VCT_ARG_UNCHECKED(g->dims));
 }
 
 uint64_t vct_photon_grid_bytes(const vct_photon_grid *g) {

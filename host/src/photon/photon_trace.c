@@ -64,12 +64,13 @@ int vct_photon_trace(vct_context *ctx, const char *stage, const vct_photon_trace
         rc = vct_scene_texture_args(k, 7, sb, stage, err);
     if (rc == VCT_OK)
         rc = vct_set_args(
-            err, stage, k, 10, 16, VCT_ARG_OF(sb->lights), VCT_ARG_OF(src->table),
-            VCT_ARG_OF(src->count), VCT_ARG_OF(src->emitters.tris), VCT_ARG_OF(src->emitters.cdf),
-            VCT_ARG_OF(src->emitters.scale), VCT_ARG_OF(src->emitters.count),
-            VCT_ARG_OF(src->bounds), VCT_ARG_OF(src->ambient), VCT_ARG_OF(job->seed),
-            VCT_ARG_OF(job->pass), VCT_ARG_OF(slots->paths), VCT_ARG_OF(slots->depth),
-            VCT_ARG_OF(job->store_mask), VCT_ARG_OF(slots->records), VCT_ARG_OF(slots->kinds));
+            err, stage, k, 10, 16, VCT_ARG_OF(sb->lights), VCT_ARG(sources, src->table),
+            VCT_ARG(source_count, src->count), VCT_ARG(emitter_tris, src->emitters.tris),
+            VCT_ARG(emitter_cdf, src->emitters.cdf), VCT_ARG(emitter_scale, src->emitters.scale),
+            VCT_ARG(emitter_count, src->emitters.count), VCT_ARG_OF(src->bounds),
+            VCT_ARG_OF(src->ambient), VCT_ARG_OF(job->seed), VCT_ARG_OF(job->pass),
+            VCT_ARG_OF(slots->paths), VCT_ARG(max_depth, slots->depth), VCT_ARG_OF(job->store_mask),
+            VCT_ARG_OF(slots->records), VCT_ARG_OF(slots->kinds));
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k, slots->paths, 64, err);
     if (k)

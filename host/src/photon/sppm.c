@@ -226,12 +226,13 @@ static int visible_pass(vct_context *ctx, sppm_run *r, cl_uint pass, vct_error *
     if (rc == VCT_OK)
         rc = vct_set_args(
             err, STAGE, k, 11, 18, VCT_ARG_OF(r->sb.lights), VCT_ARG_OF(r->sb.light_count),
-            VCT_ARG_OF(r->nee.tris), VCT_ARG_OF(r->nee.cdf), VCT_ARG_OF(r->nee.count),
-            VCT_ARG_OF(r->nee.inv_area), VCT_ARG_OF(seed), VCT_ARG_OF(pass), VCT_ARG_OF(depth),
-            VCT_ARG_OF(ambient), VCT_ARG_OF(direct_mode), VCT_ARG_OF(st->vp),
-            VCT_ARG_OF(st->direct_sum), VCT_ARG_OF(st->stats[GLOBAL]),
-            VCT_ARG_OF(st->radius[GLOBAL]), VCT_ARG_OF(st->stats[CAUSTIC]),
-            VCT_ARG_OF(st->radius[CAUSTIC]), VCT_ARG_OF(st->radius_max));
+            VCT_ARG(emitter_tris, r->nee.tris), VCT_ARG(emitter_cdf, r->nee.cdf),
+            VCT_ARG(emitter_count, r->nee.count), VCT_ARG(emitter_inv_area, r->nee.inv_area),
+            VCT_ARG_OF(seed), VCT_ARG_OF(pass), VCT_ARG(max_depth, depth), VCT_ARG_OF(ambient),
+            VCT_ARG_OF(direct_mode), VCT_ARG_OF(st->vp), VCT_ARG_OF(st->direct_sum),
+            VCT_ARG(stats_global, st->stats[GLOBAL]), VCT_ARG(radius_global, st->radius[GLOBAL]),
+            VCT_ARG(stats_caustic, st->stats[CAUSTIC]),
+            VCT_ARG(radius_caustic, st->radius[CAUSTIC]), VCT_ARG_OF(st->radius_max));
     if (rc == VCT_OK)
         rc = vct_buffer_fill_u32(ctx, STAGE, st->radius_max, 0, 2, err);
     const size_t global[2] = {(size_t)r->cam.size.s[0], (size_t)r->cam.size.s[1]},
@@ -302,8 +303,8 @@ static int gather_pass(vct_context *ctx, sppm_run *r, cl_uint pass, float fg_rad
             rc = vct_photon_grid_args(k, 3, &r->grid[m], STAGE, err);
         if (rc == VCT_OK)
             rc = vct_set_args(err, STAGE, k, 7, 5, VCT_ARG_OF(alpha), VCT_ARG_OF(flags),
-                              VCT_ARG_OF(normal_cos), VCT_ARG_OF(st->stats[m]),
-                              VCT_ARG_OF(st->radius[m]));
+                              VCT_ARG_OF(normal_cos), VCT_ARG(stats, st->stats[m]),
+                              VCT_ARG(radius, st->radius[m]));
         if (rc == VCT_OK)
             rc = vct_launch(ctx, k, pixels, 64, err);
     }
@@ -350,8 +351,9 @@ static int resolve(vct_context *ctx, sppm_run *r, vct_image *image, vct_error *e
     const cl_uint components = r->opt->components ? r->opt->components : VCT_PM_ALL;
     int rc = vct_run_kernel(
         ctx, r->program, "sppm_resolve", STAGE, pixels, err, 11, VCT_ARG_OF(st->direct_sum),
-        VCT_ARG_OF(st->fg_sum), VCT_ARG_OF(st->stats[GLOBAL]), VCT_ARG_OF(st->radius[GLOBAL]),
-        VCT_ARG_OF(st->stats[CAUSTIC]), VCT_ARG_OF(st->radius[CAUSTIC]), VCT_ARG_OF(inv_passes),
+        VCT_ARG_OF(st->fg_sum), VCT_ARG(stats_global, st->stats[GLOBAL]),
+        VCT_ARG(radius_global, st->radius[GLOBAL]), VCT_ARG(stats_caustic, st->stats[CAUSTIC]),
+        VCT_ARG(radius_caustic, st->radius[CAUSTIC]), VCT_ARG_OF(inv_passes),
         VCT_ARG_OF(inv_emitted), VCT_ARG_OF(components), VCT_ARG_OF(pixels), VCT_ARG_OF(frame));
     if (rc == VCT_OK)
         rc = vct_frame_deliver(ctx, STAGE, image, err);

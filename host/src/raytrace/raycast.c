@@ -24,8 +24,8 @@ int vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint
     rc = k ? vct_accel_set_args(k, g, stage, err) : (int)err->status;
     cl_uint any = any_hit != 0;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, stage, k, 5, 4, VCT_ARG_OF(rb), VCT_ARG_OF(n), VCT_ARG_OF(any),
-                          VCT_ARG_OF(hb));
+        rc = vct_set_args(err, stage, k, 5, 4, VCT_ARG(rays, rb), VCT_ARG_OF(n),
+                          VCT_ARG(any_hit, any), VCT_ARG(hits, hb));
     if (rc == VCT_OK) {
         vct_stage_begin(ctx, stage);
         rc = vct_launch(ctx, k, n, 64, err);

@@ -77,8 +77,8 @@ static int first_level(vct_shaded *sh, uint32_t size, sub_buffers *b, uint32_t *
 static int trace(vct_shaded *sh, cl_kernel k, int first_arg, sub_buffers *b, cl_mem list,
                  uint32_t n, uint64_t *rays, vct_error *err) {
     *rays += n;
-    int rc = vct_set_args(err, sh->stage, k, first_arg, 5, VCT_ARG_OF(list), VCT_ARG_OF(n),
-                          VCT_ARG_OF(b->keys), VCT_ARG_OF(b->traced), VCT_ARG_OF(sh->frame));
+    int rc = vct_set_args(err, sh->stage, k, first_arg, 5, VCT_ARG(points, list), VCT_ARG_OF(n),
+                          VCT_ARG_OF(b->keys), VCT_ARG_OF(b->traced), VCT_ARG(image, sh->frame));
     return rc == VCT_OK ? vct_launch(sh->ctx, k, n, 64, err) : rc;
 }
 
@@ -123,33 +123,36 @@ int vct_subsample(vct_shaded *sh, const char *points_kernel, const vct_kernel_ar
         /* the contrast test also reads each square's centre (sub_fill) */
         if (contrast > 0.0f && s > 2) {
             rc = vct_run_kernel(ctx, p, "sub_centres", stage, m, err, 8, VCT_ARG_OF(b.squares),
-                                VCT_ARG_OF(m), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
-                                VCT_ARG_OF(b.traced), VCT_ARG_OF(b.points), VCT_ARG_OF(b.wanted));
+                                VCT_ARG(n, m), VCT_ARG(size, s), VCT_ARG(width, cw),
+                                VCT_ARG(height, ch), VCT_ARG_OF(b.traced), VCT_ARG_OF(b.points),
+                                VCT_ARG_OF(b.wanted));
             if (rc == VCT_OK)
                 rc = trace_wanted(sh, k, first_arg, &b, m, rays, err);
         }
         if (rc == VCT_OK)
             rc = vct_run_kernel(ctx, p, "sub_fill", stage, m, err, 10, VCT_ARG_OF(b.squares),
-                                VCT_ARG_OF(m), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
-                                VCT_ARG_OF(b.keys), VCT_ARG_OF(b.guard), VCT_ARG_OF(contrast),
-                                VCT_ARG_OF(sh->frame), VCT_ARG_OF(b.flags));
+                                VCT_ARG(n, m), VCT_ARG(size, s), VCT_ARG(width, cw),
+                                VCT_ARG(height, ch), VCT_ARG_OF(b.keys), VCT_ARG_OF(b.guard),
+                                VCT_ARG_OF(contrast), VCT_ARG(image, sh->frame),
+                                VCT_ARG(refine, b.flags));
         uint32_t r = 0;
         if (rc == VCT_OK)
             rc = vct_compact_u32(ctx, b.squares, b.flags, b.refining, m, &r, err);
         if (rc != VCT_OK || r == 0)
             break;
-        rc = vct_run_kernel(ctx, p, "sub_mark", stage, r, err, 5, VCT_ARG_OF(b.refining),
-                            VCT_ARG_OF(r), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(b.split_map));
+        rc = vct_run_kernel(ctx, p, "sub_mark", stage, r, err, 5, VCT_ARG(squares, b.refining),
+                            VCT_ARG(n, r), VCT_ARG(size, s), VCT_ARG(width, cw),
+                            VCT_ARG(map, b.split_map));
         if (rc == VCT_OK)
-            rc = vct_run_kernel(ctx, p, "sub_points", stage, r, err, 9, VCT_ARG_OF(b.refining),
-                                VCT_ARG_OF(r), VCT_ARG_OF(s), VCT_ARG_OF(cw), VCT_ARG_OF(ch),
-                                VCT_ARG_OF(b.split_map), VCT_ARG_OF(b.traced), VCT_ARG_OF(b.points),
-                                VCT_ARG_OF(b.wanted));
+            rc = vct_run_kernel(ctx, p, "sub_points", stage, r, err, 9,
+                                VCT_ARG(squares, b.refining), VCT_ARG(n, r), VCT_ARG(size, s),
+                                VCT_ARG(width, cw), VCT_ARG(height, ch), VCT_ARG(map, b.split_map),
+                                VCT_ARG_OF(b.traced), VCT_ARG_OF(b.points), VCT_ARG_OF(b.wanted));
         if (rc == VCT_OK)
             rc = trace_wanted(sh, k, first_arg, &b, 5 * r, rays, err);
         if (rc == VCT_OK && s > 2)
-            rc = vct_run_kernel(ctx, p, "sub_split", stage, r, err, 4, VCT_ARG_OF(b.refining),
-                                VCT_ARG_OF(r), VCT_ARG_OF(s), VCT_ARG_OF(b.squares));
+            rc = vct_run_kernel(ctx, p, "sub_split", stage, r, err, 4, VCT_ARG(squares, b.refining),
+                                VCT_ARG(n, r), VCT_ARG(size, s), VCT_ARG(children, b.squares));
         m = 4 * r;
     }
     uint32_t *mask = rc == VCT_OK ? malloc(4 * pixels) : NULL;

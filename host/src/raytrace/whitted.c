@@ -41,10 +41,10 @@ int vct_whitted_render_as(vct_context *ctx, const vct_scene *s, const vct_accel 
     const cl_float4 ambient = {{a * s->ambient[0], a * s->ambient[1], a * s->ambient[2], 0.0f}};
     const cl_uint depth = opt->max_depth, plain_arg = (cl_uint)plain;
     const cl_float cut = opt->min_throughput;
-    const vct_kernel_arg own[4] = {{sizeof ambient, &ambient},
-                                   {sizeof depth, &depth},
-                                   {sizeof cut, &cut},
-                                   {sizeof plain_arg, &plain_arg}};
+    const vct_kernel_arg own[4] = {{"ambient", sizeof ambient, &ambient},
+                                   {"max_depth", sizeof depth, &depth},
+                                   {"min_throughput", sizeof cut, &cut},
+                                   {"plain", sizeof plain_arg, &plain_arg}};
     uint64_t traced = (uint64_t)opt->width * (uint64_t)opt->height, rays = traced;
     if (!opt->subsample) {
         rc = vct_shaded_frame(ctx, s, g, KERNEL_FILE, "whitted", STAGE, opt->width, opt->height,

@@ -3,8 +3,10 @@
 #include <stdio.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
+#include "runtime/arg_check.h"
 #include "runtime/launch.h"
 #include "runtime/program.h"
 
@@ -118,8 +120,11 @@ static int set_args_v(vct_error *err, const char *stage, cl_kernel kernel, int f
     for (int i = 0; i < count && rc == VCT_OK; ++i) {
         size_t size = va_arg(ap, size_t);
         const void *value = va_arg(ap, const void *);
-        rc = vct_cl_check(err, clSetKernelArg(kernel, (cl_uint)(first + i), size, value), stage,
-                          "clSetKernelArg");
+        const char *expression = va_arg(ap, const char *);
+        rc = vct_check_arg(err, stage, kernel, (cl_uint)(first + i), expression);
+        if (rc == VCT_OK)
+            rc = vct_cl_check(err, clSetKernelArg(kernel, (cl_uint)(first + i), size, value), stage,
+                              "clSetKernelArg");
     }
     return rc;
 }

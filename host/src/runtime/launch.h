@@ -17,7 +17,18 @@ int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global[2], co
 /* Sets `count` kernel arguments from index `first`, given as (size_t size,
  * const void *value) pairs, most easily written VCT_ARG_OF(variable). */
 int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first, int count, ...);
-#define VCT_ARG_OF(x) sizeof(x), (const void *)&(x)
+
+#define VCT_ARG_OF(x)                                                                              \
+    sizeof(x), (const void *)&(x), #x " at " __FILE__ ":" VCT_LINE_STRING(__LINE__)
+/* The same where the kernel names the parameter otherwise than the host
+ * expression's last identifier. */
+#define VCT_ARG(param, x)                                                                          \
+    sizeof(x), (const void *)&(x), #param " at " __FILE__ ":" VCT_LINE_STRING(__LINE__)
+/* An argument a helper binds for kernels that name it differently (not
+ * checked). */
+#define VCT_ARG_UNCHECKED(x) sizeof(x), (const void *)&(x), ""
+#define VCT_LINE_STRING(n) VCT_LINE_STRING_(n)
+#define VCT_LINE_STRING_(n) #n
 /* Creates kernel `name`, sets its `count` arguments (as vct_set_args) and
  * launches it over `global` work-items (none when global is 0). */
 int vct_run_kernel(vct_context *ctx, cl_program program, const char *name, const char *stage,

@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "runtime/arg_check.h"
 #include "runtime/runtime.h"
 
 static uint64_t fnv1a(uint64_t h, const void *data, size_t n) {
@@ -188,8 +189,9 @@ int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_
         return vct_fail(err, VCT_ERR_MEMORY, "kernels: too many program variants");
 
     char full_options[1024];
-    snprintf(full_options, sizeof full_options, "-cl-std=CL1.2%s %s",
-             device_has_fast_fma(ctx->device) ? " -DVCT_FAST_FMA" : "", options ? options : "");
+    snprintf(full_options, sizeof full_options, "-cl-std=CL1.2%s%s %s",
+             device_has_fast_fma(ctx->device) ? " -DVCT_FAST_FMA" : "",
+             vct_args_checked() ? " -cl-kernel-arg-info" : "", options ? options : "");
     char *source = vct_kernel_source_expand(file, err);
     if (!source)
         return err->status;

@@ -37,10 +37,10 @@ int vct_bounce_rest_measure(vct_context *ctx, vct_voxels *v, vct_error *err) {
     if (rc == VCT_OK && !out)
         rc = err->status;
     if (rc == VCT_OK)
-        rc = vct_run_kernel_grouped(ctx, p, "bounce_energy", STAGE, n, GROUP, err, 7,
-                                    VCT_ARG_OF(v->radiance), VCT_ARG_OF(v->side),
-                                    VCT_ARG_OF(v->before_radiance), VCT_ARG_OF(v->before_side),
-                                    VCT_ARG_OF(v->direct_side), VCT_ARG_OF(n), VCT_ARG_OF(out));
+        rc = vct_run_kernel_grouped(
+            ctx, p, "bounce_energy", STAGE, n, GROUP, err, 7, VCT_ARG_OF(v->radiance),
+            VCT_ARG_OF(v->side), VCT_ARG(before, v->before_radiance), VCT_ARG_OF(v->before_side),
+            VCT_ARG_OF(v->direct_side), VCT_ARG(voxels, n), VCT_ARG(group_sums, out));
     if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, STAGE, out, 0, sizeof(float) * groups, sums, err);
     if (rc == VCT_OK) {
@@ -79,9 +79,9 @@ int vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *v, vct_error *err) {
         rc = vct_program_get(ctx, "voxel/bounce_rest.cl", "", &p, err);
         if (rc == VCT_OK)
             rc = vct_run_kernel(ctx, p, "bounce_rest", STAGE, n, err, 7, VCT_ARG_OF(v->radiance),
-                                VCT_ARG_OF(v->side), VCT_ARG_OF(v->before_radiance),
+                                VCT_ARG_OF(v->side), VCT_ARG(before, v->before_radiance),
                                 VCT_ARG_OF(v->before_side), VCT_ARG_OF(v->direct_side),
-                                VCT_ARG_OF(n), VCT_ARG_OF(rest));
+                                VCT_ARG(voxels, n), VCT_ARG_OF(rest));
         if (rc == VCT_OK)
             rc = vct_finish(ctx, STAGE, err);
         vct_stage_end(ctx);

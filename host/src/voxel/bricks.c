@@ -190,9 +190,9 @@ static int run_around(level_run *r, vct_error *err) {
     rc = v->brick_window ? VCT_OK : (int)err->status;
     for (cl_uint l = 0; l < v->info.levels && rc == VCT_OK; ++l)
         rc = vct_run_kernel(r->ctx, r->program, "brick_around", r->stage, b->level_bricks[l], err,
-                            6, VCT_ARG_OF(v->child), VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(l),
-                            VCT_ARG_OF(b->level_first[l]), VCT_ARG_OF(b->level_bricks[l]),
-                            VCT_ARG_OF(r->around));
+                            6, VCT_ARG_OF(v->child), VCT_ARG_OF(v->tile_parent), VCT_ARG(level, l),
+                            VCT_ARG(first_brick, b->level_first[l]),
+                            VCT_ARG(count, b->level_bricks[l]), VCT_ARG_OF(r->around));
     return rc;
 }
 
@@ -218,11 +218,13 @@ static int run_leaf(const level_run *r, int geometry, int radiance_too, vct_erro
         pools[c] = v->brick_buffer[c] ? v->brick_buffer[c] : v->brick_buffer[VCT_BRICK_RADIANCE];
     return vct_run_kernel_grouped(
         r->ctx, r->program, "brick_leaf", r->stage, count, BRICK_GROUP, err, 19,
-        VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
-        VCT_ARG_OF(r->window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(v->albedo),
-        VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance), VCT_ARG_OF(side), VCT_ARG_OF(has_radiance),
-        VCT_ARG_OF(from), VCT_ARG_OF(to), VCT_ARG_OF(r->pool), VCT_ARG_OF(pools[0]),
-        VCT_ARG_OF(pools[1]), VCT_ARG_OF(pools[2]), VCT_ARG_OF(pools[3]), VCT_ARG_OF(pools[4]));
+        VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG(window, v->brick_window),
+        VCT_ARG_OF(r->window_ready), VCT_ARG(first_brick, first), VCT_ARG_OF(count),
+        VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->normal), VCT_ARG_OF(radiance), VCT_ARG_OF(side),
+        VCT_ARG_OF(has_radiance), VCT_ARG(channel_from, from), VCT_ARG(channel_to, to),
+        VCT_ARG_OF(r->pool), VCT_ARG(albedo_pool, pools[0]), VCT_ARG(normal_pool, pools[1]),
+        VCT_ARG(radiance_pool, pools[2]), VCT_ARG(shade_pool, pools[3]),
+        VCT_ARG(plane_pool, pools[4]));
 }
 
 /* brick_filter over `channels` pools of one level, four at a time. */
@@ -233,12 +235,13 @@ static int run_filter_channels(const level_run *r, cl_uint first, cl_uint count,
     for (cl_uint done = 0; done < channels && rc == VCT_OK; done += 4) {
         const cl_uint n = channels - done < 4 ? channels - done : 4;
         const cl_mem *c = list + done;
-        rc = vct_run_kernel_grouped(
-            r->ctx, r->program, "brick_filter", r->stage, count, BRICK_GROUP, err, 12,
-            VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
-            VCT_ARG_OF(r->window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
-            VCT_ARG_OF(n), VCT_ARG_OF(c[0]), VCT_ARG_OF(c[n > 1 ? 1 : 0]),
-            VCT_ARG_OF(c[n > 2 ? 2 : 0]), VCT_ARG_OF(c[n > 3 ? 3 : 0]));
+        rc = vct_run_kernel_grouped(r->ctx, r->program, "brick_filter", r->stage, count,
+                                    BRICK_GROUP, err, 12, VCT_ARG_OF(v->child),
+                                    VCT_ARG_OF(r->around), VCT_ARG(window, v->brick_window),
+                                    VCT_ARG_OF(r->window_ready), VCT_ARG(first_brick, first),
+                                    VCT_ARG_OF(count), VCT_ARG_OF(r->pool), VCT_ARG(channels, n),
+                                    VCT_ARG(c0, c[0]), VCT_ARG(c1, c[n > 1 ? 1 : 0]),
+                                    VCT_ARG(c2, c[n > 2 ? 2 : 0]), VCT_ARG(c3, c[n > 3 ? 3 : 0]));
     }
     return rc;
 }
@@ -262,15 +265,16 @@ static int run_filter_dir(const level_run *r, int level, vct_error *err) {
     const cl_uint window_ready = 1;
     return vct_run_kernel_grouped(
         r->ctx, r->program, "brick_filter_dir", r->stage, count, BRICK_GROUP, err, 33,
-        VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG_OF(v->brick_window),
-        VCT_ARG_OF(window_ready), VCT_ARG_OF(first), VCT_ARG_OF(count), VCT_ARG_OF(r->pool),
-        VCT_ARG_OF(src[0]), VCT_ARG_OF(src[1]), VCT_ARG_OF(src[2]), VCT_ARG_OF(src[3]),
-        VCT_ARG_OF(src[4]), VCT_ARG_OF(src[5]), VCT_ARG_OF(bright[0]), VCT_ARG_OF(bright[1]),
-        VCT_ARG_OF(bright[2]), VCT_ARG_OF(bright[3]), VCT_ARG_OF(bright[4]), VCT_ARG_OF(bright[5]),
-        VCT_ARG_OF(one_source), VCT_ARG_OF(pool[VCT_BRICK_SHADE]), VCT_ARG_OF(dark_src[0]),
-        VCT_ARG_OF(dark_src[1]), VCT_ARG_OF(dark_src[2]), VCT_ARG_OF(dark_src[3]),
-        VCT_ARG_OF(dark_src[4]), VCT_ARG_OF(dark_src[5]), VCT_ARG_OF(dark[0]), VCT_ARG_OF(dark[1]),
-        VCT_ARG_OF(dark[2]), VCT_ARG_OF(dark[3]), VCT_ARG_OF(dark[4]), VCT_ARG_OF(dark[5]));
+        VCT_ARG_OF(v->child), VCT_ARG_OF(r->around), VCT_ARG(window, v->brick_window),
+        VCT_ARG_OF(window_ready), VCT_ARG(first_brick, first), VCT_ARG_OF(count),
+        VCT_ARG_OF(r->pool), VCT_ARG(s0, src[0]), VCT_ARG(s1, src[1]), VCT_ARG(s2, src[2]),
+        VCT_ARG(s3, src[3]), VCT_ARG(s4, src[4]), VCT_ARG(s5, src[5]), VCT_ARG(d0, bright[0]),
+        VCT_ARG(d1, bright[1]), VCT_ARG(d2, bright[2]), VCT_ARG(d3, bright[3]),
+        VCT_ARG(d4, bright[4]), VCT_ARG(d5, bright[5]), VCT_ARG_OF(one_source),
+        VCT_ARG(shade, pool[VCT_BRICK_SHADE]), VCT_ARG(e0, dark_src[0]), VCT_ARG(e1, dark_src[1]),
+        VCT_ARG(e2, dark_src[2]), VCT_ARG(e3, dark_src[3]), VCT_ARG(e4, dark_src[4]),
+        VCT_ARG(e5, dark_src[5]), VCT_ARG(f0, dark[0]), VCT_ARG(f1, dark[1]), VCT_ARG(f2, dark[2]),
+        VCT_ARG(f3, dark[3]), VCT_ARG(f4, dark[4]), VCT_ARG(f5, dark[5]));
 }
 
 /* Levels L-2 .. 0, each from the level below: albedo and normal when
@@ -477,8 +481,8 @@ int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t
     const cl_uint pool[2] = {b->pool[0], b->pool[1]};
     if (rc == VCT_OK)
         rc = dst ? vct_run_kernel(ctx, p, "brick_gather", stage, 27ull * count, err, 5,
-                                  VCT_ARG_OF(src), VCT_ARG_OF(pool), VCT_ARG_OF(first),
-                                  VCT_ARG_OF(count), VCT_ARG_OF(dst))
+                                  VCT_ARG(p, src), VCT_ARG_OF(pool), VCT_ARG_OF(first),
+                                  VCT_ARG_OF(count), VCT_ARG(out, dst))
                  : (int)err->status;
     if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, stage, dst, 0, 27ull * 16 * count, out, err);
@@ -521,9 +525,10 @@ int vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32
     vct_volume_desc vol;
     vct_voxels_volume_desc(v, &vol);
     if (rc == VCT_OK)
-        rc = dst ? vct_run_kernel(ctx, p, "brick_probe", stage, n, err, 8, VCT_ARG_OF(src),
+        rc = dst ? vct_run_kernel(ctx, p, "brick_probe", stage, n, err, 8, VCT_ARG(p, src),
                                   VCT_ARG_OF(pool), VCT_ARG_OF(v->child), VCT_ARG_OF(vol),
-                                  VCT_ARG_OF(level), VCT_ARG_OF(q), VCT_ARG_OF(n), VCT_ARG_OF(dst))
+                                  VCT_ARG_OF(level), VCT_ARG(points, q), VCT_ARG_OF(n),
+                                  VCT_ARG(out, dst))
                  : (int)err->status;
     if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, stage, dst, 0, 16ull * n, out, err);

@@ -142,15 +142,19 @@ int vct_cone_set_args(cl_kernel k, const vct_voxels *v, const void *desc, const 
         return err->status;
     /* radiance, its shade and plane, then the directions of both sides */
     const int pools = b->anisotropic ? 15 : 3, first = *next;
+    static const char *const pool_names[15] = {
+        "radiance", "shade_pool", "plane_pool", "dir0",  "dir1",  "dir2",  "dir3", "dir4",
+        "dir5",     "dark0",      "dark1",      "dark2", "dark3", "dark4", "dark5"};
     for (int i = 0; i < pools; ++i) {
         const int c = VCT_BRICK_RADIANCE + i;
         cl_mem m = b->image ? v->brick_image[c] : v->brick_buffer[c];
-        int rc = vct_set_args(err, stage, k, first + i, 1, VCT_ARG_OF(m));
+        int rc =
+            vct_set_args(err, stage, k, first + i, 1, sizeof m, (const void *)&m, pool_names[i]);
         if (rc)
             return rc;
     }
     int rc = vct_set_args(err, stage, k, first + pools, 2, VCT_ARG_OF(v->child),
-                          sizeof(vct_cone_desc), desc);
+                          sizeof(vct_cone_desc), desc, "cd");
     *next = first + pools + 2;
     return rc;
 }
@@ -180,7 +184,8 @@ int vct_cone_trace(vct_context *ctx, const vct_voxels *v, const vct_cone_setting
     int next = 0;
     rc = k ? vct_cone_set_args(k, v, &desc, stage, &next, err) : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, stage, k, next, 3, VCT_ARG_OF(in), VCT_ARG_OF(n), VCT_ARG_OF(dst));
+        rc = vct_set_args(err, stage, k, next, 3, VCT_ARG(cones, in), VCT_ARG_OF(n),
+                          VCT_ARG(out, dst));
     if (rc == VCT_OK) {
         vct_stage_begin(ctx, stage);
         rc = vct_launch(ctx, k, n, 64, err);

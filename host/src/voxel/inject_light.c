@@ -50,11 +50,11 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     if (k && rc == VCT_OK)
         rc = vct_light_bins_set_args(k, 5, &bins, STAGE, err);
     if (k && rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 9, 12, VCT_ARG_OF(vol), VCT_ARG_OF(v->keys), VCT_ARG_OF(n),
-                          VCT_ARG_OF(v->fragment_start), VCT_ARG_OF(v->fragment_tri),
-                          VCT_ARG_OF(v->info.fragments), VCT_ARG_OF(sb.materials),
-                          VCT_ARG_OF(sb.tri_material), VCT_ARG_OF(v->albedo),
-                          VCT_ARG_OF(v->emission), VCT_ARG_OF(sb.lights),
+        rc = vct_set_args(err, STAGE, k, 9, 12, VCT_ARG_OF(vol), VCT_ARG_OF(v->keys),
+                          VCT_ARG(voxels, n), VCT_ARG(voxel_start, v->fragment_start),
+                          VCT_ARG_OF(v->fragment_tri), VCT_ARG_OF(v->info.fragments),
+                          VCT_ARG_OF(sb.materials), VCT_ARG_OF(sb.tri_material),
+                          VCT_ARG_OF(v->albedo), VCT_ARG_OF(v->emission), VCT_ARG_OF(sb.lights),
                           VCT_ARG_OF(sb.light_count));
     if (k && rc == VCT_OK)
         rc = vct_emitters_set_args(k, 21, &em, VCT_EMITTER_INJECT_SAMPLES, STAGE, err);

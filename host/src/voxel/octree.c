@@ -22,7 +22,8 @@ static int count_levels(vct_context *ctx, vct_voxels *v, cl_program p, vct_error
     if (!h)
         return err->status;
     int rc = vct_run_kernel(ctx, p, "oct_level_histogram", STAGE, (nv + SPAN - 1) / SPAN, err, 4,
-                            VCT_ARG_OF(v->keys), VCT_ARG_OF(nv), VCT_ARG_OF(levels), VCT_ARG_OF(h));
+                            VCT_ARG_OF(v->keys), VCT_ARG(voxels, nv), VCT_ARG_OF(levels),
+                            VCT_ARG(hist, h));
     if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, STAGE, h, 0, sizeof hist, hist, err);
     vct_buffer_release(ctx, h);
@@ -67,10 +68,10 @@ static int build_levels(vct_context *ctx, vct_voxels *v, cl_program p, vct_error
         const uint32_t next = info->level_start[l + 1], next_count = info->level_nodes[l + 1];
         rc = vct_buffer_fill_u32(ctx, STAGE, flags, 0, count, err);
         if (rc == VCT_OK)
-            rc =
-                vct_run_kernel(ctx, p, "oct_flag", STAGE, nv, err, 8, VCT_ARG_OF(v->keys),
-                               VCT_ARG_OF(nv), VCT_ARG_OF(levels), VCT_ARG_OF(l), VCT_ARG_OF(start),
-                               VCT_ARG_OF(v->child), VCT_ARG_OF(current), VCT_ARG_OF(flags));
+            rc = vct_run_kernel(ctx, p, "oct_flag", STAGE, nv, err, 8, VCT_ARG_OF(v->keys),
+                                VCT_ARG(voxels, nv), VCT_ARG_OF(levels), VCT_ARG(level, l),
+                                VCT_ARG(level_start, start), VCT_ARG_OF(v->child),
+                                VCT_ARG_OF(current), VCT_ARG_OF(flags));
         uint64_t flagged = 0;
         if (rc == VCT_OK)
             rc = vct_scan_u32(ctx, flags, flags, count, 1, &flagged, err);
@@ -80,17 +81,19 @@ static int build_levels(vct_context *ctx, vct_voxels *v, cl_program p, vct_error
                           "device computed inconsistent results",
                           l, (unsigned long long)flagged, next_count / 8);
         if (rc == VCT_OK)
-            rc = vct_run_kernel(ctx, p, "oct_allocate", STAGE, count, err, 6, VCT_ARG_OF(start),
-                                VCT_ARG_OF(count), VCT_ARG_OF(next), VCT_ARG_OF(flags),
+            rc = vct_run_kernel(ctx, p, "oct_allocate", STAGE, count, err, 6,
+                                VCT_ARG(level_start, start), VCT_ARG_OF(count),
+                                VCT_ARG(next_start, next), VCT_ARG(scanned, flags),
                                 VCT_ARG_OF(v->child), VCT_ARG_OF(v->tile_parent));
         if (rc == VCT_OK)
-            rc = vct_run_kernel(ctx, p, "oct_init", STAGE, next_count, err, 5, VCT_ARG_OF(next),
-                                VCT_ARG_OF(next_count), VCT_ARG_OF(v->child),
-                                VCT_ARG_OF(v->tile_parent), VCT_ARG_OF(v->neighbours));
+            rc = vct_run_kernel(ctx, p, "oct_init", STAGE, next_count, err, 5,
+                                VCT_ARG(level_start, next), VCT_ARG(count, next_count),
+                                VCT_ARG_OF(v->child), VCT_ARG_OF(v->tile_parent),
+                                VCT_ARG_OF(v->neighbours));
     }
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, p, "oct_leaves", STAGE, nv, err, 5, VCT_ARG_OF(v->keys),
-                            VCT_ARG_OF(nv), VCT_ARG_OF(levels), VCT_ARG_OF(current),
+                            VCT_ARG(voxels, nv), VCT_ARG_OF(levels), VCT_ARG_OF(current),
                             VCT_ARG_OF(v->child));
     if (rc == VCT_OK)
         rc = vct_finish(ctx, STAGE, err);
@@ -164,7 +167,7 @@ int vct_octree_lookup(vct_context *ctx, const vct_voxels *v, const uint32_t *que
     cl_mem out =
         q ? vct_buffer_create(ctx, stage, "nodes", 4ull * n, CL_MEM_WRITE_ONLY, NULL, err) : NULL;
     rc = out ? vct_run_kernel(ctx, p, "oct_lookup", stage, n, err, 4, VCT_ARG_OF(v->child),
-                              VCT_ARG_OF(q), VCT_ARG_OF(n), VCT_ARG_OF(out))
+                              VCT_ARG(queries, q), VCT_ARG_OF(n), VCT_ARG(nodes, out))
              : (int)err->status;
     if (rc == VCT_OK)
         rc = vct_buffer_read(ctx, stage, out, 0, 4ull * n, nodes, err);

@@ -102,7 +102,7 @@ static int make_fragments(voxelize_state *st, vct_error *err) {
     if (!st->tri_normals)
         return err->status;
     int rc = vct_run_kernel(ctx, st->program, "vox_chunks", STAGE, n, err, 4, VCT_ARG_OF(st->tris),
-                            VCT_ARG_OF(st->desc), VCT_ARG_OF(st->chunk_start),
+                            VCT_ARG(vol, st->desc), VCT_ARG(chunks, st->chunk_start),
                             VCT_ARG_OF(st->tri_normals));
     uint64_t total = 0;
     if (rc == VCT_OK)
@@ -119,7 +119,7 @@ static int make_fragments(voxelize_state *st, vct_error *err) {
         return err->status;
     rc =
         vct_run_kernel(ctx, st->program, "vox_count", STAGE, st->chunks, err, 6,
-                       VCT_ARG_OF(st->tris), VCT_ARG_OF(st->desc), VCT_ARG_OF(st->thin),
+                       VCT_ARG_OF(st->tris), VCT_ARG(vol, st->desc), VCT_ARG_OF(st->thin),
                        VCT_ARG_OF(st->chunk_start), VCT_ARG_OF(st->chunks), VCT_ARG_OF(st->counts));
     if (rc == VCT_OK)
         rc = vct_scan_u32(ctx, st->counts, st->counts, st->chunks, 0, &total, err);
@@ -141,9 +141,10 @@ static int make_fragments(voxelize_state *st, vct_error *err) {
     if (!st->frag_ids)
         return err->status;
     rc = vct_run_kernel(ctx, st->program, "vox_write", STAGE, st->chunks, err, 8,
-                        VCT_ARG_OF(st->tris), VCT_ARG_OF(st->desc), VCT_ARG_OF(st->thin),
-                        VCT_ARG_OF(st->chunk_start), VCT_ARG_OF(st->chunks), VCT_ARG_OF(st->counts),
-                        VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(st->frag_ids));
+                        VCT_ARG_OF(st->tris), VCT_ARG(vol, st->desc), VCT_ARG_OF(st->thin),
+                        VCT_ARG_OF(st->chunk_start), VCT_ARG_OF(st->chunks),
+                        VCT_ARG(offsets, st->counts), VCT_ARG(keys, st->frag_keys),
+                        VCT_ARG(ids, st->frag_ids));
     vct_buffer_release(ctx, st->counts);
     st->counts = NULL;
     if (rc == VCT_OK)
@@ -162,7 +163,7 @@ static int reduce_fragments(voxelize_state *st, vct_error *err) {
     if (!index)
         return err->status;
     int rc = vct_run_kernel(ctx, st->program, "vox_heads", STAGE, f, err, 3,
-                            VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(f), VCT_ARG_OF(index));
+                            VCT_ARG(keys, st->frag_keys), VCT_ARG(n, f), VCT_ARG(heads, index));
     uint64_t voxels = 0;
     if (rc == VCT_OK)
         rc = vct_scan_u32(ctx, index, index, f, 0, &voxels, err);
@@ -182,8 +183,8 @@ static int reduce_fragments(voxelize_state *st, vct_error *err) {
     }
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, st->program, "vox_starts", STAGE, f, err, 5,
-                            VCT_ARG_OF(st->frag_keys), VCT_ARG_OF(f), VCT_ARG_OF(index),
-                            VCT_ARG_OF(v->keys), VCT_ARG_OF(start));
+                            VCT_ARG(keys, st->frag_keys), VCT_ARG(n, f), VCT_ARG_OF(index),
+                            VCT_ARG(voxel_keys, v->keys), VCT_ARG(voxel_start, start));
     vct_buffer_release(ctx, index);
     vct_buffer_release(ctx, st->frag_keys);
     st->frag_keys = NULL;
@@ -196,12 +197,13 @@ static int reduce_fragments(voxelize_state *st, vct_error *err) {
     }
     if (rc == VCT_OK)
         rc = vct_run_kernel(ctx, st->program, "vox_reduce", STAGE, nv, err, 15,
-                            VCT_ARG_OF(st->frag_ids), VCT_ARG_OF(start), VCT_ARG_OF(nv),
-                            VCT_ARG_OF(f), VCT_ARG_OF(st->tri_normals), VCT_ARG_OF(st->materials),
-                            VCT_ARG_OF(v->keys), VCT_ARG_OF(st->tris), VCT_ARG_OF(st->desc),
-                            VCT_ARG_OF(st->scene.texels), VCT_ARG_OF(st->scene.texture_table),
-                            VCT_ARG_OF(st->scene.tri_uvs), VCT_ARG_OF(v->albedo),
-                            VCT_ARG_OF(v->normal), VCT_ARG_OF(v->emission));
+                            VCT_ARG(ids, st->frag_ids), VCT_ARG(voxel_start, start),
+                            VCT_ARG(voxels, nv), VCT_ARG(fragments, f), VCT_ARG_OF(st->tri_normals),
+                            VCT_ARG_OF(st->materials), VCT_ARG_OF(v->keys), VCT_ARG_OF(st->tris),
+                            VCT_ARG(vol, st->desc), VCT_ARG_OF(st->scene.texels),
+                            VCT_ARG_OF(st->scene.texture_table), VCT_ARG_OF(st->scene.tri_uvs),
+                            VCT_ARG(albedo_out, v->albedo), VCT_ARG(normal_out, v->normal),
+                            VCT_ARG(emission_out, v->emission));
     /* kept: light injection reads each voxel's fragments */
     v->fragment_start = start;
     v->fragment_tri = st->frag_ids;
