@@ -60,14 +60,14 @@ int cmd_voxelize(const cli_options *opt) {
     vct_voxel_options vo;
     cli_voxel_options(opt, 256, &vo);
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
-    int rc = v ? vct_octree_build(ctx, v, &err) : (int)err.status;
+    int rc = v ? vct_octree_build(ctx, v, &err) : err.status;
     /* With lights, inject direct light (shadows through the acceleration structure
      * or the lights' bins) first: the bricks then take every channel in
      * one pass. */
     vct_accel *accel = NULL;
     if (rc == VCT_OK && s->light_count) {
         accel = cli_accel_build(ctx, s, opt, &err);
-        rc = accel ? vct_voxels_inject_light(ctx, s, accel, v, &err) : (int)err.status;
+        rc = accel ? vct_voxels_inject_light(ctx, s, accel, v, &err) : err.status;
     }
     const vct_brick_options bo = {opt->bricks, opt->anisotropic == 1, 0};
     if (rc == VCT_OK)

@@ -146,7 +146,7 @@ int cmd_render(const cli_options *opt) {
     vct_image variance = {0};
     if (opt->denoise && method == VCT_METHOD_PATHTRACE)
         job.pathtrace.variance = &variance;
-    int rc = ds ? vct_device_scene_render(ds, &job, &image, &result, &err) : (int)err.status;
+    int rc = ds ? vct_device_scene_render(ds, &job, &image, &result, &err) : err.status;
     const vct_accel *accel = ds ? vct_device_scene_accel(ds) : NULL;
     if (rc == VCT_OK && method == VCT_METHOD_VCT)
         cli_print_voxels(opt, vct_device_scene_voxels(ds));

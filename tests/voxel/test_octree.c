@@ -181,7 +181,7 @@ static void check_octree(const char *name, const vct_scene *s, const vct_voxel_o
 
     /* Deterministic: a second build gives the same pool bit for bit. */
     vct_voxels *w = vct_voxelize(ctx, s, o, &err);
-    REQUIRE_OK(w ? vct_octree_build(ctx, w, &err) : (int)err.status, err);
+    REQUIRE_OK(w ? vct_octree_build(ctx, w, &err) : err.status, err);
     uint32_t *child2 = malloc(4ull * nodes), *nb2 = malloc(24ull * nodes);
     REQUIRE_OK(vct_octree_read(ctx, w, child2, nb2, &err), err);
     CHECK(memcmp(child, child2, 4ull * nodes) == 0 && memcmp(nb, nb2, 24ull * nodes) == 0,
@@ -234,7 +234,7 @@ static void test_voxel_image(void) {
     vct_voxel_options o = voxel_options(16, 1);
     vct_error err = {0};
     vct_voxels *v = vct_voxelize(ctx, s, &o, &err);
-    REQUIRE_OK(v ? vct_octree_build(ctx, v, &err) : (int)err.status, err);
+    REQUIRE_OK(v ? vct_octree_build(ctx, v, &err) : err.status, err);
     vct_image img = {0};
     REQUIRE_OK(vct_render_voxels(ctx, s, v, 33, 33, &img, &err), err);
     const float *centre = &img.rgba[4 * (16 * 33 + 16)], *corner = &img.rgba[0];

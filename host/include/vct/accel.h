@@ -85,11 +85,11 @@ VCT_API vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *scene,
  * instances moved (vct_scene_set_instance_transform), the meshes kept their
  * shape: the top level is built again, the meshes' BVHs kept; the hits are
  * a new build's. */
-VCT_API int vct_accel_refit(vct_context *ctx, vct_accel *accel, const vct_scene *scene,
-                            vct_error *err);
+VCT_API vct_status vct_accel_refit(vct_context *ctx, vct_accel *accel, const vct_scene *scene,
+                                   vct_error *err);
 /* With sah_cost, which reads the nodes back. */
-VCT_API int vct_accel_info_get(vct_context *ctx, const vct_accel *accel, vct_accel_info *info,
-                               vct_error *err);
+VCT_API vct_status vct_accel_info_get(vct_context *ctx, const vct_accel *accel,
+                                      vct_accel_info *info, vct_error *err);
 VCT_API vct_accel_kind vct_accel_kind_of(const vct_accel *accel);
 VCT_API const char *vct_accel_kind_name(vct_accel_kind kind);
 /* "bvh" or "grid"; -1 for anything else. */
@@ -104,8 +104,8 @@ typedef struct vct_hit {
 
 /* Hits for n rays, 8 floats each (origin xyz, tmin; direction xyz, tmax):
  * the closest one, or with any_hit the first found (occlusion queries). */
-VCT_API int vct_trace_rays(vct_context *ctx, const vct_accel *accel, const float *rays, uint32_t n,
-                           int any_hit, vct_hit *hits, vct_error *err);
+VCT_API vct_status vct_trace_rays(vct_context *ctx, const vct_accel *accel, const float *rays,
+                                  uint32_t n, int any_hit, vct_hit *hits, vct_error *err);
 
 #ifdef __cplusplus
 }

@@ -17,8 +17,8 @@ extern "C" {
 
 /* The grid's cell ranges (start, end per cell into tri_ids) and its sorted
  * triangle list, read back. */
-VCT_API int vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start,
-                          uint32_t *cell_end, uint32_t *tri_ids, vct_error *err);
+VCT_API vct_status vct_grid_read(vct_context *ctx, const vct_grid *grid, uint32_t *cell_start,
+                                 uint32_t *cell_end, uint32_t *tri_ids, vct_error *err);
 /* Launches of the kernel named kernel_name on ctx since it was made (what
  * the effect plan's tests count). */
 VCT_API int vct_kernel_launches(const vct_context *ctx, const char *kernel_name);

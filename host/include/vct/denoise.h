@@ -45,8 +45,9 @@ typedef struct vct_denoise_guides {
 
 /* Filters `color` into `out` (allocated here; free with vct_image_release).
  * Every guide must have the image's size. */
-VCT_API int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *guides,
-                        const vct_denoise_options *options, vct_image *out, vct_error *err);
+VCT_API vct_status vct_denoise(vct_context *ctx, const vct_image *color,
+                               const vct_denoise_guides *guides, const vct_denoise_options *options,
+                               vct_image *out, vct_error *err);
 
 #ifdef __cplusplus
 }

@@ -46,12 +46,13 @@ VCT_API vct_device_scene *vct_device_scene_create(vct_context *ctx, const vct_sc
                                                   vct_error *err);
 /* Compares the scene with the last commit and lets go of what its changes
  * invalidate (rewriting lights and materials on the device in place). */
-VCT_API int vct_device_scene_commit(vct_device_scene *ds, vct_error *err);
+VCT_API vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err);
 /* Commits, builds what the job needs (job->scene, accel and voxels are
  * ignored: the device scene's are used, made with job->accel_options,
  * voxel_options, brick_options, bounces and vct.cones), and renders. */
-VCT_API int vct_device_scene_render(vct_device_scene *ds, const vct_render_job *job,
-                                    vct_image *image, vct_render_result *result, vct_error *err);
+VCT_API vct_status vct_device_scene_render(vct_device_scene *ds, const vct_render_job *job,
+                                           vct_image *image, vct_render_result *result,
+                                           vct_error *err);
 VCT_API void vct_device_scene_release(vct_device_scene *ds);
 
 /* What the device scene has done since it was created: for hosts that

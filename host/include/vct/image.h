@@ -46,20 +46,20 @@ VCT_API float vct_tone_exposure(const vct_tone *tone, const float *rgba, size_t 
 VCT_API float vct_tone_curve_apply(vct_tone_curve curve, float x);
 VCT_API const char *vct_tone_curve_name(vct_tone_curve curve);
 /* PNG tone mapped as `tone` says; *applied (may be NULL) gets the stops. */
-VCT_API int vct_image_write_png_tone(const vct_image *image, const char *path, const vct_tone *tone,
-                                     float *applied, vct_error *err);
+VCT_API vct_status vct_image_write_png_tone(const vct_image *image, const char *path,
+                                            const vct_tone *tone, float *applied, vct_error *err);
 /* .png through `tone`; .pfm raw; .exr raw, half floats. */
-VCT_API int vct_image_write_tone(const vct_image *image, const char *path, const vct_tone *tone,
-                                 vct_error *err);
+VCT_API vct_status vct_image_write_tone(const vct_image *image, const char *path,
+                                        const vct_tone *tone, vct_error *err);
 
 /* PFM: raw linear radiance. PNG: radiance * 2^exposure, clipped, sRGB encoded.
  * Written to a temporary file and renamed, so a failure leaves nothing. */
-VCT_API int vct_image_write_pfm(const vct_image *image, const char *path, vct_error *err);
-VCT_API int vct_image_write_png(const vct_image *image, const char *path, float exposure,
-                                vct_error *err);
-VCT_API int vct_image_write(const vct_image *image, const char *path, float exposure,
-                            vct_error *err);
-VCT_API int vct_image_read_pfm(const char *path, vct_image *image, vct_error *err);
+VCT_API vct_status vct_image_write_pfm(const vct_image *image, const char *path, vct_error *err);
+VCT_API vct_status vct_image_write_png(const vct_image *image, const char *path, float exposure,
+                                       vct_error *err);
+VCT_API vct_status vct_image_write(const vct_image *image, const char *path, float exposure,
+                                   vct_error *err);
+VCT_API vct_status vct_image_read_pfm(const char *path, vct_image *image, vct_error *err);
 
 /* OpenEXR: linear half or 32-bit float channels. */
 typedef enum vct_exr_pixel { VCT_EXR_HALF = 0, VCT_EXR_FLOAT = 1 } vct_exr_pixel;
@@ -73,12 +73,12 @@ typedef struct vct_exr_layer {
 } vct_exr_layer;
 /* Layers of one size into one file, written to a temporary name and
  * renamed, so a failure leaves nothing. */
-VCT_API int vct_image_write_exr(const vct_exr_layer *layers, int count, vct_exr_pixel pixel,
-                                const char *path, vct_error *err);
+VCT_API vct_status vct_image_write_exr(const vct_exr_layer *layers, int count, vct_exr_pixel pixel,
+                                       const char *path, vct_error *err);
 /* The R, G and B channels of a scanline EXR file (alpha set to 1). */
-VCT_API int vct_image_read_exr(const char *path, vct_image *image, vct_error *err);
+VCT_API vct_status vct_image_read_exr(const char *path, vct_image *image, vct_error *err);
 /* .pfm or .exr, by the name's ending. */
-VCT_API int vct_image_read(const char *path, vct_image *image, vct_error *err);
+VCT_API vct_status vct_image_read(const char *path, vct_image *image, vct_error *err);
 
 typedef struct vct_image_metrics {
     double mse, rmse;
@@ -94,12 +94,12 @@ typedef struct vct_image_metrics {
 } vct_image_metrics;
 
 /* Errors of `test` against `ref` over the rgb channels of every pixel. */
-VCT_API int vct_image_compare(const vct_image *test, const vct_image *ref,
-                              vct_image_metrics *metrics, vct_error *err);
+VCT_API vct_status vct_image_compare(const vct_image *test, const vct_image *ref,
+                                     vct_image_metrics *metrics, vct_error *err);
 /* Per-pixel mean absolute error as false colour (blue = 0, red >= scale;
  * scale <= 0: the largest error). The result is a displayable linear image. */
-VCT_API int vct_image_error_map(const vct_image *test, const vct_image *ref, double scale,
-                                vct_image *out, vct_error *err);
+VCT_API vct_status vct_image_error_map(const vct_image *test, const vct_image *ref, double scale,
+                                       vct_image *out, vct_error *err);
 
 #ifdef __cplusplus
 }

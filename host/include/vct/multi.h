@@ -50,8 +50,8 @@ typedef struct vct_group_build {
 
 /* Builds `scene`'s structures on every device, at once; a device that cannot
  * hold them is left out with a message, unless none can. */
-VCT_API int vct_group_prepare(vct_group *group, const vct_scene *scene,
-                              const vct_group_build *build, vct_error *err);
+VCT_API vct_status vct_group_prepare(vct_group *group, const vct_scene *scene,
+                                     const vct_group_build *build, vct_error *err);
 
 /* Renders `job` over the group's devices, with each device's own structures
  * (the job's accel and voxels are not read; its aovs must be NULL, its band
@@ -60,8 +60,8 @@ VCT_API int vct_group_prepare(vct_group *group, const vct_scene *scene,
  * or statistics; a device dropped then loses what it held from earlier
  * calls (the path tracer averages the samples that remain; photon mapping
  * starts over). Photon mapping takes a pass count, not a time. */
-VCT_API int vct_group_render(vct_group *group, const vct_render_job *job, vct_image *image,
-                             vct_render_result *result, vct_error *err);
+VCT_API vct_status vct_group_render(vct_group *group, const vct_render_job *job, vct_image *image,
+                                    vct_render_result *result, vct_error *err);
 
 typedef struct vct_group_device {
     vct_device_info info;

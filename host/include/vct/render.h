@@ -31,8 +31,9 @@ typedef struct vct_render_options {
 VCT_API vct_render_options vct_render_options_default(int width, int height);
 
 /* Direct illumination with hard shadows by ray casting. */
-VCT_API int vct_render_raycast(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                               const vct_render_options *options, vct_image *image, vct_error *err);
+VCT_API vct_status vct_render_raycast(vct_context *ctx, const vct_scene *scene,
+                                      const vct_accel *accel, const vct_render_options *options,
+                                      vct_image *image, vct_error *err);
 
 typedef struct vct_pathtrace_options {
     int width, height;
@@ -64,25 +65,28 @@ typedef struct vct_pathtrace_result {
  * albedo (textured; 1 where rays leave the scene) and, in normal_depth, its
  * normal facing the viewer (xyz, not normalised) and distance (w, 0 where
  * no ray hit), each the mean of rays_per_axis^2 rays across the pixel. */
-VCT_API int vct_render_guides(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                              int width, int height, uint32_t rays_per_axis, vct_image *albedo,
-                              vct_image *normal_depth, vct_error *err);
+VCT_API vct_status vct_render_guides(vct_context *ctx, const vct_scene *scene,
+                                     const vct_accel *accel, int width, int height,
+                                     uint32_t rays_per_axis, vct_image *albedo,
+                                     vct_image *normal_depth, vct_error *err);
 
 /* Unbiased path tracing: next-event estimation with MIS, Lambert, glossy,
  * mirror and dielectric materials, Russian roulette. result may be NULL. */
-VCT_API int vct_render_pathtrace(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                                 const vct_pathtrace_options *options, vct_image *image,
-                                 vct_pathtrace_result *result, vct_error *err);
+VCT_API vct_status vct_render_pathtrace(vct_context *ctx, const vct_scene *scene,
+                                        const vct_accel *accel,
+                                        const vct_pathtrace_options *options, vct_image *image,
+                                        vct_pathtrace_result *result, vct_error *err);
 
 /* The voxels as the scene camera sees them, ray marched through the octree:
  * their injected radiance once light is injected, else albedo under a headlight. */
-VCT_API int vct_render_voxels(vct_context *ctx, const vct_scene *scene, const vct_voxels *voxels,
-                              int width, int height, vct_image *image, vct_error *err);
+VCT_API vct_status vct_render_voxels(vct_context *ctx, const vct_scene *scene,
+                                     const vct_voxels *voxels, int width, int height,
+                                     vct_image *image, vct_error *err);
 /* The same at octree level `level` (0 = root .. levels = voxels): below the
  * leaf level every node with geometry in it shows as a grey cube. */
-VCT_API int vct_render_voxels_level(vct_context *ctx, const vct_scene *scene,
-                                    const vct_voxels *voxels, uint32_t level, int width, int height,
-                                    vct_image *image, vct_error *err);
+VCT_API vct_status vct_render_voxels_level(vct_context *ctx, const vct_scene *scene,
+                                           const vct_voxels *voxels, uint32_t level, int width,
+                                           int height, vct_image *image, vct_error *err);
 
 /* The effect plan: which effects a scene calls for, and why. The renderer
  * enqueues no work for an effect that is off. */
@@ -160,18 +164,19 @@ VCT_API void vct_aovs_release(vct_aovs *aovs);
  * (when indirect diffuse or specular is on) with `bounces` - 1 extra
  * diffuse bounces gathered at the voxels by the 6-cone preset. *voxels is
  * NULL when the plan needs none. */
-VCT_API int vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                            const vct_plan *plan, const vct_voxel_options *voxel_options,
-                            const vct_brick_options *brick_options, uint32_t bounces,
-                            const vct_cone_settings *cones, vct_voxels **voxels, vct_error *err);
+VCT_API vct_status vct_vct_prepare(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                                   const vct_plan *plan, const vct_voxel_options *voxel_options,
+                                   const vct_brick_options *brick_options, uint32_t bounces,
+                                   const vct_cone_settings *cones, vct_voxels **voxels,
+                                   vct_error *err);
 
 /* Renders by voxel cone tracing: stages "vct primary", "vct diffuse cones"
  * and "vct specular cone", each only when the plan calls for it. voxels may
  * be NULL when the plan needs none. aovs may be NULL. */
-VCT_API int vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                           const vct_voxels *voxels, const vct_plan *plan,
-                           const vct_vct_options *options, vct_image *image, vct_aovs *aovs,
-                           vct_error *err);
+VCT_API vct_status vct_render_vct(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                                  const vct_voxels *voxels, const vct_plan *plan,
+                                  const vct_vct_options *options, vct_image *image, vct_aovs *aovs,
+                                  vct_error *err);
 
 /* ---- one way to every method -------------------------------------------------- */
 
@@ -226,9 +231,9 @@ typedef struct vct_whitted_result {
 } vct_whitted_result;
 
 /* result may be NULL. */
-VCT_API int vct_render_whitted(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                               const vct_whitted_options *options, vct_image *image,
-                               vct_whitted_result *result, vct_error *err);
+VCT_API vct_status vct_render_whitted(vct_context *ctx, const vct_scene *scene,
+                                      const vct_accel *accel, const vct_whitted_options *options,
+                                      vct_image *image, vct_whitted_result *result, vct_error *err);
 
 /* Photon mapping (seed 000, made progressive). Each pass traces the camera
  * rays through mirrors and glass to their first diffuse or glossy hit,
@@ -286,9 +291,9 @@ typedef struct vct_pm_result {
     double seconds, trace_ms, grid_ms, gather_ms; /* wall time; per-part device time */
 } vct_pm_result;
 /* result may be NULL. */
-VCT_API int vct_render_pm(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
-                          const vct_pm_options *options, vct_image *image, vct_pm_result *result,
-                          vct_error *err);
+VCT_API vct_status vct_render_pm(vct_context *ctx, const vct_scene *scene, const vct_accel *accel,
+                                 const vct_pm_options *options, vct_image *image,
+                                 vct_pm_result *result, vct_error *err);
 
 /* The ray caster's options (vct_render_raycast's). */
 typedef vct_render_options vct_raycast_options;
@@ -359,8 +364,8 @@ VCT_API const char *vct_method_name(vct_method method);
 VCT_API int vct_method_from_name(const char *name);
 /* Renders `job` into the context's frame and returns it in `image` (as every
  * renderer does; see vct_frame_host_copy). result may be NULL. */
-VCT_API int vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
-                       vct_render_result *result, vct_error *err);
+VCT_API vct_status vct_render(vct_context *ctx, const vct_render_job *job, vct_image *image,
+                              vct_render_result *result, vct_error *err);
 
 /* ---- the frame and OpenGL display ----------------------------------------------- */
 
@@ -373,7 +378,7 @@ VCT_API void vct_frame_host_copy(vct_context *ctx, int on);
 /* The last frame's size (0 x 0 before any), and a copy of it into `rgba`,
  * which holds `floats` floats (at least width * height * 4). */
 VCT_API void vct_frame_size(const vct_context *ctx, int *width, int *height);
-VCT_API int vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err);
+VCT_API vct_status vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err);
 
 /* A context that shares objects with an OpenGL context (cl_khr_gl_sharing on
  * GLX): glx_context is the GLXContext, x_display the X Display it belongs to.
@@ -385,7 +390,7 @@ VCT_API int vct_context_shares_gl(const vct_context *ctx);
 /* Copies the frame into an OpenGL buffer object of at least width * height
  * * 16 bytes, on the device: acquire, copy, release, finish. Call glFinish()
  * first so that GL is done with the buffer; it is complete on return. */
-VCT_API int vct_frame_to_gl_buffer(vct_context *ctx, unsigned gl_buffer, vct_error *err);
+VCT_API vct_status vct_frame_to_gl_buffer(vct_context *ctx, unsigned gl_buffer, vct_error *err);
 
 #ifdef __cplusplus
 }

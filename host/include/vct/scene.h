@@ -127,7 +127,7 @@ VCT_API vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex
                                          const uint32_t *triangle_material,
                                          const vct_material *materials, uint32_t material_count,
                                          vct_error *err);
-VCT_API int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_error *err);
+VCT_API vct_status vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_error *err);
 /* Places instance `instance` with a new transform: its vertices in the flat
  * arrays are transformed again (as loading does, in double), the bounds
  * updated. A transform with a value that is not finite, or that makes a
@@ -135,12 +135,12 @@ VCT_API int vct_scene_add_light(vct_scene *scene, const vct_light *light, vct_er
 /* Places mesh `mesh` once more, at `transform`: its triangles and vertices
  * are appended to the flat arrays, with the materials and texture
  * coordinates of the mesh's first instance. */
-VCT_API int vct_scene_add_instance(vct_scene *scene, uint32_t mesh, const float transform[12],
-                                   vct_error *err);
-VCT_API int vct_scene_set_instance_transform(vct_scene *scene, uint32_t instance,
-                                             const float transform[12], vct_error *err);
+VCT_API vct_status vct_scene_add_instance(vct_scene *scene, uint32_t mesh,
+                                          const float transform[12], vct_error *err);
+VCT_API vct_status vct_scene_set_instance_transform(vct_scene *scene, uint32_t instance,
+                                                    const float transform[12], vct_error *err);
 /* Checks indices, finite values, non-empty; counts degenerates; sets bounds. */
-VCT_API int vct_scene_validate(vct_scene *scene, vct_error *err);
+VCT_API vct_status vct_scene_validate(vct_scene *scene, vct_error *err);
 /* A default camera framing the scene's bounds, looking down -z. */
 VCT_API void vct_scene_default_camera(const vct_scene *scene, vct_camera *camera);
 VCT_API void vct_scene_release(vct_scene *scene);

@@ -64,21 +64,22 @@ VCT_API vct_voxels *vct_voxels_copy(vct_context *ctx, const vct_voxels *voxels, 
 VCT_API vct_voxels *vct_voxelize(vct_context *ctx, const vct_scene *scene,
                                  const vct_voxel_options *options, vct_error *err);
 /* Builds the sparse voxel octree over the voxels, with neighbour links. */
-VCT_API int vct_octree_build(vct_context *ctx, vct_voxels *voxels, vct_error *err);
+VCT_API vct_status vct_octree_build(vct_context *ctx, vct_voxels *voxels, vct_error *err);
 VCT_API void vct_voxels_info_get(const vct_voxels *voxels, vct_voxel_info *info);
 /* Per voxel: Morton key; albedo rgb + opacity; unit normal + coherence (the
  * mean unit normal's length); emission rgb + fragment count. NULL skips one. */
-VCT_API int vct_voxels_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *keys,
-                            float *albedo, float *normal, float *emission, vct_error *err);
+VCT_API vct_status vct_voxels_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *keys,
+                                   float *albedo, float *normal, float *emission, vct_error *err);
 /* Per node: child (first node of the child tile, or at the leaf level the
  * voxel index; VCT_NODE_NULL when empty) and 6 neighbour links (+x, +y, +z,
  * -x, -y, -z). Either may be NULL. */
-VCT_API int vct_octree_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *child,
-                            uint32_t *neighbours, vct_error *err);
+VCT_API vct_status vct_octree_read(vct_context *ctx, const vct_voxels *voxels, uint32_t *child,
+                                   uint32_t *neighbours, vct_error *err);
 /* Runs the kernels' traversal: for each query (x, y, z, level), cell
  * coordinates at that level, the node covering it or VCT_NODE_NULL. */
-VCT_API int vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels, const uint32_t *queries,
-                              uint32_t n, uint32_t *nodes, vct_error *err);
+VCT_API vct_status vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels,
+                                     const uint32_t *queries, uint32_t n, uint32_t *nodes,
+                                     vct_error *err);
 /* Injects direct light into the voxels: per voxel and per side of its
  * surfaces, the outgoing radiance albedo / pi * irradiance (every light of
  * the scene, shadows through the acceleration structure, or for point and
@@ -86,18 +87,19 @@ VCT_API int vct_octree_lookup(vct_context *ctx, const vct_voxels *voxels, const 
  * same answer) + emission, at the voxel centre. A wall lit on one face keeps
  * its other face dark (vct_voxels_read_sides). Call again after moving
  * lights: nothing is re-voxelized. */
-VCT_API int vct_voxels_inject_light(vct_context *ctx, const vct_scene *scene,
-                                    const vct_accel *accel, vct_voxels *voxels, vct_error *err);
+VCT_API vct_status vct_voxels_inject_light(vct_context *ctx, const vct_scene *scene,
+                                           const vct_accel *accel, vct_voxels *voxels,
+                                           vct_error *err);
 /* Per voxel: injected radiance rgb (its brighter side's) and the voxel's
  * opacity (as in its albedo's w), in voxel order. */
-VCT_API int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *voxels, float *radiance,
-                                     vct_error *err);
+VCT_API vct_status vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *voxels,
+                                            float *radiance, vct_error *err);
 /* Per voxel, 8 floats (kernels/voxel/voxel_side.h): the brighter side's
  * radiance less the darker side's, and that difference's luminance; the
  * brighter side's unit normal (0 without one) and its plane's offset
  * (normal . (p - 0.5), p in volume units [0, 1)^3). */
-VCT_API int vct_voxels_read_sides(vct_context *ctx, const vct_voxels *voxels, float *sides,
-                                  vct_error *err);
+VCT_API vct_status vct_voxels_read_sides(vct_context *ctx, const vct_voxels *voxels, float *sides,
+                                         vct_error *err);
 VCT_API void vct_voxels_release(vct_voxels *voxels);
 
 /* Every octree node with geometry below it (levels 0 .. L-1) owns a brick of
@@ -166,20 +168,20 @@ typedef struct vct_brick_info {
 /* Builds the bricks of every channel (radiance from the injected light, or 0
  * before injection; left out with radiance_later). vct_voxels_inject_light
  * (re-)builds and re-filters radiance. */
-VCT_API int vct_bricks_build(vct_context *ctx, vct_voxels *voxels, const vct_brick_options *options,
-                             vct_error *err);
+VCT_API vct_status vct_bricks_build(vct_context *ctx, vct_voxels *voxels,
+                                    const vct_brick_options *options, vct_error *err);
 /* 0 and no change when no bricks are built. */
 VCT_API int vct_bricks_info_get(const vct_voxels *voxels, vct_brick_info *info);
 /* Bricks first .. first + count - 1 of one channel as float4 texels, 27 per
  * brick (index k * 9 + j * 3 + i), read through the kernels' own brick access. */
-VCT_API int vct_bricks_read(vct_context *ctx, const vct_voxels *voxels, int channel, uint32_t first,
-                            uint32_t count, float *out, vct_error *err);
+VCT_API vct_status vct_bricks_read(vct_context *ctx, const vct_voxels *voxels, int channel,
+                                   uint32_t first, uint32_t count, float *out, vct_error *err);
 /* Trilinear samples of one channel at `level` (0 .. L-1; directions 0 .. L-2)
  * at n world points (xyz, 4 floats each, w unused), as float4: what a cone
  * reads. A point in a node without a brick reads 0. */
-VCT_API int vct_bricks_sample(vct_context *ctx, const vct_voxels *voxels, int channel,
-                              uint32_t level, const float *points, uint32_t n, float *out,
-                              vct_error *err);
+VCT_API vct_status vct_bricks_sample(vct_context *ctx, const vct_voxels *voxels, int channel,
+                                     uint32_t level, const float *points, uint32_t n, float *out,
+                                     vct_error *err);
 
 /* How cones march (kernels/voxel/cone_trace.h). */
 typedef struct vct_cone_settings {
@@ -202,7 +204,7 @@ VCT_API vct_cone_settings vct_cone_settings_default(void);
  * hemisphere closest to its cone, so the weights sum to 1 and a constant
  * environment L is integrated exactly: sum w_i L = L. A cone's half-angle
  * matches its share's solid angle, at most 20 degrees. */
-VCT_API int vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err);
+VCT_API vct_status vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err);
 
 /* Marches n cones through the radiance bricks: 8 floats in each (origin xyz,
  * tan(half-angle); unit direction xyz, reach), 8 floats out each (radiance
@@ -210,9 +212,9 @@ VCT_API int vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_er
  * samples, 1 if it left the volume). `ambient`: radiance beyond the volume
  * (NULL: none). The bricks must be built (and lit, when built with
  * radiance_later). */
-VCT_API int vct_cone_trace(vct_context *ctx, const vct_voxels *voxels,
-                           const vct_cone_settings *settings, const float *ambient,
-                           const float *cones, uint32_t n, float *out, vct_error *err);
+VCT_API vct_status vct_cone_trace(vct_context *ctx, const vct_voxels *voxels,
+                                  const vct_cone_settings *settings, const float *ambient,
+                                  const float *cones, uint32_t n, float *out, vct_error *err);
 
 /* Adds one diffuse bounce to the voxels' light: cones from every voxel
  * gather the filtered radiance, the voxel's radiance becomes its injected
@@ -221,10 +223,10 @@ VCT_API int vct_cone_trace(vct_context *ctx, const vct_voxels *voxels,
  * bounces, each counted once; vct_voxels_inject_light starts over. A cone
  * that leaves the volume sees the scene's ambient light only where a ray
  * along its axis through `accel` meets nothing. */
-VCT_API int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene,
-                                     const vct_accel *accel, vct_voxels *voxels,
-                                     const vct_cone_settings *settings, uint32_t diffuse_cones,
-                                     vct_error *err);
+VCT_API vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene,
+                                            const vct_accel *accel, vct_voxels *voxels,
+                                            const vct_cone_settings *settings,
+                                            uint32_t diffuse_cones, vct_error *err);
 
 /* After the last bounce: adds the bounces still to come, as each bounce
  * adds what the one before it added times a ratio r, to each voxel its
@@ -232,7 +234,7 @@ VCT_API int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene,
  * the last bounce added, summed over the voxels, over what the one before
  * it added (at most VCT_BOUNCE_RATIO_MAX). Nothing with fewer than two
  * bounces since light injection, or with exact_bounces. */
-VCT_API int vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *voxels, vct_error *err);
+VCT_API vct_status vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *voxels, vct_error *err);
 
 /* The ratio the last vct_voxels_bounce_rest used (0: none). */
 VCT_API double vct_voxels_bounce_ratio(const vct_voxels *voxels);

@@ -54,7 +54,7 @@ vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *s, const vct_accel
     return a;
 }
 
-int vct_accel_refit(vct_context *ctx, vct_accel *a, const vct_scene *s, vct_error *err) {
+vct_status vct_accel_refit(vct_context *ctx, vct_accel *a, const vct_scene *s, vct_error *err) {
     const double start = vct_now_ms();
     int rc;
     if (a->bvh2) { /* the meshes keep their shape: the top level and vertices again */
@@ -80,7 +80,8 @@ static double mem_bytes(cl_mem m) {
     return (double)bytes;
 }
 
-int vct_accel_info_get(vct_context *ctx, const vct_accel *a, vct_accel_info *info, vct_error *err) {
+vct_status vct_accel_info_get(vct_context *ctx, const vct_accel *a, vct_accel_info *info,
+                              vct_error *err) {
     memset(info, 0, sizeof *info);
     info->kind = a->kind;
     info->build_ms = a->build_ms;

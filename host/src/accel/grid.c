@@ -186,8 +186,8 @@ vct_grid *vct_grid_build(vct_context *ctx, const vct_scene *s, const uint32_t *r
     return g;
 }
 
-int vct_grid_read(vct_context *ctx, const vct_grid *g, uint32_t *cell_start, uint32_t *cell_end,
-                  uint32_t *tri_ids, vct_error *err) {
+vct_status vct_grid_read(vct_context *ctx, const vct_grid *g, uint32_t *cell_start,
+                         uint32_t *cell_end, uint32_t *tri_ids, vct_error *err) {
     size_t cells = (size_t)g->res[0] * g->res[1] * g->res[2];
     uint32_t *ranges = malloc(8 * cells), *bits = malloc(4 * ((cells + 31) / 32));
     if (!ranges || !bits) {

@@ -128,9 +128,9 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
     return refresh ? vct_bricks_refresh_radiance(ctx, v, err) : VCT_OK;
 }
 
-int vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                             vct_voxels *v, const vct_cone_settings *cs, uint32_t diffuse_cones,
-                             vct_error *err) {
+vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                                    vct_voxels *v, const vct_cone_settings *cs,
+                                    uint32_t diffuse_cones, vct_error *err) {
     return inject_bounce(ctx, s, g, v, cs, diffuse_cones, 1, err);
 }
 
@@ -141,7 +141,7 @@ static int light_bounces(vct_context *ctx, const vct_scene *s, const vct_accel *
     int rc = VCT_OK;
     for (uint32_t b = 1; rc == VCT_OK && b < bounces; ++b)
         rc = inject_bounce(ctx, s, g, v, cs, 6, b + 1 < bounces || !v->bounce_rest, err);
-    return rc == VCT_OK ? vct_voxels_bounce_rest(ctx, v, err) : rc;
+    return rc == VCT_OK ? vct_voxels_bounce_rest(ctx, v, err) : (vct_status)rc;
 }
 
 static int check_bounces(uint32_t bounces, vct_error *err) {
@@ -151,9 +151,10 @@ static int check_bounces(uint32_t bounces, vct_error *err) {
     return VCT_OK;
 }
 
-int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, const vct_plan *plan,
-                    const vct_voxel_options *vo, const vct_brick_options *bo, uint32_t bounces,
-                    const vct_cone_settings *cs, vct_voxels **out, vct_error *err) {
+vct_status vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                           const vct_plan *plan, const vct_voxel_options *vo,
+                           const vct_brick_options *bo, uint32_t bounces,
+                           const vct_cone_settings *cs, vct_voxels **out, vct_error *err) {
     *out = NULL;
     if (!vct_plan_needs_voxels(plan))
         return VCT_OK;
@@ -162,7 +163,7 @@ int vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g, co
     vct_voxels *v = vct_voxelize(ctx, s, vo, err);
     if (v)
         v->emitters_by_cones = plan->emitters_by_cones;
-    int rc = v ? vct_octree_build(ctx, v, err) : (int)err->status;
+    int rc = v ? vct_octree_build(ctx, v, err) : err->status;
     /* Light first, into the voxels: the bricks then build and filter every
      * channel in one pass (1.2x faster than re-filtering radiance after). */
     const int lit = vct_plan_needs_voxel_light(plan);
@@ -391,9 +392,9 @@ static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
     return rc;
 }
 
-int vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g, const vct_voxels *v,
-                   const vct_plan *plan, const vct_vct_options *opt, vct_image *image,
-                   vct_aovs *aovs, vct_error *err) {
+vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                          const vct_voxels *v, const vct_plan *plan, const vct_vct_options *opt,
+                          vct_image *image, vct_aovs *aovs, vct_error *err) {
     memset(image, 0, sizeof *image);
     if (aovs)
         memset(aovs, 0, sizeof *aovs);

@@ -8,14 +8,14 @@
 #include "vct_types.h"
 #include "voxel/voxels.h"
 
-int vct_render_voxels(vct_context *ctx, const vct_scene *s, const vct_voxels *v, int width,
-                      int height, vct_image *image, vct_error *err) {
+vct_status vct_render_voxels(vct_context *ctx, const vct_scene *s, const vct_voxels *v, int width,
+                             int height, vct_image *image, vct_error *err) {
     return vct_render_voxels_level(ctx, s, v, v->info.levels, width, height, image, err);
 }
 
-int vct_render_voxels_level(vct_context *ctx, const vct_scene *s, const vct_voxels *v,
-                            uint32_t level, int width, int height, vct_image *image,
-                            vct_error *err) {
+vct_status vct_render_voxels_level(vct_context *ctx, const vct_scene *s, const vct_voxels *v,
+                                   uint32_t level, int width, int height, vct_image *image,
+                                   vct_error *err) {
     const char *stage = "voxel render";
     memset(image, 0, sizeof *image);
     if (!v->child)

@@ -149,8 +149,8 @@ static int upload(denoise_run *r, const vct_image *color, const vct_denoise_guid
     return r->slope ? VCT_OK : (int)err->status;
 }
 
-int vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
-                const vct_denoise_options *o, vct_image *out, vct_error *err) {
+vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
+                       const vct_denoise_options *o, vct_image *out, vct_error *err) {
     memset(out, 0, sizeof *out);
     int rc = check_inputs(color, g, o, err);
     if (rc)

@@ -73,7 +73,7 @@ static void drop_voxels(vct_device_scene *ds) {
     ds->light_stale = 0;
 }
 
-int vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
+vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
     vct_scene_digest now;
     vct_scene_digest_make(ds->scene, &now);
     const unsigned changed = vct_scene_digest_changes(&ds->digest, &now);
@@ -177,8 +177,8 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
     return VCT_OK;
 }
 
-int vct_device_scene_render(vct_device_scene *ds, const vct_render_job *job, vct_image *image,
-                            vct_render_result *result, vct_error *err) {
+vct_status vct_device_scene_render(vct_device_scene *ds, const vct_render_job *job,
+                                   vct_image *image, vct_render_result *result, vct_error *err) {
     memset(image, 0, sizeof *image);
     int rc = vct_device_scene_commit(ds, err);
     vct_render_job own = *job;

@@ -61,7 +61,7 @@ void vct_frame_size(const vct_context *ctx, int *width, int *height) {
     *height = ctx->frame_size[1];
 }
 
-int vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err) {
+vct_status vct_frame_read(vct_context *ctx, float *rgba, size_t floats, vct_error *err) {
     if (!ctx->frame)
         return vct_fail(err, VCT_ERR_INPUT, "frame: nothing has been rendered yet");
     const size_t need = 4 * (size_t)ctx->frame_size[0] * (size_t)ctx->frame_size[1];

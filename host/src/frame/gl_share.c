@@ -25,7 +25,7 @@ int vct_context_shares_gl(const vct_context *ctx) {
     return ctx->gl_shared;
 }
 
-int vct_frame_to_gl_buffer(vct_context *ctx, unsigned gl_buffer, vct_error *err) {
+vct_status vct_frame_to_gl_buffer(vct_context *ctx, unsigned gl_buffer, vct_error *err) {
     if (!ctx->gl_shared)
         return vct_fail(err, VCT_ERR_INPUT,
                         "%s: this context shares nothing with OpenGL (vct_context_create_gl)",

@@ -21,9 +21,9 @@ static int read_image(vct_context *ctx, cl_mem b, int width, int height, vct_ima
     return vct_buffer_read(ctx, STAGE, b, 0, bytes, out->rgba, err);
 }
 
-int vct_render_guides(vct_context *ctx, const vct_scene *s, const vct_accel *g, int width,
-                      int height, uint32_t rays_per_axis, vct_image *albedo,
-                      vct_image *normal_depth, vct_error *err) {
+vct_status vct_render_guides(vct_context *ctx, const vct_scene *s, const vct_accel *g, int width,
+                             int height, uint32_t rays_per_axis, vct_image *albedo,
+                             vct_image *normal_depth, vct_error *err) {
     memset(albedo, 0, sizeof *albedo);
     memset(normal_depth, 0, sizeof *normal_depth);
     if (rays_per_axis < 1 || rays_per_axis > 16)

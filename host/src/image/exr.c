@@ -92,8 +92,8 @@ static exr_result_t write_chunks(exr_context_t ctx, const exr_source *src, int n
     return rc;
 }
 
-int vct_image_write_exr(const vct_exr_layer *layers, int count, vct_exr_pixel pixel,
-                        const char *path, vct_error *err) {
+vct_status vct_image_write_exr(const vct_exr_layer *layers, int count, vct_exr_pixel pixel,
+                               const char *path, vct_error *err) {
     enum { MAX_CHANNELS = 64 };
     exr_source src[MAX_CHANNELS];
     int n = 0;
@@ -159,7 +159,7 @@ static exr_result_t read_chunks(exr_context_t ctx, float *rgba, int width, int h
     return rc;
 }
 
-int vct_image_read_exr(const char *path, vct_image *image, vct_error *err) {
+vct_status vct_image_read_exr(const char *path, vct_image *image, vct_error *err) {
     memset(image, 0, sizeof *image);
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;

@@ -23,7 +23,7 @@ static int finish_file(FILE *f, const char *tmp, const char *path, vct_error *er
     return VCT_OK;
 }
 
-int vct_image_write_pfm(const vct_image *im, const char *path, vct_error *err) {
+vct_status vct_image_write_pfm(const vct_image *im, const char *path, vct_error *err) {
     char tmp[4096];
     snprintf(tmp, sizeof tmp, "%s.tmp%d", path, (int)getpid());
     FILE *f = fopen(tmp, "wb");
@@ -60,8 +60,8 @@ static void write_to_file(void *context, void *data, int size) {
     fwrite(data, 1, (size_t)size, (FILE *)context);
 }
 
-int vct_image_write_png_tone(const vct_image *im, const char *path, const vct_tone *tone,
-                             float *applied, vct_error *err) {
+vct_status vct_image_write_png_tone(const vct_image *im, const char *path, const vct_tone *tone,
+                                    float *applied, vct_error *err) {
     size_t pixels = (size_t)im->width * im->height;
     unsigned char *rgb = malloc(3 * pixels);
     if (!rgb)
@@ -90,12 +90,13 @@ int vct_image_write_png_tone(const vct_image *im, const char *path, const vct_to
     return finish_file(f, tmp, path, err);
 }
 
-int vct_image_write_png(const vct_image *im, const char *path, float exposure, vct_error *err) {
+vct_status vct_image_write_png(const vct_image *im, const char *path, float exposure,
+                               vct_error *err) {
     const vct_tone tone = {0, exposure, VCT_TONE_CLIP};
     return vct_image_write_png_tone(im, path, &tone, NULL, err);
 }
 
-int vct_image_read_pfm(const char *path, vct_image *im, vct_error *err) {
+vct_status vct_image_read_pfm(const char *path, vct_image *im, vct_error *err) {
     memset(im, 0, sizeof *im);
     FILE *f = fopen(path, "rb");
     if (!f)

@@ -9,8 +9,8 @@
  * dominate; eps = 1e-2 as is customary for rendering comparisons. */
 #define REL_MSE_EPS 1e-2
 
-int vct_image_compare(const vct_image *test, const vct_image *ref, vct_image_metrics *m,
-                      vct_error *err) {
+vct_status vct_image_compare(const vct_image *test, const vct_image *ref, vct_image_metrics *m,
+                             vct_error *err) {
     memset(m, 0, sizeof *m);
     if (test->width != ref->width || test->height != ref->height)
         return vct_fail(err, VCT_ERR_INPUT, "compare: image sizes differ (%dx%d vs %dx%d)",
@@ -63,8 +63,8 @@ static void ramp(double x, float *rgb) {
         rgb[c] = stops[i][c] + f * (stops[i + 1][c] - stops[i][c]);
 }
 
-int vct_image_error_map(const vct_image *test, const vct_image *ref, double scale, vct_image *out,
-                        vct_error *err) {
+vct_status vct_image_error_map(const vct_image *test, const vct_image *ref, double scale,
+                               vct_image *out, vct_error *err) {
     memset(out, 0, sizeof *out);
     if (test->width != ref->width || test->height != ref->height)
         return vct_fail(err, VCT_ERR_INPUT, "compare: image sizes differ (%dx%d vs %dx%d)",

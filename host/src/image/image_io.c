@@ -6,8 +6,8 @@
 #include "runtime/error.h"
 #include "vct/image.h"
 
-int vct_image_write_tone(const vct_image *im, const char *path, const vct_tone *tone,
-                         vct_error *err) {
+vct_status vct_image_write_tone(const vct_image *im, const char *path, const vct_tone *tone,
+                                vct_error *err) {
     const char *dot = strrchr(path, '.');
     if (dot && strcasecmp(dot, ".pfm") == 0)
         return vct_image_write_pfm(im, path, err);
@@ -20,12 +20,12 @@ int vct_image_write_tone(const vct_image *im, const char *path, const vct_tone *
     return vct_fail(err, VCT_ERR_INPUT, "image: %s: the name must end in .exr, .pfm or .png", path);
 }
 
-int vct_image_write(const vct_image *im, const char *path, float exposure, vct_error *err) {
+vct_status vct_image_write(const vct_image *im, const char *path, float exposure, vct_error *err) {
     const vct_tone tone = {0, exposure, VCT_TONE_CLIP};
     return vct_image_write_tone(im, path, &tone, err);
 }
 
-int vct_image_read(const char *path, vct_image *im, vct_error *err) {
+vct_status vct_image_read(const char *path, vct_image *im, vct_error *err) {
     const char *dot = strrchr(path, '.');
     if (dot && strcasecmp(dot, ".exr") == 0)
         return vct_image_read_exr(path, im, err);

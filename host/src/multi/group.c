@@ -151,8 +151,8 @@ static void copy_voxels(vct_group *g, prepare_job *p) {
     }
 }
 
-int vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_group_build *build,
-                      vct_error *err) {
+vct_status vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_group_build *build,
+                             vct_error *err) {
     prepare_job p;
     memset(&p, 0, sizeof p);
     p.scene = scene;
@@ -189,8 +189,8 @@ int vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_group_buil
 
 /* ---- rendering ------------------------------------------------------------------- */
 
-int vct_group_render(vct_group *g, const vct_render_job *job, vct_image *image,
-                     vct_render_result *result, vct_error *err) {
+vct_status vct_group_render(vct_group *g, const vct_render_job *job, vct_image *image,
+                            vct_render_result *result, vct_error *err) {
     memset(image, 0, sizeof *image);
     if (job->aovs)
         return vct_fail(err, VCT_ERR_INPUT,

@@ -95,8 +95,8 @@ static int scan_impl(vct_context *ctx, cl_mem in, cl_mem out, uint32_t n, int in
     return VCT_OK;
 }
 
-int vct_scan_u32(vct_context *ctx, void *in_mem, void *out_mem, uint32_t n, int inclusive,
-                 uint64_t *total, vct_error *err) {
+vct_status vct_scan_u32(vct_context *ctx, void *in_mem, void *out_mem, uint32_t n, int inclusive,
+                        uint64_t *total, vct_error *err) {
     uint64_t sum = 0; /* always read: overflow must be reported */
     int rc = scan_impl(ctx, (cl_mem)in_mem, (cl_mem)out_mem, n, inclusive, 0, &sum, err);
     if (total)
@@ -104,8 +104,8 @@ int vct_scan_u32(vct_context *ctx, void *in_mem, void *out_mem, uint32_t n, int 
     return rc;
 }
 
-int vct_compact_u32(vct_context *ctx, void *in_mem, void *flags_mem, void *out_mem, uint32_t n,
-                    uint32_t *count, vct_error *err) {
+vct_status vct_compact_u32(vct_context *ctx, void *in_mem, void *flags_mem, void *out_mem,
+                           uint32_t n, uint32_t *count, vct_error *err) {
     *count = 0;
     if (n == 0)
         return VCT_OK;
@@ -223,18 +223,19 @@ int vct_key_bits_for(uint64_t count) {
     return b;
 }
 
-int vct_sort_pairs_u32(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n, int key_bits,
-                       vct_error *err) {
+vct_status vct_sort_pairs_u32(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
+                              int key_bits, vct_error *err) {
     return sort_impl(ctx, (cl_mem)keys_mem, (cl_mem)values_mem, n, key_bits, 0, err);
 }
 
-int vct_sort_pairs_u64(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n, int key_bits,
-                       vct_error *err) {
+vct_status vct_sort_pairs_u64(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
+                              int key_bits, vct_error *err) {
     return sort_impl(ctx, (cl_mem)keys_mem, (cl_mem)values_mem, n, key_bits, 1, err);
 }
 
-int vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
-                         void *out_keys_mem, void *out_sums_mem, uint32_t *runs, vct_error *err) {
+vct_status vct_segmented_sum_f4(vct_context *ctx, void *keys_mem, void *values_mem, uint32_t n,
+                                void *out_keys_mem, void *out_sums_mem, uint32_t *runs,
+                                vct_error *err) {
     *runs = 0;
     if (n == 0)
         return VCT_OK;

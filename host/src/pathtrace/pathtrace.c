@@ -179,9 +179,9 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
     return rc;
 }
 
-int vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                         const vct_pathtrace_options *opt, vct_image *image,
-                         vct_pathtrace_result *result, vct_error *err) {
+vct_status vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                                const vct_pathtrace_options *opt, vct_image *image,
+                                vct_pathtrace_result *result, vct_error *err) {
     vct_pathtrace_result unused;
     if (!result)
         result = &unused;

@@ -397,9 +397,9 @@ static void run_release(vct_context *ctx, sppm_run *r) {
     vct_scene_buffers_release(ctx, &r->sb);
 }
 
-int vct_render_pm(vct_context *ctx, const vct_scene *s, const vct_accel *accel,
-                  const vct_pm_options *opt, vct_image *image, vct_pm_result *result,
-                  vct_error *err) {
+vct_status vct_render_pm(vct_context *ctx, const vct_scene *s, const vct_accel *accel,
+                         const vct_pm_options *opt, vct_image *image, vct_pm_result *result,
+                         vct_error *err) {
     vct_pm_result unused;
     if (!result)
         result = &unused;

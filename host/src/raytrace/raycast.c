@@ -8,8 +8,8 @@
 #include "frame/shaded_frame.h"
 #include "raytrace/whitted_as.h"
 
-int vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint32_t n, int any_hit,
-                   vct_hit *hits, vct_error *err) {
+vct_status vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint32_t n,
+                          int any_hit, vct_hit *hits, vct_error *err) {
     const char *stage = any_hit ? "trace rays (any hit)" : "trace rays";
     if (n == 0)
         return VCT_OK;
@@ -52,8 +52,8 @@ int vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint
     return rc;
 }
 
-int vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                       const vct_render_options *opt, vct_image *image, vct_error *err) {
+vct_status vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                              const vct_render_options *opt, vct_image *image, vct_error *err) {
     if (opt->subsample) { /* Whitted's kernels at one hit with the ray caster's shading */
         const vct_whitted_options wo = {opt->width,
                                         opt->height,

@@ -80,8 +80,8 @@ int vct_whitted_render_as(vct_context *ctx, const vct_scene *s, const vct_accel 
     return rc;
 }
 
-int vct_render_whitted(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                       const vct_whitted_options *opt, vct_image *image, vct_whitted_result *result,
-                       vct_error *err) {
+vct_status vct_render_whitted(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                              const vct_whitted_options *opt, vct_image *image,
+                              vct_whitted_result *result, vct_error *err) {
     return vct_whitted_render_as(ctx, s, g, opt, 0, image, result, err);
 }

@@ -123,8 +123,8 @@ static int render_vct_job(vct_context *ctx, const vct_render_job *job, vct_image
                           job->aovs, err);
 }
 
-int vct_render(vct_context *ctx, const vct_render_job *given, vct_image *image,
-               vct_render_result *result, vct_error *err) {
+vct_status vct_render(vct_context *ctx, const vct_render_job *given, vct_image *image,
+                      vct_render_result *result, vct_error *err) {
     const double start = vct_now_ms();
     const vct_render_job own = sized(given), *job = &own;
     memset(image, 0, sizeof *image);

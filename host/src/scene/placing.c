@@ -6,8 +6,8 @@
 
 #include "scene/instances.h"
 
-int vct_scene_set_instance_transform(vct_scene *s, uint32_t instance, const float transform[12],
-                                     vct_error *err) {
+vct_status vct_scene_set_instance_transform(vct_scene *s, uint32_t instance,
+                                            const float transform[12], vct_error *err) {
     if (instance >= s->instance_count)
         return vct_fail(err, VCT_ERR_INPUT, "scene %s: no instance %u (the scene has %u)",
                         vct_scene_name(s), instance, s->instance_count);
@@ -46,7 +46,8 @@ static int grow_to(void **p, size_t count, size_t size) {
     return 1;
 }
 
-int vct_scene_add_instance(vct_scene *s, uint32_t mesh, const float transform[12], vct_error *err) {
+vct_status vct_scene_add_instance(vct_scene *s, uint32_t mesh, const float transform[12],
+                                  vct_error *err) {
     const vct_instance *model = NULL;
     for (uint32_t i = 0; i < s->instance_count && !model; ++i)
         if (s->instances[i].mesh == mesh)

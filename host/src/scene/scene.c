@@ -52,7 +52,7 @@ static int check_light(const char *src, uint32_t index, const vct_light *l, vct_
     return VCT_OK;
 }
 
-int vct_scene_validate(vct_scene *s, vct_error *err) {
+vct_status vct_scene_validate(vct_scene *s, vct_error *err) {
     const char *src = s->source[0] ? s->source : "(arrays)";
     if (s->triangle_count == 0)
         return vct_fail(err, VCT_ERR_INPUT,
@@ -168,7 +168,7 @@ vct_scene *vct_scene_from_arrays(const float *positions, uint32_t vertex_count,
     return s;
 }
 
-int vct_scene_add_light(vct_scene *s, const vct_light *light, vct_error *err) {
+vct_status vct_scene_add_light(vct_scene *s, const vct_light *light, vct_error *err) {
     int rc = check_light(s->source[0] ? s->source : "(arrays)", s->light_count, light, err);
     if (rc)
         return rc;

@@ -60,7 +60,7 @@ double vct_voxels_bounce_ratio(const vct_voxels *v) {
     return v ? v->bounce_ratio : 0.0;
 }
 
-int vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *v, vct_error *err) {
+vct_status vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *v, vct_error *err) {
     v->bounce_ratio = 0.0;
     float rest = 0.0f;
     if (v->bounce_rest && v->bounces_measured >= 2 && v->bounce_light[0] > 0.0) {

@@ -355,8 +355,8 @@ static int level_run_init(vct_context *ctx, vct_voxels *v, const char *stage, le
     return vct_program_get(ctx, "voxel/bricks.cl", "", &r->program, err);
 }
 
-int vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *options,
-                     vct_error *err) {
+vct_status vct_bricks_build(vct_context *ctx, vct_voxels *v, const vct_brick_options *options,
+                            vct_error *err) {
     if (!v->child)
         return vct_fail(err, VCT_ERR_INPUT, "bricks: build the octree first (vct_octree_build)");
     const vct_brick_options defaults = {VCT_BRICKS_AUTO, 0, 0};
@@ -451,8 +451,8 @@ int vct_bricks_info_get(const vct_voxels *v, vct_brick_info *info) {
     return 1;
 }
 
-int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t first,
-                    uint32_t count, float *out, vct_error *err) {
+vct_status vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t first,
+                           uint32_t count, float *out, vct_error *err) {
     const char *stage = "brick read";
     const vct_brick_info *b = &v->brick_info;
     if (!v->has_bricks)
@@ -490,8 +490,8 @@ int vct_bricks_read(vct_context *ctx, const vct_voxels *v, int channel, uint32_t
     return rc;
 }
 
-int vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32_t level,
-                      const float *points, uint32_t n, float *out, vct_error *err) {
+vct_status vct_bricks_sample(vct_context *ctx, const vct_voxels *v, int channel, uint32_t level,
+                             const float *points, uint32_t n, float *out, vct_error *err) {
     const char *stage = "brick sample";
     const vct_brick_info *b = &v->brick_info;
     if (!v->has_bricks)

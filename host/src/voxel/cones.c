@@ -48,7 +48,7 @@ static const preset_rings presets[] = {
  * the whole cell through its weight. */
 #define MAX_HALF_ANGLE (20.0 * PI / 180.0)
 
-int vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err) {
+vct_status vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err) {
     const preset_rings *p = NULL;
     for (size_t i = 0; i < sizeof presets / sizeof presets[0]; ++i)
         if (presets[i].count == count)
@@ -159,9 +159,9 @@ int vct_cone_set_args(cl_kernel k, const vct_voxels *v, const void *desc, const 
     return rc;
 }
 
-int vct_cone_trace(vct_context *ctx, const vct_voxels *v, const vct_cone_settings *s,
-                   const float *ambient, const float *cones, uint32_t n, float *out,
-                   vct_error *err) {
+vct_status vct_cone_trace(vct_context *ctx, const vct_voxels *v, const vct_cone_settings *s,
+                          const float *ambient, const float *cones, uint32_t n, float *out,
+                          vct_error *err) {
     const char *stage = "cone trace";
     if (!v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT, "%s: build the bricks first (vct_bricks_build)", stage);

@@ -9,8 +9,8 @@
 
 #define STAGE "light injection"
 
-int vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
-                            vct_error *err) {
+vct_status vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                                   vct_voxels *v, vct_error *err) {
     return vct_voxels_inject_light_with(ctx, s, g, v, NULL, err);
 }
 
@@ -82,7 +82,8 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     return rc;
 }
 
-int vct_voxels_read_sides(vct_context *ctx, const vct_voxels *v, float *sides, vct_error *err) {
+vct_status vct_voxels_read_sides(vct_context *ctx, const vct_voxels *v, float *sides,
+                                 vct_error *err) {
     if (!v->side)
         return vct_fail(err, VCT_ERR_INPUT,
                         "voxel sides: inject light first (vct_voxels_inject_light)");
@@ -90,8 +91,8 @@ int vct_voxels_read_sides(vct_context *ctx, const vct_voxels *v, float *sides, v
                            16ull * VCT_VOXEL_SIDE_FLOAT4S * v->info.voxels, sides, err);
 }
 
-int vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *v, float *radiance,
-                             vct_error *err) {
+vct_status vct_voxels_read_radiance(vct_context *ctx, const vct_voxels *v, float *radiance,
+                                    vct_error *err) {
     if (!v->radiance)
         return vct_fail(err, VCT_ERR_INPUT,
                         "voxel radiance: inject light first (vct_voxels_inject_light)");

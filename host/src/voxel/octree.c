@@ -102,7 +102,7 @@ static int build_levels(vct_context *ctx, vct_voxels *v, cl_program p, vct_error
     return rc;
 }
 
-int vct_octree_build(vct_context *ctx, vct_voxels *v, vct_error *err) {
+vct_status vct_octree_build(vct_context *ctx, vct_voxels *v, vct_error *err) {
     if (v->child)
         return VCT_OK;
     vct_stage_begin(ctx, STAGE);
@@ -142,8 +142,8 @@ static int require_octree(const vct_voxels *v, const char *what, vct_error *err)
                                what);
 }
 
-int vct_octree_read(vct_context *ctx, const vct_voxels *v, uint32_t *child, uint32_t *neighbours,
-                    vct_error *err) {
+vct_status vct_octree_read(vct_context *ctx, const vct_voxels *v, uint32_t *child,
+                           uint32_t *neighbours, vct_error *err) {
     int rc = require_octree(v, "octree read", err);
     if (rc == VCT_OK && child)
         rc = vct_buffer_read(ctx, "octree read", v->child, 0, 4ull * v->info.nodes, child, err);
@@ -153,8 +153,8 @@ int vct_octree_read(vct_context *ctx, const vct_voxels *v, uint32_t *child, uint
     return rc;
 }
 
-int vct_octree_lookup(vct_context *ctx, const vct_voxels *v, const uint32_t *queries, uint32_t n,
-                      uint32_t *nodes, vct_error *err) {
+vct_status vct_octree_lookup(vct_context *ctx, const vct_voxels *v, const uint32_t *queries,
+                             uint32_t n, uint32_t *nodes, vct_error *err) {
     const char *stage = "octree lookup";
     int rc = require_octree(v, stage, err);
     cl_program p = NULL;

@@ -288,8 +288,8 @@ vct_voxels *vct_voxelize(vct_context *ctx, const vct_scene *s, const vct_voxel_o
     return v;
 }
 
-int vct_voxels_read(vct_context *ctx, const vct_voxels *v, uint32_t *keys, float *albedo,
-                    float *normal, float *emission, vct_error *err) {
+vct_status vct_voxels_read(vct_context *ctx, const vct_voxels *v, uint32_t *keys, float *albedo,
+                           float *normal, float *emission, vct_error *err) {
     const size_t n = v->info.voxels;
     int rc = VCT_OK;
     if (keys)
