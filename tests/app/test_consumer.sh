@@ -1,8 +1,8 @@
 #!/bin/sh
 # A project outside vct builds against the installed package, through its
 # CMake package (shared and static) and through pkg-config, runs, and
-# renders the Cornell box through the installed kernels: the images equal
-# the in-tree `vct render` ones bit for bit.
+# renders the Cornell box by every method through the installed kernels:
+# the images equal the in-tree `vct render` ones bit for bit.
 # Usage: test_consumer.sh SOURCE_DIR BUILD_DIR VCT_PROGRAM
 set -eu
 SRC=$1
@@ -30,7 +30,12 @@ cc -std=c11 "$SRC/tests/consumer/main.c" -o "$DIR/pkgconfig_consumer" \
     $(PKG_CONFIG_PATH="$PCDIR" pkg-config --cflags --libs vct) -Wl,-rpath,"$(dirname "$PCDIR")" ||
     fail "pkg-config build"
 
+# the consumer's settings: 4 spp, 2 photon passes of 16384 photons, 64^3 voxels
 "$VCT" render "$SCENE" --method raycast --size 128 128 -o "$DIR/ref_raycast.pfm" >/dev/null 2>&1
+"$VCT" render "$SCENE" --method whitted --size 128 128 -o "$DIR/ref_whitted.pfm" >/dev/null 2>&1
+"$VCT" render "$SCENE" --method pt --spp 4 --size 128 128 -o "$DIR/ref_pt.pfm" >/dev/null 2>&1
+"$VCT" render "$SCENE" --method pm --spp 2 --photons 16384 --size 128 128 \
+    -o "$DIR/ref_pm.pfm" >/dev/null 2>&1
 "$VCT" render "$SCENE" --size 128 128 --voxel-res 64 -o "$DIR/ref_vct.pfm" >/dev/null 2>&1
 
 run() { # name program kernel-dir-expected [env]
@@ -44,7 +49,7 @@ run() { # name program kernel-dir-expected [env]
     grep -q "kernels from $PREFIX/share/vct/kernels" "$DIR/$name.log" ||
         { cat "$DIR/$name.log"; fail "$name did not read the installed kernels"; }
     grep -q "^device 0:" "$DIR/$name.log" || fail "$name listed no device"
-    for m in raycast vct; do
+    for m in raycast whitted pt pm vct; do
         if cmp -s "$DIR/${name}_$m.pfm" "$DIR/ref_$m.pfm"; then
             echo "ok   $name: $m image equals vct render's"
         else

@@ -1,6 +1,6 @@
 /* A host program of someone else's: lists the devices, then renders a scene
- * by ray casting and by voxel cone tracing through the installed library
- * and kernels: load, context, device scene, render, write.
+ * by every method through the installed library and kernels: load,
+ * context, device scene, render, write.
  * Usage: vct_consumer SCENE OUT_PREFIX */
 #include <stdio.h>
 #include <string.h>
@@ -16,6 +16,9 @@ static int fail(const vct_error *err) {
 static int render(vct_device_scene *ds, vct_method method, const char *prefix, vct_error *err) {
     vct_render_job job = vct_render_job_default(method, 128, 128);
     job.voxel_options.resolution = 64;
+    job.pathtrace.spp = 4;
+    job.pm.passes = 2;
+    job.pm.photons_per_pass = 16384;
     vct_image image = {0};
     int rc = vct_device_scene_render(ds, &job, &image, NULL, err);
     char path[1024];
@@ -48,10 +51,10 @@ int main(int argc, char **argv) {
     vct_context *ctx = vct_context_create(NULL, &err);
     vct_device_scene *ds = ctx ? vct_device_scene_create(ctx, scene, &err) : NULL;
     int rc = ds ? VCT_OK : (int)err.status;
-    if (rc == VCT_OK)
-        rc = render(ds, VCT_METHOD_RAYCAST, argv[2], &err);
-    if (rc == VCT_OK)
-        rc = render(ds, VCT_METHOD_VCT, argv[2], &err);
+    const vct_method methods[] = {VCT_METHOD_RAYCAST, VCT_METHOD_WHITTED, VCT_METHOD_PATHTRACE,
+                                  VCT_METHOD_PM, VCT_METHOD_VCT};
+    for (size_t m = 0; rc == VCT_OK && m < sizeof methods / sizeof *methods; ++m)
+        rc = render(ds, methods[m], argv[2], &err);
     vct_device_scene_release(ds);
     vct_context_release(ctx);
     vct_scene_release(scene);
