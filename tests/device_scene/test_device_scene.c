@@ -142,6 +142,15 @@ static void check_change(vct_device_scene *ds, const vct_scene *s, const char *w
     vct_device_scene_stats_get(ds, &before);
     vct_image kept = by_device_scene(ds, VCT_METHOD_VCT);
     vct_device_scene_stats_get(ds, &after);
+    /* and the render after it builds nothing more */
+    vct_device_scene_stats again;
+    vct_image twice = by_device_scene(ds, VCT_METHOD_VCT);
+    vct_device_scene_stats_get(ds, &again);
+    CHECK(again.accel_builds == after.accel_builds && again.voxel_builds == after.voxel_builds &&
+              again.light_builds == after.light_builds && differ(&kept, &twice) == 0,
+          "%s: the render after the change built again (%u light builds)", what,
+          again.light_builds - after.light_builds);
+    vct_image_release(&twice);
     vct_image pt = by_device_scene(ds, VCT_METHOD_PATHTRACE);
     /* the device scene above is set aside while a fresh one renders */
     vct_image new_vct, new_pt;

@@ -161,7 +161,7 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
             return rc;
         }
         ds->light_key = lk;
-        ds->light_stale = 1;
+        ds->light_stale = 0;
         ++ds->stats.light_builds;
         return VCT_OK;
     }
