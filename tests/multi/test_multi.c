@@ -9,6 +9,7 @@
 
 #include "check.h"
 #include "multi/balance.h"
+#include "multi/group.h"
 #include "multi/pass_sync.h"
 #include "runtime/runtime.h"
 
@@ -180,7 +181,21 @@ static void check_methods(const char *scene_name, const vct_scene *s) {
             vct_image two;
             vct_render_result result;
             vct_error err = {0};
+            uint64_t scene_bytes[2];
+            for (int i = 0; i < 2; ++i) {
+                vct_device_scene_stats st;
+                vct_device_scene_stats_get(g->ds[i], &st);
+                scene_bytes[i] = st.scene_bytes;
+            }
             REQUIRE_OK(vct_group_render(g, &job, &two, &result, &err), err);
+            for (int i = 0; frame == 1 && i < 2; ++i) {
+                vct_device_scene_stats st;
+                vct_device_scene_stats_get(g->ds[i], &st);
+                CHECK(st.scene_bytes == scene_bytes[i],
+                      "%s, %s: device %d uploaded %llu bytes of scene data for a second frame",
+                      scene_name, c->name, i,
+                      (unsigned long long)(st.scene_bytes - scene_bytes[i]));
+            }
             const size_t d = differing(&one, &two);
             CHECK(d == 0, "%s, %s, frame %d: %zu values differ between 1 and 2 devices", scene_name,
                   c->name, frame, d);
@@ -193,6 +208,44 @@ static void check_methods(const char *scene_name, const vct_scene *s) {
                c->name, dev[0].last_work, dev[1].last_work, dev[0].share, dev[1].share);
         vct_image_release(&one);
     }
+    vct_group_release(g);
+}
+
+/* A moved light: preparing the group again relights every device's voxels
+ * and keeps their BVHs (each device holds a device scene); the frame equals
+ * one device's render of the moved scene. */
+static void check_moved_light(vct_scene *s) {
+    int vct_case = 0;
+    while (cases[vct_case].method != VCT_METHOD_VCT)
+        ++vct_case;
+    const method_case *c = &cases[vct_case];
+    vct_group *g = group_for(s);
+    vct_error err = {0};
+    vct_device_scene_stats before[2], after[2];
+    for (int i = 0; i < 2; ++i)
+        vct_device_scene_stats_get(g->ds[i], &before[i]);
+    s->lights[0].position[0] += 0.25f;
+    const vct_group_build b = build_options(s);
+    REQUIRE_OK(vct_group_prepare(g, s, &b, &err), err);
+    vct_render_job job = job_of(c, s);
+    vct_image two, one = single(c, s);
+    REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
+    for (int i = 0; i < 2; ++i) {
+        vct_device_scene_stats_get(g->ds[i], &after[i]);
+        CHECK(after[i].accel_builds == before[i].accel_builds &&
+                  after[i].voxel_builds == before[i].voxel_builds &&
+                  after[i].light_builds == before[i].light_builds + 1,
+              "a moved light, device %d: %u BVH, %u voxel and %u light builds (expected 0, 0, 1)",
+              i, after[i].accel_builds - before[i].accel_builds,
+              after[i].voxel_builds - before[i].voxel_builds,
+              after[i].light_builds - before[i].light_builds);
+    }
+    CHECK(differing(&one, &two) == 0, "a moved light: %zu values differ from one device's",
+          differing(&one, &two));
+    printf("a moved light on 2 devices: voxels relit, BVHs kept, the image one device's\n");
+    s->lights[0].position[0] -= 0.25f;
+    vct_image_release(&one);
+    vct_image_release(&two);
     vct_group_release(g);
 }
 
@@ -473,6 +526,7 @@ int main(void) {
     check_failure(box, 8); /* pm: bands in lockstep, started again */
     check_small_device(box);
     check_copied_voxels(box);
+    check_moved_light(box);
     vct_scene_release(box);
     vct_scene *lit = check_cornell_box();
     check_methods("emissive cornell box", lit);

@@ -49,7 +49,11 @@ typedef struct vct_group_build {
 } vct_group_build;
 
 /* Builds `scene`'s structures on every device, at once; a device that cannot
- * hold them is left out with a message, unless none can. */
+ * hold them is left out with a message, unless none can. Each device holds
+ * a device scene of `scene` (vct/device_scene.h): its scene data stay on
+ * the device between renders, and preparing the same scene again after a
+ * change rebuilds only what the change needs (a moved light: the voxels'
+ * light). The scene must outlive the group or the next prepare. */
 VCT_API vct_status vct_group_prepare(vct_group *group, const vct_scene *scene,
                                      const vct_group_build *build, vct_error *err);
 

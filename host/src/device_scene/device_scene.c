@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "accel/accel.h"
+#include "device_scene/device_scene_prepare.h"
 #include "device_scene/scene_digest.h"
 #include "light/emitters.h"
 #include "conetrace/vct_relight.h"
@@ -177,31 +178,54 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
     return VCT_OK;
 }
 
-vct_status vct_device_scene_render(vct_device_scene *ds, const vct_render_job *job,
-                                   vct_image *image, vct_render_result *result, vct_error *err) {
-    memset(image, 0, sizeof *image);
-    int rc = vct_device_scene_commit(ds, err);
-    vct_render_job own = *job;
-    own.scene = ds->scene;
-    vct_plan plan;
+/* What a job's method and plan read, in *plan and *voxels. */
+static void job_needs(const vct_device_scene *ds, const vct_render_job *job, vct_plan *plan,
+                      vct_plan *voxel_plan, int *voxels) {
     if (job->plan)
-        plan = *job->plan;
+        *plan = *job->plan;
     else
-        vct_plan_make(ds->scene, NULL, &plan);
-    own.plan = &plan;
-    vct_plan voxel_plan = plan;
-    if (job->method == VCT_METHOD_VOXELS && !vct_plan_needs_voxels(&plan))
-        voxel_plan.on[VCT_EFFECT_AO] = 1; /* the view needs voxels, without light */
-    const int voxels = job->method == VCT_METHOD_VOXELS ||
-                       (job->method == VCT_METHOD_VCT && vct_plan_needs_voxels(&plan));
+        vct_plan_make(ds->scene, NULL, plan);
+    *voxel_plan = *plan;
+    if (job->method == VCT_METHOD_VOXELS && !vct_plan_needs_voxels(plan))
+        voxel_plan->on[VCT_EFFECT_AO] = 1; /* the view needs voxels, without light */
+    *voxels = job->method == VCT_METHOD_VOXELS ||
+              (job->method == VCT_METHOD_VCT && vct_plan_needs_voxels(plan));
+}
+
+int vct_device_scene_prepare(vct_device_scene *ds, const vct_render_job *job, vct_error *err) {
+    int rc = vct_device_scene_commit(ds, err);
+    vct_plan plan, voxel_plan;
+    int voxels;
+    job_needs(ds, job, &plan, &voxel_plan, &voxels);
     /* every method traces rays but the voxel view, and light injection
      * casts shadow rays */
     if (rc == VCT_OK && (job->method != VCT_METHOD_VOXELS || vct_plan_needs_voxel_light(&plan)))
         rc = need_accel(ds, &job->accel_options, err);
     if (rc == VCT_OK && voxels)
         rc = need_voxels(ds, job, &voxel_plan, err);
+    return rc;
+}
+
+void vct_device_scene_adopt_voxels(vct_device_scene *ds, vct_voxels *voxels,
+                                   const vct_device_scene *from) {
+    drop_voxels(ds);
+    ds->voxels = voxels;
+    ds->voxel_key = from->voxel_key;
+    ds->light_key = from->light_key;
+}
+
+vct_status vct_device_scene_render(vct_device_scene *ds, const vct_render_job *job,
+                                   vct_image *image, vct_render_result *result, vct_error *err) {
+    memset(image, 0, sizeof *image);
+    const int rc = vct_device_scene_prepare(ds, job, err);
     if (rc != VCT_OK)
         return rc;
+    vct_render_job own = *job;
+    vct_plan plan, voxel_plan;
+    int voxels;
+    job_needs(ds, job, &plan, &voxel_plan, &voxels);
+    own.scene = ds->scene;
+    own.plan = &plan;
     own.accel = ds->accel;
     own.voxels = voxels ? ds->voxels : NULL;
     return vct_render(ds->ctx, &own, image, result, err);

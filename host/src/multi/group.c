@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "device_scene/device_scene_prepare.h"
 #include "multi/device_list.h"
 #include "multi/group.h"
 
@@ -35,8 +36,8 @@ vct_group *vct_group_create(const char *list, vct_error *err) {
 }
 
 static void structures_free(vct_group *g, int i) {
-    vct_voxels_release(g->voxels[i]);
-    vct_accel_release(g->accel[i]);
+    vct_device_scene_release(g->ds[i]);
+    g->ds[i] = NULL;
     g->voxels[i] = NULL;
     g->accel[i] = NULL;
 }
@@ -103,17 +104,32 @@ static void prepare_one(vct_group *g, int i, void *arg) {
     const double t0 = vct_now_ms();
     const vct_group_build *b = p->build;
     vct_group_device *d = &g->devices[i];
-    int rc = VCT_OK;
-    if (!g->accel[i]) {
-        g->accel[i] = vct_accel_build(ctx, p->scene, &b->accel, err);
-        rc = g->accel[i] ? VCT_OK : (int)err->status;
+    if (!g->ds[i])
+        g->ds[i] = vct_device_scene_create(ctx, p->scene, err);
+    int rc = g->ds[i] ? VCT_OK : (int)err->status;
+    /* the structures as a render of this job would build them */
+    const int voxels = voxels_wanted(b) && (p->builder < 0 || p->builder == i);
+    vct_render_job job = vct_render_job_default(voxels ? VCT_METHOD_VCT : VCT_METHOD_RAYCAST, 1, 1);
+    job.plan = b->plan;
+    job.accel_options = b->accel;
+    job.voxel_options = b->voxel;
+    job.brick_options = b->bricks;
+    job.bounces = b->bounces;
+    job.vct.cones = b->cones;
+    vct_device_scene_stats before, after;
+    if (rc == VCT_OK) {
+        vct_device_scene_stats_get(g->ds[i], &before);
+        rc = vct_device_scene_prepare(g->ds[i], &job, err);
+        vct_device_scene_stats_get(g->ds[i], &after);
     }
-    const double t1 = vct_now_ms();
-    if (rc == VCT_OK && voxels_wanted(b) && (p->builder < 0 || p->builder == i)) {
-        rc = vct_vct_prepare(ctx, p->scene, g->accel[i], b->plan, &b->voxel, &b->bricks, b->bounces,
-                             &b->cones, &g->voxels[i], err);
-        d->voxels_ms = vct_now_ms() - t1;
-        d->voxels_copied = 0;
+    if (rc == VCT_OK) {
+        g->accel[i] = vct_device_scene_accel(g->ds[i]);
+        g->voxels[i] = voxels ? vct_device_scene_voxels(g->ds[i]) : NULL;
+        if (after.voxel_builds != before.voxel_builds ||
+            after.light_builds != before.light_builds) {
+            d->voxels_ms = vct_now_ms() - t0;
+            d->voxels_copied = 0;
+        }
     }
     p->rc[i] = rc;
     d->build_ms += vct_now_ms() - t0;
@@ -141,8 +157,11 @@ static void copy_voxels(vct_group *g, prepare_job *p) {
         if (i == p->builder || !g->devices[i].active)
             continue;
         const double t0 = vct_now_ms();
-        g->voxels[i] = vct_voxels_copy(g->ctx[i], from, &p->errors[i]);
-        p->rc[i] = g->voxels[i] ? VCT_OK : (int)p->errors[i].status;
+        vct_voxels *copy = vct_voxels_copy(g->ctx[i], from, &p->errors[i]);
+        if (copy)
+            vct_device_scene_adopt_voxels(g->ds[i], copy, g->ds[p->builder]);
+        g->voxels[i] = copy;
+        p->rc[i] = copy ? VCT_OK : (int)p->errors[i].status;
         vct_group_device *d = &g->devices[i];
         d->voxels_ms = vct_now_ms() - t0;
         d->voxels_copied = 1;
@@ -159,11 +178,16 @@ vct_status vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_gro
     p.build = build;
     p.builder = -1;
     for (int i = 0; i < g->count; ++i) {
-        structures_free(g, i);
+        /* a device scene serves its scene alone; the same scene again keeps
+         * what is still valid (a moved light: the voxels relit) */
+        if (scene != g->scene)
+            structures_free(g, i);
+        g->voxels[i] = NULL;
         g->devices[i].build_ms = g->devices[i].voxels_ms = 0.0;
         if (build->copy_voxels && p.builder < 0 && g->devices[i].active)
             p.builder = i;
     }
+    g->scene = scene;
     int rc = vct_group_each(g, prepare_one, &p, err);
     if (rc != VCT_OK)
         return rc;

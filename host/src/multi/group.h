@@ -12,8 +12,12 @@ struct vct_group {
     int count;
     vct_group_device devices[VCT_GROUP_MAX];
     vct_context *ctx[VCT_GROUP_MAX];
-    vct_accel *accel[VCT_GROUP_MAX];
-    vct_voxels *voxels[VCT_GROUP_MAX];
+    /* Each device's device scene of the prepared scene, which owns its
+     * structures; accel and voxels are the ones the renders read. */
+    vct_device_scene *ds[VCT_GROUP_MAX];
+    const vct_scene *scene;
+    const vct_accel *accel[VCT_GROUP_MAX];
+    const vct_voxels *voxels[VCT_GROUP_MAX];
     int faults;
     uint32_t pt_done;  /* samples of the path tracer's running sums (resume) */
     vct_solo solo;     /* row methods: the devices together, or the fastest alone */
