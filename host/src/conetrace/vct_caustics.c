@@ -45,7 +45,7 @@ static int photon_pass(caustic_run *r, cl_uint pass, int *empty, vct_error *err)
 static int pixel_pass(caustic_run *r, cl_program program, const char *name, const cl_uint size[2],
                       vct_error *err, int count, ...) {
     cl_kernel k = vct_kernel_create(r->ctx, program, name, err);
-    int rc = k ? vct_photon_grid_args(k, 0, &r->grid, STAGE, err) : (int)err->status;
+    int rc = k ? vct_photon_grid_args(k, 0, "c", &r->grid, STAGE, err) : (int)err->status;
     va_list ap;
     va_start(ap, count);
     for (int i = 0; rc == VCT_OK && i < count; ++i) {

@@ -264,7 +264,8 @@ static int primary_launch(frame *f, const char *name, const vct_scene *s, const 
     cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
     int rc = k ? primary_args(f, k, s, g, cam, err) : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, PRIMARY_STAGE, k, 23, 1, VCT_ARG_UNCHECKED(buffer));
+        rc = vct_set_args(err, PRIMARY_STAGE, k, 23, 1, sizeof buffer, (const void *)&buffer,
+                          strcmp(name, "vct_primary") == 0 ? "keys" : "flags");
     if (rc == VCT_OK && n)
         rc = vct_set_args(err, PRIMARY_STAGE, k, 24, 1, VCT_ARG_OF(n));
     if (rc == VCT_OK)
@@ -316,8 +317,17 @@ static int cone_pass_with(frame *f, const char *stage, const char *name, int ray
     if (rc == VCT_OK)
         rc = vct_cone_set_args(k, f->v, &f->desc, stage, &next, err);
     if (rc == VCT_OK && list) {
-        rc = vct_set_args(err, stage, k, next, 2, VCT_ARG_UNCHECKED(list),
-                          VCT_ARG_UNCHECKED(list_count));
+        /* the list's parameters, by pass */
+        const int diffuse = strstr(name, "diffuse") != NULL,
+                  soft = strcmp(name, "vct_soft_shadows") == 0;
+        rc = vct_set_args(err, stage, k, next, 2, sizeof list, (const void *)&list,
+                          diffuse ? "cones"
+                          : soft  ? "lights"
+                                  : "reflection",
+                          sizeof list_count, (const void *)&list_count,
+                          diffuse ? "cone_count"
+                          : soft  ? "light_count"
+                                  : "per_pixel");
         next += 2;
     }
     if (rc == VCT_OK)

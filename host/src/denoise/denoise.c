@@ -100,8 +100,12 @@ static int over_pixels(denoise_run *r, cl_kernel k, int rc, vct_error *err) {
 static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, cl_mem out2,
                       vct_error *err) {
     cl_kernel k = vct_kernel_create(r->ctx, r->program, name, err);
-    int rc = k ? vct_set_args(err, STAGE, k, 0, 3, VCT_ARG_UNCHECKED(in), VCT_ARG_OF(r->size),
-                              VCT_ARG_UNCHECKED(out))
+    /* the estimate reads the colour into the variance, the guides the
+     * normals and depths into the guide */
+    const int guides = strcmp(name, "denoise_guides") == 0;
+    int rc = k ? vct_set_args(err, STAGE, k, 0, 3, sizeof in, (const void *)&in,
+                              guides ? "normal_depth" : "color", VCT_ARG_OF(r->size), sizeof out,
+                              (const void *)&out, guides ? "guide" : "variance")
                : (int)err->status;
     if (rc == VCT_OK && out2)
         rc = vct_set_args(err, STAGE, k, 3, 1, VCT_ARG(slope, out2));

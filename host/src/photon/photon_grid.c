@@ -1,5 +1,6 @@
 /* Photon grid build: counts per path, scan, keys, sort, reorder, ranges. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "parallel/parallel.h"
@@ -111,11 +112,17 @@ int vct_photon_grid_build(vct_context *ctx, const char *stage, const vct_photon_
     return rc;
 }
 
-int vct_photon_grid_args(cl_kernel k, int first, const vct_photon_grid *g, const char *stage,
-                         vct_error *err) {
-    return vct_set_args(err, stage, k, first, 4, VCT_ARG_UNCHECKED(g->photons),
-                        VCT_ARG_UNCHECKED(g->ranges), VCT_ARG_UNCHECKED(g->origin),
-                        VCT_ARG_UNCHECKED(g->dims));
+int vct_photon_grid_args(cl_kernel k, int first, const char *prefix, const vct_photon_grid *g,
+                         const char *stage, vct_error *err) {
+    /* PHOTON_GRID_ARGS(prefix) names them prefix_photons, prefix_ranges, ... */
+    char names[4][64];
+    static const char *const fields[4] = {"photons", "ranges", "origin", "dims"};
+    for (int i = 0; i < 4; ++i)
+        snprintf(names[i], sizeof names[i], "%s_%s", prefix, fields[i]);
+    return vct_set_args(err, stage, k, first, 4, sizeof g->photons, (const void *)&g->photons,
+                        names[0], sizeof g->ranges, (const void *)&g->ranges, names[1],
+                        sizeof g->origin, (const void *)&g->origin, names[2], sizeof g->dims,
+                        (const void *)&g->dims, names[3]);
 }
 
 uint64_t vct_photon_grid_bytes(const vct_photon_grid *g) {

@@ -24,9 +24,10 @@ typedef struct vct_photon_grid {
 int vct_photon_grid_build(vct_context *ctx, const char *stage, const vct_photon_slots *slots,
                           uint32_t kind_mask, float cell, const float lo[3], const float hi[3],
                           vct_photon_grid *g, vct_error *err);
-/* Sets the grid's four kernel arguments (PHOTON_GRID_ARGS) from `first`. */
-int vct_photon_grid_args(cl_kernel k, int first, const vct_photon_grid *g, const char *stage,
-                         vct_error *err);
+/* Sets the grid's four kernel arguments (PHOTON_GRID_ARGS(prefix)) from
+ * `first`. */
+int vct_photon_grid_args(cl_kernel k, int first, const char *prefix, const vct_photon_grid *g,
+                         const char *stage, vct_error *err);
 /* Device memory the grid holds (photons and ranges). */
 uint64_t vct_photon_grid_bytes(const vct_photon_grid *g);
 void vct_photon_grid_release(vct_context *ctx, vct_photon_grid *g);

@@ -300,7 +300,7 @@ static int gather_pass(vct_context *ctx, sppm_run *r, cl_uint pass, float fg_rad
         rc = vct_set_args(err, STAGE, k, 0, 3, VCT_ARG_OF(st->vp), VCT_ARG_OF(pixels),
                           VCT_ARG_OF(r->sb.materials));
         if (rc == VCT_OK)
-            rc = vct_photon_grid_args(k, 3, &r->grid[m], STAGE, err);
+            rc = vct_photon_grid_args(k, 3, "map", &r->grid[m], STAGE, err);
         if (rc == VCT_OK)
             rc = vct_set_args(err, STAGE, k, 7, 5, VCT_ARG_OF(alpha), VCT_ARG_OF(flags),
                               VCT_ARG_OF(normal_cos), VCT_ARG(stats, st->stats[m]),
@@ -325,10 +325,10 @@ static int gather_pass(vct_context *ctx, sppm_run *r, cl_uint pass, float fg_rad
         rc = vct_set_args(err, STAGE, k, 10, 3, VCT_ARG_OF(st->vp), VCT_ARG_OF(pixels),
                           VCT_ARG_OF(first_pixel));
     if (rc == VCT_OK)
-        rc = vct_photon_grid_args(k, 13, &r->grid[GLOBAL], STAGE, err);
+        rc = vct_photon_grid_args(k, 13, "glob", &r->grid[GLOBAL], STAGE, err);
     /* Without a caustic map its arguments are the global map's, never read. */
     if (rc == VCT_OK)
-        rc = vct_photon_grid_args(k, 17, &r->grid[caustics ? CAUSTIC : GLOBAL], STAGE, err);
+        rc = vct_photon_grid_args(k, 17, "caus", &r->grid[caustics ? CAUSTIC : GLOBAL], STAGE, err);
     if (rc == VCT_OK)
         rc = vct_set_args(err, STAGE, k, 21, 9, VCT_ARG_OF(caustics), VCT_ARG_OF(fg_radius),
                           VCT_ARG_OF(inv_emitted), VCT_ARG_OF(rays), VCT_ARG_OF(seed),

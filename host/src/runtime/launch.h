@@ -24,9 +24,6 @@ int vct_set_args(vct_error *err, const char *stage, cl_kernel kernel, int first,
  * expression's last identifier. */
 #define VCT_ARG(param, x)                                                                          \
     sizeof(x), (const void *)&(x), #param " at " __FILE__ ":" VCT_LINE_STRING(__LINE__)
-/* An argument a helper binds for kernels that name it differently (not
- * checked). */
-#define VCT_ARG_UNCHECKED(x) sizeof(x), (const void *)&(x), ""
 #define VCT_LINE_STRING(n) VCT_LINE_STRING_(n)
 #define VCT_LINE_STRING_(n) #n
 /* Creates kernel `name`, sets its `count` arguments (as vct_set_args) and
