@@ -1,6 +1,11 @@
 /* vct: acceleration structures and ray queries. Every ray of every method
- * goes through one vct_accel: a 4-wide BVH built on the device (the default)
- * or the uniform triangle grid. */
+ * goes through one vct_accel: a 4-wide BVH built on the device (the default,
+ * with one level or two) or the uniform triangle grid.
+ *
+ * A structure belongs to the context it was built on: it is used only there
+ * (vct_render refuses another's), its calls are serialised with the
+ * context's, and it is released before the context. It keeps no pointer to
+ * the scene it was built from. */
 #ifndef VCT_API_ACCEL_H
 #define VCT_API_ACCEL_H
 

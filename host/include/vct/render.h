@@ -199,13 +199,13 @@ typedef struct vct_whitted_options {
     int width, height;
     uint32_t max_depth;   /* default 8 */
     float min_throughput; /* default 1e-3 */
-    /* Adaptive subsampling (seed 001): 0 traces every pixel; N (a power of
+    /* Adaptive subsampling: 0 traces every pixel; N (a power of
      * two, 2 to the image's smaller side) traces the corners of N x N
      * squares, fills a square whose corners met the same materials and saw
      * the same lights by bilinear interpolation, and splits the others. */
     uint32_t subsample;
-    /* 1: the seed's plain scheme; 0 (default): squares that a piece of the
-     * mesh smaller than the square touches on screen are split whatever
+    /* 1: the corners alone decide; 0 (default): squares that a piece of
+     * the mesh smaller than the square touches on screen are split whatever
      * their corners say, so small objects are not lost between corners. */
     uint32_t subsample_unguarded;
     /* > 0: corners whose radiance spreads by more than this share of their
@@ -235,7 +235,7 @@ VCT_API vct_status vct_render_whitted(vct_context *ctx, const vct_scene *scene,
                                       const vct_accel *accel, const vct_whitted_options *options,
                                       vct_image *image, vct_whitted_result *result, vct_error *err);
 
-/* Photon mapping (seed 000, made progressive). Each pass traces the camera
+/* Photon mapping, progressive. Each pass traces the camera
  * rays through mirrors and glass to their first diffuse or glossy hit,
  * shoots photons_per_pass photons from the lights (by power), grids them
  * (cell = radius) and gathers them at every such hit. Direct light comes
@@ -258,17 +258,17 @@ typedef struct vct_pm_options {
      * same when progressive and half that when fixed. */
     float radius, caustic_radius;
     /* 0: progressive, each pixel's radius shrinking by alpha (Hachisuka and
-     * Jensen; default 2/3, as pbrt-v4); 1: the seed's fixed radii. */
+     * Jensen; default 2/3, as pbrt-v4); 1: fixed radii. */
     int fixed_radius;
     float alpha;
     int final_gather;     /* 1: the global map read by final gathering */
     uint32_t gather_rays; /* final-gathering rays per pixel and pass (default 8) */
-    int direct_photons;   /* 1: direct light from the photons too (the seed's way) */
+    int direct_photons;   /* 1: direct light from the photons too, not shadow rays */
     vct_pm_kernel kernel; /* default VCT_PM_KERNEL_EPANECHNIKOV */
     /* Photons whose surface normal's cosine with the point's is below this
-     * are not counted (seed 000's filter): default 0, those on surfaces facing
-     * away; the seed's stricter 0.7 darkens detailed scenes (the disk keeps its
-     * area); -2 counts all. */
+     * are not counted: default 0, those on surfaces facing away; a stricter
+     * 0.7 darkens detailed scenes (the gather disk keeps its area); -2 counts
+     * all. */
     float normal_cos;
     uint32_t components; /* VCT_PM_* bits to show; 0: all */
     uint32_t seed;       /* same seed and passes: same image, bit for bit */

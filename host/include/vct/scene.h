@@ -1,5 +1,11 @@
-/* vct: the host scene: flat arrays of positions, triangles, materials,
- * lights and a camera, loaded from a file or built from arrays. */
+/* vct: the host scene: meshes and their instances, the flat arrays of
+ * positions, triangles and materials made from them, lights and a camera,
+ * loaded from a file or built from arrays.
+ *
+ * A scene is plain host memory the caller owns: any thread may read it, one
+ * at a time may change it. A device scene (vct/device_scene.h) reads it at
+ * every commit, so it must outlive the device scenes made from it and must
+ * not change while one of them commits or renders. */
 #ifndef VCT_API_SCENE_H
 #define VCT_API_SCENE_H
 

@@ -1,5 +1,9 @@
 /* vct: voxelization, the sparse voxel octree, bricks, light in the
- * voxels and cones through them. */
+ * voxels and cones through them.
+ *
+ * Voxels belong to the context they were built on (vct_voxels_copy makes a
+ * copy on another): their calls are serialised with the context's, and they
+ * are released before it. */
 #ifndef VCT_API_VOXELS_H
 #define VCT_API_VOXELS_H
 
