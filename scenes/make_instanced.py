@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes instanced_spheres.gltf: one 5,120-triangle sphere placed by 64
 nodes (turned, scaled, some squashed) on a floor before a wall, under a
-point light. Loaded, the file holds the sphere once; flattened, 327,680
+point light; an animation ("roll", 2 s) moves the first sphere. Loaded, the file holds the sphere once; flattened, 327,680
 triangles: what a two-level acceleration structure saves."""
 import math
 import os
@@ -29,6 +29,10 @@ def main():
             rotation = (0.0, math.sin(angle / 2), 0.0, math.cos(angle / 2))
             s.place(sphere, (-4.9 + 1.4 * j, r * squash, -4.9 + 1.4 * i), rotation,
                     (r, r * squash, r))
+    # the first sphere rolls to the right and back over two seconds
+    y0 = 0.28 * 0.6  # its radius, squashed
+    s.animate("roll", sphere, 0, [0.0, 1.0, 2.0],
+              [(-4.9, y0, -4.9), (-3.5, y0, -4.9), (-4.9, y0, -4.9)])
     s.point_light((0.5, 5.0, 3.0), 120.0)
     s.look((0.0, 5.5, 9.5), (0.0, 0.3, -0.5), 50.0)
     s.write(os.path.join(HERE, "instanced_spheres.gltf"))

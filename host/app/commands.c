@@ -48,6 +48,10 @@ int cmd_info(const cli_options *opt) {
         held += s->meshes[m].triangle_count;
     printf("%u meshes (%u triangles) placed by %u instances\n", s->mesh_count, held,
            s->instance_count);
+    for (uint32_t a = 0; a < s->animation_count; ++a)
+        printf("animation \"%s\": %.3f s, %u node%s\n", s->animations[a].name,
+               s->animations[a].duration_s, s->animations[a].channels,
+               s->animations[a].channels == 1 ? "" : "s");
     printf("camera %s: position (%g %g %g), look-at (%g %g %g), up (%g %g %g), fov %g\n",
            s->has_camera ? "from the file" : "default", s->camera.position[0],
            s->camera.position[1], s->camera.position[2], s->camera.look_at[0], s->camera.look_at[1],

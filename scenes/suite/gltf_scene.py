@@ -36,6 +36,7 @@ class Scene:
         self.lights = []
         self.camera = None
         self.placements = {}  # mesh index -> [(translation, rotation, scale)]
+        self.animations = []  # (name, mesh, placement, times, translations)
 
     def material(self, name, color, roughness=1.0, metallic=0.0, emission=None,
                  strength=1.0, transmission=0.0, ior=1.5, texture=None, alpha_cutoff=None):
@@ -123,6 +124,11 @@ class Scene:
                     idx.extend([a + 1, b, b + 1])
         return self.mesh(material, pos, idx)
 
+    def animate(self, name, mesh, placement, times, translations):
+        """An animation moving the node of placement `placement` of `mesh`:
+        its translation at each time (seconds), linearly between."""
+        self.animations.append((name, mesh, placement, list(times), list(translations)))
+
     def point_light(self, position, intensity, color=(1, 1, 1)):
         self.lights.append(({"type": "point", "color": list(color), "intensity": intensity},
                             position, None))
@@ -145,6 +151,7 @@ class Scene:
     def write(self, path):
         blob = bytearray()
         accessors, views, meshes, nodes = [], [], [], []
+        placed_nodes = {}  # mesh -> its nodes' indices, in placement order
         for material, pos, idx, uvs in self.meshes:
             lo = [min(p[k] for p in pos) for k in range(3)]
             hi = [max(p[k] for p in pos) for k in range(3)]
@@ -174,7 +181,9 @@ class Scene:
             meshes.append({"primitives": [{"attributes": attributes, "indices": indices,
                                            "material": material}]})
             mesh = len(meshes) - 1
+            placed_nodes[mesh] = []
             for t, r, sc in self.placements.get(mesh, [((0, 0, 0), (0, 0, 0, 1), (1, 1, 1))]):
+                placed_nodes[mesh].append(len(nodes))
                 node = {"mesh": mesh}
                 if tuple(t) != (0, 0, 0):
                     node["translation"] = list(t)
@@ -183,12 +192,36 @@ class Scene:
                 if tuple(sc) != (1, 1, 1):
                     node["scale"] = list(sc)
                 nodes.append(node)
+        animations = []
+        for name, mesh, placement, times, translations in self.animations:
+            offset = len(blob)
+            for t in times:
+                blob += struct.pack("<f", t)
+            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
+            accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
+                              "count": len(times), "type": "SCALAR",
+                              "min": [min(times)], "max": [max(times)]})
+            offset = len(blob)
+            for v in translations:
+                blob += struct.pack("<3f", *v)
+            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
+            accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
+                              "count": len(translations), "type": "VEC3"})
+            animations.append({"name": name,
+                               "samplers": [{"input": len(accessors) - 2,
+                                             "output": len(accessors) - 1,
+                                             "interpolation": "LINEAR"}],
+                               "channels": [{"sampler": 0,
+                                             "target": {"node": placed_nodes[mesh][placement],
+                                                        "path": "translation"}}]})
         gltf = {"asset": {"version": "2.0", "generator": "vct scenes/suite"},
                 "scene": 0, "materials": self.materials, "meshes": meshes,
                 "accessors": accessors, "bufferViews": views,
                 "buffers": [{"byteLength": len(blob),
                              "uri": "data:application/octet-stream;base64,"
                                     + base64.b64encode(bytes(blob)).decode()}]}
+        if animations:
+            gltf["animations"] = animations
         if self.images:
             gltf["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}
                               for png in self.images]

@@ -1,12 +1,14 @@
-/* Scene loading through assimp: the shipped Cornell box (OBJ and glTF), and a
+/* Scene loading through assimp: the shipped Cornell box (OBJ and glTF), a
  * generated glTF whose node tree, camera and spot / directional lights must
- * come out flattened and converted to the engine's conventions. */
+ * come out flattened and converted to the engine's conventions, and a file
+ * whose one mesh many nodes place (kept as meshes and instances). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "check.h"
+#include "scene/instances.h"
 
 static int near(float a, float b, float tol) {
     return fabsf(a - b) <= tol * fmaxf(1.0f, fabsf(b));
@@ -98,6 +100,15 @@ static void check_hierarchy(void) {
     CHECK(near(max_x, 22.0f, 1e-6f) && near(s->bounds_min[0], 20.0f, 1e-6f) &&
               near(s->bounds_max[1], 2.0f, 1e-6f),
           "hierarchy: x from %g to %g, y up to %g", s->bounds_min[0], max_x, s->bounds_max[1]);
+    CHECK(s->instance_count == 1 && s->mesh_count == 1 && vct_instances_consistent(s),
+          "hierarchy: %u instances of %u meshes, consistent %d", s->instance_count, s->mesh_count,
+          vct_instances_consistent(s));
+    if (s->instance_count == 1) {
+        float p[3];
+        const float one[3] = {1.0f, 0.0f, 0.0f};
+        vct_instance_transform_point(s->instances[0].transform, one, p);
+        CHECK(near(p[0], 22.0f, 1e-6f), "hierarchy: the instance takes (1 0 0) to x %g", p[0]);
+    }
     CHECK(s->light_count == 2, "hierarchy: %u lights", s->light_count);
     for (uint32_t i = 0; i < s->light_count; ++i) {
         const vct_light *l = &s->lights[i];
@@ -114,6 +125,29 @@ static void check_hierarchy(void) {
                   "sun: type %d, irradiance %g", l->type, l->color[0]);
         }
     }
+    vct_scene_release(s);
+}
+
+/* The node tree kept: the file whose sphere 64 nodes place holds it once, each
+ * instance's transform gives its vertices in the flat arrays bit for bit,
+ * and the file's animation is listed with its duration. */
+static void check_instances(void) {
+    vct_scene *s = check_scene_file("scenes/instanced_spheres.gltf");
+    CHECK(s->mesh_count == 3 && s->instance_count == 66, "%u meshes, %u instances", s->mesh_count,
+          s->instance_count);
+    uint32_t uses[3] = {0, 0, 0};
+    for (uint32_t i = 0; i < s->instance_count && s->instances[i].mesh < 3; ++i)
+        uses[s->instances[i].mesh]++;
+    CHECK(uses[2] == 64 && s->meshes[2].triangle_count == 5120,
+          "the sphere: %u instances of %u triangles", uses[2], s->meshes[2].triangle_count);
+    CHECK(s->triangle_count == 2 + 2 + 64 * 5120, "%u flat triangles", s->triangle_count);
+    CHECK(vct_instances_consistent(s), "an instance's transform does not give its vertices");
+    CHECK(s->animation_count == 1 && strcmp(s->animations[0].name, "roll") == 0 &&
+              fabs(s->animations[0].duration_s - 2.0) < 1e-6 && s->animations[0].channels == 1,
+          "animations: %u, the first \"%s\" of %g s over %u nodes", s->animation_count,
+          s->animation_count ? s->animations[0].name : "",
+          s->animation_count ? s->animations[0].duration_s : 0.0,
+          s->animation_count ? s->animations[0].channels : 0u);
     vct_scene_release(s);
 }
 
@@ -190,6 +224,7 @@ int main(void) {
     const char *dir = getenv("VCT_SOURCE_DIR");
     check_cornell(dir ? dir : ".");
     check_hierarchy();
+    check_instances();
     check_materials();
     return check_exit("test_scene_load");
 }

@@ -95,6 +95,14 @@ typedef struct vct_instance {
     uint32_t first_triangle, first_vertex;
 } vct_instance;
 
+/* An animation of the file (glTF's), as listed: the scene itself holds the
+ * file's rest pose. */
+typedef struct vct_animation_info {
+    char name[64];
+    double duration_s; /* its last key's time */
+    uint32_t channels; /* nodes it moves */
+} vct_animation_info;
+
 typedef struct vct_scene {
     char source[512];
     uint32_t vertex_count;
@@ -122,6 +130,8 @@ typedef struct vct_scene {
     uint32_t mesh_count, instance_count;
     vct_mesh *meshes;
     vct_instance *instances;
+    uint32_t animation_count;
+    vct_animation_info *animations;
     float bounds_min[3], bounds_max[3];
 } vct_scene;
 

@@ -32,6 +32,7 @@ void vct_scene_release(vct_scene *scene) {
         free(scene->textures[t].rgba);
     free(scene->textures);
     vct_instances_release(scene);
+    free(scene->animations);
     free(scene);
 }
 

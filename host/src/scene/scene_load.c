@@ -261,6 +261,35 @@ static void read_camera(const struct aiScene *sc, const char *path, vct_scene *s
     s->has_camera = s->camera.fov_y_deg > 0.0f && s->camera.fov_y_deg < 180.0f;
 }
 
+/* The file's animations, listed: name, duration and channels. */
+static int read_animations(const struct aiScene *sc, vct_scene *s, vct_error *err) {
+    if (sc->mNumAnimations == 0)
+        return VCT_OK;
+    s->animations = calloc(sc->mNumAnimations, sizeof *s->animations);
+    if (!s->animations)
+        return vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", s->source);
+    for (unsigned a = 0; a < sc->mNumAnimations; ++a) {
+        const struct aiAnimation *an = sc->mAnimations[a];
+        vct_animation_info *info = &s->animations[s->animation_count++];
+        snprintf(info->name, sizeof info->name, "%.63s", an->mName.data);
+        info->channels = an->mNumChannels;
+        double last = 0.0;
+        for (unsigned c = 0; c < an->mNumChannels; ++c) {
+            const struct aiNodeAnim *ch = an->mChannels[c];
+            if (ch->mNumPositionKeys)
+                last = fmax(last, ch->mPositionKeys[ch->mNumPositionKeys - 1].mTime);
+            if (ch->mNumRotationKeys)
+                last = fmax(last, ch->mRotationKeys[ch->mNumRotationKeys - 1].mTime);
+            if (ch->mNumScalingKeys)
+                last = fmax(last, ch->mScalingKeys[ch->mNumScalingKeys - 1].mTime);
+        }
+        /* key times are in ticks */
+        const double ticks = an->mTicksPerSecond > 0.0 ? an->mTicksPerSecond : 1.0;
+        info->duration_s = last / ticks;
+    }
+    return VCT_OK;
+}
+
 static int read_lights(const struct aiScene *sc, const char *path, vct_scene *s, vct_error *err) {
     for (unsigned i = 0; i < sc->mNumLights; ++i) {
         const struct aiLight *al = sc->mLights[i];
@@ -427,6 +456,8 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
     free(b.mesh_of);
     if (rc == VCT_OK)
         rc = read_lights(sc, path, s, err);
+    if (rc == VCT_OK)
+        rc = read_animations(sc, s, err);
     if (rc == VCT_OK && s->triangle_count == 0)
         rc = vct_fail(err, VCT_ERR_INPUT, "scene %s: no triangles to render (%u meshes)", path,
                       sc->mNumMeshes);
