@@ -131,7 +131,16 @@ static void keys_make(const vct_render_job *job, const vct_plan *plan, voxel_key
                       light_key *lk) {
     memset(vk, 0, sizeof *vk);
     memset(lk, 0, sizeof *lk);
-    vk->voxel = job->voxel_options;
+    /* field by field, so that the struct's padding stays zero and whole
+     * keys compare */
+    const vct_voxel_options *o = &job->voxel_options;
+    vk->voxel.resolution = o->resolution;
+    vk->voxel.thin = o->thin;
+    vk->voxel.has_bounds = o->has_bounds;
+    for (int k = 0; k < 3; ++k)
+        vk->voxel.bounds_min[k] = o->bounds_min[k];
+    vk->voxel.bounds_size = o->bounds_size;
+    vk->voxel.exact_bounces = o->exact_bounces;
     vk->bricks = job->brick_options;
     vk->bricks.radiance_later = 0;
     vk->emitters_by_cones = plan->emitters_by_cones;
