@@ -16,9 +16,10 @@ import re
 import subprocess
 import sys
 
-STAGES = ["runtime", "parallel", "scene", "accel", "light", "voxel", "frame", "photon", "raytrace",
+STAGES = ["runtime", "parallel", "scene", "load", "accel", "light", "voxel", "frame", "photon", "raytrace",
           "pathtrace", "conetrace", "render", "image", "denoise", "device_scene", "multi"]
-# frame/ is what every method shares (the frame, the plan, the shaded first
+# load/ reads scene files into the host scene (scene/ is the scene itself
+# and its device-side data); frame/ is what every method shares (the frame, the plan, the shaded first
 # hit, progress); photon/ holds photon mapping and the photons cone tracing
 # gathers for caustics; raytrace/, pathtrace/ and conetrace/ are the other
 # methods; render/ is the one entry to all of them.

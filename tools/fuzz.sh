@@ -4,7 +4,7 @@
 # itself suppressed: tools/fuzz/lsan.supp), seeded with the scene suite and
 # the Cornell box, for SECONDS (default 3600) on JOBS processes (default 1).
 # Crashes, leaks and hangs land in out/fuzz/ as crash-*, leak-*, timeout-*;
-# each one fixed is kept in tests/scene/inputs/, which test_scene_inputs
+# each one fixed is kept in tests/load/inputs/, which test_scene_inputs
 # loads on every test run.
 # usage: tools/fuzz.sh [SECONDS] [JOBS]
 set -eu
@@ -25,7 +25,7 @@ for f in scenes/suite/*.gltf scenes/cornell_box.gltf; do
 done
 { printf '\002'; cat scenes/cornell_box.obj; printf '\000'; cat scenes/cornell_box.mtl; } \
     >out/fuzz/seeds/cornell_obj.in
-for f in tests/scene/inputs/*.gltf tests/scene/inputs/*.glb tests/scene/inputs/*.obj; do
+for f in tests/load/inputs/*.gltf tests/load/inputs/*.glb tests/load/inputs/*.obj; do
     case $f in *.gltf) b='\000' ;; *.glb) b='\001' ;; *) b='\002' ;; esac
     { printf "$b"; cat "$f"; } >"out/fuzz/seeds/$(basename "$f").in"
 done

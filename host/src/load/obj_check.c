@@ -8,8 +8,8 @@
 #include <string.h>
 #include <strings.h>
 
-#include "scene/obj_check.h"
-#include "scene/scene_path.h"
+#include "load/obj_check.h"
+#include "load/scene_path.h"
 
 /* Bytes a geometry line may hold after its keyword: digits, signs, points,
  * exponents, slashes, blanks, and the letters of nan and inf(inity). */

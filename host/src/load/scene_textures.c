@@ -14,8 +14,8 @@
 #include <stb/stb_image.h>
 
 #include "runtime/runtime.h"
-#include "scene/scene_path.h"
-#include "scene/scene_textures.h"
+#include "load/scene_path.h"
+#include "load/scene_textures.h"
 
 /* Textures larger than this per side are refused: a broken or hostile file
  * should not make the engine allocate gigabytes. */

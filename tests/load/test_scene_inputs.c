@@ -1,4 +1,4 @@
-/* Untrusted scene files: every file in tests/scene/inputs/ is loaded as
+/* Untrusted scene files: every file in tests/load/inputs/ is loaded as
  * `vct render` would. Files named refuse_* must fail with a message that
  * names the file; files named load_* must load and validate. The folder
  * keeps what the fuzzer (tools/fuzz.sh) found, once fixed, beside
@@ -16,7 +16,7 @@
 int main(void) {
     const char *src = getenv("VCT_SOURCE_DIR");
     char dir[1024];
-    snprintf(dir, sizeof dir, "%s/tests/scene/inputs", src ? src : ".");
+    snprintf(dir, sizeof dir, "%s/tests/load/inputs", src ? src : ".");
     DIR *d = opendir(dir);
     CHECK(d != NULL, "cannot open %s", dir);
     int refused = 0, loaded = 0;

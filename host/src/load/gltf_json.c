@@ -10,7 +10,7 @@
 
 #include <cjson/cJSON.h>
 
-#include "scene/gltf_json.h"
+#include "load/gltf_json.h"
 
 /* The file's JSON: a whole .gltf, or a .glb's first chunk. NULL if neither. */
 static char *read_json(const char *path) {

@@ -15,10 +15,10 @@
 #include <unistd.h>
 
 #include "runtime/runtime.h"
-#include "scene/gltf_json.h"
-#include "scene/obj_check.h"
-#include "scene/scene_path.h"
-#include "scene/scene_textures.h"
+#include "load/gltf_json.h"
+#include "load/obj_check.h"
+#include "load/scene_path.h"
+#include "load/scene_textures.h"
 
 typedef struct builder {
     vct_scene *s;
