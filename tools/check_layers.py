@@ -16,9 +16,10 @@ import re
 import subprocess
 import sys
 
-STAGES = ["runtime", "parallel", "scene", "load", "accel", "light", "voxel", "frame", "photon", "raytrace",
+STAGES = ["runtime", "program", "parallel", "scene", "load", "accel", "light", "voxel", "frame", "photon", "raytrace",
           "pathtrace", "conetrace", "render", "image", "denoise", "device_scene", "multi"]
-# load/ reads scene files into the host scene (scene/ is the scene itself
+# program/ builds, caches and launches kernel programs over runtime/'s
+# context, buffers and statistics; load/ reads scene files into the host scene (scene/ is the scene itself
 # and its device-side data); frame/ is what every method shares (the frame, the plan, the shaded first
 # hit, progress); photon/ holds photon mapping and the photons cone tracing
 # gathers for caustics; raytrace/, pathtrace/ and conetrace/ are the other
@@ -28,8 +29,8 @@ STAGES = ["runtime", "parallel", "scene", "load", "accel", "light", "voxel", "fr
 # guides) only the runtime and images: they sit beside the pipeline, not
 # above render.
 BELOW = {s: set(STAGES[: i + 1]) for i, s in enumerate(STAGES)}
-BELOW["image"] = {"runtime", "image"}
-BELOW["denoise"] = {"runtime", "image", "denoise"}
+BELOW["image"] = {"runtime", "program", "image"}
+BELOW["denoise"] = {"runtime", "program", "image", "denoise"}
 for stage in ["frame", "photon", "raytrace", "pathtrace", "conetrace", "render"]:
     BELOW[stage] |= {"image", "denoise"}
 

@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "runtime/abi.h"
+#include "program/abi.h"
 #include "runtime/runtime.h"
 
 int main(void) {

@@ -6,8 +6,8 @@
 #include "runtime/buffer.h"
 #include "runtime/context.h"
 #include "runtime/error.h"
-#include "runtime/launch.h"
-#include "runtime/program.h"
+#include "program/launch.h"
+#include "program/program.h"
 #include "runtime/stats.h"
 
 #endif

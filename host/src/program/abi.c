@@ -3,7 +3,7 @@
  * the versions. */
 #include <stddef.h>
 
-#include "runtime/abi.h"
+#include "program/abi.h"
 #include "vct_types.h"
 
 #define CHECK_SIZE(T, size) _Static_assert(sizeof(T) == (size), "layout of " #T " changed");

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "runtime/arg_check.h"
+#include "program/arg_check.h"
 
 int vct_args_checked(void) {
     const char *v = getenv("VCT_CHECK_ARGS");

@@ -6,9 +6,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "runtime/arg_check.h"
-#include "runtime/launch.h"
-#include "runtime/program.h"
+#include "program/arg_check.h"
+#include "program/launch.h"
+#include "program/program.h"
 
 /* Switches that make a device misbehave, to test how a device group copes:
  * VCT_FAIL_LAUNCH=D:N fails every launch of device D (its index in `vct

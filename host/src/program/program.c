@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "runtime/arg_check.h"
+#include "program/arg_check.h"
 #include "runtime/runtime.h"
 
 static uint64_t fnv1a(uint64_t h, const void *data, size_t n) {
