@@ -30,6 +30,17 @@ vct_scene *cli_load_scene(const cli_options *opt, vct_error *err) {
         return NULL;
     }
     vct_scene *s = vct_scene_load(opt->inputs[0], err);
+    if (s && opt->frame >= 0 && s->animation_count == 0) {
+        cli_fail_input(err, "vct %s: --frame: %s has no animation", opt->command->name,
+                       opt->inputs[0]);
+        vct_scene_release(s);
+        return NULL;
+    }
+    if (s && opt->frame >= 0 &&
+        vct_scene_pose(s, 0, (double)opt->frame / opt->fps, err) != VCT_OK) {
+        vct_scene_release(s);
+        return NULL;
+    }
     if (s && cli_apply_scene_overrides(opt, s, err) != VCT_OK) {
         vct_scene_release(s);
         return NULL;

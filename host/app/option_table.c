@@ -68,6 +68,10 @@ static const cli_option scene_rows[] = {
      "every light's size, for soft shadows: world units for point and spot lights, radians for "
      "directional ones; 0 is hard"},
     {"ambient", 0, OPT_AMBIENT, 3, "R G B", "radiance arriving where rays leave the scene"},
+    {"frame", 0, OPT_FRAME, 1, "N",
+     "the scene as its first animation poses it at frame N (time N / --fps; default: the file's "
+     "rest pose)"},
+    {"fps", 0, OPT_FPS, 1, "F", "frames per second of --frame (default 24)"},
 };
 GROUP(cli_group_scene, "scene overrides", scene_rows);
 

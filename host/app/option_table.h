@@ -23,6 +23,8 @@ typedef enum cli_option_id {
     OPT_DIR_LIGHT,
     OPT_LIGHT_RADIUS,
     OPT_AMBIENT,
+    OPT_FRAME,
+    OPT_FPS,
     OPT_ACCEL,
     OPT_BVH_BUILD,
     OPT_BVH_LEVELS,

@@ -352,6 +352,14 @@ static int apply(const parse_state *ps, cli_option_id id, char **w, int nw, cli_
     case OPT_AMBIENT:
         opt->has_ambient = 1;
         return to_floats(ps, w, 3, opt->ambient);
+    case OPT_FRAME:
+        return to_int(ps, w[0], 0, 1000000, &opt->frame);
+    case OPT_FPS:
+        if (to_float(ps, w[0], &opt->fps))
+            return 2;
+        if (!(opt->fps > 0.0f))
+            return fail(ps, "%s takes frames per second above 0, not %s", ps->name, w[0]);
+        return 0;
     case OPT_METHOD:
         opt->method = w[0];
         return 0;
@@ -382,6 +390,8 @@ static void defaults(cli_options *opt) {
     opt->diffuse_cones = 9;
     opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
     opt->bounces = (int)VCT_DEFAULT_BOUNCES;
+    opt->frame = -1;
+    opt->fps = 24.0f;
     opt->anisotropic = -1; /* the library's choice unless given */
     opt->cones = vct_cone_settings_default();
     opt->contrast = VCT_SUBSAMPLE_CONTRAST_DEFAULT;

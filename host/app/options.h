@@ -47,6 +47,8 @@ struct cli_options {
     int anisotropic;
     int has_ambient;
     float ambient[3];
+    int frame; /* -1: the file's rest pose; else the first animation at frame / fps */
+    float fps;
     /* vct method */
     int print_plan;
     vct_effect_force force[VCT_EFFECTS];

@@ -91,16 +91,40 @@ typedef struct vct_mesh {
  * vertices from first_vertex on. */
 typedef struct vct_instance {
     uint32_t mesh;
+    uint32_t node;       /* the node that places it (vct_scene.nodes), or VCT_NO_NODE */
     float transform[12]; /* row-major 3x4: world = transform * (p, 1) */
     uint32_t first_triangle, first_vertex;
 } vct_instance;
 
-/* An animation of the file (glTF's), as listed: the scene itself holds the
- * file's rest pose. */
+#define VCT_NO_NODE 0xffffffffu
+
+/* A node of the file's tree: instances hang from nodes, and animations move
+ * them. Parents come before their children. */
+typedef struct vct_node {
+    uint32_t parent; /* VCT_NO_NODE for a root */
+    float rest[12];  /* its transform relative to its parent, row-major 3x4 */
+    float translation[3], rotation[4], scale[3]; /* the same as T R S (rotation x y z w) */
+} vct_node;
+
+/* What an animation does to one node: keys of its translation, rotation
+ * (x y z w) and scale, each at times in seconds, interpolated linearly
+ * (rotations spherically) and held before the first key and after the
+ * last. A part without keys stays at rest. */
+typedef struct vct_animation_channel {
+    uint32_t node;
+    uint32_t translation_keys, rotation_keys, scale_keys;
+    float *translation_times, *translations; /* 3 floats per key */
+    float *rotation_times, *rotations;       /* 4 per key */
+    float *scale_times, *scales;             /* 3 per key */
+} vct_animation_channel;
+
+/* An animation of the file (glTF's). The scene holds the file's rest pose
+ * until vct_scene_pose poses it. */
 typedef struct vct_animation_info {
     char name[64];
     double duration_s; /* its last key's time */
     uint32_t channels; /* nodes it moves */
+    vct_animation_channel *channel;
 } vct_animation_info;
 
 typedef struct vct_scene {
@@ -130,7 +154,8 @@ typedef struct vct_scene {
     uint32_t mesh_count, instance_count;
     vct_mesh *meshes;
     vct_instance *instances;
-    uint32_t animation_count;
+    uint32_t node_count, animation_count;
+    vct_node *nodes;
     vct_animation_info *animations;
     float bounds_min[3], bounds_max[3];
 } vct_scene;
@@ -157,6 +182,11 @@ VCT_API vct_status vct_scene_set_instance_transform(vct_scene *scene, uint32_t i
                                                     const float transform[12], vct_error *err);
 /* Checks indices, finite values, non-empty; counts degenerates; sets bounds. */
 VCT_API vct_status vct_scene_validate(vct_scene *scene, vct_error *err);
+/* Poses the scene as animation `animation` has it at `seconds`: every
+ * instance under a node it moves takes its new transform (its vertices in
+ * the flat arrays rewritten), the rest keep theirs bit for bit. */
+VCT_API vct_status vct_scene_pose(vct_scene *scene, uint32_t animation, double seconds,
+                                  vct_error *err);
 /* A default camera framing the scene's bounds, looking down -z. */
 VCT_API void vct_scene_default_camera(const vct_scene *scene, vct_camera *camera);
 VCT_API void vct_scene_release(vct_scene *scene);

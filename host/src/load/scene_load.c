@@ -26,6 +26,8 @@ typedef struct builder {
     const char *path;
     vct_error *err;
     int32_t *mesh_of; /* assimp mesh -> the scene's mesh, -1 before its first use */
+    uint32_t node_cap, current_node;
+    const char **node_names; /* while loading: each node's name, for the animations */
 } builder;
 
 static int grow(void **p, uint32_t *cap, uint32_t need, size_t elem) {
@@ -89,6 +91,7 @@ static int add_instance(builder *b, uint32_t mesh, const struct aiMatrix4x4 *wor
     vct_instance *in = &s->instances[s->instance_count++];
     memset(in, 0, sizeof *in);
     in->mesh = mesh;
+    in->node = b->current_node;
     memcpy(in->transform, &world->a1, sizeof in->transform); /* rows a, b, c */
     in->first_triangle = s->triangle_count;
     in->first_vertex = s->vertex_count;
@@ -170,10 +173,39 @@ static void mat_mul(const struct aiMatrix4x4 *a, const struct aiMatrix4x4 *b,
     memcpy(&out->a1, r, sizeof r);
 }
 
+/* The node as the scene keeps it: its parent, its rest transform and that
+ * transform as translation, rotation and scale. */
+static int add_node(builder *b, const struct aiNode *node, uint32_t parent) {
+    vct_scene *s = b->s;
+    if (!grow((void **)&s->nodes, &b->node_cap, s->node_count + 1, sizeof(vct_node)) ||
+        !(b->node_names = realloc(b->node_names, sizeof(char *) * b->node_cap)))
+        return vct_fail(b->err, VCT_ERR_MEMORY, "scene %s: out of host memory", b->path);
+    vct_node *n = &s->nodes[s->node_count];
+    memset(n, 0, sizeof *n);
+    n->parent = parent;
+    memcpy(n->rest, &node->mTransformation.a1, sizeof n->rest); /* rows a, b, c */
+    struct aiVector3D scaling, position;
+    struct aiQuaternion rotation;
+    aiDecomposeMatrix(&node->mTransformation, &scaling, &rotation, &position);
+    const float t[3] = {position.x, position.y, position.z},
+                q[4] = {rotation.x, rotation.y, rotation.z, rotation.w},
+                sc[3] = {scaling.x, scaling.y, scaling.z};
+    memcpy(n->translation, t, sizeof t);
+    memcpy(n->rotation, q, sizeof q);
+    memcpy(n->scale, sc, sizeof sc);
+    b->node_names[s->node_count] = node->mName.data;
+    b->current_node = s->node_count++;
+    return VCT_OK;
+}
+
 static int walk(builder *b, const struct aiScene *sc, const struct aiNode *node,
-                const struct aiMatrix4x4 *parent) {
+                const struct aiMatrix4x4 *parent, uint32_t parent_node) {
     struct aiMatrix4x4 world;
     mat_mul(parent, &node->mTransformation, &world);
+    const int added = add_node(b, node, parent_node);
+    if (added != VCT_OK)
+        return added;
+    const uint32_t self = b->current_node;
     for (unsigned i = 0; i < node->mNumMeshes; ++i) {
         unsigned mi = node->mMeshes[i];
         if (mi >= sc->mNumMeshes)
@@ -189,7 +221,7 @@ static int walk(builder *b, const struct aiScene *sc, const struct aiNode *node,
             return rc;
     }
     for (unsigned c = 0; c < node->mNumChildren; ++c) {
-        int rc = walk(b, sc, node->mChildren[c], &world);
+        int rc = walk(b, sc, node->mChildren[c], &world, self);
         if (rc)
             return rc;
     }
@@ -261,8 +293,52 @@ static void read_camera(const struct aiScene *sc, const char *path, vct_scene *s
     s->has_camera = s->camera.fov_y_deg > 0.0f && s->camera.fov_y_deg < 180.0f;
 }
 
-/* The file's animations, listed: name, duration and channels. */
-static int read_animations(const struct aiScene *sc, vct_scene *s, vct_error *err) {
+/* Keys of one part of a channel: times in seconds and n floats each. */
+static int copy_keys(uint32_t count, float **times, float **values, int n) {
+    *times = malloc(sizeof(float) * (count + 1));
+    *values = malloc(sizeof(float) * n * (count + 1));
+    return *times && *values;
+}
+
+/* One channel: the node it moves (by name) and its keys. */
+static int read_channel(const builder *b, const struct aiNodeAnim *ch, double ticks,
+                        vct_animation_channel *out) {
+    const vct_scene *s = b->s;
+    out->node = VCT_NO_NODE;
+    for (uint32_t n = 0; n < s->node_count && out->node == VCT_NO_NODE; ++n)
+        if (strcmp(b->node_names[n], ch->mNodeName.data) == 0)
+            out->node = n;
+    out->translation_keys = ch->mNumPositionKeys;
+    out->rotation_keys = ch->mNumRotationKeys;
+    out->scale_keys = ch->mNumScalingKeys;
+    if (!copy_keys(ch->mNumPositionKeys, &out->translation_times, &out->translations, 3) ||
+        !copy_keys(ch->mNumRotationKeys, &out->rotation_times, &out->rotations, 4) ||
+        !copy_keys(ch->mNumScalingKeys, &out->scale_times, &out->scales, 3))
+        return 0;
+    for (unsigned k = 0; k < ch->mNumPositionKeys; ++k) {
+        const struct aiVectorKey *key = &ch->mPositionKeys[k];
+        out->translation_times[k] = (float)(key->mTime / ticks);
+        const float v[3] = {key->mValue.x, key->mValue.y, key->mValue.z};
+        memcpy(&out->translations[3 * k], v, sizeof v);
+    }
+    for (unsigned k = 0; k < ch->mNumRotationKeys; ++k) {
+        const struct aiQuatKey *key = &ch->mRotationKeys[k];
+        out->rotation_times[k] = (float)(key->mTime / ticks);
+        const float q[4] = {key->mValue.x, key->mValue.y, key->mValue.z, key->mValue.w};
+        memcpy(&out->rotations[4 * k], q, sizeof q);
+    }
+    for (unsigned k = 0; k < ch->mNumScalingKeys; ++k) {
+        const struct aiVectorKey *key = &ch->mScalingKeys[k];
+        out->scale_times[k] = (float)(key->mTime / ticks);
+        const float v[3] = {key->mValue.x, key->mValue.y, key->mValue.z};
+        memcpy(&out->scales[3 * k], v, sizeof v);
+    }
+    return 1;
+}
+
+/* The file's animations: name, duration and each channel's keys. */
+static int read_animations(const builder *b, const struct aiScene *sc, vct_scene *s,
+                           vct_error *err) {
     if (sc->mNumAnimations == 0)
         return VCT_OK;
     s->animations = calloc(sc->mNumAnimations, sizeof *s->animations);
@@ -272,7 +348,21 @@ static int read_animations(const struct aiScene *sc, vct_scene *s, vct_error *er
         const struct aiAnimation *an = sc->mAnimations[a];
         vct_animation_info *info = &s->animations[s->animation_count++];
         snprintf(info->name, sizeof info->name, "%.63s", an->mName.data);
-        info->channels = an->mNumChannels;
+        /* key times are in ticks */
+        const double ticks = an->mTicksPerSecond > 0.0 ? an->mTicksPerSecond : 1.0;
+        info->channel = calloc(an->mNumChannels + 1, sizeof *info->channel);
+        if (!info->channel)
+            return vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", s->source);
+        for (unsigned c = 0; c < an->mNumChannels; ++c) {
+            info->channels++; /* counted first, so that release frees a part made */
+            if (!read_channel(b, an->mChannels[c], ticks, &info->channel[c]))
+                return vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", s->source);
+            if (info->channel[c].node == VCT_NO_NODE)
+                return vct_fail(err, VCT_ERR_INPUT,
+                                "scene %s: animation \"%s\" moves node \"%s\", which the file "
+                                "does not have",
+                                s->source, info->name, an->mChannels[c]->mNodeName.data);
+        }
         double last = 0.0;
         for (unsigned c = 0; c < an->mNumChannels; ++c) {
             const struct aiNodeAnim *ch = an->mChannels[c];
@@ -283,8 +373,6 @@ static int read_animations(const struct aiScene *sc, vct_scene *s, vct_error *er
             if (ch->mNumScalingKeys)
                 last = fmax(last, ch->mScalingKeys[ch->mNumScalingKeys - 1].mTime);
         }
-        /* key times are in ticks */
-        const double ticks = an->mTicksPerSecond > 0.0 ? an->mTicksPerSecond : 1.0;
         info->duration_s = last / ticks;
     }
     return VCT_OK;
@@ -439,7 +527,8 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
         return NULL;
     }
     snprintf(s->source, sizeof s->source, "%s", path);
-    builder b = {s, 0, 0, 0, 0, path, err, malloc(sizeof(int32_t) * (sc->mNumMeshes + 1))};
+    builder b = {s, 0, 0,   0, 0, path, err, malloc(sizeof(int32_t) * (sc->mNumMeshes + 1)),
+                 0, 0, NULL};
     for (unsigned i = 0; b.mesh_of && i < sc->mNumMeshes; ++i)
         b.mesh_of[i] = -1;
     struct aiMatrix4x4 identity;
@@ -452,12 +541,13 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
     if (rc == VCT_OK && !b.mesh_of)
         rc = vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", path);
     if (rc == VCT_OK)
-        rc = walk(&b, sc, sc->mRootNode, &identity);
+        rc = walk(&b, sc, sc->mRootNode, &identity, VCT_NO_NODE);
     free(b.mesh_of);
+    /* node names live in assimp's scene: kept for the animations, then gone */
     if (rc == VCT_OK)
         rc = read_lights(sc, path, s, err);
     if (rc == VCT_OK)
-        rc = read_animations(sc, s, err);
+        rc = read_animations(&b, sc, s, err);
     if (rc == VCT_OK && s->triangle_count == 0)
         rc = vct_fail(err, VCT_ERR_INPUT, "scene %s: no triangles to render (%u meshes)", path,
                       sc->mNumMeshes);
@@ -468,6 +558,7 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
         read_camera(sc, path, s);
     }
     aiReleaseImport(sc);
+    free(b.node_names);
     if (rc != VCT_OK) {
         vct_scene_release(s);
         return NULL;

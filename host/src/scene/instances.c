@@ -85,6 +85,7 @@ int vct_instances_identity(vct_scene *s, vct_error *err) {
     memcpy(m->positions, s->positions, 12ull * s->vertex_count);
     memcpy(m->triangles, s->triangles, 12ull * s->triangle_count);
     s->mesh_count = s->instance_count = 1;
+    s->instances[0].node = VCT_NO_NODE;
     static const float identity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
     memcpy(s->instances[0].transform, identity, sizeof identity);
     return VCT_OK;

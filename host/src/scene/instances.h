@@ -16,6 +16,11 @@ int vct_instances_validate(const vct_scene *s, vct_error *err);
 /* Whether some mesh is placed more than once (a two-level structure then
  * holds it once). */
 int vct_instances_shared(const vct_scene *s);
+/* Instance `instance` at `transform`, its vertices in the flat arrays
+ * rewritten; nothing changes when a value is not finite. The scene's bounds
+ * wait for vct_scene_validate (scene/placing.c). */
+vct_status vct_instance_place(vct_scene *s, uint32_t instance, const float transform[12],
+                              vct_error *err);
 /* Whether every instance's vertices in the flat arrays are its mesh's
  * through its transform, bit for bit (not where a host edited the flat
  * positions alone): what a two-level structure, which holds the meshes,

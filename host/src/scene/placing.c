@@ -6,8 +6,8 @@
 
 #include "scene/instances.h"
 
-vct_status vct_scene_set_instance_transform(vct_scene *s, uint32_t instance,
-                                            const float transform[12], vct_error *err) {
+vct_status vct_instance_place(vct_scene *s, uint32_t instance, const float transform[12],
+                              vct_error *err) {
     if (instance >= s->instance_count)
         return vct_fail(err, VCT_ERR_INPUT, "scene %s: no instance %u (the scene has %u)",
                         vct_scene_name(s), instance, s->instance_count);
@@ -34,7 +34,13 @@ vct_status vct_scene_set_instance_transform(vct_scene *s, uint32_t instance,
     memcpy(&s->positions[3ull * in->first_vertex], moved, 12ull * m->vertex_count);
     memcpy(in->transform, transform, sizeof in->transform);
     free(moved);
-    return vct_scene_validate(s, err);
+    return VCT_OK;
+}
+
+vct_status vct_scene_set_instance_transform(vct_scene *s, uint32_t instance,
+                                            const float transform[12], vct_error *err) {
+    const vct_status rc = vct_instance_place(s, instance, transform, err);
+    return rc == VCT_OK ? vct_scene_validate(s, err) : rc;
 }
 
 /* Grows *p to hold `count` elements of `size` bytes. */
@@ -71,6 +77,7 @@ vct_status vct_scene_add_instance(vct_scene *s, uint32_t mesh, const float trans
     vct_instance *in = &s->instances[s->instance_count];
     memset(in, 0, sizeof *in);
     in->mesh = mesh;
+    in->node = VCT_NO_NODE; /* placed by the host, not by the file's tree */
     in->first_triangle = s->triangle_count;
     in->first_vertex = s->vertex_count;
     memcpy(in->transform, placed.transform, sizeof in->transform);

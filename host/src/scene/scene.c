@@ -32,7 +32,21 @@ void vct_scene_release(vct_scene *scene) {
         free(scene->textures[t].rgba);
     free(scene->textures);
     vct_instances_release(scene);
+    for (uint32_t a = 0; scene->animations && a < scene->animation_count; ++a) {
+        vct_animation_info *an = &scene->animations[a];
+        for (uint32_t c = 0; an->channel && c < an->channels; ++c) {
+            vct_animation_channel *ch = &an->channel[c];
+            free(ch->translation_times);
+            free(ch->translations);
+            free(ch->rotation_times);
+            free(ch->rotations);
+            free(ch->scale_times);
+            free(ch->scales);
+        }
+        free(an->channel);
+    }
     free(scene->animations);
+    free(scene->nodes);
     free(scene);
 }
 
