@@ -7,13 +7,12 @@
 static const cli_option_group *const no_groups[] = {NULL};
 static const cli_option_group *const info_groups[] = {&cli_group_device, &cli_group_scene,
                                                       &cli_group_accel, NULL};
-static const cli_option_group *const render_groups[] = {&cli_group_output,   &cli_group_denoise,
-                                                        &cli_group_tone,     &cli_group_device,
-                                                        &cli_group_size,     &cli_group_scene,
-                                                        &cli_group_method,   &cli_group_accel,
-                                                        &cli_group_sampling, &cli_group_vct,
-                                                        &cli_group_voxels,   &cli_group_whitted,
-                                                        &cli_group_pm,       NULL};
+static const cli_option_group *const render_groups[] = {
+    &cli_group_output,   &cli_group_denoise, &cli_group_tone,
+    &cli_group_device,   &cli_group_size,    &cli_group_scene,
+    &cli_group_time,     &cli_group_method,  &cli_group_accel,
+    &cli_group_sampling, &cli_group_vct,     &cli_group_voxels,
+    &cli_group_whitted,  &cli_group_pm,      NULL};
 static const cli_option_group *const voxelize_groups[] = {&cli_group_output,
                                                           &cli_group_tone,
                                                           &cli_group_device,

@@ -7,6 +7,7 @@
 
 #include "cli_common.h"
 #include "cli_denoise.h"
+#include "cmd_render_frame.h"
 #include "cmd_render_group.h"
 #include "cmd_render_vct.h"
 #include "commands.h"
@@ -125,6 +126,11 @@ int cmd_render(const cli_options *opt) {
     if (s->light_count == 0 && !emissive)
         fprintf(stderr, "vct: the scene has no lights and nothing emits: only ambient light will "
                         "show (add --point-light, --dir-light or --ambient)\n");
+    if (cli_device_list(opt) && opt->frames[1] >= 0) {
+        fprintf(stderr, "vct render: --frames renders on one device: give --device one\n");
+        vct_scene_release(s);
+        return 1;
+    }
     if (cli_device_list(opt)) {
         const int rc = cli_render_group(opt, s, (vct_method)method, out);
         vct_scene_release(s);
@@ -135,47 +141,17 @@ int cmd_render(const cli_options *opt) {
         vct_scene_release(s);
         return cli_fail(&err);
     }
-    vct_image image = {0};
     vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
-    vct_render_job job = cli_render_job(opt, (vct_method)method, s);
-    vct_render_result result = {0};
-    vct_aovs aovs;
-    memset(&aovs, 0, sizeof aovs);
-    vct_plan plan;
-    if (method == VCT_METHOD_VCT) {
-        cli_vct_plan(opt, s, &plan);
-        job.plan = &plan;
-        job.aovs = opt->aov || opt->denoise ? &aovs : NULL; /* --denoise filters the indirect AOV */
-    }
-    vct_image variance = {0};
-    if (opt->denoise && method == VCT_METHOD_PATHTRACE)
-        job.pathtrace.variance = &variance;
-    int rc = ds ? vct_device_scene_render(ds, &job, &image, &result, &err) : err.status;
-    const vct_accel *accel = ds ? vct_device_scene_accel(ds) : NULL;
-    if (rc == VCT_OK && method == VCT_METHOD_VCT)
-        cli_print_voxels(opt, vct_device_scene_voxels(ds));
-    if (rc == VCT_OK && method == VCT_METHOD_PM)
-        cli_print_pm(&result.pm, stderr);
-    if (rc == VCT_OK)
-        cli_print_result(opt, &result);
-    cli_layers layers = {0};
-    if (rc == VCT_OK && opt->aov && method == VCT_METHOD_VCT)
-        cli_layers_add_aovs(&layers, &aovs);
-    if (rc == VCT_OK)
-        rc = cli_denoise_outputs(ctx, s, accel, opt, (vct_method)method, &image,
-                                 variance.rgba ? &variance : NULL,
-                                 method == VCT_METHOD_VCT ? &aovs : NULL, &layers, &err);
-    if (rc == VCT_OK)
-        rc = cli_write_image(opt, &image, &layers, out, &err);
+    int rc = ds ? VCT_OK : err.status;
+    if (rc == VCT_OK && opt->frames[1] >= 0)
+        rc = cli_render_frames(ctx, ds, s, opt, (vct_method)method, out, &err);
+    else if (rc == VCT_OK)
+        rc = cli_render_frame(ctx, ds, s, opt, (vct_method)method, out, &err);
     if (rc == VCT_OK) {
-        rc = cli_print_accel(ctx, accel, stderr, &err);
+        rc = cli_print_accel(ctx, vct_device_scene_accel(ds), stderr, &err);
         if (opt->stats)
             cli_print_stats(ctx);
     }
-    vct_image_release(&image);
-    vct_image_release(&variance);
-    cli_layers_free(&layers);
-    vct_aovs_release(&aovs);
     vct_device_scene_release(ds);
     vct_context_release(ctx);
     vct_scene_release(s);

@@ -68,12 +68,18 @@ static const cli_option scene_rows[] = {
      "every light's size, for soft shadows: world units for point and spot lights, radians for "
      "directional ones; 0 is hard"},
     {"ambient", 0, OPT_AMBIENT, 3, "R G B", "radiance arriving where rays leave the scene"},
+};
+GROUP(cli_group_scene, "scene overrides", scene_rows);
+
+static const cli_option time_rows[] = {
     {"frame", 0, OPT_FRAME, 1, "N",
      "the scene as its first animation poses it at frame N (time N / --fps; default: the file's "
      "rest pose)"},
-    {"fps", 0, OPT_FPS, 1, "F", "frames per second of --frame (default 24)"},
+    {"frames", 0, OPT_FRAMES, 1, "A:B",
+     "frames A to B, one image each: -o names them with a number pattern (out/shot_%04d.png)"},
+    {"fps", 0, OPT_FPS, 1, "F", "frames per second of --frame and --frames (default 24)"},
 };
-GROUP(cli_group_scene, "scene overrides", scene_rows);
+GROUP(cli_group_time, "animation", time_rows);
 
 static const cli_option accel_rows[] = {
     {"accel", 0, OPT_ACCEL, 1, "bvh|grid",

@@ -24,6 +24,7 @@ typedef enum cli_option_id {
     OPT_LIGHT_RADIUS,
     OPT_AMBIENT,
     OPT_FRAME,
+    OPT_FRAMES,
     OPT_FPS,
     OPT_ACCEL,
     OPT_BVH_BUILD,
@@ -104,10 +105,10 @@ typedef struct cli_command {
 } cli_command;
 
 /* The groups, shared by the commands of vct and vct-view. */
-extern const cli_option_group cli_group_output, cli_group_denoise, cli_group_tone, cli_group_device,
-    cli_group_size, cli_group_scene, cli_group_accel, cli_group_method, cli_group_sampling,
-    cli_group_vct, cli_group_voxels, cli_group_whitted, cli_group_pm, cli_group_compare,
-    cli_group_view;
+extern const cli_option_group cli_group_time, cli_group_output, cli_group_denoise, cli_group_tone,
+    cli_group_device, cli_group_size, cli_group_scene, cli_group_accel, cli_group_method,
+    cli_group_sampling, cli_group_vct, cli_group_voxels, cli_group_whitted, cli_group_pm,
+    cli_group_compare, cli_group_view;
 
 /* vct's commands (command_table.c), NULL-terminated, and vct-view's, whose
  * run is the viewer's own main. */

@@ -354,6 +354,15 @@ static int apply(const parse_state *ps, cli_option_id id, char **w, int nw, cli_
         return to_floats(ps, w, 3, opt->ambient);
     case OPT_FRAME:
         return to_int(ps, w[0], 0, 1000000, &opt->frame);
+    case OPT_FRAMES: {
+        int a = -1, b = -1, used = 0;
+        if (sscanf(w[0], "%d:%d%n", &a, &b, &used) != 2 || w[0][used] || a < 0 || b < a)
+            return fail(ps, "%s takes A:B, two frame numbers from 0 with A <= B, not %s", ps->name,
+                        w[0]);
+        opt->frames[0] = a;
+        opt->frames[1] = b;
+        return 0;
+    }
     case OPT_FPS:
         if (to_float(ps, w[0], &opt->fps))
             return 2;
@@ -391,6 +400,7 @@ static void defaults(cli_options *opt) {
     opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
     opt->bounces = (int)VCT_DEFAULT_BOUNCES;
     opt->frame = -1;
+    opt->frames[0] = opt->frames[1] = -1;
     opt->fps = 24.0f;
     opt->anisotropic = -1; /* the library's choice unless given */
     opt->cones = vct_cone_settings_default();

@@ -47,7 +47,8 @@ struct cli_options {
     int anisotropic;
     int has_ambient;
     float ambient[3];
-    int frame; /* -1: the file's rest pose; else the first animation at frame / fps */
+    int frame;     /* -1: the file's rest pose; else the first animation at frame / fps */
+    int frames[2]; /* --frames A:B; frames[1] < 0: none */
     float fps;
     /* vct method */
     int print_plan;

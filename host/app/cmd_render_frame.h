@@ -1,0 +1,20 @@
+/* vct render on one device: one frame, or a sequence of an animation's. */
+#ifndef VCT_APP_CMD_RENDER_FRAME_H
+#define VCT_APP_CMD_RENDER_FRAME_H
+
+#include "options.h"
+
+/* The scene as it is, through ds, with every output the options ask for
+ * (AOV layers, denoising) written to `out`. */
+int cli_render_frame(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
+                     const cli_options *opt, vct_method method, const char *out, vct_error *err);
+/* Frames opt->frames[0] .. [1] of the scene's first animation: posed, then
+ * rendered through the same device scene (which rebuilds what moved), each
+ * written to the name `pattern` gives it (one %d or %0Nd). */
+int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, const cli_options *opt,
+                      vct_method method, const char *pattern, vct_error *err);
+/* The file of frame `frame`: the pattern's one %d or %0Nd (N below 10)
+ * holds its number. VCT_ERR_INPUT for any other pattern. */
+int cli_frame_path(const char *pattern, int frame, char *out, size_t size, vct_error *err);
+
+#endif
