@@ -2,8 +2,8 @@
  * moves (linear translation keys at 0, 1 and 2 s). Its instance follows the
  * keys (between them, on them, held after the last), its vertices in the
  * flat arrays are its mesh's through the new transform, every other instance
- * keeps its transform and vertices bit for bit, and bad requests are refused
- * with the scene unchanged. */
+ * keeps its transform and vertices bit for bit, and bad requests (another
+ * animation, a NaN time, a NaN key) are refused with the scene unchanged. */
 #include <string.h>
 
 #include "check.h"
@@ -66,6 +66,18 @@ static void check_refusals(void) {
           "a second animation that is not there: %s", err.message);
     CHECK(vct_scene_pose(s, 0, NAN, &err) == VCT_ERR_INPUT && strstr(err.message, "not finite"),
           "a time that is not a number: %s", err.message);
+    /* a key that is not a number: refused before anything moves */
+    vct_animation_channel *ch = &s->animations[0].channel[0];
+    const float kept = ch->translations[3];
+    ch->translations[3] = NAN;
+    float before[12];
+    const uint32_t moved = animated_instance(s);
+    memcpy(before, s->instances[moved].transform, sizeof before);
+    CHECK(vct_scene_pose(s, 0, 0.5, &err) == VCT_ERR_INPUT && strstr(err.message, "not finite"),
+          "a NaN key: %s", err.message);
+    CHECK(memcmp(before, s->instances[moved].transform, sizeof before) == 0,
+          "a NaN key moved the instance");
+    ch->translations[3] = kept;
     CHECK(vct_instances_consistent(s), "a refused pose changed the scene");
     vct_scene_release(s);
 }

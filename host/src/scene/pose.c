@@ -140,6 +140,14 @@ vct_status vct_scene_pose(vct_scene *s, uint32_t animation, double seconds, vct_
         moved[n] |= p < n && moved[p];
     }
     vct_status rc = VCT_OK;
+    /* bad keys (not finite) are refused before anything moves */
+    for (uint32_t n = 0; rc == VCT_OK && n < s->node_count; ++n)
+        for (int k = 0; rc == VCT_OK && moved[n] && k < 12; ++k)
+            if (!isfinite(world[12 * n + k]))
+                rc = vct_fail(err, VCT_ERR_INPUT,
+                              "scene %s: animation \"%s\" at %g s gives node %u a transform "
+                              "that is not finite: its keys hold a bad value",
+                              vct_scene_name(s), an->name, seconds, n);
     for (uint32_t i = 0; rc == VCT_OK && i < s->instance_count; ++i) {
         const uint32_t n = s->instances[i].node;
         if (n < s->node_count && moved[n])
