@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "vct/debug.h"
 #include "vct/vct.h"
@@ -42,6 +43,17 @@ static inline int check_exit(const char *name) {
     }
     printf("%s: %d checks, %d failed\n", name, check_count, check_failures);
     return check_failures ? 1 : 0;
+}
+
+/* Float values (every channel) that differ bit for bit between two images
+ * of one size; SIZE_MAX when the sizes differ. */
+static inline size_t check_differing(const vct_image *a, const vct_image *b) {
+    if (a->width != b->width || a->height != b->height)
+        return (size_t)-1;
+    size_t n = 0;
+    for (size_t i = 0; i < (size_t)a->width * a->height * 4; ++i)
+        n += memcmp(&a->rgba[i], &b->rgba[i], sizeof(float)) != 0;
+    return n;
 }
 
 static inline vct_context *check_context(void) {

@@ -55,15 +55,6 @@ static vct_image by_device_scene(vct_device_scene *ds, vct_method method) {
     return im;
 }
 
-static size_t differ(const vct_image *a, const vct_image *b) {
-    if (a->width != b->width || a->height != b->height)
-        return (size_t)-1;
-    size_t n = 0;
-    for (size_t i = 0; i < (size_t)a->width * a->height * 4; ++i)
-        n += memcmp(&a->rgba[i], &b->rgba[i], sizeof(float)) != 0;
-    return n;
-}
-
 static double sum(const vct_image *a) {
     double total = 0.0;
     for (size_t i = 0; i < (size_t)a->width * a->height * 4; i += 4)
@@ -92,11 +83,13 @@ static void check_same_images(const char *name, const vct_scene *s) {
         vct_context_transfer_stats(ctx, &up1);
         vct_device_scene_stats after;
         vct_device_scene_stats_get(ds, &after);
-        CHECK(differ(&hand, &first) == 0, "%s, %s: %zu values differ from the render by hand", name,
-              method, differ(&hand, &first));
+        CHECK(check_differing(&hand, &first) == 0,
+              "%s, %s: %zu values differ from the render by hand", name, method,
+              check_differing(&hand, &first));
         CHECK(sum(&hand) > 0.0, "%s, %s: a black image proves nothing", name, method);
         if (methods[m] != VCT_METHOD_PM) /* photon mapping's second call goes on */
-            CHECK(differ(&first, &again) == 0, "%s, %s: the second render differs", name, method);
+            CHECK(check_differing(&first, &again) == 0, "%s, %s: the second render differs", name,
+                  method);
         CHECK(after.scene_bytes == before.scene_bytes,
               "%s, %s: the second render uploaded %llu bytes of scene data", name, method,
               (unsigned long long)(after.scene_bytes - before.scene_bytes));
@@ -147,7 +140,7 @@ static void check_change(vct_device_scene *ds, const vct_scene *s, const char *w
     vct_image twice = by_device_scene(ds, VCT_METHOD_VCT);
     vct_device_scene_stats_get(ds, &again);
     CHECK(again.accel_builds == after.accel_builds && again.voxel_builds == after.voxel_builds &&
-              again.light_builds == after.light_builds && differ(&kept, &twice) == 0,
+              again.light_builds == after.light_builds && check_differing(&kept, &twice) == 0,
           "%s: the render after the change built again (%u light builds)", what,
           again.light_builds - after.light_builds);
     vct_image_release(&twice);
@@ -159,10 +152,12 @@ static void check_change(vct_device_scene *ds, const vct_scene *s, const char *w
         new_vct = fresh(&copy, VCT_METHOD_VCT);
         new_pt = fresh(&copy, VCT_METHOD_PATHTRACE);
     }
-    CHECK(differ(&kept, &new_vct) == 0, "%s: cone tracing: %zu values differ from a fresh scene",
-          what, differ(&kept, &new_vct));
-    CHECK(differ(&pt, &new_pt) == 0, "%s: path tracing: %zu values differ from a fresh scene", what,
-          differ(&pt, &new_pt));
+    CHECK(check_differing(&kept, &new_vct) == 0,
+          "%s: cone tracing: %zu values differ from a fresh scene", what,
+          check_differing(&kept, &new_vct));
+    CHECK(check_differing(&pt, &new_pt) == 0,
+          "%s: path tracing: %zu values differ from a fresh scene", what,
+          check_differing(&pt, &new_pt));
     const int accel = (int)(after.accel_builds - before.accel_builds),
               voxels = (int)(after.voxel_builds - before.voxel_builds),
               light = (int)(after.light_builds - before.light_builds);
@@ -237,8 +232,9 @@ static void check_moved_instances(void) {
     vct_device_scene_stats_get(ds, &after);
     vct_scene copy = *s;
     vct_image fresh_image = fresh(&copy, VCT_METHOD_RAYCAST);
-    CHECK(differ(&kept, &fresh_image) == 0,
-          "a moved instance: %zu values differ from a fresh scene", differ(&kept, &fresh_image));
+    CHECK(check_differing(&kept, &fresh_image) == 0,
+          "a moved instance: %zu values differ from a fresh scene",
+          check_differing(&kept, &fresh_image));
     CHECK(after.accel_moves == before.accel_moves + 1 && after.accel_builds == before.accel_builds,
           "a moved instance: %u top-level rebuilds, %u full builds",
           after.accel_moves - before.accel_moves, after.accel_builds - before.accel_builds);
@@ -255,9 +251,9 @@ static void check_moved_instances(void) {
     vct_device_scene_stats_get(ds, &after);
     copy = *s;
     fresh_image = fresh(&copy, VCT_METHOD_RAYCAST);
-    CHECK(differ(&kept, &fresh_image) == 0,
+    CHECK(check_differing(&kept, &fresh_image) == 0,
           "positions edited alone: %zu values differ from a fresh scene",
-          differ(&kept, &fresh_image));
+          check_differing(&kept, &fresh_image));
     CHECK(after.accel_builds == before.accel_builds + 1,
           "positions edited alone: %u builds (the structure must be built again)",
           after.accel_builds - before.accel_builds);

@@ -90,15 +90,6 @@ static vct_image single(const method_case *c, const vct_scene *s) {
     return im;
 }
 
-static size_t differing(const vct_image *a, const vct_image *b) {
-    if (a->width != b->width || a->height != b->height)
-        return (size_t)-1;
-    size_t n = 0;
-    for (size_t i = 0; i < (size_t)a->width * a->height * 4; ++i)
-        n += memcmp(&a->rgba[i], &b->rgba[i], sizeof(float)) != 0;
-    return n;
-}
-
 /* Mean radiance over red, green and blue (alpha is 1 everywhere). */
 static double mean(const vct_image *a) {
     double sum = 0.0;
@@ -134,7 +125,7 @@ static void check_variance(const vct_scene *s) {
     job.accel = NULL;
     job.pathtrace.variance = &both_var;
     REQUIRE_OK(vct_group_render(g, &job, &both, NULL, &err), err);
-    const size_t diff = differing(&one_var, &both_var);
+    const size_t diff = check_differing(&one_var, &both_var);
     CHECK(diff == 0 && mean(&one_var) > 0.0,
           "pt variance on two devices: %zu values differ from one device's (mean %g)", diff,
           mean(&one_var));
@@ -196,7 +187,7 @@ static void check_methods(const char *scene_name, const vct_scene *s) {
                       scene_name, c->name, i,
                       (unsigned long long)(st.scene_bytes - scene_bytes[i]));
             }
-            const size_t d = differing(&one, &two);
+            const size_t d = check_differing(&one, &two);
             CHECK(d == 0, "%s, %s, frame %d: %zu values differ between 1 and 2 devices", scene_name,
                   c->name, frame, d);
             CHECK(mean(&one) > 0.0, "%s, %s: a black image proves nothing", scene_name, c->name);
@@ -240,8 +231,8 @@ static void check_moved_light(vct_scene *s) {
               after[i].voxel_builds - before[i].voxel_builds,
               after[i].light_builds - before[i].light_builds);
     }
-    CHECK(differing(&one, &two) == 0, "a moved light: %zu values differ from one device's",
-          differing(&one, &two));
+    CHECK(check_differing(&one, &two) == 0, "a moved light: %zu values differ from one device's",
+          check_differing(&one, &two));
     printf("a moved light on 2 devices: voxels relit, BVHs kept, the image one device's\n");
     s->lights[0].position[0] -= 0.25f;
     vct_image_release(&one);
@@ -268,8 +259,9 @@ static void check_fixed_splits(const vct_scene *s) {
             REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
             const vct_group_device *dev;
             vct_group_devices(g, &dev);
-            CHECK(differing(&one, &two) == 0, "%s, shares %s (rows %.0f + %.0f): the image differs",
-                  c->name, splits[k], dev[0].last_work, dev[1].last_work);
+            CHECK(check_differing(&one, &two) == 0,
+                  "%s, shares %s (rows %.0f + %.0f): the image differs", c->name, splits[k],
+                  dev[0].last_work, dev[1].last_work);
             vct_image_release(&two);
         }
         unsetenv("VCT_GROUP_SHARES");
@@ -313,7 +305,7 @@ static void check_slowed(const vct_scene *s) {
     vct_image two;
     vct_error err = {0};
     REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
-    CHECK(differing(&one, &two) == 0, "uneven shares changed the image");
+    CHECK(check_differing(&one, &two) == 0, "uneven shares changed the image");
     unsetenv("VCT_SLOW_LAUNCH");
     vct_image_release(&two);
     vct_image_release(&one);
@@ -343,7 +335,7 @@ static void check_failure(const vct_scene *s, int method_index) {
         vct_image two;
         vct_error err = {0};
         REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
-        CHECK(differing(&one, &two) == 0, "%s, frame %d: a failed device changed the image",
+        CHECK(check_differing(&one, &two) == 0, "%s, frame %d: a failed device changed the image",
               c->name, frame);
         vct_image_release(&two);
     }
@@ -380,7 +372,7 @@ static void check_copied_voxels(const vct_scene *s) {
         vct_image two;
         REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
         unsetenv("VCT_GROUP_SHARES");
-        CHECK(differing(&one, &two) == 0, "%s on copied voxels differs", cases[m].name);
+        CHECK(check_differing(&one, &two) == 0, "%s on copied voxels differs", cases[m].name);
         vct_image_release(&two);
         vct_image_release(&one);
     }
@@ -407,7 +399,7 @@ static void check_small_device(const vct_scene *s) {
     vct_render_job job = job_of(c, s);
     vct_image two;
     REQUIRE_OK(vct_group_render(g, &job, &two, NULL, &err), err);
-    CHECK(differing(&one, &two) == 0, "the device left out changed the image");
+    CHECK(check_differing(&one, &two) == 0, "the device left out changed the image");
     vct_image_release(&two);
     vct_image_release(&one);
     vct_group_release(g);

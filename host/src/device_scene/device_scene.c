@@ -187,32 +187,42 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
     return VCT_OK;
 }
 
-/* What a job's method and plan read, in *plan and *voxels. */
-static void job_needs(const vct_device_scene *ds, const vct_render_job *job, vct_plan *plan,
-                      vct_plan *voxel_plan, int *voxels) {
+/* What a job's method and plan read. */
+typedef struct job_needs {
+    vct_plan plan;       /* the job's, or the scene's own */
+    vct_plan voxel_plan; /* what the voxels are built for */
+    int voxels;          /* 1: the job reads voxels */
+} job_needs;
+
+static void needs_of(const vct_device_scene *ds, const vct_render_job *job, job_needs *n) {
     if (job->plan)
-        *plan = *job->plan;
+        n->plan = *job->plan;
     else
-        vct_plan_make(ds->scene, NULL, plan);
-    *voxel_plan = *plan;
-    if (job->method == VCT_METHOD_VOXELS && !vct_plan_needs_voxels(plan))
-        voxel_plan->on[VCT_EFFECT_AO] = 1; /* the view needs voxels, without light */
-    *voxels = job->method == VCT_METHOD_VOXELS ||
-              (job->method == VCT_METHOD_VCT && vct_plan_needs_voxels(plan));
+        vct_plan_make(ds->scene, NULL, &n->plan);
+    n->voxel_plan = n->plan;
+    if (job->method == VCT_METHOD_VOXELS && !vct_plan_needs_voxels(&n->plan))
+        n->voxel_plan.on[VCT_EFFECT_AO] = 1; /* the view needs voxels, without light */
+    n->voxels = job->method == VCT_METHOD_VOXELS ||
+                (job->method == VCT_METHOD_VCT && vct_plan_needs_voxels(&n->plan));
+}
+
+/* Commits, then builds what the job reads. */
+static int prepare(vct_device_scene *ds, const vct_render_job *job, const job_needs *n,
+                   vct_error *err) {
+    int rc = vct_device_scene_commit(ds, err);
+    /* every method traces rays but the voxel view, and light injection
+     * casts shadow rays */
+    if (rc == VCT_OK && (job->method != VCT_METHOD_VOXELS || vct_plan_needs_voxel_light(&n->plan)))
+        rc = need_accel(ds, &job->accel_options, err);
+    if (rc == VCT_OK && n->voxels)
+        rc = need_voxels(ds, job, &n->voxel_plan, err);
+    return rc;
 }
 
 int vct_device_scene_prepare(vct_device_scene *ds, const vct_render_job *job, vct_error *err) {
-    int rc = vct_device_scene_commit(ds, err);
-    vct_plan plan, voxel_plan;
-    int voxels;
-    job_needs(ds, job, &plan, &voxel_plan, &voxels);
-    /* every method traces rays but the voxel view, and light injection
-     * casts shadow rays */
-    if (rc == VCT_OK && (job->method != VCT_METHOD_VOXELS || vct_plan_needs_voxel_light(&plan)))
-        rc = need_accel(ds, &job->accel_options, err);
-    if (rc == VCT_OK && voxels)
-        rc = need_voxels(ds, job, &voxel_plan, err);
-    return rc;
+    job_needs n;
+    needs_of(ds, job, &n);
+    return prepare(ds, job, &n, err);
 }
 
 void vct_device_scene_adopt_voxels(vct_device_scene *ds, vct_voxels *voxels,
@@ -226,17 +236,16 @@ void vct_device_scene_adopt_voxels(vct_device_scene *ds, vct_voxels *voxels,
 vct_status vct_device_scene_render(vct_device_scene *ds, const vct_render_job *job,
                                    vct_image *image, vct_render_result *result, vct_error *err) {
     memset(image, 0, sizeof *image);
-    const int rc = vct_device_scene_prepare(ds, job, err);
+    job_needs n; /* the plan once per render: making it reads every triangle */
+    needs_of(ds, job, &n);
+    const int rc = prepare(ds, job, &n, err);
     if (rc != VCT_OK)
         return rc;
     vct_render_job own = *job;
-    vct_plan plan, voxel_plan;
-    int voxels;
-    job_needs(ds, job, &plan, &voxel_plan, &voxels);
     own.scene = ds->scene;
-    own.plan = &plan;
+    own.plan = &n.plan;
     own.accel = ds->accel;
-    own.voxels = voxels ? ds->voxels : NULL;
+    own.voxels = n.voxels ? ds->voxels : NULL;
     return vct_render(ds->ctx, &own, image, result, err);
 }
 
