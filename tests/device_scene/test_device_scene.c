@@ -3,7 +3,8 @@
  * scene data and rebuilds nothing; a change rebuilds only what depends on
  * it (a moved light: no BVH and no voxels; a changed material: no BVH), and
  * what it renders then equals a fresh device scene of the changed scene;
- * objects of another context are refused. */
+ * resumed progressive renders add to their scene's own sums and start over
+ * on a change; objects of another context are refused. */
 #include <string.h>
 
 #include "check.h"
@@ -267,6 +268,78 @@ static void check_moved_instances(void) {
     vct_scene_release(s);
 }
 
+/* A render of `steps` (samples or passes) through ds, resumed or not. */
+static vct_image progressive(vct_device_scene *ds, vct_method method, uint32_t steps, int resume) {
+    vct_error err = {0};
+    vct_render_job job = job_for(method);
+    job.pathtrace.spp = steps;
+    job.pathtrace.resume = resume;
+    job.pm.passes = steps;
+    job.pm.resume = resume;
+    vct_image im;
+    REQUIRE_OK(vct_device_scene_render(ds, &job, &im, NULL, &err), err);
+    return im;
+}
+
+static vct_image progressive_fresh(const vct_scene *s, vct_method method, uint32_t steps) {
+    vct_error err = {0};
+    vct_scene copy = *s; /* another address: another resident copy */
+    vct_device_scene *ds = vct_device_scene_create(ctx, &copy, &err);
+    REQUIRE_OK(ds ? VCT_OK : err.status, err);
+    vct_image im = progressive(ds, method, steps, 0);
+    vct_device_scene_release(ds);
+    return im;
+}
+
+static void check_same(const char *what, const char *method, vct_image *got, vct_image *expect) {
+    const size_t n = check_differing(got, expect);
+    CHECK(n == 0, "%s (%s): %zu values differ", what, method, n);
+    vct_image_release(got);
+    vct_image_release(expect);
+}
+
+/* The path tracer and photon mapping resumed through a device scene add to
+ * that scene's own sums (another scene rendered in between on the same
+ * context leaves them alone), and start over by themselves when a commit
+ * finds the scene changed. */
+static void check_resume(void) {
+    vct_error err = {0};
+    vct_scene *s = check_cornell_box_point_light(), *other = check_cornell_box();
+    vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
+    REQUIRE_OK(ds ? VCT_OK : err.status, err);
+    vct_device_scene *ds_other = vct_device_scene_create(ctx, other, &err);
+    REQUIRE_OK(ds_other ? VCT_OK : err.status, err);
+    const vct_method progressive_methods[] = {VCT_METHOD_PATHTRACE, VCT_METHOD_PM};
+    for (int m = 0; m < 2; ++m) {
+        const vct_method method = progressive_methods[m];
+        const char *name = vct_method_name(method);
+        vct_image im = progressive(ds, method, 1, 0);
+        vct_image_release(&im);
+        im = progressive(ds_other, method, 2, 0); /* same size, another scene */
+        vct_image_release(&im);
+        vct_image resumed = progressive(ds, method, 2, 1);
+        vct_image whole = progressive_fresh(s, method, 3);
+        check_same("1 + 2 resumed against 3 at once", name, &resumed, &whole);
+
+        s->lights[0].position[1] -= 0.1f;
+        vct_image after_light = progressive(ds, method, 2, 1);
+        vct_image fresh_light = progressive_fresh(s, method, 2);
+        check_same("resumed after a moved light, against a fresh render", name, &after_light,
+                   &fresh_light);
+        s->camera.position[2] += 0.05f;
+        vct_image after_camera = progressive(ds, method, 1, 1);
+        vct_image fresh_camera = progressive_fresh(s, method, 1);
+        check_same("resumed after a moved camera, against a fresh render", name, &after_camera,
+                   &fresh_camera);
+        printf("%s: resumed renders add to their own scene's sums and start over on a change\n",
+               name);
+    }
+    vct_device_scene_release(ds_other);
+    vct_device_scene_release(ds);
+    vct_scene_release(other);
+    vct_scene_release(s);
+}
+
 /* A structure of another context is refused by name. */
 static void check_other_context(void) {
     vct_error err = {0};
@@ -296,6 +369,7 @@ int main(void) {
     vct_scene_release(lit);
     check_changes();
     check_moved_instances();
+    check_resume();
     check_other_context();
     vct_context_release(ctx);
     return check_exit("test_device_scene");

@@ -204,14 +204,22 @@ static void check_methods(const char *scene_name, const vct_scene *s) {
 
 /* A moved light: preparing the group again relights every device's voxels
  * and keeps their BVHs (each device holds a device scene); the frame equals
- * one device's render of the moved scene. */
+ * one device's render of the moved scene, and so does a resumed path trace
+ * (the running sums of the scene before are dropped). */
 static void check_moved_light(vct_scene *s) {
     int vct_case = 0;
     while (cases[vct_case].method != VCT_METHOD_VCT)
         ++vct_case;
     const method_case *c = &cases[vct_case];
+    int pt_case = 0;
+    while (cases[pt_case].method != VCT_METHOD_PATHTRACE)
+        ++pt_case;
     vct_group *g = group_for(s);
     vct_error err = {0};
+    vct_render_job pt_job = job_of(&cases[pt_case], s);
+    vct_image pt_before;
+    REQUIRE_OK(vct_group_render(g, &pt_job, &pt_before, NULL, &err), err);
+    vct_image_release(&pt_before);
     vct_device_scene_stats before[2], after[2];
     for (int i = 0; i < 2; ++i)
         vct_device_scene_stats_get(g->ds[i], &before[i]);
@@ -233,7 +241,17 @@ static void check_moved_light(vct_scene *s) {
     }
     CHECK(check_differing(&one, &two) == 0, "a moved light: %zu values differ from one device's",
           check_differing(&one, &two));
-    printf("a moved light on 2 devices: voxels relit, BVHs kept, the image one device's\n");
+    /* the path tracer resumed after the change starts over, on every device */
+    pt_job.pathtrace.resume = 1;
+    vct_image pt_two, pt_one = single(&cases[pt_case], s);
+    REQUIRE_OK(vct_group_render(g, &pt_job, &pt_two, NULL, &err), err);
+    CHECK(check_differing(&pt_one, &pt_two) == 0,
+          "a moved light, the path tracer resumed: %zu values differ from a fresh render",
+          check_differing(&pt_one, &pt_two));
+    vct_image_release(&pt_one);
+    vct_image_release(&pt_two);
+    printf("a moved light on 2 devices: voxels relit, BVHs kept, the image one device's; the "
+           "path tracer resumed starts over\n");
     s->lights[0].position[0] -= 0.25f;
     vct_image_release(&one);
     vct_image_release(&two);

@@ -43,9 +43,12 @@ typedef struct vct_pathtrace_options {
     uint32_t seed;             /* same seed and spp: same image, bit for bit */
     uint32_t samples_per_pass; /* samples per launch (0: 1) */
     int progress;              /* progress bar on a terminal's stderr */
-    /* 1: add to the running sums of the previous call on this context (same
-     * scene, camera and size), continuing its sample sequence: n calls of k
-     * samples give the image of one call of n * k. 0: start over. */
+    /* 1: add to the running sums of the previous call of this scene on this
+     * context (same size), continuing its sample sequence: n calls of k
+     * samples give the image of one call of n * k. Through a device scene a
+     * commit that finds the scene or its camera changed starts over by
+     * itself; without one, the caller vouches that nothing changed. 0: start
+     * over. */
     int resume;
     /* Non-NULL: also filled with the variance of each pixel's mean luminance
      * (in r; the denoiser's guide), from the same sums as the image. */
@@ -273,8 +276,9 @@ typedef struct vct_pm_options {
     uint32_t components; /* VCT_PM_* bits to show; 0: all */
     uint32_t seed;       /* same seed and passes: same image, bit for bit */
     int progress;        /* progress bar on a terminal's stderr */
-    /* 1: go on from the previous call's statistics on this context (same
-     * scene, camera, size and settings); 0: start over. */
+    /* 1: go on from the previous call's statistics of this scene on this
+     * context (same size and settings; a device scene's commit that finds a
+     * change starts over, as for the path tracer); 0: start over. */
     int resume;
 } vct_pm_options;
 /* Defaults as above, at width x height, 64 passes. Every options struct

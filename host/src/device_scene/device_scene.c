@@ -9,6 +9,8 @@
 #include "device_scene/scene_digest.h"
 #include "light/emitters.h"
 #include "conetrace/vct_relight.h"
+#include "pathtrace/pathtrace.h"
+#include "photon/sppm.h"
 #include "runtime/runtime.h"
 #include "scene/scene_resident.h"
 
@@ -68,6 +70,12 @@ vct_device_scene *vct_device_scene_create(vct_context *ctx, const vct_scene *sce
     return ds;
 }
 
+/* The progressive methods start over: their sums describe the scene before. */
+static void drop_accumulation(vct_device_scene *ds) {
+    vct_pt_sums_release(ds->ctx, &ds->resident.accumulation);
+    vct_pm_state_release(ds->ctx, &ds->resident.accumulation);
+}
+
 static void drop_voxels(vct_device_scene *ds) {
     vct_voxels_release(ds->voxels);
     ds->voxels = NULL;
@@ -82,6 +90,7 @@ vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
     if (!changed)
         return VCT_OK;
     ++ds->stats.changes;
+    drop_accumulation(ds);
     const int masks_changed = now.masks != ds->digest.masks;
     ds->digest = now;
     vct_context *ctx = ds->ctx;
@@ -267,6 +276,7 @@ void vct_device_scene_release(vct_device_scene *ds) {
         return;
     vct_context *ctx = ds->ctx;
     drop_voxels(ds);
+    drop_accumulation(ds);
     vct_accel_release(ds->accel);
     vct_emitters_release_resident(ctx, &ds->resident);
     vct_resident_release_buffers(ctx, &ds->resident);

@@ -88,7 +88,8 @@ typedef struct prepare_job {
     const vct_group_build *build;
     vct_error errors[VCT_GROUP_MAX];
     int rc[VCT_GROUP_MAX];
-    int builder; /* the device whose voxels the others copy; -1: each builds */
+    int builder;                /* the device whose voxels the others copy; -1: each builds */
+    int changed[VCT_GROUP_MAX]; /* the device's commit found the scene changed */
 } prepare_job;
 
 static int voxels_wanted(const vct_group_build *b) {
@@ -121,6 +122,7 @@ static void prepare_one(vct_group *g, int i, void *arg) {
         vct_device_scene_stats_get(g->ds[i], &before);
         rc = vct_device_scene_prepare(g->ds[i], &job, err);
         vct_device_scene_stats_get(g->ds[i], &after);
+        p->changed[i] = after.changes != before.changes;
     }
     if (rc == VCT_OK) {
         g->accel[i] = vct_device_scene_accel(g->ds[i]);
@@ -177,10 +179,11 @@ vct_status vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_gro
     p.scene = scene;
     p.build = build;
     p.builder = -1;
+    const int new_scene = scene != g->scene;
     for (int i = 0; i < g->count; ++i) {
         /* a device scene serves its scene alone; the same scene again keeps
          * what is still valid (a moved light: the voxels relit) */
-        if (scene != g->scene)
+        if (new_scene)
             structures_free(g, i);
         g->voxels[i] = NULL;
         g->devices[i].build_ms = g->devices[i].voxels_ms = 0.0;
@@ -191,6 +194,14 @@ vct_status vct_group_prepare(vct_group *g, const vct_scene *scene, const vct_gro
     int rc = vct_group_each(g, prepare_one, &p, err);
     if (rc != VCT_OK)
         return rc;
+    /* the devices' running sums started over: so does the group's count */
+    int changed = new_scene;
+    for (int i = 0; i < g->count; ++i)
+        changed |= p.changed[i];
+    if (changed) {
+        g->pt_done = 0;
+        g->pm_height = 0;
+    }
     int first_failure = -1;
     drop_failed_builds(g, &p, &first_failure);
     if (p.builder >= 0 && voxels_wanted(build)) {

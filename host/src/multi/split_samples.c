@@ -116,9 +116,9 @@ static int merge_sums(sample_run *s, int into, cl_mem *merged, uint32_t *discard
         if (!g->devices[i].active || !s->began[i])
             continue;
         cl_uint dropped = 0;
-        rc = vct_buffer_read(g->ctx[i], STAGE, g->ctx[i]->pt_accum, 0, bytes, part, err);
+        rc = vct_buffer_read(g->ctx[i], STAGE, s->pt[i].acc->pt_sums, 0, bytes, part, err);
         if (rc == VCT_OK)
-            rc = vct_buffer_read(g->ctx[i], STAGE, g->ctx[i]->pt_discarded, 0, 4, &dropped, err);
+            rc = vct_buffer_read(g->ctx[i], STAGE, s->pt[i].acc->pt_discarded, 0, 4, &dropped, err);
         if (rc == VCT_OK)
             exact_add_into(sum, part, bytes / 16);
         *discarded += dropped;

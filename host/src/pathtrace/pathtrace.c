@@ -6,6 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "scene/scene_resident.h"
 #include "runtime/runtime.h"
 #include "accel/accel.h"
 #include "frame/frame.h"
@@ -14,38 +15,43 @@
 
 #define STAGE "path trace"
 
-static void pathtrace_release(vct_context *ctx) {
-    vct_buffer_release(ctx, ctx->pt_accum);
-    vct_buffer_release(ctx, ctx->pt_discarded);
-    ctx->pt_accum = ctx->pt_discarded = NULL;
-    ctx->pt_size[0] = ctx->pt_size[1] = 0;
-    ctx->pt_done = 0;
+void vct_pt_sums_release(vct_context *ctx, vct_accumulation *acc) {
+    vct_buffer_release(ctx, acc->pt_sums);
+    vct_buffer_release(ctx, acc->pt_discarded);
+    acc->pt_sums = acc->pt_discarded = NULL;
+    acc->pt_size[0] = acc->pt_size[1] = 0;
+    acc->pt_done = 0;
+}
+
+static void context_sums_release(vct_context *ctx) {
+    vct_pt_sums_release(ctx, &ctx->accumulation);
 }
 
 /* The running sums: kept when resuming at the same size, else zeroed. */
-static int accumulation_get(vct_context *ctx, const vct_pathtrace_options *opt, vct_error *err) {
-    if (opt->resume && ctx->pt_accum && ctx->pt_size[0] == opt->width &&
-        ctx->pt_size[1] == opt->height)
+static int accumulation_get(vct_context *ctx, vct_accumulation *acc,
+                            const vct_pathtrace_options *opt, vct_error *err) {
+    if (opt->resume && acc->pt_sums && acc->pt_size[0] == opt->width &&
+        acc->pt_size[1] == opt->height)
         return VCT_OK;
-    pathtrace_release(ctx);
-    vct_context_on_release(ctx, pathtrace_release);
+    vct_pt_sums_release(ctx, acc);
+    if (acc == &ctx->accumulation)
+        vct_context_on_release(ctx, context_sums_release);
     const size_t pixels = (size_t)opt->width * opt->height;
-    ctx->pt_accum = vct_buffer_create(ctx, STAGE, "accumulation", VCT_PT_ACCUM_BYTES * pixels,
-                                      CL_MEM_READ_WRITE, NULL, err);
-    ctx->pt_discarded = ctx->pt_accum ? vct_buffer_create(ctx, STAGE, "discarded count", 4,
-                                                          CL_MEM_READ_WRITE, NULL, err)
-                                      : NULL;
-    int rc = ctx->pt_discarded ? VCT_OK : (int)err->status;
+    acc->pt_sums = vct_buffer_create(ctx, STAGE, "accumulation", VCT_PT_ACCUM_BYTES * pixels,
+                                     CL_MEM_READ_WRITE, NULL, err);
+    acc->pt_discarded = acc->pt_sums ? vct_buffer_create(ctx, STAGE, "discarded count", 4,
+                                                         CL_MEM_READ_WRITE, NULL, err)
+                                     : NULL;
+    int rc = acc->pt_discarded ? VCT_OK : (int)err->status;
     if (rc == VCT_OK)
-        rc =
-            vct_buffer_fill_u32(ctx, STAGE, ctx->pt_accum, 0, VCT_PT_ACCUM_BYTES / 4 * pixels, err);
+        rc = vct_buffer_fill_u32(ctx, STAGE, acc->pt_sums, 0, VCT_PT_ACCUM_BYTES / 4 * pixels, err);
     if (rc == VCT_OK)
-        rc = vct_buffer_fill_u32(ctx, STAGE, ctx->pt_discarded, 0, 1, err);
+        rc = vct_buffer_fill_u32(ctx, STAGE, acc->pt_discarded, 0, 1, err);
     if (rc != VCT_OK)
-        pathtrace_release(ctx);
+        vct_pt_sums_release(ctx, acc);
     else {
-        ctx->pt_size[0] = opt->width;
-        ctx->pt_size[1] = opt->height;
+        acc->pt_size[0] = opt->width;
+        acc->pt_size[1] = opt->height;
     }
     return rc;
 }
@@ -55,6 +61,7 @@ int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
     memset(pt, 0, sizeof *pt);
     pt->ctx = ctx;
     pt->opt = opt;
+    pt->acc = vct_accumulation_of(ctx, s);
     if (opt->max_depth == 0)
         return vct_fail(err, VCT_ERR_INPUT, "%s: the path depth must be at least 1", STAGE);
     vct_camera_desc cam;
@@ -69,7 +76,7 @@ int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
     if (rc == VCT_OK)
         rc = vct_emitters_build(ctx, s, VCT_EMITTERS_BY_AREA, STAGE, &pt->eb, err);
     if (rc == VCT_OK)
-        rc = accumulation_get(ctx, opt, err);
+        rc = accumulation_get(ctx, pt->acc, opt, err);
     cl_kernel k = rc == VCT_OK ? vct_kernel_create(ctx, pt->program, "pathtrace", err) : NULL;
     pt->kernel = k;
     if (rc == VCT_OK && !k)
@@ -92,8 +99,8 @@ int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                           VCT_ARG(emitter_inv_area, eb->inv_area));
     if (rc == VCT_OK)
         rc = vct_set_args(err, STAGE, k, 19, 5, VCT_ARG_OF(max_depth), VCT_ARG_OF(seed),
-                          VCT_ARG(accum, ctx->pt_accum), VCT_ARG(discarded, ctx->pt_discarded),
-                          VCT_ARG_OF(ambient));
+                          VCT_ARG(accum, pt->acc->pt_sums),
+                          VCT_ARG(discarded, pt->acc->pt_discarded), VCT_ARG_OF(ambient));
     return rc;
 }
 
@@ -148,7 +155,7 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
     const vct_pathtrace_options *opt = pt->opt;
     const size_t pixels = (size_t)opt->width * opt->height;
     if (!sums)
-        sums = ctx->pt_accum;
+        sums = pt->acc->pt_sums;
     cl_mem frame =
         rc == VCT_OK && image ? vct_frame_get(ctx, STAGE, opt->width, opt->height, err) : NULL;
     if (rc == VCT_OK && image && !frame)
@@ -161,7 +168,7 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
         rc = pathtrace_variance(ctx, pt->program, sums, opt, opt->variance, err);
     cl_uint dropped = 0;
     if (rc == VCT_OK && result)
-        rc = vct_buffer_read(ctx, STAGE, ctx->pt_discarded, 0, 4, &dropped, err);
+        rc = vct_buffer_read(ctx, STAGE, pt->acc->pt_discarded, 0, 4, &dropped, err);
     if (result)
         result->discarded = dropped;
     if (rc == VCT_OK && image)
@@ -169,7 +176,7 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
     if (rc != VCT_OK) {
         if (image)
             vct_image_release(image);
-        pathtrace_release(ctx); /* the running sums are no longer whole */
+        vct_pt_sums_release(ctx, pt->acc); /* the running sums are no longer whole */
     }
     if (pt->kernel)
         clReleaseKernel(pt->kernel);
@@ -195,7 +202,7 @@ vct_status vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_
     const int show = opt->progress && isatty(2);
     const cl_uint per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;
     const double t0 = vct_now_ms();
-    cl_uint done = 0, sample = ctx->pt_done;
+    cl_uint done = 0, sample = pt.acc->pt_done;
     while (rc == VCT_OK) {
         const double elapsed = (vct_now_ms() - t0) * 1e-3;
         if (opt->spp ? done >= opt->spp : elapsed >= opt->time_limit_s)
@@ -213,7 +220,7 @@ vct_status vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_
     }
     if (show)
         fputc('\n', stderr);
-    ctx->pt_done = sample;
+    pt.acc->pt_done = sample;
     result->spp = sample;
     result->seconds = (vct_now_ms() - t0) * 1e-3;
     return vct_pt_end(&pt, rc, NULL, image, result, err);

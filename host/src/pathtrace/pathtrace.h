@@ -15,12 +15,15 @@
 typedef struct vct_pt_session {
     vct_context *ctx;
     const vct_pathtrace_options *opt;
+    vct_accumulation *acc; /* the running sums this session adds to */
     cl_program program;
     cl_kernel kernel;
     vct_scene_buffers sb;
     vct_emitters eb;
 } vct_pt_session;
 
+/* Drops the path tracer's running sums in acc. */
+void vct_pt_sums_release(vct_context *ctx, vct_accumulation *acc);
 /* Opens the stage; the running sums are kept when opt->resume allows. */
 int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                  const vct_pathtrace_options *opt, vct_pt_session *pt, vct_error *err);

@@ -1,7 +1,8 @@
 /* Photon mapping, progressive (SPPM) or with the seed's fixed radii: the
  * passes (kernels/render/sppm.cl) over the photon stage's tracing and grids.
- * The per-pixel statistics live in the context so that a resumed call (the
- * viewer's frames) goes on from them. */
+ * The per-pixel statistics are kept with the scene's running sums
+ * (vct_accumulation_of) so that a resumed call (the viewer's frames) goes
+ * on from them. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,10 +12,12 @@
 #include "accel/tri_vertices.h"
 #include "light/emitters.h"
 #include "photon/photon_grid.h"
+#include "photon/sppm.h"
 #include "frame/frame.h"
 #include "frame/progress.h"
 #include "runtime/runtime.h"
 #include "scene/scene_device.h"
+#include "scene/scene_resident.h"
 
 #define STAGE "photon mapping"
 
@@ -35,6 +38,7 @@ typedef struct sppm_run {
     const vct_scene *scene;
     const vct_accel *accel;
     const vct_pm_options *opt;
+    vct_accumulation *acc; /* where st is kept */
     sppm_state *st;
     vct_scene_buffers sb;
     vct_emitters nee; /* by area, for the visible points' direct light */
@@ -75,9 +79,13 @@ static void state_free(vct_context *ctx, sppm_state *st) {
     free(st);
 }
 
-static void sppm_release(vct_context *ctx) {
-    state_free(ctx, ctx->pm_state);
-    ctx->pm_state = NULL;
+void vct_pm_state_release(vct_context *ctx, vct_accumulation *acc) {
+    state_free(ctx, acc->pm_state);
+    acc->pm_state = NULL;
+}
+
+static void context_state_release(vct_context *ctx) {
+    vct_pm_state_release(ctx, &ctx->accumulation);
 }
 
 /* Settings that change what the statistics mean. */
@@ -107,13 +115,14 @@ static cl_mem pixel_buffer(vct_context *ctx, const char *what, size_t bytes, uin
 /* The statistics: kept when resuming with the same settings, else new. */
 static int state_get(vct_context *ctx, sppm_run *r, vct_error *err) {
     const vct_pm_options *o = r->opt;
-    sppm_state *old = ctx->pm_state;
+    sppm_state *old = r->acc->pm_state;
     if (o->resume && old && same_settings(&old->settings, o)) {
         r->st = old;
         return VCT_OK;
     }
-    sppm_release(ctx);
-    vct_context_on_release(ctx, sppm_release);
+    vct_pm_state_release(ctx, r->acc);
+    if (r->acc == &ctx->accumulation)
+        vct_context_on_release(ctx, context_state_release);
     sppm_state *st = calloc(1, sizeof *st);
     if (!st)
         return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
@@ -134,7 +143,7 @@ static int state_get(vct_context *ctx, sppm_run *r, vct_error *err) {
         state_free(ctx, st);
         return rc;
     }
-    ctx->pm_state = r->st = st;
+    r->acc->pm_state = r->st = st;
     return VCT_OK;
 }
 
@@ -410,6 +419,7 @@ vct_status vct_render_pm(vct_context *ctx, const vct_scene *s, const vct_accel *
     r.scene = s;
     r.accel = accel;
     r.opt = opt;
+    r.acc = vct_accumulation_of(ctx, s);
     int rc = plan_maps(&r, err);
     if (rc == VCT_OK)
         rc = options_check(s, opt, &r.frame, err);
@@ -483,7 +493,7 @@ vct_status vct_render_pm(vct_context *ctx, const vct_scene *s, const vct_accel *
     }
     if (rc != VCT_OK) {
         vct_image_release(image);
-        sppm_release(ctx); /* the statistics are no longer whole */
+        vct_pm_state_release(ctx, r.acc); /* the statistics are no longer whole */
     }
     run_release(ctx, &r);
     vct_stage_end(ctx);

@@ -19,6 +19,17 @@ typedef struct vct_program {
 typedef vct_kernel_stat vct_kernel_count;
 typedef void (*vct_release_hook)(vct_context *ctx);
 
+/* What the progressive methods add to across resumed calls: the path
+ * tracer's exact sums (pathtrace/) and photon mapping's per-pixel
+ * statistics (photon/sppm.c), each dropped when it no longer describes the
+ * scene. */
+typedef struct vct_accumulation {
+    cl_mem pt_sums, pt_discarded;
+    int pt_size[2];
+    uint32_t pt_done; /* samples in pt_sums */
+    void *pm_state;
+} vct_accumulation;
+
 struct vct_context {
     cl_platform_id platform;
     cl_device_id device;
@@ -51,16 +62,14 @@ struct vct_context {
     size_t scan_group_size;
     size_t scan_groups;
     int radix_bits;
-    /* The frame every renderer writes (render/frame.c), and the path
-     * tracer's running sums, which a resumed call adds to. */
+    /* The frame every renderer writes (frame/frame.c). */
     cl_mem frame;
     int frame_size[2];
     int frame_device_only; /* renders return no host copy */
-    int gl_shared;         /* created with an OpenGL context (render/gl_share.c) */
-    cl_mem pt_accum, pt_discarded;
-    int pt_size[2];
-    uint32_t pt_done;
-    void *pm_state; /* photon mapping's per-pixel statistics (render/sppm.c) */
+    int gl_shared;         /* created with an OpenGL context (frame/gl_share.c) */
+    /* The running sums of scenes rendered without a device scene (a
+     * committed scene keeps its own: scene/scene_resident.h). */
+    vct_accumulation accumulation;
     /* The band of a taller image the current render draws (vct_render_job
      * band): its first row and the whole image's height, 0 for none. */
     int band_first, band_height;

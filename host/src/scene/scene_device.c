@@ -213,6 +213,11 @@ vct_resident *vct_resident_find(vct_context *ctx, const vct_scene *s) {
     return NULL;
 }
 
+vct_accumulation *vct_accumulation_of(vct_context *ctx, const vct_scene *s) {
+    vct_resident *r = vct_resident_find(ctx, s);
+    return r ? &r->accumulation : &ctx->accumulation;
+}
+
 void vct_resident_release_buffers(vct_context *ctx, vct_resident *r) {
     if (r->has_buffers)
         vct_scene_buffers_release(ctx, &r->buffers);

@@ -25,11 +25,17 @@ typedef struct vct_resident {
      * first need; NULL until then. */
     struct vct_emitters *emitters[2];
     uint64_t scene_bytes; /* scene data uploaded into this copy so far */
+    /* The running sums of this scene's progressive renders, dropped (by
+     * device_scene/) when a commit changes the scene. */
+    vct_accumulation accumulation;
     struct vct_resident *next;
 } vct_resident;
 
 /* ctx's resident copy of s, or NULL when s is not committed on ctx. */
 vct_resident *vct_resident_find(vct_context *ctx, const vct_scene *s);
+/* Where renders of s on ctx accumulate: its committed copy's sums, or the
+ * context's own for a scene not committed there. */
+vct_accumulation *vct_accumulation_of(vct_context *ctx, const vct_scene *s);
 /* Brings the buffers up to date with `changed`: rewritten in place where
  * their size allows, else made again at next use. */
 int vct_resident_update(vct_context *ctx, vct_resident *r, unsigned changed, vct_error *err);
