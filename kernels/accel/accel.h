@@ -11,17 +11,17 @@
 /* Shared headers first: the host's include expansion takes each file once,
  * wherever it first appears, even inside a branch that is not compiled. */
 #include "accel/alpha_mask.h"
-#include "accel/bvh_node.h"
-#include "accel/bvh_walk.h"
+#include "accel/bvh/bvh_node.h"
+#include "accel/bvh/bvh_walk.h"
 #include "accel/hit.h"
 #include "accel/ray_tri.h"
 #include "accel/ray_tri4.h"
 #include "vct_types.h"
 
 #if defined(VCT_ACCEL_BVH2)
-#include "accel/bvh2_traverse.h"
+#include "accel/bvh/bvh2_traverse.h"
 #elif defined(VCT_ACCEL_BVH)
-#include "accel/bvh_traverse.h"
+#include "accel/bvh/bvh_traverse.h"
 #else
 #include "accel/grid_traverse.h"
 #endif

@@ -187,7 +187,7 @@ VCT_API vct_status vct_bricks_sample(vct_context *ctx, const vct_voxels *voxels,
                                      uint32_t level, const float *points, uint32_t n, float *out,
                                      vct_error *err);
 
-/* How cones march (kernels/voxel/cone_trace.h). */
+/* How cones march (kernels/conetrace/cone_trace.h). */
 typedef struct vct_cone_settings {
     float step;        /* step as a fraction of the cone's diameter there */
     float offset;      /* start offset along the surface normal, in voxels */

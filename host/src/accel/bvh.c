@@ -206,7 +206,7 @@ vct_bvh *vct_bvh_build(vct_context *ctx, const vct_scene *s, vct_bvh_builder bui
     cl_program p;
     cl_mem codes = NULL, ranges = NULL;
     if (rc == VCT_OK)
-        rc = vct_program_get(ctx, "accel/bvh_build.cl", "", &p, err);
+        rc = vct_program_get(ctx, "accel/bvh/bvh_build.cl", "", &p, err);
     if (rc == VCT_OK)
         rc = allocate(ctx, b, &codes, &ranges, err);
     if (rc == VCT_OK)
@@ -253,7 +253,7 @@ int vct_bvh_refit(vct_context *ctx, vct_bvh *b, const vct_scene *s, vct_error *e
     if (rc == VCT_OK) {
         vct_buffer_release(ctx, b->tri_vertices);
         b->tri_vertices = fresh;
-        rc = vct_program_get(ctx, "accel/bvh_build.cl", "", &p, err);
+        rc = vct_program_get(ctx, "accel/bvh/bvh_build.cl", "", &p, err);
     }
     if (rc == VCT_OK)
         rc = binary_boxes(ctx, b, p, REFIT_STAGE, err);

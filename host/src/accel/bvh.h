@@ -1,12 +1,12 @@
 /* The 4-wide BVH as the renderers and its tests see it (layout:
- * kernels/accel/bvh_node.h). */
+ * kernels/accel/bvh/bvh_node.h). */
 #ifndef VCT_ACCEL_BVH_H
 #define VCT_ACCEL_BVH_H
 
 #include "runtime/runtime.h"
 
 /* Traversal's stack holds 3 nodes per level: deeper trees are refused
- * (BVH_MAX_DEPTH in kernels/accel/bvh_traverse.h). */
+ * (BVH_MAX_DEPTH in kernels/accel/bvh/bvh_traverse.h). */
 #define VCT_BVH_MAX_DEPTH 40
 /* A leaf holds up to this many consecutive triangles. */
 #define VCT_BVH_LEAF_MAX 4

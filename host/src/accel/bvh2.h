@@ -1,4 +1,4 @@
-/* The two-level BVH (kernels/accel/bvh2_traverse.h): a 4-wide BVH per mesh,
+/* The two-level BVH (kernels/accel/bvh/bvh2_traverse.h): a 4-wide BVH per mesh,
  * built on the device in the mesh's space, under a 4-wide BVH over the
  * instances, built on the host at every build (instances are few): moving
  * an instance rebuilds only the top level and the instance's vertices. */

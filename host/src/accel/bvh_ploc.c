@@ -96,7 +96,7 @@ int vct_bvh_ploc(vct_context *ctx, vct_bvh *b, cl_mem ranges, const char *stage,
         return VCT_OK;
     cl_program p;
     ploc_buffers t = {0};
-    int rc = vct_program_get(ctx, "accel/bvh_ploc.cl", "", &p, err);
+    int rc = vct_program_get(ctx, "accel/bvh/bvh_ploc.cl", "", &p, err);
     if (rc == VCT_OK)
         rc = allocate(ctx, n, stage, &t, err);
     if (rc == VCT_OK)

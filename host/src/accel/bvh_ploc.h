@@ -1,5 +1,5 @@
 /* The BVH's quality step: the binary tree by agglomerative clustering
- * (PLOC) instead of the linear hierarchy (kernels/accel/bvh_ploc.cl). */
+ * (PLOC) instead of the linear hierarchy (kernels/accel/bvh/bvh_ploc.cl). */
 #ifndef VCT_ACCEL_BVH_PLOC_H
 #define VCT_ACCEL_BVH_PLOC_H
 

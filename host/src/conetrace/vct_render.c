@@ -93,7 +93,7 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
     snprintf(options + strlen(options), sizeof options - strlen(options), " %s",
              vct_accel_program_options(g));
     if (rc == VCT_OK)
-        rc = vct_program_get(ctx, "voxel/inject_bounce.cl", options, &p, err);
+        rc = vct_program_get(ctx, "conetrace/inject_bounce.cl", options, &p, err);
     cl_mem cones = rc == VCT_OK ? cone_buffer(ctx, diffuse_cones, BOUNCE_STAGE, err) : NULL;
     cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
     vct_cone_desc desc;

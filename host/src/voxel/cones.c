@@ -1,5 +1,5 @@
 /* Cones: diffuse presets, march settings, and the arguments every cone
- * kernel takes (kernels/voxel/cone_trace.h). */
+ * kernel takes (kernels/conetrace/cone_trace.h). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

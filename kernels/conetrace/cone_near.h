@@ -13,8 +13,8 @@
 
 #include "accel/accel.h"
 #include "light/direct_light.h" /* surface_epsilon */
-#include "voxel/cone_sky.h"
-#include "voxel/cone_trace.h"
+#include "conetrace/cone_sky.h"
+#include "conetrace/cone_trace.h"
 
 /* Where the march of a camera cone along d from surface point p (unit
  * normal n) starts: lifted the offset along n (cone_origin), then moved

@@ -13,7 +13,7 @@
 #ifndef VCT_BVH_TRAVERSE_H
 #define VCT_BVH_TRAVERSE_H
 
-#include "accel/bvh_walk.h"
+#include "accel/bvh/bvh_walk.h"
 
 typedef struct accel_view {
     vct_accel_desc desc;                  /* res.x: node count */

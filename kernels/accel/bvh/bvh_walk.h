@@ -6,7 +6,7 @@
 #define VCT_BVH_WALK_H
 
 #include "accel/alpha_mask.h"
-#include "accel/bvh_node.h"
+#include "accel/bvh/bvh_node.h"
 #include "accel/hit.h"
 #include "accel/ray_tri.h"
 #include "accel/ray_tri4.h"

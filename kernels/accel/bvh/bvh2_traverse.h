@@ -10,7 +10,7 @@
 #ifndef VCT_BVH2_TRAVERSE_H
 #define VCT_BVH2_TRAVERSE_H
 
-#include "accel/bvh_walk.h"
+#include "accel/bvh/bvh_walk.h"
 
 /* An instance: its inverse transform's three rows (mesh = rows . (p, 1)),
  * then (its mesh's root node, the mesh's first sorted triangle, the

@@ -13,9 +13,9 @@
  * whichever way the wall is wound. A voxel whose fragments face every way
  * (no normal) gathers on both sides of z and sends the brighter both ways. */
 #include "scene/bsdf.h"
-#include "voxel/cone_trace.h"
-#include "voxel/cone_near.h"
-#include "voxel/cone_sky.h"
+#include "conetrace/cone_trace.h"
+#include "conetrace/cone_near.h"
+#include "conetrace/cone_sky.h"
 #include "voxel/octree.h"
 #include "voxel/voxel_side.h"
 #include "vct_types.h"

@@ -1,4 +1,4 @@
-/* Cone marching (kernels/voxel/cone_trace.h) against a plain-C marcher over the
+/* Cone marching (kernels/conetrace/cone_trace.h) against a plain-C marcher over the
  * dense reference lattices of brick_ref.h, isotropic and directional, on
  * buffer and image pools; the diffuse presets' weights against an
  * independent Monte Carlo estimate; and hard cases: an empty volume, cones
@@ -162,7 +162,7 @@ typedef struct ref_cone {
     int left;
 } ref_cone;
 
-/* The march of kernels/voxel/cone_trace.h, written out in double precision. */
+/* The march of kernels/conetrace/cone_trace.h, written out in double precision. */
 static ref_cone ref_march(const brick_case *c, const ref_pyramid *p, int directional,
                           const vct_cone_settings *s, const double ambient[3], const double o[3],
                           const double d[3], double tan_half, double reach) {
@@ -576,7 +576,7 @@ static void hard_cases(void) {
 }
 
 /* The light where the ray from surface point `from` along d meets the
- * scene before the cone's march starts (kernels/voxel/cone_near.h): the
+ * scene before the cone's march starts (kernels/conetrace/cone_near.h): the
  * pyramid's sample there at the cone's diameter, seen from `from`,
  * un-premultiplied; 0 where the ray meets nothing that near. */
 static int ref_near(const brick_case *c, const ref_pyramid *p, const vct_cone_settings *s,

@@ -12,7 +12,7 @@
  * become consecutive, so the binary nodes carry ranges as the linear
  * hierarchy's do and the collapse to 4-wide nodes is shared. Binary refs,
  * box slots and sizes follow bvh_build.cl. */
-#include "accel/bvh_node.h"
+#include "accel/bvh/bvh_node.h"
 
 inline float union_area(float4 alo, float4 ahi, float4 blo, float4 bhi) {
     const float3 e = fmax(ahi.xyz, bhi.xyz) - fmin(alo.xyz, blo.xyz);

@@ -22,7 +22,7 @@
 
 #include "accel/accel.h"
 #include "scene/bsdf.h" /* basis_of */
-#include "voxel/cone_trace.h"
+#include "conetrace/cone_trace.h"
 
 #define CONE_REST_RAYS_CAMERA 9u
 #define CONE_REST_RAYS_VOXELS 1u

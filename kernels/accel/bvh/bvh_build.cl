@@ -15,8 +15,8 @@
  *
  * Binary node refs: internal i < n-1 is i; leaf j (the j-th sorted triangle)
  * is BVH_LEAF | j. Boxes of both sit in one array: internal i at i, leaf j at
- * n-1+j. Wide node layout: see accel/bvh_node.h. */
-#include "accel/bvh_node.h"
+ * n-1+j. Wide node layout: see accel/bvh/bvh_node.h. */
+#include "accel/bvh/bvh_node.h"
 #include "vct_types.h"
 
 /* Spreads the low 10 bits of x to every third bit. */
