@@ -70,7 +70,7 @@ static const float CUBE[6][12] = {
     {-1, -1, -1, -1, 1, -1, 1, 1, -1, 1, -1, -1}, {-1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1},
     {-1, -1, -1, -1, -1, 1, -1, 1, 1, -1, 1, -1}, {1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1}};
 
-static void furnace(vct_context *ctx) {
+static void furnace(vct_context *ctx, int final_gather) {
     const float a = 0.5f, le = 1.0f;
     vct_material m = grey(a);
     m.emission[0] = m.emission[1] = m.emission[2] = le;
@@ -80,14 +80,18 @@ static void furnace(vct_context *ctx) {
     vct_pm_options o = vct_pm_options_default(32, 32);
     o.passes = 16;
     o.photons_per_pass = 1u << 15;
-    o.normal_cos = -2.0f; /* corners: photons of the next wall count (flat furnace) */
+    o.normal_cos = -2.0f;          /* corners: photons of the next wall count (flat furnace) */
+    o.final_gather = final_gather; /* rays from the visible points read the map where they land */
     vct_pm_result r;
     vct_image im = render(ctx, s, &o, &r);
     const double expect = le / (1.0 - a), mean = channel_mean(&im, 0);
     /* Depth 16 keeps all but a^16 of the light; the rest is density noise
      * and the disk that a corner cuts, both small at 16 passes. */
-    CHECK(fabs(mean - expect) < 0.03 * expect, "furnace: mean radiance %.4f, expected %.4f", mean,
+    CHECK(fabs(mean - expect) < 0.03 * expect,
+          "furnace (final gathering %d): mean radiance %.4f, expected %.4f", final_gather, mean,
           expect);
+    printf("furnace (final gathering %d): mean radiance %.4f, expected %.4f\n", final_gather, mean,
+           expect);
     CHECK(r.global_map && !r.caustic_map, "furnace: maps global %d caustic %d (expected 1, 0)",
           r.global_map, r.caustic_map);
     vct_image_release(&im);
@@ -481,7 +485,8 @@ static void thin_wall(vct_context *ctx) {
 
 int main(void) {
     vct_context *ctx = check_context();
-    furnace(ctx);
+    furnace(ctx, 0);
+    furnace(ctx, 1);
     sky(ctx);
     plane_convergence(ctx);
     mirror_caustic(ctx);

@@ -314,9 +314,17 @@ VCT_API vct_voxel_view_options vct_voxel_view_options_default(int width, int hei
 /* A band of a taller image: rows [first, first + the job's height) of an
  * image `height` rows tall, rendered as an image of their own with the
  * whole image's rays and random streams, so that its pixels equal the whole
- * image's. height 0: the job is the whole image. */
+ * image's. height 0: the job is the whole image. vct/partial.h tells how to
+ * split an image into bands. */
 typedef struct vct_band {
     int first, height;
+    /* Photon mapping only, and required there: called once per pass with
+     * the band's largest gather radii (float bits: global map, caustic
+     * map); it must replace them with the largest over all the image's
+     * bands of that pass and return 0, or return non-zero to stop the
+     * render. */
+    int (*pass_sync)(void *user, uint32_t pass, uint32_t radius_bits[2]);
+    void *pass_sync_user;
 } vct_band;
 
 /* One render: the method, the image size, what it reads and its options.
@@ -336,7 +344,7 @@ typedef struct vct_render_job {
     vct_pm_options pm;
     vct_vct_options vct;
     vct_voxel_view_options voxel_view;
-    vct_band band; /* every method but path tracing and photon mapping */
+    vct_band band; /* every method but path tracing */
     /* How vct_device_scene_render builds what the job reads (vct_render
      * takes them built, in scene, accel and voxels above): the acceleration
      * structure; for cone tracing and the voxel view the voxels, their

@@ -34,5 +34,6 @@
 #include "vct/image.h"
 #include "vct/denoise.h"
 #include "vct/multi.h"
+#include "vct/partial.h"
 
 #endif

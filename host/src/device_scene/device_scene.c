@@ -263,6 +263,14 @@ void vct_device_scene_stats_get(const vct_device_scene *ds, vct_device_scene_sta
     stats->scene_bytes += ds->resident.scene_bytes;
 }
 
+vct_context *vct_device_scene_context(const vct_device_scene *ds) {
+    return ds->ctx;
+}
+
+const vct_scene *vct_device_scene_scene(const vct_device_scene *ds) {
+    return ds->scene;
+}
+
 const vct_accel *vct_device_scene_accel(const vct_device_scene *ds) {
     return ds->accel;
 }

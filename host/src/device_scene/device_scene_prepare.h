@@ -9,6 +9,9 @@
 /* Commits, then builds what `job` would read (as vct_device_scene_render
  * does), without rendering. */
 int vct_device_scene_prepare(vct_device_scene *ds, const vct_render_job *job, vct_error *err);
+/* The context and the scene ds was made with. */
+vct_context *vct_device_scene_context(const vct_device_scene *ds);
+const vct_scene *vct_device_scene_scene(const vct_device_scene *ds);
 /* voxels (a copy of from's, made on ds's context) become ds's, with the
  * settings from built them with; ds's own are released. */
 void vct_device_scene_adopt_voxels(vct_device_scene *ds, vct_voxels *voxels,

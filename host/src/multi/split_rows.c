@@ -26,29 +26,6 @@ typedef struct rows_round {
     double ms[VCT_GROUP_MAX];
 } rows_round;
 
-/* Subsampling refines squares of N rows whose corners lie on the next
- * square's first row, and a row of corners is an edge of the squares above
- * and below it: the finer of the two writes it last. A band therefore also
- * renders the square above it and the corner row below it. Sparse cone
- * tracing fills odd rows from the even row below. Cone tracing finds edges
- * by comparing a pixel with the rows above and below it. */
-static void band_shape(const vct_render_job *job, int *align, int *above, int *below) {
-    uint32_t subsample = 0;
-    if (job->method == VCT_METHOD_WHITTED)
-        subsample = job->whitted.subsample;
-    else if (job->method == VCT_METHOD_RAYCAST)
-        subsample = job->raycast.subsample;
-    *align = 1, *above = 0, *below = 0;
-    if (subsample > 1)
-        *align = (int)subsample, *above = (int)subsample, *below = 1;
-    else if (job->method == VCT_METHOD_VCT && job->vct.sparse_diffuse)
-        *align = 2, *below = 2;
-    if (job->method == VCT_METHOD_VCT && job->vct.edge_samples != 1) {
-        *above = *above > *align ? *above : *align; /* keeps the sparse rows' parity */
-        *below = *below > 1 ? *below : 1;
-    }
-}
-
 /* The rows band b renders: its own and its halos, within the image. */
 static band rendered_rows(const rows_round *r, band b) {
     const int first = b.first - r->halo_above > 0 ? b.first - r->halo_above : 0;
@@ -69,16 +46,15 @@ static void render_band(vct_group *g, int i, void *arg) {
     const band drawn = rendered_rows(r, b);
     job.width = r->width;
     job.height = drawn.rows;
-    job.band = (vct_band){drawn.first, r->height};
+    job.band.first = drawn.first;
+    job.band.height = r->height;
     if (r->sync) {
-        g->ctx[i]->band_sync = vct_pass_sync_wait;
-        g->ctx[i]->band_sync_user = r->sync;
+        job.band.pass_sync = vct_pass_sync_wait;
+        job.band.pass_sync_user = r->sync;
     }
     const double t0 = vct_now_ms();
     r->rc[i] = vct_render(g->ctx[i], &job, &r->images[i], &r->results[i], &r->errors[i]);
     r->ms[i] = vct_now_ms() - t0;
-    g->ctx[i]->band_sync = NULL;
-    g->ctx[i]->band_sync_user = NULL;
     if (r->sync && r->rc[i] != VCT_OK)
         vct_pass_sync_fail(r->sync, i);
 }
@@ -204,7 +180,7 @@ static int lockstep_outcome(vct_group *g, const vct_render_job *job, rows_round 
 static int render_range(vct_group *g, const vct_render_job *job, int first, int rows,
                         vct_image *image, vct_render_result *result, int measure, vct_error *err) {
     int align, above, below;
-    band_shape(job, &align, &above, &below);
+    vct_band_shape(job, &align, &above, &below);
     rows_round *r = calloc(1, sizeof *r);
     if (!r)
         return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");

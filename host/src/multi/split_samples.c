@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "multi/group.h"
+#include "vct/partial.h"
 #include "pathtrace/pathtrace.h"
 
 #define STAGE "path trace"
@@ -94,15 +95,6 @@ static void device_samples(vct_group *g, int i, void *arg) {
     s->ms[i] += vct_now_ms() - t0;
 }
 
-/* 128-bit two's-complement addition, as kernels/render/exact_sum.h adds. */
-static void exact_add_into(uint64_t *sum, const uint64_t *add, size_t pairs) {
-    for (size_t k = 0; k < pairs; ++k) {
-        const uint64_t lo = sum[2 * k + 1] + add[2 * k + 1];
-        sum[2 * k] += add[2 * k] + (lo < add[2 * k + 1] ? 1u : 0u);
-        sum[2 * k + 1] = lo;
-    }
-}
-
 /* Every active device's sums added into one buffer on device `into`. */
 static int merge_sums(sample_run *s, int into, cl_mem *merged, uint32_t *discarded,
                       vct_error *err) {
@@ -120,7 +112,7 @@ static int merge_sums(sample_run *s, int into, cl_mem *merged, uint32_t *discard
         if (rc == VCT_OK)
             rc = vct_buffer_read(g->ctx[i], STAGE, s->pt[i].acc->pt_discarded, 0, 4, &dropped, err);
         if (rc == VCT_OK)
-            exact_add_into(sum, part, bytes / 16);
+            vct_sample_sums_add_words(sum, part, bytes / 16);
         *discarded += dropped;
     }
     *merged = rc == VCT_OK ? vct_buffer_create(g->ctx[into], STAGE, "summed accumulations", bytes,

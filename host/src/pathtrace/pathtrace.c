@@ -11,6 +11,7 @@
 #include "accel/accel.h"
 #include "frame/frame.h"
 #include "pathtrace/pathtrace.h"
+#include "vct/partial.h"
 #include "frame/progress.h"
 
 #define STAGE "path trace"
@@ -102,6 +103,25 @@ int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                           VCT_ARG(accum, pt->acc->pt_sums),
                           VCT_ARG(discarded, pt->acc->pt_discarded), VCT_ARG_OF(ambient));
     return rc;
+}
+
+int vct_pt_sums_read(vct_pt_session *pt, void *sums, uint32_t *discarded, vct_error *err) {
+    const size_t bytes = VCT_PT_ACCUM_BYTES * (size_t)pt->opt->width * pt->opt->height;
+    cl_uint dropped = 0;
+    int rc = vct_buffer_read(pt->ctx, STAGE, pt->acc->pt_sums, 0, bytes, sums, err);
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(pt->ctx, STAGE, pt->acc->pt_discarded, 0, 4, &dropped, err);
+    *discarded = dropped;
+    return rc;
+}
+
+void vct_sample_sums_add_words(uint64_t *into, const uint64_t *add, size_t pairs) {
+    /* 128-bit two's-complement addition, as kernels/render/exact_sum.h adds */
+    for (size_t k = 0; k < pairs; ++k) {
+        const uint64_t lo = into[2 * k + 1] + add[2 * k + 1];
+        into[2 * k] += add[2 * k] + (lo < add[2 * k + 1] ? 1u : 0u);
+        into[2 * k + 1] = lo;
+    }
 }
 
 int vct_pt_run(vct_pt_session *pt, uint32_t first, uint32_t count, int wait, vct_error *err) {

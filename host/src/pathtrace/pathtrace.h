@@ -7,10 +7,11 @@
 #include "runtime/runtime.h"
 #include "light/emitters.h"
 #include "scene/scene_device.h"
+#include "vct/partial.h"
 
 /* Per pixel: exact sums of red, green, blue, the count of samples kept and
  * the squares of their luminance (kernels/render/exact_sum.h), 16 bytes each. */
-#define VCT_PT_ACCUM_BYTES 80
+#define VCT_PT_ACCUM_BYTES VCT_SAMPLE_SUM_BYTES
 
 typedef struct vct_pt_session {
     vct_context *ctx;
@@ -30,6 +31,9 @@ int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
 /* Queues samples [first, first + count), opt->samples_per_pass per launch;
  * wait: also waits for them. */
 int vct_pt_run(vct_pt_session *pt, uint32_t first, uint32_t count, int wait, vct_error *err);
+/* The session's running sums (VCT_PT_ACCUM_BYTES per pixel) and the count
+ * of samples it dropped, read into host memory. */
+int vct_pt_sums_read(vct_pt_session *pt, void *sums, uint32_t *discarded, vct_error *err);
 /* Resolves `sums` (NULL: the session's own; else a buffer of the same
  * layout) into the frame and delivers it into `image` (NULL: neither), then
  * closes the stage. rc: how the samples went; on failure the running sums

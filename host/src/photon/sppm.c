@@ -339,7 +339,7 @@ static int gather_pass(vct_context *ctx, sppm_run *r, cl_uint pass, float fg_rad
     if (rc == VCT_OK)
         rc = vct_photon_grid_args(k, 17, "caus", &r->grid[caustics ? CAUSTIC : GLOBAL], STAGE, err);
     if (rc == VCT_OK)
-        rc = vct_set_args(err, STAGE, k, 21, 9, VCT_ARG_OF(caustics), VCT_ARG_OF(fg_radius),
+        rc = vct_set_args(err, STAGE, k, 21, 9, VCT_ARG_OF(caustics), VCT_ARG(radius, fg_radius),
                           VCT_ARG_OF(inv_emitted), VCT_ARG_OF(rays), VCT_ARG_OF(seed),
                           VCT_ARG_OF(pass), VCT_ARG_OF(flags), VCT_ARG_OF(normal_cos),
                           VCT_ARG_OF(st->fg_sum));

@@ -1,5 +1,6 @@
 /* Kernel arguments checked against the kernel's parameter names. */
 #include <ctype.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +21,33 @@ static void bound_name(const char *bound, char *out, size_t size) {
     snprintf(out, size, "%.*s", (int)(end - start), start);
 }
 
+/* With $VCT_ARG_LOG naming a file, each kernel whose arguments were checked
+ * is appended to it once per process: tools/arg_coverage.py compares the
+ * suite's log with every kernel the sources define. */
+static void log_checked(cl_kernel kernel) {
+    static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    static char seen[256][64];
+    static int seen_count;
+    const char *path = getenv("VCT_ARG_LOG");
+    char name[64] = "";
+    if (!path || !path[0] ||
+        clGetKernelInfo(kernel, CL_KERNEL_FUNCTION_NAME, sizeof name, name, NULL) != CL_SUCCESS)
+        return;
+    pthread_mutex_lock(&lock);
+    int known = 0;
+    for (int i = 0; i < seen_count && !known; ++i)
+        known = strcmp(seen[i], name) == 0;
+    if (!known && seen_count < 256) {
+        snprintf(seen[seen_count++], sizeof seen[0], "%s", name);
+        FILE *f = fopen(path, "a");
+        if (f) {
+            fprintf(f, "%s\n", name);
+            fclose(f);
+        }
+    }
+    pthread_mutex_unlock(&lock);
+}
+
 int vct_check_arg(vct_error *err, const char *stage, cl_kernel kernel, cl_uint index,
                   const char *bound) {
     if (!bound[0] || !vct_args_checked())
@@ -34,8 +62,10 @@ int vct_check_arg(vct_error *err, const char *stage, cl_kernel kernel, cl_uint i
     bound_name(bound, name, sizeof name);
     /* some compilers prefix names that are also built-in functions (step) */
     const char *p = strncmp(param, "_cl_", 4) == 0 ? param + 4 : param;
-    if (strcmp(p, name) == 0)
+    if (strcmp(p, name) == 0) {
+        log_checked(kernel);
         return VCT_OK;
+    }
     clGetKernelInfo(kernel, CL_KERNEL_FUNCTION_NAME, sizeof kernel_name, kernel_name, NULL);
     return vct_fail(err, VCT_ERR_INPUT,
                     "%s: kernel %s's argument %u is \"%s\" but the host binds %s there: the "

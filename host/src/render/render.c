@@ -102,6 +102,15 @@ static int job_check(const vct_context *ctx, const vct_render_job *job, vct_erro
         return vct_fail(err, VCT_ERR_INPUT,
                         "render (voxels): the job has no voxels: build them with vct_voxelize "
                         "and vct_octree_build");
+    if (job->band.height && job->method == VCT_METHOD_PATHTRACE)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "render (pt): the path tracer is split by samples, not bands "
+                        "(vct_device_scene_render_samples)");
+    if (job->band.height && job->band.height != job->height && job->method == VCT_METHOD_PM &&
+        !job->band.pass_sync)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "render (pm): a band of photon mapping needs band.pass_sync, so that "
+                        "every band gathers with the whole image's radii (vct/partial.h)");
     if ((job->accel && job->accel->ctx != ctx) || (job->voxels && job->voxels->ctx != ctx))
         return vct_fail(err, VCT_ERR_INPUT,
                         "render (%s): the job's %s was built on another context: build it on "
@@ -135,6 +144,8 @@ vct_status vct_render(vct_context *ctx, const vct_render_job *given, vct_image *
     if (rc == VCT_OK && job->band.height) {
         ctx->band_first = job->band.first;
         ctx->band_height = job->band.height;
+        ctx->band_sync = job->band.pass_sync;
+        ctx->band_sync_user = job->band.pass_sync_user;
     }
     if (rc == VCT_OK) {
         switch (job->method) {
@@ -167,6 +178,8 @@ vct_status vct_render(vct_context *ctx, const vct_render_job *given, vct_image *
         }
     }
     ctx->band_first = ctx->band_height = 0;
+    ctx->band_sync = NULL;
+    ctx->band_sync_user = NULL;
     if (result) {
         memset(result, 0, sizeof *result);
         result->method = job->method;

@@ -1,0 +1,26 @@
+/* Bands of an image (vct/partial.h): what a band renders beyond its own
+ * rows so that they equal the whole image's. */
+#include "vct/partial.h"
+
+/* Subsampling refines squares of N rows whose corners lie on the next
+ * square's first row, and a row of corners is an edge of the squares above
+ * and below it: the finer of the two writes it last. A band therefore also
+ * renders the square above it and the corner row below it. Sparse cone
+ * tracing fills odd rows from the even row below. Cone tracing finds edges
+ * by comparing a pixel with the rows above and below it. */
+void vct_band_shape(const vct_render_job *job, int *align, int *above, int *below) {
+    uint32_t subsample = 0;
+    if (job->method == VCT_METHOD_WHITTED)
+        subsample = job->whitted.subsample;
+    else if (job->method == VCT_METHOD_RAYCAST)
+        subsample = job->raycast.subsample;
+    *align = 1, *above = 0, *below = 0;
+    if (subsample > 1)
+        *align = (int)subsample, *above = (int)subsample, *below = 1;
+    else if (job->method == VCT_METHOD_VCT && job->vct.sparse_diffuse)
+        *align = 2, *below = 2;
+    if (job->method == VCT_METHOD_VCT && job->vct.edge_samples != 1) {
+        *above = *above > *align ? *above : *align; /* keeps the sparse rows' parity */
+        *below = *below > 1 ? *below : 1;
+    }
+}
