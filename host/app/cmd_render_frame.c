@@ -1,8 +1,10 @@
 /* vct render on one device: a frame and its outputs, and sequences. */
 #include <ctype.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "cli_common.h"
 #include "cli_denoise.h"
@@ -10,42 +12,51 @@
 #include "cmd_render_frame.h"
 #include "cmd_render_vct.h"
 
-int cli_render_frame(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
-                     const cli_options *opt, vct_method method, const char *out, vct_error *err) {
-    vct_image image = {0};
+int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
+                   const cli_options *opt, vct_method method, cli_frame *f, vct_error *err) {
+    memset(f, 0, sizeof *f);
     vct_render_job job = cli_render_job(opt, method, s);
-    vct_render_result result = {0};
-    vct_aovs aovs;
-    memset(&aovs, 0, sizeof aovs);
     vct_plan plan;
     if (method == VCT_METHOD_VCT) {
         cli_vct_plan(opt, s, &plan);
         job.plan = &plan;
-        job.aovs = opt->aov || opt->denoise ? &aovs : NULL; /* --denoise filters the indirect AOV */
+        /* --denoise filters the indirect AOV */
+        job.aovs = opt->aov || opt->denoise ? &f->aovs : NULL;
     }
-    vct_image variance = {0};
     if (opt->denoise && method == VCT_METHOD_PATHTRACE)
-        job.pathtrace.variance = &variance;
-    int rc = vct_device_scene_render(ds, &job, &image, &result, err);
+        job.pathtrace.variance = &f->variance;
+    int rc = vct_device_scene_render(ds, &job, &f->image, &f->result, err);
     if (rc == VCT_OK && method == VCT_METHOD_VCT)
         cli_print_voxels(opt, vct_device_scene_voxels(ds));
     if (rc == VCT_OK && method == VCT_METHOD_PM)
-        cli_print_pm(&result.pm, stderr);
+        cli_print_pm(&f->result.pm, stderr);
     if (rc == VCT_OK)
-        cli_print_result(opt, &result);
-    cli_layers layers = {0};
+        cli_print_result(opt, &f->result);
     if (rc == VCT_OK && opt->aov && method == VCT_METHOD_VCT)
-        cli_layers_add_aovs(&layers, &aovs);
+        cli_layers_add_aovs(&f->layers, &f->aovs);
     if (rc == VCT_OK)
-        rc = cli_denoise_outputs(ctx, s, vct_device_scene_accel(ds), opt, method, &image,
-                                 variance.rgba ? &variance : NULL,
-                                 method == VCT_METHOD_VCT ? &aovs : NULL, &layers, err);
+        rc = cli_denoise_outputs(ctx, s, vct_device_scene_accel(ds), opt, method, &f->image,
+                                 f->variance.rgba ? &f->variance : NULL,
+                                 method == VCT_METHOD_VCT ? &f->aovs : NULL, &f->layers, err);
+    if (rc != VCT_OK)
+        cli_frame_release(f);
+    return rc;
+}
+
+void cli_frame_release(cli_frame *f) {
+    vct_image_release(&f->image);
+    vct_image_release(&f->variance);
+    cli_layers_free(&f->layers);
+    vct_aovs_release(&f->aovs);
+}
+
+int cli_render_frame(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
+                     const cli_options *opt, vct_method method, const char *out, vct_error *err) {
+    cli_frame f;
+    int rc = cli_frame_make(ctx, ds, s, opt, method, &f, err);
     if (rc == VCT_OK)
-        rc = cli_write_image(opt, &image, &layers, out, err);
-    vct_image_release(&image);
-    vct_image_release(&variance);
-    cli_layers_free(&layers);
-    vct_aovs_release(&aovs);
+        rc = cli_write_image(opt, &f.image, &f.layers, out, err);
+    cli_frame_release(&f);
     return rc;
 }
 
@@ -74,13 +85,34 @@ static double now_s(void) {
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, const cli_options *opt,
-                      vct_method method, const char *pattern, vct_error *err) {
+int cli_frames_todo(const cli_options *opt, const vct_scene *s, const char *pattern, int *frames,
+                    int *count, vct_error *err) {
     char path[1024];
+    *count = 0;
     int rc = cli_frame_path(pattern, opt->frames[0], path, sizeof path, err);
     if (rc == VCT_OK && s->animation_count == 0)
         rc = cli_fail_input(err, "vct render --frames: %s has no animation", s->source);
     for (int f = opt->frames[0]; rc == VCT_OK && f <= opt->frames[1]; ++f) {
+        rc = cli_frame_path(pattern, f, path, sizeof path, err);
+        if (rc == VCT_OK && !(opt->resume_frames && access(path, F_OK) == 0))
+            frames[(*count)++] = f;
+    }
+    return rc;
+}
+
+int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, const cli_options *opt,
+                      vct_method method, const char *pattern, vct_error *err) {
+    const int total = opt->frames[1] - opt->frames[0] + 1;
+    int *frames = malloc(sizeof(int) * (size_t)total), count = 0;
+    if (!frames)
+        return cli_fail_input(err, "vct render --frames: out of host memory");
+    int rc = cli_frames_todo(opt, s, pattern, frames, &count, err);
+    if (rc == VCT_OK && count < total)
+        fprintf(stderr, "vct render --resume: %d of %d frames are there; rendering %d\n",
+                total - count, total, count);
+    char path[1024];
+    for (int k = 0; rc == VCT_OK && k < count; ++k) {
+        const int f = frames[k];
         const double t0 = now_s();
         rc = vct_scene_pose(s, 0, (double)f / opt->fps, err);
         if (rc == VCT_OK)
@@ -91,5 +123,6 @@ int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, cons
             fprintf(stderr, "frame %d (%.3f s): %s in %.2f s\n", f, (double)f / opt->fps, path,
                     now_s() - t0);
     }
+    free(frames);
     return rc;
 }

@@ -2,7 +2,22 @@
 #ifndef VCT_APP_CMD_RENDER_FRAME_H
 #define VCT_APP_CMD_RENDER_FRAME_H
 
+#include "cli_layers.h"
 #include "options.h"
+
+/* A rendered frame and what is written beside it. */
+typedef struct cli_frame {
+    vct_image image, variance;
+    vct_aovs aovs;
+    cli_layers layers;
+    vct_render_result result;
+} cli_frame;
+
+/* The scene as it is, through ds, with every output the options ask for
+ * (AOV layers, the denoised image), not written. */
+int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
+                   const cli_options *opt, vct_method method, cli_frame *f, vct_error *err);
+void cli_frame_release(cli_frame *f);
 
 /* The scene as it is, through ds, with every output the options ask for
  * (AOV layers, denoising) written to `out`. */
@@ -13,6 +28,12 @@ int cli_render_frame(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
  * written to the name `pattern` gives it (one %d or %0Nd). */
 int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, const cli_options *opt,
                       vct_method method, const char *pattern, vct_error *err);
+/* The frames of --frames still to render, in order, into frames (room for
+ * all of them): every one, or with --resume those whose files are not
+ * there. Refuses a pattern without a number and a scene without an
+ * animation. */
+int cli_frames_todo(const cli_options *opt, const vct_scene *s, const char *pattern, int *frames,
+                    int *count, vct_error *err);
 /* The file of frame `frame`: the pattern's one %d or %0Nd (N below 10)
  * holds its number. VCT_ERR_INPUT for any other pattern. */
 int cli_frame_path(const char *pattern, int frame, char *out, size_t size, vct_error *err);

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include "cli_common.h"
+#include "cluster.h"
 #include "cli_denoise.h"
 #include "cmd_render_frame.h"
 #include "cmd_render_group.h"
@@ -119,6 +120,11 @@ int cmd_render(const cli_options *opt) {
     if (!s)
         return cli_fail(&err);
     cli_print_scene(s, stderr);
+    if (cli_cluster_size() > 1) {
+        const int rc = cli_render_cluster(opt, s, (vct_method)method, out);
+        vct_scene_release(s);
+        return rc;
+    }
     int emissive = 0;
     for (uint32_t m = 0; m < s->material_count; ++m)
         for (int c = 0; c < 3; ++c)

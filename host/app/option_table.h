@@ -26,6 +26,7 @@ typedef enum cli_option_id {
     OPT_FRAME,
     OPT_FRAMES,
     OPT_FPS,
+    OPT_RESUME,
     OPT_ACCEL,
     OPT_BVH_BUILD,
     OPT_BVH_LEVELS,

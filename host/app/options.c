@@ -369,6 +369,9 @@ static int apply(const parse_state *ps, cli_option_id id, char **w, int nw, cli_
         if (!(opt->fps > 0.0f))
             return fail(ps, "%s takes frames per second above 0, not %s", ps->name, w[0]);
         return 0;
+    case OPT_RESUME:
+        opt->resume_frames = 1;
+        return 0;
     case OPT_METHOD:
         opt->method = w[0];
         return 0;

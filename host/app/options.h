@@ -50,6 +50,7 @@ struct cli_options {
     int frame;     /* -1: the file's rest pose; else the first animation at frame / fps */
     int frames[2]; /* --frames A:B; frames[1] < 0: none */
     float fps;
+    int resume_frames; /* --resume: skip the frames whose files exist */
     /* vct method */
     int print_plan;
     vct_effect_force force[VCT_EFFECTS];
