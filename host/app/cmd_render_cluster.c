@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "cli_common.h"
 #include "cli_denoise.h"
@@ -112,7 +113,14 @@ static void *serve(void *arg) {
     for (int left = d->m->size - 1; left > 0;) {
         frame_report r;
         MPI_Status st;
-        MPI_Recv(&r, sizeof r, MPI_BYTE, MPI_ANY_SOURCE, TAG_READY, MPI_COMM_WORLD, &st);
+        /* MPI waits by spinning: probing with naps leaves the core to the
+         * rendering thread beside this one */
+        for (int ready = 0; !ready;) {
+            MPI_Iprobe(MPI_ANY_SOURCE, TAG_READY, MPI_COMM_WORLD, &ready, &st);
+            if (!ready)
+                nanosleep(&(struct timespec){0, 1000000}, NULL);
+        }
+        MPI_Recv(&r, sizeof r, MPI_BYTE, st.MPI_SOURCE, TAG_READY, MPI_COMM_WORLD, &st);
         const int from = st.MPI_SOURCE;
         if (r.index >= 0) {
             vct_image im = {0};
