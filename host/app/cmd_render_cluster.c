@@ -23,6 +23,7 @@
 #include "cluster.h"
 #include "cluster_mpi.h"
 #include "cmd_render_frame.h"
+#include "cmd_render_group.h"
 #include "cmd_render_vct.h"
 
 enum { TAG_READY = 1, TAG_PIXELS, TAG_FRAME };
@@ -39,8 +40,13 @@ typedef struct member {
     const cli_options *opt;
     vct_method method;
     vct_scene *scene;
+    /* one device: its context and device scene; several (--device's
+     * list): a group, with what its devices build */
     vct_context *ctx;
     vct_device_scene *ds;
+    vct_group *group;
+    vct_plan plan;
+    vct_group_build build;
     int rank, size;
     rank_stats stats;
     const char *work_unit; /* what stats.work counts */
@@ -142,13 +148,36 @@ static void *serve(void *arg) {
     return NULL;
 }
 
+/* The rank's devices up to date with the scene (a group's device scenes
+ * commit here; one device's at its render). */
+static int member_prepare(member *m, vct_error *err) {
+    return m->group ? vct_group_prepare(m->group, m->scene, &m->build, err) : VCT_OK;
+}
+
+/* A frame on the rank's device group, denoised as asked. */
+static int group_frame(member *m, cli_frame *f, vct_error *err) {
+    memset(f, 0, sizeof *f);
+    vct_render_job job = cli_render_job(m->opt, m->method, m->scene);
+    job.plan = &m->plan;
+    if (m->opt->denoise && m->method == VCT_METHOD_PATHTRACE)
+        job.pathtrace.variance = &f->variance;
+    int rc = member_prepare(m, err);
+    if (rc == VCT_OK)
+        rc = vct_group_render(m->group, &job, &f->image, &f->result, err);
+    if (rc == VCT_OK && m->opt->denoise)
+        rc = cli_devices_denoise(m->group, m->scene, m->opt, m->method, &f->image, &f->variance,
+                                 err);
+    return rc;
+}
+
 /* Poses and renders frame k of the list. */
 static void render_frame(member *m, dealer *d, int k, cli_frame *f, double *seconds) {
     vct_error err = {0};
     const double t0 = MPI_Wtime();
     int rc = vct_scene_pose(m->scene, 0, (double)d->frames[k] / m->opt->fps, &err);
     if (rc == VCT_OK)
-        rc = cli_frame_make(m->ctx, m->ds, m->scene, m->opt, m->method, f, &err);
+        rc = m->group ? group_frame(m, f, &err)
+                      : cli_frame_make(m->ctx, m->ds, m->scene, m->opt, m->method, f, &err);
     if (rc != VCT_OK)
         cli_cluster_fail("rendering a frame", &err);
     *seconds = MPI_Wtime() - t0;
@@ -268,7 +297,12 @@ static int render_samples(member *m, vct_image *image, vct_image *variance,
                    end = (uint32_t)((uint64_t)spp * (m->rank + 1) / m->size);
     const double t0 = MPI_Wtime();
     vct_sample_sums mine;
-    if (vct_device_scene_render_samples(m->ds, &job, first, end - first, &mine, err) != VCT_OK)
+    int rc = member_prepare(m, err);
+    if (rc == VCT_OK)
+        rc = m->group
+                 ? vct_group_render_samples(m->group, &job, first, end - first, &mine, err)
+                 : vct_device_scene_render_samples(m->ds, &job, first, end - first, &mine, err);
+    if (rc != VCT_OK)
         cli_cluster_fail("path tracing", err);
     m->stats.seconds = MPI_Wtime() - t0;
     m->stats.work = end - first;
@@ -294,7 +328,8 @@ static int render_samples(member *m, vct_image *image, vct_image *variance,
     total.samples = spp;
     if (m->opt->denoise)
         job.pathtrace.variance = variance;
-    int rc = vct_device_scene_resolve_samples(m->ds, &job, &total, image, err);
+    rc = m->group ? vct_group_resolve_samples(m->group, &job, &total, image, err)
+                  : vct_device_scene_resolve_samples(m->ds, &job, &total, image, err);
     memset(result, 0, sizeof *result);
     result->method = m->method;
     result->spp = spp;
@@ -333,20 +368,19 @@ static void band_of(const vct_render_job *job, int r, int size, int *first, int 
 
 static int render_bands(member *m, vct_image *image, vct_render_result *result, vct_error *err) {
     vct_render_job job = cli_render_job(m->opt, m->method, m->scene);
-    vct_plan plan;
-    if (m->method == VCT_METHOD_VCT) {
-        cli_vct_plan(m->opt, m->scene, &plan);
-        job.plan = &plan;
-    }
+    if (m->method == VCT_METHOD_VCT)
+        job.plan = &m->plan;
     const int width = job.width, height = job.height;
     int align, above, below, first, end;
     vct_band_shape(&job, &align, &above, &below);
     band_of(&job, m->rank, m->size, &first, &end);
     const int from = first - above > 0 ? first - above : 0;
     const int to = end + below < height ? end + below : height;
+    /* one device renders the halos itself; a group is given its own rows
+     * and adds the halos its devices' bands need */
     vct_render_job band = job;
-    band.height = to - from;
-    band.band.first = from;
+    band.height = m->group ? end - first : to - from;
+    band.band.first = m->group ? first : from;
     band.band.height = height;
     if (m->method == VCT_METHOD_PM) {
         band.band.pass_sync = agree_on_radii;
@@ -356,9 +390,14 @@ static int render_bands(member *m, vct_image *image, vct_render_result *result, 
     vct_render_result own = {0};
     const double t0 = MPI_Wtime();
     /* photon mapping's every band meets the others at each pass */
-    if ((end > first || m->method == VCT_METHOD_PM) &&
-        vct_device_scene_render(m->ds, &band, &mine, &own, err) != VCT_OK)
-        cli_cluster_fail("rendering a band", err);
+    if (end > first) {
+        int rc = member_prepare(m, err);
+        if (rc == VCT_OK)
+            rc = m->group ? vct_group_render(m->group, &band, &mine, &own, err)
+                          : vct_device_scene_render(m->ds, &band, &mine, &own, err);
+        if (rc != VCT_OK)
+            cli_cluster_fail("rendering a band", err);
+    }
     m->stats.seconds = MPI_Wtime() - t0;
     m->stats.work = end - first;
     m->work_unit = "rows";
@@ -380,7 +419,8 @@ static int render_bands(member *m, vct_image *image, vct_render_result *result, 
         if (!image->rgba)
             cli_cluster_fail("rendering a band", &(vct_error){.message = "out of host memory"});
     }
-    const float *own_rows = mine.rgba ? mine.rgba + 4 * (size_t)width * (first - from) : NULL;
+    const int skip = m->group ? 0 : first - from;
+    const float *own_rows = mine.rgba ? mine.rgba + 4 * (size_t)width * skip : NULL;
     MPI_Gatherv(own_rows, counts[m->rank], MPI_FLOAT, m->rank == 0 ? image->rgba : NULL, counts,
                 offsets, MPI_FLOAT, 0, MPI_COMM_WORLD);
     cli_cluster_count_sent(m->rank ? 4 * (uint64_t)counts[m->rank] : 0);
@@ -399,16 +439,15 @@ static int render_bands(member *m, vct_image *image, vct_render_result *result, 
 
 static int refused(const cli_options *opt, vct_method method) {
     const char *why = NULL;
-    if (cli_device_list(opt))
-        why = "under MPI each rank renders on one device: give --device one (each rank opens it "
-              "on its own machine)";
-    else if (opt->aov)
+    if (opt->aov)
         why = "--aov comes from one process: render it without mpirun";
     else if (opt->denoise && method == VCT_METHOD_VCT)
         why = "--denoise with cone tracing filters the indirect AOV, which comes from one "
               "process: render it without mpirun";
     else if (method == VCT_METHOD_PATHTRACE && opt->time_limit > 0.0f && opt->frames[1] < 0)
         why = "the path tracer is split by samples under MPI: give --spp, not --time";
+    if (!why && method == VCT_METHOD_PM && opt->frames[1] < 0 && opt->height < cli_cluster_size())
+        why = "photon mapping's bands take a row or more each: give fewer ranks than rows";
     if (why && cli_cluster_rank() == 0)
         fprintf(stderr, "vct render: %s\n", why);
     return why != NULL;
@@ -428,13 +467,21 @@ static void gather_stats(member *m) {
     char host[MPI_MAX_PROCESSOR_NAME] = "";
     MPI_Get_processor_name(host, &length);
     snprintf(m->stats.host, sizeof m->stats.host, "%s", host);
-    snprintf(m->stats.device, sizeof m->stats.device, "%.95s", vct_context_device(m->ctx)->name);
+    if (m->group) {
+        const vct_group_device *d;
+        const int n = vct_group_devices(m->group, &d);
+        snprintf(m->stats.device, sizeof m->stats.device, "%d devices: %.80s", n, d[0].info.name);
+    } else {
+        snprintf(m->stats.device, sizeof m->stats.device, "%.95s",
+                 vct_context_device(m->ctx)->name);
+    }
     m->stats.sent = cli_cluster_sent();
     rank_stats *all = m->rank == 0 ? calloc((size_t)m->size, sizeof *all) : NULL;
     MPI_Gather(&m->stats, sizeof m->stats, MPI_BYTE, all, sizeof m->stats, MPI_BYTE, 0,
                MPI_COMM_WORLD);
     if (all && m->opt->stats) {
-        cli_print_stats(m->ctx);
+        if (m->ctx)
+            cli_print_stats(m->ctx);
         print_ranks(m, all);
     }
     free(all);
@@ -450,9 +497,13 @@ static int render_one_frame(member *m, const char *out) {
         cli_layers layers = {0};
         if (rc == VCT_OK) {
             cli_print_result(m->opt, &result);
-            rc = cli_denoise_outputs(m->ctx, m->scene, vct_device_scene_accel(m->ds), m->opt,
-                                     m->method, &image, variance.rgba ? &variance : NULL, NULL,
-                                     &layers, &err);
+            rc = m->group
+                     ? (m->opt->denoise ? cli_devices_denoise(m->group, m->scene, m->opt, m->method,
+                                                              &image, &variance, &err)
+                                        : VCT_OK)
+                     : cli_denoise_outputs(m->ctx, m->scene, vct_device_scene_accel(m->ds), m->opt,
+                                           m->method, &image, variance.rgba ? &variance : NULL,
+                                           NULL, &layers, &err);
         }
         if (rc == VCT_OK)
             rc = cli_write_image(m->opt, &image, &layers, out, &err);
@@ -476,16 +527,27 @@ int cli_render_cluster(const cli_options *opt, vct_scene *s, vct_method method, 
     m.rank = cli_cluster_rank();
     m.size = cli_cluster_size();
     vct_error err = {0};
-    m.ctx = cli_open_context(opt, &err);
-    if (!m.ctx)
-        cli_cluster_fail("opening the device", &err);
-    m.ds = vct_device_scene_create(m.ctx, s, &err);
-    if (!m.ds)
-        cli_cluster_fail("committing the scene", &err);
+    vct_plan_make(s, opt->force, &m.plan);
+    m.plan.emitters_by_cones = opt->emitters_by_cones;
+    if (cli_device_list(opt)) {
+        m.group = cli_devices_open(opt, &err);
+        if (!m.group)
+            cli_cluster_fail("opening the devices", &err);
+        cli_devices_build(opt, method, &m.plan, &m.build);
+    } else {
+        m.ctx = cli_open_context(opt, &err);
+        if (!m.ctx)
+            cli_cluster_fail("opening the device", &err);
+        m.ds = vct_device_scene_create(m.ctx, s, &err);
+        if (!m.ds)
+            cli_cluster_fail("committing the scene", &err);
+    }
     if (m.rank == 0)
-        fprintf(stderr, "vct: %d MPI ranks, each on its own device\n", m.size);
+        fprintf(stderr, "vct: %d MPI ranks, each on %s\n", m.size,
+                m.group ? "the devices --device lists" : "its own device");
     const int rc = opt->frames[1] >= 0 ? render_sequence(&m, out) : render_one_frame(&m, out);
     gather_stats(&m);
+    vct_group_release(m.group);
     vct_device_scene_release(m.ds);
     vct_context_release(m.ctx);
     return rc;

@@ -2,6 +2,7 @@
  * the frame is split between them, and --stats says what each held, built
  * and did. */
 #include <stdio.h>
+#include <string.h>
 
 #include "cli_common.h"
 #include "cli_denoise.h"
@@ -21,12 +22,8 @@ static void print_devices(const vct_group *g, FILE *out) {
     fprintf(out, "(voxels ms: c = copied from another device)\n");
 }
 
-/* --denoise after the devices' frame: on the first active device, with
- * guides of its own, so the image does not depend on how the frame was
- * split. */
-static int denoise_on_first_device(vct_group *g, const vct_scene *s, const cli_options *opt,
-                                   vct_method method, vct_image *image, const vct_image *variance,
-                                   vct_error *err) {
+int cli_devices_denoise(vct_group *g, const vct_scene *s, const cli_options *opt, vct_method method,
+                        vct_image *image, const vct_image *variance, vct_error *err) {
     const vct_group_device *d;
     const int n = vct_group_devices(g, &d);
     int first = 0;
@@ -36,11 +33,37 @@ static int denoise_on_first_device(vct_group *g, const vct_scene *s, const cli_o
     vct_accel *accel = vct_accel_build(ctx, s, &opt->accel, err);
     cli_layers layers = {0};
     int rc = accel ? cli_denoise_outputs(ctx, s, accel, opt, method, image,
-                                         variance->rgba ? variance : NULL, NULL, &layers, err)
+                                         variance && variance->rgba ? variance : NULL, NULL,
+                                         &layers, err)
                    : (int)err->status;
     cli_layers_free(&layers);
     vct_accel_release(accel);
     return rc;
+}
+
+vct_group *cli_devices_open(const cli_options *opt, vct_error *err) {
+    vct_group *g = vct_group_create(opt->device, err);
+    if (!g)
+        return NULL;
+    vct_group_set_log(g, cli_log, NULL);
+    const vct_group_device *d;
+    const int n = vct_group_devices(g, &d);
+    for (int i = 0; i < n; ++i)
+        fprintf(stderr, "device %d: %s (%s)\n", d[i].info.index, d[i].info.name,
+                d[i].info.platform);
+    return g;
+}
+
+void cli_devices_build(const cli_options *opt, vct_method method, const vct_plan *plan,
+                       vct_group_build *build) {
+    memset(build, 0, sizeof *build);
+    build->accel = opt->accel;
+    build->plan = method == VCT_METHOD_VCT ? plan : NULL;
+    cli_voxel_options(opt, 128, &build->voxel);
+    build->bricks = (vct_brick_options){opt->bricks, opt->anisotropic == 1, 0};
+    build->bounces = (uint32_t)opt->bounces;
+    build->cones = opt->cones;
+    build->copy_voxels = opt->copy_voxels;
 }
 
 int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
@@ -51,28 +74,18 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
                         "indirect AOV), come from one device: give --device one device\n");
         return 1;
     }
-    vct_group *g = vct_group_create(opt->device, &err);
+    vct_group *g = cli_devices_open(opt, &err);
     if (!g)
         return cli_fail(&err);
-    vct_group_set_log(g, cli_log, NULL);
     const vct_group_device *d;
     const int n = vct_group_devices(g, &d);
-    for (int i = 0; i < n; ++i)
-        fprintf(stderr, "device %d: %s (%s)\n", d[i].info.index, d[i].info.name,
-                d[i].info.platform);
     vct_plan plan;
     vct_plan_make(s, opt->force, &plan);
     plan.emitters_by_cones = opt->emitters_by_cones;
     if (method == VCT_METHOD_VCT && opt->print_plan)
         cli_print_plan(&plan, stdout);
     vct_group_build build;
-    build.accel = opt->accel;
-    build.plan = method == VCT_METHOD_VCT ? &plan : NULL;
-    cli_voxel_options(opt, 128, &build.voxel);
-    build.bricks = (vct_brick_options){opt->bricks, opt->anisotropic == 1, 0};
-    build.bounces = (uint32_t)opt->bounces;
-    build.cones = opt->cones;
-    build.copy_voxels = opt->copy_voxels;
+    cli_devices_build(opt, method, &plan, &build);
     int rc = vct_group_prepare(g, s, &build, &err);
     vct_render_job job = cli_render_job(opt, method, s);
     job.plan = &plan;
@@ -88,7 +101,7 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
                 n, result.seconds * 1e3);
     }
     if (rc == VCT_OK && opt->denoise)
-        rc = denoise_on_first_device(g, s, opt, method, &image, &variance, &err);
+        rc = cli_devices_denoise(g, s, opt, method, &image, &variance, &err);
     if (rc == VCT_OK)
         rc = cli_write_image(opt, &image, NULL, out, &err);
     vct_image_release(&variance);

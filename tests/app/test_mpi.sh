@@ -4,8 +4,9 @@
 # path tracer summed exactly, the others in bands); a sequence dealt frame
 # by frame gives one process's files; a rank killed in the middle of a
 # sequence ends the job naming it and leaves only whole files, and
-# --resume renders the rest, giving the uninterrupted run's files; what
-# cannot be split is refused.
+# --resume renders the rest, giving the uninterrupted run's files; ranks of
+# two devices each give one device's image; what cannot be split is
+# refused.
 # Usage: test_mpi.sh VCT MPIEXEC SOURCE_DIR
 set -u
 VCT=$1
@@ -50,6 +51,26 @@ for m in pt pm vct whitted raycast; do
             fail "$m: $n ranks differ from one process"
         fi
     done
+done
+
+# Ranks of two devices each (a device group per rank): one device's image.
+for m in pt pm vct whitted; do
+    case $m in
+    pt) extra="--spp 5" ;;
+    pm) extra="--spp 4" ;;
+    vct) extra="--voxel-res 32" ;;
+    whitted) extra="--subsample 8" ;;
+    esac
+    # shellcheck disable=SC2086
+    if ! POCL_DEVICES="pthread pthread" mpi -np 2 "$VCT" render "$BOX" --device 0,1 \
+        --method $m --size 48 37 $extra -o "$DIR/group_$m.pfm" >"$DIR/log" 2>&1; then
+        cat "$DIR/log"
+        fail "$m: 2 ranks of 2 devices did not render"
+    elif cmp -s "$DIR/one_$m.pfm" "$DIR/group_$m.pfm"; then
+        ok "$m: 2 ranks of 2 devices each give one device's image, bit for bit"
+    else
+        fail "$m: 2 ranks of 2 devices differ from one device"
+    fi
 done
 
 # --stats names every rank with its share, time and bytes sent.
@@ -145,9 +166,10 @@ else
 fi
 
 # What is not split is refused on every rank, with a message.
-for refused in "--method pt --time 1" "--method vct --aov" "--device 0,0"; do
+for refused in "--method pt --time 1 --size 16 16" "--method vct --aov --size 16 16" \
+    "--method pm --size 16 1"; do
     # shellcheck disable=SC2086
-    if mpi -np 2 "$VCT" render "$BOX" --size 16 16 $refused -o "$DIR/no.pfm" \
+    if mpi -np 2 "$VCT" render "$BOX" $refused -o "$DIR/no.pfm" \
         >"$DIR/log" 2>&1; then
         fail "$refused under mpirun was not refused"
     elif grep -q "vct render:" "$DIR/log" && [ ! -e "$DIR/no.pfm" ]; then

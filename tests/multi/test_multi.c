@@ -521,6 +521,92 @@ static void check_balance(void) {
     CHECK(solo.state == VCT_ALL_DEVICES, "together 8 ms, alone 8.5: together it is");
 }
 
+/* Photon mapping's outer sync, as the only other band: the group's own
+ * radii back, counted. */
+static int outer_calls;
+static int outer_alone(void *user, uint32_t pass, uint32_t radius_bits[2]) {
+    (void)user;
+    (void)pass;
+    (void)radius_bits;
+    ++outer_calls;
+    return 0;
+}
+
+/* Parts of a frame (vct/partial.h) on a group: a band of rows equals those
+ * rows of one device's whole image, the halos rendered by the group; the
+ * path tracer's samples in two ranges, added and resolved, equal one
+ * device's render. */
+static void check_parts(const vct_scene *s) {
+    vct_error err = {0};
+    vct_group *g = group_for(s);
+    const int first = 16, rows = 16; /* both ends on every alignment */
+    for (int c = 0; c < CASES; ++c) {
+        if (cases[c].method == VCT_METHOD_PATHTRACE || cases[c].method == VCT_METHOD_VOXELS)
+            continue;
+        vct_image one = single(&cases[c], s);
+        vct_render_job job = job_of(&cases[c], s);
+        job.height = rows;
+        job.band.first = first;
+        job.band.height = HEIGHT;
+        outer_calls = 0;
+        /* photon mapping's band alone (its radii are not the whole
+         * image's): compared with one device's render of the same band */
+        if (job.method == VCT_METHOD_PM)
+            job.band.pass_sync = outer_alone;
+        vct_image band;
+        REQUIRE_OK(vct_group_render(g, &job, &band, NULL, &err), err);
+        const int group_outer_calls = outer_calls;
+        size_t differ = 0;
+        if (job.method == VCT_METHOD_PM) {
+            vct_error e1 = {0};
+            vct_context *ctx = vct_context_create("0", &e1);
+            REQUIRE_OK(ctx ? VCT_OK : e1.status, e1);
+            vct_device_scene *ds = vct_device_scene_create(ctx, s, &e1);
+            REQUIRE_OK(ds ? VCT_OK : e1.status, e1);
+            vct_render_job alone = job;
+            alone.accel_options = build_options(s).accel;
+            vct_image ref;
+            REQUIRE_OK(vct_device_scene_render(ds, &alone, &ref, NULL, &e1), e1);
+            differ = check_differing(&ref, &band);
+            CHECK(group_outer_calls == (int)job.pm.passes,
+                  "pm band: the outer sync was called %d times for %u passes", group_outer_calls,
+                  job.pm.passes);
+            vct_image_release(&ref);
+            vct_device_scene_release(ds);
+            vct_context_release(ctx);
+        } else {
+            for (int y = 0; y < rows; ++y)
+                for (int x = 0; x < 4 * WIDTH; ++x)
+                    differ += band.rgba[(size_t)y * 4 * WIDTH + x] !=
+                              one.rgba[(size_t)(first + y) * 4 * WIDTH + x];
+        }
+        CHECK(differ == 0, "%s: a band of rows %d to %d on 2 devices: %zu values differ",
+              cases[c].name, first, first + rows - 1, differ);
+        vct_image_release(&band);
+        vct_image_release(&one);
+    }
+    int pt_case = 0;
+    while (cases[pt_case].method != VCT_METHOD_PATHTRACE)
+        ++pt_case;
+    vct_render_job job = job_of(&cases[pt_case], s);
+    vct_sample_sums a, b;
+    REQUIRE_OK(vct_group_render_samples(g, &job, 5, job.pathtrace.spp - 5, &a, &err), err);
+    REQUIRE_OK(vct_group_render_samples(g, &job, 0, 5, &b, &err), err);
+    REQUIRE_OK(vct_sample_sums_add(&a, &b, &err), err);
+    vct_image put, one = single(&cases[pt_case], s);
+    REQUIRE_OK(vct_group_resolve_samples(g, &job, &a, &put, &err), err);
+    CHECK(check_differing(&one, &put) == 0,
+          "pt: two sample ranges on 2 devices, added: %zu values differ from one device's",
+          check_differing(&one, &put));
+    printf("parts on 2 devices: bands of every row method equal the whole image's rows; two "
+           "sample ranges add up to one device's image\n");
+    vct_image_release(&put);
+    vct_image_release(&one);
+    vct_sample_sums_release(&a);
+    vct_sample_sums_release(&b);
+    vct_group_release(g);
+}
+
 int main(void) {
     check_balance();
     check_pass_sync(-1);
@@ -537,6 +623,7 @@ int main(void) {
     check_small_device(box);
     check_copied_voxels(box);
     check_moved_light(box);
+    check_parts(box);
     vct_scene_release(box);
     vct_scene *lit = check_cornell_box();
     check_methods("emissive cornell box", lit);

@@ -16,6 +16,7 @@
 
 #include "vct/accel.h"
 #include "vct/render.h"
+#include "vct/partial.h"
 #include "vct/voxels.h"
 
 #ifdef __cplusplus
@@ -58,14 +59,30 @@ VCT_API vct_status vct_group_prepare(vct_group *group, const vct_scene *scene,
                                      const vct_group_build *build, vct_error *err);
 
 /* Renders `job` over the group's devices, with each device's own structures
- * (the job's accel and voxels are not read; its aovs must be NULL, its band
- * empty). The image is the one a single device of the same kind gives.
+ * (the job's accel and voxels are not read; its aovs must be NULL). The
+ * image is the one a single device of the same kind gives. With a band
+ * (vct/partial.h) the group renders rows [band.first, band.first + height)
+ * of an image band.height tall, itself rendering the rows around them that
+ * its bands need; photon mapping's devices agree on their radii among
+ * themselves, then through band.pass_sync with the other bands.
  * Resuming (pathtrace.resume, pm.resume) continues each device's own sums
  * or statistics; a device dropped then loses what it held from earlier
  * calls (the path tracer averages the samples that remain; photon mapping
  * starts over). Photon mapping takes a pass count, not a time. */
 VCT_API vct_status vct_group_render(vct_group *group, const vct_render_job *job, vct_image *image,
                                     vct_render_result *result, vct_error *err);
+
+/* The path tracer's samples [first, first + count) over the group's
+ * devices, summed exactly into *sums (allocated here), as
+ * vct_device_scene_render_samples does on one device (vct/partial.h); the
+ * devices' running sums start over. */
+VCT_API vct_status vct_group_render_samples(vct_group *group, const vct_render_job *job,
+                                            uint32_t first, uint32_t count, vct_sample_sums *sums,
+                                            vct_error *err);
+/* The image of `sums`, resolved on the group's first active device. */
+VCT_API vct_status vct_group_resolve_samples(vct_group *group, const vct_render_job *job,
+                                             const vct_sample_sums *sums, vct_image *image,
+                                             vct_error *err);
 
 typedef struct vct_group_device {
     vct_device_info info;

@@ -29,11 +29,12 @@ extern "C" {
 #endif
 
 /* Rows a band of `job` must align to and render beyond its own so that its
- * pixels equal the whole image's: its first row is a multiple of *align;
- * it also renders *above rows above it and *below rows below it (within
- * the image), and keeps only its own. With *below 1 and *align above 1 the
- * image's last row, when it is a multiple of *align, belongs to the band
- * above it and is never a band alone. */
+ * pixels equal the whole image's: its own rows start and end on multiples
+ * of *align (or end at the image's end); it renders *above rows above them
+ * and *below rows below them (within the image), and keeps only its own.
+ * With *below 1 and *align above 1 the image's last row, when it is a
+ * multiple of *align, belongs to the band above it and is never a band
+ * alone. A band whose rendered rows start off the alignment is refused. */
 VCT_API void vct_band_shape(const vct_render_job *job, int *align, int *above, int *below);
 
 /* The path tracer's exact per-pixel sums of a range of samples. */

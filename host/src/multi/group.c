@@ -230,8 +230,26 @@ vct_status vct_group_render(vct_group *g, const vct_render_job *job, vct_image *
     if (job->aovs)
         return vct_fail(err, VCT_ERR_INPUT,
                         "devices: AOVs come from one device: render them without a group");
-    if (job->band.height)
-        return vct_fail(err, VCT_ERR_INPUT, "devices: a group renders whole images, not bands");
+    if (job->band.height && job->method == VCT_METHOD_PATHTRACE)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "devices: the path tracer is split by samples, not bands "
+                        "(vct_group_render_samples)");
+    if (job->band.height && job->method == VCT_METHOD_PM && !job->band.pass_sync &&
+        job->band.height != job->height)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "devices: a band of photon mapping needs band.pass_sync (vct/partial.h)");
+    int align, above, below;
+    vct_band_shape(job, &align, &above, &below);
+    if (job->band.height && job->band.first % align)
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "devices: a band starts on a multiple of %d rows here, not at row %d "
+                        "(vct_band_shape)",
+                        align, job->band.first);
+    if (job->band.height && (job->band.first < 0 || job->height < 1 ||
+                             job->band.first + job->height > job->band.height))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "devices: rows %d to %d are not a band of an image %d rows tall",
+                        job->band.first, job->band.first + job->height - 1, job->band.height);
     int active = 0;
     for (int i = 0; i < g->count; ++i)
         active += g->devices[i].active && g->accel[i];
@@ -240,10 +258,21 @@ vct_status vct_group_render(vct_group *g, const vct_render_job *job, vct_image *
                         "devices: no device holds the scene's structures: call "
                         "vct_group_prepare first");
     if (job->method == VCT_METHOD_PATHTRACE)
-        return vct_group_render_samples(g, job, image, result, err);
+        return vct_group_render_chunks(g, job, image, result, err);
     if (job->method == VCT_METHOD_PM && job->pm.passes == 0)
         return vct_fail(err, VCT_ERR_INPUT,
                         "devices: photon mapping on several devices takes a pass count (--spp), "
                         "not a time: its bands agree on their grids pass by pass");
     return vct_group_render_rows(g, job, image, result, err);
+}
+
+vct_status vct_group_resolve_samples(vct_group *g, const vct_render_job *job,
+                                     const vct_sample_sums *sums, vct_image *image,
+                                     vct_error *err) {
+    memset(image, 0, sizeof *image);
+    for (int i = 0; i < g->count; ++i)
+        if (g->devices[i].active && g->ds[i])
+            return vct_device_scene_resolve_samples(g->ds[i], job, sums, image, err);
+    return vct_fail(err, VCT_ERR_INPUT,
+                    "devices: no device holds the scene: call vct_group_prepare first");
 }

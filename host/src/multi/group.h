@@ -39,7 +39,7 @@ void vct_group_drop(vct_group *g, int device, const vct_error *why);
 /* Row methods and the path tracer, over the active devices. */
 int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,
                           vct_render_result *result, vct_error *err);
-int vct_group_render_samples(vct_group *g, const vct_render_job *job, vct_image *image,
-                             vct_render_result *result, vct_error *err);
+int vct_group_render_chunks(vct_group *g, const vct_render_job *job, vct_image *image,
+                            vct_render_result *result, vct_error *err);
 
 #endif

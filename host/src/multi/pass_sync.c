@@ -14,7 +14,7 @@ void vct_pass_sync_destroy(vct_pass_sync *s) {
 }
 
 int vct_pass_sync_wait(void *user, uint32_t pass, uint32_t radius_bits[2]) {
-    (void)pass; /* every band runs the same passes in the same order */
+    /* every band runs the same passes in the same order */
     vct_pass_sync *s = user;
     pthread_mutex_lock(&s->lock);
     /* positive floats order as their bits do; 0 is "no radius yet" */
@@ -23,6 +23,8 @@ int vct_pass_sync_wait(void *user, uint32_t pass, uint32_t radius_bits[2]) {
             s->gathering[m] = radius_bits[m];
     const unsigned generation = s->generation;
     if (++s->arrived == s->members) {
+        if (s->outer && s->outer(s->outer_user, pass, s->gathering) != 0)
+            s->stopped = 1; /* the other bands stopped: so do these */
         s->agreed[0] = s->gathering[0], s->agreed[1] = s->gathering[1];
         s->gathering[0] = s->gathering[1] = 0;
         s->arrived = 0;

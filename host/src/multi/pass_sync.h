@@ -19,6 +19,10 @@ typedef struct vct_pass_sync {
     uint32_t gathering[2]; /* the largest radii (float bits) so far at this barrier */
     uint32_t agreed[2];    /* at the last barrier passed */
     int stopped;           /* a band failed: the others stop at their next barrier */
+    /* Bands of the image beyond this group's (vct_band.pass_sync): the
+     * group's largest radii are agreed with them before its bands go on. */
+    int (*outer)(void *user, uint32_t pass, uint32_t radius_bits[2]);
+    void *outer_user;
     int culprit[VCT_GROUP_MAX];
 } vct_pass_sync;
 

@@ -144,9 +144,11 @@ static int lockstep_outcome(vct_group *g, const vct_render_job *job, rows_round 
     for (int i = 0; i < g->count; ++i)
         if (r->bands[i].rows && r->rc[i] != VCT_OK && (failed < 0 || r->sync->culprit[i]))
             failed = i;
-    if (failed >= 0 && r->rc[failed] == VCT_ERR_INPUT) {
+    if (failed >= 0 && (r->rc[failed] == VCT_ERR_INPUT || r->sync->outer)) {
+        /* the caller's to fix, not the device's fault; or bands beyond the
+         * group went on without this one, and cannot start the frame again */
         *err = r->errors[failed];
-        return VCT_ERR_INPUT; /* the caller's to fix, not the device's fault */
+        return r->rc[failed];
     }
     if (failed >= 0) {
         for (int i = 0; i < g->count; ++i)
@@ -217,6 +219,8 @@ render:;
         for (int i = 0; i < g->count; ++i)
             members += r->bands[i].rows > 0;
         vct_pass_sync_init(&sync, members);
+        sync.outer = job->band.pass_sync; /* a band of a taller image: agree with its others */
+        sync.outer_user = job->band.pass_sync_user;
         r->sync = &sync;
     }
     int rc = vct_group_each(g, render_band, r, err);
@@ -269,8 +273,48 @@ static uint64_t job_signature(const vct_render_job *job, int width, int height) 
            (uint64_t)(job->vct.edge_samples & 15u) << 57;
 }
 
+/* A band of a taller image: the whole image's rows [band.first, band.first
+ * + height) rendered as the group renders rows of a range, then cut out. */
+static int render_band_rows(vct_group *g, const vct_render_job *job, vct_image *image,
+                            vct_render_result *result, vct_error *err) {
+    vct_render_job whole = *job;
+    whole.height = job->band.height;
+    whole.band.first = whole.band.height = 0; /* pass_sync stays: render_range reads it */
+    const int width = job->width, first = job->band.first, rows = job->height;
+    vct_image all = {0};
+    all.width = width;
+    all.height = whole.height;
+    all.rgba = malloc(16 * (size_t)width * (size_t)whole.height);
+    image->rgba = malloc(16 * (size_t)width * (size_t)rows);
+    int rc = all.rgba && image->rgba ? VCT_OK
+                                     : vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+    vct_render_result sum;
+    memset(&sum, 0, sizeof sum);
+    const double t0 = vct_now_ms();
+    if (rc == VCT_OK)
+        rc = render_range(g, &whole, first, rows, &all, &sum, 1, err);
+    if (rc == VCT_OK) {
+        image->width = width;
+        image->height = rows;
+        memcpy(image->rgba, all.rgba + 4 * (size_t)width * first, 16 * (size_t)width * rows);
+    } else {
+        vct_image_release(image);
+    }
+    vct_image_release(&all);
+    if (rc == VCT_OK && result) {
+        *result = sum;
+        result->method = job->method;
+        result->width = width;
+        result->height = rows;
+        result->seconds = (vct_now_ms() - t0) * 1e-3;
+    }
+    return rc;
+}
+
 int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,
                           vct_render_result *result, vct_error *err) {
+    if (job->band.height)
+        return render_band_rows(g, job, image, result, err);
     vct_render_result sum;
     memset(&sum, 0, sizeof sum);
     const int width = job->width, height = job->height;

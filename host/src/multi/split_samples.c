@@ -95,14 +95,12 @@ static void device_samples(vct_group *g, int i, void *arg) {
     s->ms[i] += vct_now_ms() - t0;
 }
 
-/* Every active device's sums added into one buffer on device `into`. */
-static int merge_sums(sample_run *s, int into, cl_mem *merged, uint32_t *discarded,
-                      vct_error *err) {
+/* Every active device's sums added into `sum` (zeroed, `bytes` long). */
+static int host_sums(sample_run *s, uint64_t *sum, size_t bytes, uint32_t *discarded,
+                     vct_error *err) {
     vct_group *g = s->g;
-    const size_t pixels = (size_t)s->opt[into].width * s->opt[into].height;
-    const size_t bytes = VCT_PT_ACCUM_BYTES * pixels;
-    uint64_t *sum = calloc(bytes / 8, 8), *part = malloc(bytes);
-    int rc = sum && part ? VCT_OK : vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+    uint64_t *part = malloc(bytes);
+    int rc = part ? VCT_OK : vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
     *discarded = 0;
     for (int i = 0; rc == VCT_OK && i < g->count; ++i) {
         if (!g->devices[i].active || !s->began[i])
@@ -115,13 +113,24 @@ static int merge_sums(sample_run *s, int into, cl_mem *merged, uint32_t *discard
             vct_sample_sums_add_words(sum, part, bytes / 16);
         *discarded += dropped;
     }
-    *merged = rc == VCT_OK ? vct_buffer_create(g->ctx[into], STAGE, "summed accumulations", bytes,
-                                               CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sum, err)
-                           : NULL;
+    free(part);
+    return rc;
+}
+
+/* Every active device's sums added into one buffer on device `into`. */
+static int merge_sums(sample_run *s, int into, cl_mem *merged, uint32_t *discarded,
+                      vct_error *err) {
+    const size_t bytes = vct_sample_sums_bytes(s->opt[into].width, s->opt[into].height);
+    uint64_t *sum = calloc(bytes / 8, 8);
+    int rc = sum ? host_sums(s, sum, bytes, discarded, err)
+                 : vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+    *merged = rc == VCT_OK
+                  ? vct_buffer_create(s->g->ctx[into], STAGE, "summed accumulations", bytes,
+                                      CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sum, err)
+                  : NULL;
     if (rc == VCT_OK && !*merged)
         rc = err->status;
     free(sum);
-    free(part);
     return rc;
 }
 
@@ -171,31 +180,99 @@ static int run_rounds(sample_run *s, vct_error *err) {
     }
 }
 
-int vct_group_render_samples(vct_group *g, const vct_render_job *job, vct_image *image,
-                             vct_render_result *result, vct_error *err) {
+/* A run of samples [first, first + count) of the job (count 0: until
+ * deadline_ms), or NULL without host memory. */
+static sample_run *run_make(vct_group *g, const vct_render_job *job, uint32_t first, uint32_t count,
+                            double deadline_ms) {
+    const vct_pathtrace_options *opt = &job->pathtrace;
+    sample_run *s = calloc(1, sizeof *s);
+    if (!s)
+        return NULL;
+    pthread_mutex_init(&s->lock, NULL);
+    s->g = g;
+    s->job = job;
+    const uint32_t per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;
+    s->next = first;
+    s->end = first + count;
+    s->deadline_ms = deadline_ms;
+    const uint32_t share = count / (8u * (uint32_t)vct_group_active_count(g));
+    s->chunk_size = share > per_pass ? share / per_pass * per_pass : per_pass;
+    for (int i = 0; i < g->count; ++i) {
+        s->opt[i] = *opt;
+        s->opt[i].width = job->width;
+        s->opt[i].height = job->height;
+        s->opt[i].progress = 0;
+    }
+    return s;
+}
+
+/* Each device's part of the run, for the scheduler and --stats. */
+static void record_devices(sample_run *s) {
+    for (int i = 0; i < s->g->count; ++i) {
+        if (!s->began[i])
+            continue;
+        vct_group_device *d = &s->g->devices[i];
+        d->last_ms = s->ms[i];
+        d->last_work = (double)s->samples[i];
+        d->speed = s->ms[i] > 0.0 ? s->samples[i] / (s->ms[i] * 1e-3) : 0.0;
+    }
+}
+
+static void run_free(sample_run *s) {
+    for (int i = 0; i < s->g->count; ++i)
+        free(s->done[i].items);
+    free(s->redo.items);
+    pthread_mutex_destroy(&s->lock);
+    free(s);
+}
+
+vct_status vct_group_render_samples(vct_group *g, const vct_render_job *job, uint32_t first,
+                                    uint32_t count, vct_sample_sums *sums, vct_error *err) {
+    memset(sums, 0, sizeof *sums);
+    if (job->method != VCT_METHOD_PATHTRACE)
+        return vct_fail(err, VCT_ERR_INPUT, "%s: the job's method must be the path tracer", STAGE);
+    vct_render_job own = *job;
+    own.pathtrace.resume = 0; /* each device's sums hold this range alone */
+    own.pathtrace.variance = NULL;
+    sample_run *s = run_make(g, &own, first, count, 0.0);
+    if (!s)
+        return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+    int rc = count ? run_rounds(s, err) : VCT_OK;
+    const size_t bytes = vct_sample_sums_bytes(job->width, job->height);
+    sums->data = rc == VCT_OK ? calloc(bytes / 8, 8) : NULL;
+    if (rc == VCT_OK && !sums->data)
+        rc = vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory for the sums");
+    if (rc == VCT_OK)
+        rc = host_sums(s, sums->data, bytes, &sums->discarded, err);
+    for (int i = 0; i < g->count; ++i)
+        if (s->began[i])
+            vct_pt_end(&s->pt[i], VCT_OK, NULL, NULL, NULL, &s->errors[i]);
+    record_devices(s);
+    run_free(s);
+    g->pt_done = 0;
+    if (rc != VCT_OK) {
+        vct_sample_sums_release(sums);
+        return rc;
+    }
+    sums->width = job->width;
+    sums->height = job->height;
+    sums->samples = count;
+    return VCT_OK;
+}
+
+int vct_group_render_chunks(vct_group *g, const vct_render_job *job, vct_image *image,
+                            vct_render_result *result, vct_error *err) {
     const vct_pathtrace_options *opt = &job->pathtrace;
     if (opt->spp == 0 && !(opt->time_limit_s > 0.0))
         return vct_fail(err, VCT_ERR_INPUT, "%s: give a sample count (--spp) or a time (--time)",
                         STAGE);
-    sample_run *s = calloc(1, sizeof *s);
-    if (!s)
-        return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
-    pthread_mutex_init(&s->lock, NULL);
-    s->g = g;
-    s->job = job;
     const double t0 = vct_now_ms();
-    const uint32_t per_pass = opt->samples_per_pass ? opt->samples_per_pass : 1;
     if (!opt->resume)
         g->pt_done = 0;
-    s->next = g->pt_done;
-    s->end = g->pt_done + opt->spp;
-    s->deadline_ms = opt->spp ? 0.0 : t0 + opt->time_limit_s * 1e3;
-    const uint32_t share = opt->spp / (8u * (uint32_t)vct_group_active_count(g));
-    s->chunk_size = share > per_pass ? share / per_pass * per_pass : per_pass;
-    for (int i = 0; i < g->count; ++i) {
-        s->opt[i] = *opt;
-        s->opt[i].progress = 0;
-    }
+    sample_run *s =
+        run_make(g, job, g->pt_done, opt->spp, opt->spp ? 0.0 : t0 + opt->time_limit_s * 1e3);
+    if (!s)
+        return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
     int rc = run_rounds(s, err);
     int into = -1;
     for (int i = 0; i < g->count && into < 0; ++i)
@@ -215,11 +292,8 @@ int vct_group_render_samples(vct_group *g, const vct_render_job *job, vct_image 
             rc = vct_pt_end(&s->pt[i], rc, merged, image, NULL, err);
         else
             vct_pt_end(&s->pt[i], VCT_OK, NULL, NULL, NULL, &s->errors[i]);
-        vct_group_device *d = &g->devices[i];
-        d->last_ms = s->ms[i];
-        d->last_work = (double)s->samples[i];
-        d->speed = s->ms[i] > 0.0 ? s->samples[i] / (s->ms[i] * 1e-3) : 0.0;
     }
+    record_devices(s);
     if (merged)
         vct_buffer_release(g->ctx[into], merged);
     g->pt_done = rc == VCT_OK ? total : 0;
@@ -232,10 +306,6 @@ int vct_group_render_samples(vct_group *g, const vct_render_job *job, vct_image 
         result->discarded = discarded;
         result->seconds = (vct_now_ms() - t0) * 1e-3;
     }
-    for (int i = 0; i < g->count; ++i)
-        free(s->done[i].items);
-    free(s->redo.items);
-    pthread_mutex_destroy(&s->lock);
-    free(s);
+    run_free(s);
     return rc;
 }

@@ -5,6 +5,7 @@
 
 #include "accel/accel.h"
 #include "runtime/runtime.h"
+#include "vct/partial.h"
 #include "voxel/voxels.h"
 
 static const char *const method_names[VCT_METHODS] = {"vct",    "raycast", "pt",
@@ -111,6 +112,15 @@ static int job_check(const vct_context *ctx, const vct_render_job *job, vct_erro
         return vct_fail(err, VCT_ERR_INPUT,
                         "render (pm): a band of photon mapping needs band.pass_sync, so that "
                         "every band gathers with the whole image's radii (vct/partial.h)");
+    if (job->band.height) {
+        int align, above, below;
+        vct_band_shape(job, &align, &above, &below);
+        if (job->band.first % align)
+            return vct_fail(err, VCT_ERR_INPUT,
+                            "render (%s): a band starts on a multiple of %d rows here, not at "
+                            "row %d (vct_band_shape)",
+                            name, align, job->band.first);
+    }
     if ((job->accel && job->accel->ctx != ctx) || (job->voxels && job->voxels->ctx != ctx))
         return vct_fail(err, VCT_ERR_INPUT,
                         "render (%s): the job's %s was built on another context: build it on "
