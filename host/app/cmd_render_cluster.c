@@ -158,29 +158,13 @@ static int member_prepare(member *m, vct_error *err) {
     return m->group ? vct_group_prepare(m->group, m->scene, &m->build, err) : VCT_OK;
 }
 
-/* A frame on the rank's device group, denoised as asked. */
-static int group_frame(member *m, cli_frame *f, vct_error *err) {
-    memset(f, 0, sizeof *f);
-    vct_render_job job = cli_render_job(m->opt, m->method, m->scene);
-    job.plan = &m->plan;
-    if (m->opt->denoise && m->method == VCT_METHOD_PATHTRACE)
-        job.pathtrace.variance = &f->variance;
-    int rc = member_prepare(m, err);
-    if (rc == VCT_OK)
-        rc = vct_group_render(m->group, &job, &f->image, &f->result, err);
-    if (rc == VCT_OK && m->opt->denoise)
-        rc = cli_devices_denoise(m->group, m->scene, m->opt, m->method, &f->image, &f->variance,
-                                 err);
-    return rc;
-}
-
 /* Poses and renders frame k of the list. */
 static void render_frame(member *m, dealer *d, int k, cli_frame *f, double *seconds) {
     vct_error err = {0};
     const double t0 = MPI_Wtime();
     int rc = vct_scene_pose(m->scene, 0, (double)d->frames[k] / m->opt->fps, &err);
     if (rc == VCT_OK)
-        rc = m->group ? group_frame(m, f, &err)
+        rc = m->group ? cli_devices_frame(m->group, m->scene, m->opt, m->method, &m->build, f, &err)
                       : cli_frame_make(m->ctx, m->ds, m->scene, m->opt, m->method, f, &err);
     if (rc != VCT_OK)
         cli_cluster_fail("rendering a frame", &err);

@@ -2,11 +2,13 @@
  * the frame is split between them, and --stats says what each held, built
  * and did. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli_common.h"
 #include "cli_denoise.h"
 #include "cli_layers.h"
+#include "cmd_render_frame.h"
 #include "cmd_render_group.h"
 
 static void print_devices(const vct_group *g, FILE *out) {
@@ -66,8 +68,54 @@ void cli_devices_build(const cli_options *opt, vct_method method, const vct_plan
     build->copy_voxels = opt->copy_voxels;
 }
 
-int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
-                     const char *out) {
+int cli_devices_frame(vct_group *g, const vct_scene *s, const cli_options *opt, vct_method method,
+                      const vct_group_build *build, cli_frame *f, vct_error *err) {
+    memset(f, 0, sizeof *f);
+    vct_render_job job = cli_render_job(opt, method, s);
+    job.plan = build->plan;
+    if (opt->denoise && method == VCT_METHOD_PATHTRACE)
+        job.pathtrace.variance = &f->variance; /* from the summed samples */
+    int rc = vct_group_prepare(g, s, build, err);
+    if (rc == VCT_OK)
+        rc = vct_group_render(g, &job, &f->image, &f->result, err);
+    if (rc == VCT_OK)
+        cli_print_result(opt, &f->result);
+    if (rc == VCT_OK && opt->denoise)
+        rc = cli_devices_denoise(g, s, opt, method, &f->image, &f->variance, err);
+    if (rc != VCT_OK)
+        cli_frame_release(f);
+    return rc;
+}
+
+/* --frames on the group: each frame posed, prepared (each device's device
+ * scene rebuilds what moved) and rendered. */
+static int render_frames(vct_group *g, vct_scene *s, const cli_options *opt, vct_method method,
+                         const vct_group_build *build, const char *pattern, vct_error *err) {
+    const int total = opt->frames[1] - opt->frames[0] + 1;
+    int *frames = malloc(sizeof(int) * (size_t)total), count = 0;
+    if (!frames)
+        return cli_fail_input(err, "vct render --frames: out of host memory");
+    int rc = cli_frames_todo(opt, s, pattern, frames, &count, err);
+    char path[1024];
+    for (int k = 0; rc == VCT_OK && k < count; ++k) {
+        cli_frame f;
+        rc = vct_scene_pose(s, 0, (double)frames[k] / opt->fps, err);
+        if (rc == VCT_OK)
+            rc = cli_frame_path(pattern, frames[k], path, sizeof path, err);
+        if (rc == VCT_OK)
+            rc = cli_devices_frame(g, s, opt, method, build, &f, err);
+        if (rc == VCT_OK) {
+            rc = cli_write_image(opt, &f.image, NULL, path, err);
+            fprintf(stderr, "frame %d (%.3f s): %s in %.2f s\n", frames[k],
+                    (double)frames[k] / opt->fps, path, f.result.seconds);
+            cli_frame_release(&f);
+        }
+    }
+    free(frames);
+    return rc;
+}
+
+int cli_render_group(const cli_options *opt, vct_scene *s, vct_method method, const char *out) {
     vct_error err = {0};
     if (opt->aov || (opt->denoise && method == VCT_METHOD_VCT)) {
         fprintf(stderr, "vct render: --aov, and --denoise with cone tracing (it filters the "
@@ -86,25 +134,19 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
         cli_print_plan(&plan, stdout);
     vct_group_build build;
     cli_devices_build(opt, method, &plan, &build);
-    int rc = vct_group_prepare(g, s, &build, &err);
-    vct_render_job job = cli_render_job(opt, method, s);
-    job.plan = &plan;
-    vct_image image = {0}, variance = {0};
-    if (opt->denoise && method == VCT_METHOD_PATHTRACE)
-        job.pathtrace.variance = &variance; /* from the summed samples */
-    vct_render_result result = {0};
-    if (rc == VCT_OK)
-        rc = vct_group_render(g, &job, &image, &result, &err);
-    if (rc == VCT_OK) {
-        cli_print_result(opt, &result);
-        fprintf(stderr, "devices: %d of %d active, frame in %.1f ms\n", vct_group_active_count(g),
-                n, result.seconds * 1e3);
+    int rc = VCT_OK;
+    if (opt->frames[1] >= 0) {
+        rc = render_frames(g, s, opt, method, &build, out, &err);
+    } else {
+        cli_frame f;
+        rc = cli_devices_frame(g, s, opt, method, &build, &f, &err);
+        if (rc == VCT_OK) {
+            fprintf(stderr, "devices: %d of %d active, frame in %.1f ms\n",
+                    vct_group_active_count(g), n, f.result.seconds * 1e3);
+            rc = cli_write_image(opt, &f.image, NULL, out, &err);
+            cli_frame_release(&f);
+        }
     }
-    if (rc == VCT_OK && opt->denoise)
-        rc = cli_devices_denoise(g, s, opt, method, &image, &variance, &err);
-    if (rc == VCT_OK)
-        rc = cli_write_image(opt, &image, NULL, out, &err);
-    vct_image_release(&variance);
     if (rc == VCT_OK && opt->stats) {
         print_devices(g, stdout);
         for (int i = 0; i < n; ++i) {
@@ -112,7 +154,6 @@ int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method meth
             cli_print_stats(vct_group_context(g, i));
         }
     }
-    vct_image_release(&image);
     vct_group_release(g);
     return rc == VCT_OK ? 0 : cli_fail(&err);
 }

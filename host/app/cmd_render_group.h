@@ -2,6 +2,7 @@
 #ifndef VCT_APP_CMD_RENDER_GROUP_H
 #define VCT_APP_CMD_RENDER_GROUP_H
 
+#include "cmd_render_frame.h"
 #include "options.h"
 
 /* The group for --device's list, its devices named on stderr. */
@@ -14,7 +15,11 @@ void cli_devices_build(const cli_options *opt, vct_method method, const vct_plan
  * split. */
 int cli_devices_denoise(vct_group *g, const vct_scene *s, const cli_options *opt, vct_method method,
                         vct_image *image, const vct_image *variance, vct_error *err);
-int cli_render_group(const cli_options *opt, const vct_scene *s, vct_method method,
-                     const char *out);
+/* A frame on the group: prepared (the device scenes rebuild what changed),
+ * rendered, denoised as asked. */
+int cli_devices_frame(vct_group *g, const vct_scene *s, const cli_options *opt, vct_method method,
+                      const vct_group_build *build, cli_frame *f, vct_error *err);
+/* vct render over the group: a frame, or the frames of --frames. */
+int cli_render_group(const cli_options *opt, vct_scene *s, vct_method method, const char *out);
 
 #endif

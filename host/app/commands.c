@@ -132,11 +132,6 @@ int cmd_render(const cli_options *opt) {
     if (s->light_count == 0 && !emissive)
         fprintf(stderr, "vct: the scene has no lights and nothing emits: only ambient light will "
                         "show (add --point-light, --dir-light or --ambient)\n");
-    if (cli_device_list(opt) && opt->frames[1] >= 0) {
-        fprintf(stderr, "vct render: --frames renders on one device: give --device one\n");
-        vct_scene_release(s);
-        return 1;
-    }
     if (cli_device_list(opt)) {
         const int rc = cli_render_group(opt, s, (vct_method)method, out);
         vct_scene_release(s);

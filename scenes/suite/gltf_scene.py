@@ -124,10 +124,13 @@ class Scene:
                     idx.extend([a + 1, b, b + 1])
         return self.mesh(material, pos, idx)
 
-    def animate(self, name, mesh, placement, times, translations):
+    def animate(self, name, mesh, placement, times, translations, rotations=None):
         """An animation moving the node of placement `placement` of `mesh`:
-        its translation at each time (seconds), linearly between."""
-        self.animations.append((name, mesh, placement, list(times), list(translations)))
+        its translation at each time (seconds), linearly between; mesh
+        "camera" moves the camera's node, "light" the node of light number
+        `placement`. Rotations (x y z w, one per time) turn the node too."""
+        self.animations.append((name, mesh, placement, list(times), list(translations),
+                                list(rotations) if rotations else None))
 
     def point_light(self, position, intensity, color=(1, 1, 1)):
         self.lights.append(({"type": "point", "color": list(color), "intensity": intensity},
@@ -147,6 +150,12 @@ class Scene:
 
     def look(self, position, target, fov_y_deg, aspect=1.0):
         self.camera = (position, target, fov_y_deg, aspect)
+
+    def camera_rotation(self):
+        """The rotation (x y z w) of the camera's node as look() set it."""
+        position, target = self.camera[0], self.camera[1]
+        return tuple(_rotation_from_minus_z(
+            _normalise([target[k] - position[k] for k in range(3)])))
 
     def write(self, path):
         blob = bytearray()
@@ -192,8 +201,43 @@ class Scene:
                 if tuple(sc) != (1, 1, 1):
                     node["scale"] = list(sc)
                 nodes.append(node)
+        gltf = {"asset": {"version": "2.0", "generator": "vct scenes/suite"},
+                "scene": 0, "materials": self.materials, "meshes": meshes,
+                "accessors": accessors, "bufferViews": views,
+                "buffers": [{"byteLength": len(blob),
+                             "uri": "data:application/octet-stream;base64,"
+                                    + base64.b64encode(bytes(blob)).decode()}]}
+        if self.images:
+            gltf["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}
+                              for png in self.images]
+            gltf["textures"] = [{"source": i} for i in range(len(self.images))]
+        light_nodes, camera_node = [], None
+        used = {"KHR_lights_punctual"} if self.lights else set()
+        for m in self.materials:
+            used |= set(m.get("extensions", {}).keys())
+        if used:
+            gltf["extensionsUsed"] = sorted(used)
+        if self.lights:
+            gltf["extensions"] = {"KHR_lights_punctual": {"lights": [l for l, _, _ in self.lights]}}
+            for i, (_, position, direction) in enumerate(self.lights):
+                light_nodes.append(len(nodes))
+                node = {"extensions": {"KHR_lights_punctual": {"light": i}}}
+                if position:
+                    node["translation"] = list(position)
+                if direction:
+                    node["rotation"] = _rotation_from_minus_z(direction)
+                nodes.append(node)
+        if self.camera:
+            position, target, fov, aspect = self.camera
+            gltf["cameras"] = [{"type": "perspective",
+                                "perspective": {"yfov": math.radians(fov), "aspectRatio": aspect,
+                                                "znear": 0.01}}]
+            fwd = _normalise([target[k] - position[k] for k in range(3)])
+            camera_node = len(nodes)
+            nodes.append({"camera": 0, "translation": list(position),
+                          "rotation": _rotation_from_minus_z(fwd)})
         animations = []
-        for name, mesh, placement, times, translations in self.animations:
+        for name, mesh, placement, times, translations, rotations in self.animations:
             offset = len(blob)
             for t in times:
                 blob += struct.pack("<f", t)
@@ -207,47 +251,41 @@ class Scene:
             views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
             accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
                               "count": len(translations), "type": "VEC3"})
-            animations.append({"name": name,
-                               "samplers": [{"input": len(accessors) - 2,
-                                             "output": len(accessors) - 1,
-                                             "interpolation": "LINEAR"}],
-                               "channels": [{"sampler": 0,
-                                             "target": {"node": placed_nodes[mesh][placement],
-                                                        "path": "translation"}}]})
-        gltf = {"asset": {"version": "2.0", "generator": "vct scenes/suite"},
-                "scene": 0, "materials": self.materials, "meshes": meshes,
-                "accessors": accessors, "bufferViews": views,
-                "buffers": [{"byteLength": len(blob),
-                             "uri": "data:application/octet-stream;base64,"
-                                    + base64.b64encode(bytes(blob)).decode()}]}
+            if mesh == "camera":
+                node = camera_node
+            elif mesh == "light":
+                node = light_nodes[placement]
+            else:
+                node = placed_nodes[mesh][placement]
+            # animations of one name are one animation: its channels added up
+            anim = next((a for a in animations if a["name"] == name), None)
+            if anim is None:
+                anim = {"name": name, "samplers": [], "channels": []}
+                animations.append(anim)
+            samplers, channels = anim["samplers"], anim["channels"]
+            times_accessor = len(accessors) - 2
+            samplers.append({"input": times_accessor, "output": len(accessors) - 1,
+                             "interpolation": "LINEAR"})
+            channels.append({"sampler": len(samplers) - 1,
+                             "target": {"node": node, "path": "translation"}})
+            if rotations:
+                offset = len(blob)
+                for q in rotations:
+                    blob += struct.pack("<4f", *q)
+                views.append({"buffer": 0, "byteOffset": offset,
+                              "byteLength": len(blob) - offset})
+                accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
+                                  "count": len(rotations), "type": "VEC4"})
+                samplers.append({"input": times_accessor, "output": len(accessors) - 1,
+                                 "interpolation": "LINEAR"})
+                channels.append({"sampler": len(samplers) - 1,
+                                 "target": {"node": node, "path": "rotation"}})
         if animations:
             gltf["animations"] = animations
-        if self.images:
-            gltf["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}
-                              for png in self.images]
-            gltf["textures"] = [{"source": i} for i in range(len(self.images))]
-        used = {"KHR_lights_punctual"} if self.lights else set()
-        for m in self.materials:
-            used |= set(m.get("extensions", {}).keys())
-        if used:
-            gltf["extensionsUsed"] = sorted(used)
-        if self.lights:
-            gltf["extensions"] = {"KHR_lights_punctual": {"lights": [l for l, _, _ in self.lights]}}
-            for i, (_, position, direction) in enumerate(self.lights):
-                node = {"extensions": {"KHR_lights_punctual": {"light": i}}}
-                if position:
-                    node["translation"] = list(position)
-                if direction:
-                    node["rotation"] = _rotation_from_minus_z(direction)
-                nodes.append(node)
-        if self.camera:
-            position, target, fov, aspect = self.camera
-            gltf["cameras"] = [{"type": "perspective",
-                                "perspective": {"yfov": math.radians(fov), "aspectRatio": aspect,
-                                                "znear": 0.01}}]
-            fwd = _normalise([target[k] - position[k] for k in range(3)])
-            nodes.append({"camera": 0, "translation": list(position),
-                          "rotation": _rotation_from_minus_z(fwd)})
+        # the animations' keys were added to the blob after it was first encoded
+        gltf["buffers"] = [{"byteLength": len(blob),
+                            "uri": "data:application/octet-stream;base64,"
+                                   + base64.b64encode(bytes(blob)).decode()}]
         gltf["nodes"] = nodes
         gltf["scenes"] = [{"nodes": list(range(len(nodes)))}]
         with open(path, "w") as f:

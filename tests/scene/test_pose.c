@@ -4,6 +4,7 @@
  * flat arrays are its mesh's through the new transform, every other instance
  * keeps its transform and vertices bit for bit, and bad requests (another
  * animation, a NaN time, a NaN key) are refused with the scene unchanged. */
+#include <math.h>
 #include <string.h>
 
 #include "check.h"
@@ -82,7 +83,54 @@ static void check_refusals(void) {
     vct_scene_release(s);
 }
 
+static float dist3(const float a[3], const float b[3]) {
+    return sqrtf((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                 (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/* The camera and the light ride their animated nodes (moving_camera.gltf):
+ * at rest they are where the file puts them; halfway to the first key the
+ * eye is halfway along its path; on the key, the light is at its key and
+ * the camera looks 10 degrees further left (about +y) than at rest. */
+static void check_camera_and_light(void) {
+    vct_error err = {0};
+    vct_scene *s = check_scene_file("scenes/moving_camera.gltf");
+    const vct_camera rest = s->camera;
+    const vct_light rest_light = s->lights[0];
+    REQUIRE_OK(vct_scene_pose(s, 0, 0.0, &err), err);
+    CHECK(dist3(s->camera.position, rest.position) < 1e-5f &&
+              dist3(s->camera.look_at, rest.look_at) < 1e-4f &&
+              dist3(s->lights[0].position, rest_light.position) < 1e-5f,
+          "posed at 0 s, the camera or the light left its rest place");
+    REQUIRE_OK(vct_scene_pose(s, 0, 0.5, &err), err);
+    const float half[3] = {1.0f, 1.6f, 5.75f}; /* between (0, 1.6, 6) and (2, 1.6, 5.5) */
+    CHECK(dist3(s->camera.position, half) < 1e-5f, "at 0.5 s the eye is at (%g %g %g)",
+          s->camera.position[0], s->camera.position[1], s->camera.position[2]);
+    REQUIRE_OK(vct_scene_pose(s, 0, 1.0, &err), err);
+    const float key[3] = {3.0f, 3.0f, 0.0f};
+    CHECK(dist3(s->lights[0].position, key) < 1e-5f, "at 1 s the light is at (%g %g %g)",
+          s->lights[0].position[0], s->lights[0].position[1], s->lights[0].position[2]);
+    /* the view direction turned by +10 degrees about y from rest's */
+    float d0[3], d1[3];
+    for (int k = 0; k < 3; ++k) {
+        d0[k] = rest.look_at[k] - rest.position[k];
+        d1[k] = s->camera.look_at[k] - s->camera.position[k];
+    }
+    const float a0 = atan2f(-d0[0], -d0[2]), a1 = atan2f(-d1[0], -d1[2]);
+    const float turned = (a1 - a0) * 180.0f / (float)CHECK_PI;
+    CHECK(fabsf(turned - 10.0f) < 1e-3f && fabsf(d1[1] / dist3(d1, (float[3]){0, 0, 0}) -
+                                                 d0[1] / dist3(d0, (float[3]){0, 0, 0})) < 1e-5f,
+          "at 1 s the camera turned %g degrees about y (expected 10)", turned);
+    CHECK(fabsf(dist3(s->camera.up, (float[3]){0, 0, 0}) - 1.0f) < 1e-5f,
+          "the camera's up is not of unit length");
+    printf("camera and light: ride their nodes (eye halfway at 0.5 s, light on its key and the "
+           "view turned %.4f degrees at 1 s)\n",
+           turned);
+    vct_scene_release(s);
+}
+
 int main(void) {
+    check_camera_and_light();
     check_pose_at(0.5, -4.2f);  /* halfway between the first two keys */
     check_pose_at(1.0, -3.5f);  /* on a key */
     check_pose_at(5.0, -4.9f);  /* after the last: held there */

@@ -118,6 +118,16 @@ typedef struct vct_animation_channel {
     float *scale_times, *scales;             /* 3 per key */
 } vct_animation_channel;
 
+/* A camera or light that a node of the file carries, in that node's space,
+ * so that posing the node (vct_scene_pose) moves it. */
+typedef struct vct_attachment {
+    uint32_t node;       /* VCT_NO_NODE: carried by none */
+    float position[3];   /* a camera's eye, a light's position */
+    float direction[3];  /* where a camera looks (towards its look_at) or a light shines */
+    float up[3];         /* a camera's up */
+    float look_distance; /* a camera: from the eye to its look_at */
+} vct_attachment;
+
 /* An animation of the file (glTF's). The scene holds the file's rest pose
  * until vct_scene_pose poses it. */
 typedef struct vct_animation_info {
@@ -157,6 +167,11 @@ typedef struct vct_scene {
     uint32_t node_count, animation_count;
     vct_node *nodes;
     vct_animation_info *animations;
+    /* The nodes that carry the camera and the file's lights (the first
+     * light_attachment_count lights): posing moves them with their nodes. */
+    vct_attachment camera_attachment;
+    uint32_t light_attachment_count;
+    vct_attachment *light_attachments;
     float bounds_min[3], bounds_max[3];
 } vct_scene;
 

@@ -260,12 +260,22 @@ static void xform_dir(const struct aiMatrix4x4 *m, const struct aiVector3D *v, f
             out[k] /= len;
 }
 
+/* The index of the node named `name`, or VCT_NO_NODE. */
+static uint32_t node_named(const builder *b, const char *name) {
+    for (uint32_t n = 0; n < b->s->node_count; ++n)
+        if (strcmp(b->node_names[n], name) == 0)
+            return n;
+    return VCT_NO_NODE;
+}
+
 static int is_gltf(const char *path) {
     const char *dot = strrchr(path, '.');
     return dot && (strcasecmp(dot, ".gltf") == 0 || strcasecmp(dot, ".glb") == 0);
 }
 
-static void read_camera(const struct aiScene *sc, const char *path, vct_scene *s) {
+static void read_camera(const builder *b, const struct aiScene *sc, const char *path,
+                        vct_scene *s) {
+    s->camera_attachment.node = VCT_NO_NODE;
     if (sc->mNumCameras == 0)
         return;
     const struct aiCamera *cam = sc->mCameras[0];
@@ -283,6 +293,16 @@ static void read_camera(const struct aiScene *sc, const char *path, vct_scene *s
     xform_point(&world, &pos, s->camera.position);
     xform_point(&world, &target, s->camera.look_at);
     xform_dir(&world, &cam->mUp, s->camera.up);
+    /* in its node's space too, for posing */
+    vct_attachment *at = &s->camera_attachment;
+    at->node = node_named(b, cam->mName.data);
+    const float look[3] = {cam->mLookAt.x, cam->mLookAt.y, cam->mLookAt.z};
+    at->look_distance = sqrtf(look[0] * look[0] + look[1] * look[1] + look[2] * look[2]);
+    for (int k = 0; k < 3; ++k) {
+        at->position[k] = (&pos.x)[k];
+        at->direction[k] = at->look_distance > 0.0f ? look[k] / at->look_distance : 0.0f;
+        at->up[k] = (&cam->mUp.x)[k];
+    }
     float aspect = cam->mAspect > 0.0f ? cam->mAspect : 1.0f;
     float fov_y;
     if (is_gltf(path))
@@ -378,7 +398,11 @@ static int read_animations(const builder *b, const struct aiScene *sc, vct_scene
     return VCT_OK;
 }
 
-static int read_lights(const struct aiScene *sc, const char *path, vct_scene *s, vct_error *err) {
+static int read_lights(const builder *b, const struct aiScene *sc, const char *path, vct_scene *s,
+                       vct_error *err) {
+    s->light_attachments = calloc(sc->mNumLights + 1, sizeof *s->light_attachments);
+    if (!s->light_attachments)
+        return vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", path);
     for (unsigned i = 0; i < sc->mNumLights; ++i) {
         const struct aiLight *al = sc->mLights[i];
         vct_light l;
@@ -411,6 +435,12 @@ static int read_lights(const struct aiScene *sc, const char *path, vct_scene *s,
         int rc = vct_scene_add_light(s, &l, err);
         if (rc)
             return rc;
+        vct_attachment *at = &s->light_attachments[s->light_attachment_count++];
+        at->node = node_named(b, al->mName.data);
+        for (int k = 0; k < 3; ++k) {
+            at->position[k] = (&al->mPosition.x)[k];
+            at->direction[k] = (&al->mDirection.x)[k];
+        }
     }
     return VCT_OK;
 }
@@ -545,7 +575,7 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
     free(b.mesh_of);
     /* node names live in assimp's scene: kept for the animations, then gone */
     if (rc == VCT_OK)
-        rc = read_lights(sc, path, s, err);
+        rc = read_lights(&b, sc, path, s, err);
     if (rc == VCT_OK)
         rc = read_animations(&b, sc, s, err);
     if (rc == VCT_OK && s->triangle_count == 0)
@@ -555,7 +585,7 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
         rc = vct_scene_validate(s, err);
     if (rc == VCT_OK) {
         vct_scene_default_camera(s, &s->camera);
-        read_camera(sc, path, s);
+        read_camera(&b, sc, path, s);
     }
     aiReleaseImport(sc);
     free(b.node_names);

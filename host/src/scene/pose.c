@@ -95,6 +95,39 @@ static void multiply(const float a[12], const float b[12], float out[12]) {
                              x[4 * i + 3] * y[12 + j];
 }
 
+/* m's point p (w 1) or direction d (w 0, normalised). */
+static void transform(const float m[12], const float v[3], float w, float out[3]) {
+    for (int r = 0; r < 3; ++r)
+        out[r] = m[4 * r] * v[0] + m[4 * r + 1] * v[1] + m[4 * r + 2] * v[2] + m[4 * r + 3] * w;
+    if (w == 0.0f) {
+        const float len = sqrtf(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+        for (int k = 0; len > 0.0f && k < 3; ++k)
+            out[k] /= len;
+    }
+}
+
+/* The camera and the lights that moved nodes carry, moved with them. */
+static void carry_attachments(vct_scene *s, const float *world, const uint8_t *moved) {
+    const vct_attachment *c = &s->camera_attachment;
+    if (c->node < s->node_count && moved[c->node]) {
+        const float *m = &world[12 * c->node];
+        float forward[3];
+        transform(m, c->position, 1.0f, s->camera.position);
+        transform(m, c->direction, 0.0f, forward);
+        transform(m, c->up, 0.0f, s->camera.up);
+        const float d = c->look_distance > 0.0f ? c->look_distance : 1.0f;
+        for (int k = 0; k < 3; ++k)
+            s->camera.look_at[k] = s->camera.position[k] + d * forward[k];
+    }
+    for (uint32_t i = 0; i < s->light_attachment_count && i < s->light_count; ++i) {
+        const vct_attachment *a = &s->light_attachments[i];
+        if (a->node >= s->node_count || !moved[a->node])
+            continue;
+        transform(&world[12 * a->node], a->position, 1.0f, s->lights[i].position);
+        transform(&world[12 * a->node], a->direction, 0.0f, s->lights[i].direction);
+    }
+}
+
 vct_status vct_scene_pose(vct_scene *s, uint32_t animation, double seconds, vct_error *err) {
     if (animation >= s->animation_count)
         return vct_fail(err, VCT_ERR_INPUT, "scene %s: no animation %u (it has %u)",
@@ -153,6 +186,8 @@ vct_status vct_scene_pose(vct_scene *s, uint32_t animation, double seconds, vct_
         if (n < s->node_count && moved[n])
             rc = vct_instance_place(s, i, &world[12 * n], err);
     }
+    if (rc == VCT_OK)
+        carry_attachments(s, world, moved);
     free(local);
     free(world);
     free(moved);

@@ -47,6 +47,7 @@ void vct_scene_release(vct_scene *scene) {
     }
     free(scene->animations);
     free(scene->nodes);
+    free(scene->light_attachments);
     free(scene);
 }
 
