@@ -100,29 +100,73 @@ int cli_frames_todo(const cli_options *opt, const vct_scene *s, const char *patt
     return rc;
 }
 
+/* What a frame of a sequence cost and rebuilt, for --stats' table. */
+typedef struct frame_row {
+    int frame;
+    double seconds;
+    vct_device_scene_stats built; /* the device scene's counts during the frame */
+} frame_row;
+
+static void print_frame_table(const frame_row *rows, int count) {
+    fprintf(stderr, "%-7s %9s %6s %10s %7s %6s %12s\n", "frame", "seconds", "BVH", "top level",
+            "voxels", "light", "scene bytes");
+    for (int k = 0; k < count; ++k) {
+        const vct_device_scene_stats *b = &rows[k].built;
+        fprintf(stderr, "%-7d %9.3f %6u %10u %7u %6u %12llu\n", rows[k].frame, rows[k].seconds,
+                b->accel_builds, b->accel_moves, b->voxel_builds, b->light_builds,
+                (unsigned long long)b->scene_bytes);
+    }
+    fprintf(stderr, "(built during each frame: BVHs, two-level top levels alone, voxels, their "
+                    "light; scene data uploaded)\n");
+}
+
+static vct_device_scene_stats stats_since(const vct_device_scene_stats *a,
+                                          const vct_device_scene_stats *b) {
+    vct_device_scene_stats d = {
+        b->commits - a->commits,           b->changes - a->changes,
+        b->accel_builds - a->accel_builds, b->accel_moves - a->accel_moves,
+        b->voxel_builds - a->voxel_builds, b->light_builds - a->light_builds,
+        b->scene_bytes - a->scene_bytes};
+    return d;
+}
+
 int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, const cli_options *opt,
                       vct_method method, const char *pattern, vct_error *err) {
     const int total = opt->frames[1] - opt->frames[0] + 1;
     int *frames = malloc(sizeof(int) * (size_t)total), count = 0;
-    if (!frames)
+    frame_row *rows = calloc((size_t)total, sizeof *rows);
+    if (!frames || !rows) {
+        free(frames);
+        free(rows);
         return cli_fail_input(err, "vct render --frames: out of host memory");
+    }
     int rc = cli_frames_todo(opt, s, pattern, frames, &count, err);
     if (rc == VCT_OK && count < total)
         fprintf(stderr, "vct render --resume: %d of %d frames are there; rendering %d\n",
                 total - count, total, count);
     char path[1024];
+    const double start = now_s();
     for (int k = 0; rc == VCT_OK && k < count; ++k) {
         const int f = frames[k];
         const double t0 = now_s();
+        vct_device_scene_stats before, after;
+        vct_device_scene_stats_get(ds, &before);
         rc = vct_scene_pose(s, 0, (double)f / opt->fps, err);
         if (rc == VCT_OK)
             rc = cli_frame_path(pattern, f, path, sizeof path, err);
         if (rc == VCT_OK)
             rc = cli_render_frame(ctx, ds, s, opt, method, path, err);
-        if (rc == VCT_OK)
-            fprintf(stderr, "frame %d (%.3f s): %s in %.2f s\n", f, (double)f / opt->fps, path,
-                    now_s() - t0);
+        vct_device_scene_stats_get(ds, &after);
+        rows[k] = (frame_row){f, now_s() - t0, stats_since(&before, &after)};
+        if (rc == VCT_OK) {
+            const double spent = now_s() - start, left = spent / (k + 1) * (count - k - 1);
+            fprintf(stderr, "frame %d (%.3f s): %s in %.2f s [%d/%d, %.0f s left]\n", f,
+                    (double)f / opt->fps, path, rows[k].seconds, k + 1, count, left);
+        }
     }
+    if (rc == VCT_OK && opt->stats)
+        print_frame_table(rows, count);
     free(frames);
+    free(rows);
     return rc;
 }

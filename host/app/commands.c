@@ -8,6 +8,7 @@
 #include "cli_common.h"
 #include "cluster.h"
 #include "cli_denoise.h"
+#include "cli_video.h"
 #include "cmd_render_frame.h"
 #include "cmd_render_group.h"
 #include "cmd_render_vct.h"
@@ -96,17 +97,32 @@ int cmd_info(const cli_options *opt) {
     return rc == VCT_OK ? 0 : cli_fail(&err);
 }
 
+/* The render itself: one device, several, or several processes. */
+static int render(const cli_options *opt, vct_method method, const char *out);
+
 int cmd_render(const cli_options *opt) {
     vct_error err = {0};
     const char *out = opt->output ? opt->output : "render.png";
     if (cli_check_output("vct render", out))
         return 1;
+    if (cli_video_check(opt, out, &err) != VCT_OK)
+        return cli_fail(&err);
     const int method = vct_method_from_name(opt->method);
     if (method < 0 || method == VCT_METHOD_VOXELS) {
         fprintf(stderr, "vct: unknown --method %s (available: vct, raycast, pt, whitted, pm)\n",
                 opt->method);
         return 1;
     }
+    const int rc = render(opt, (vct_method)method, out);
+    /* the video of a sequence, once every frame is written (by rank 0) */
+    if (rc == 0 && opt->video && cli_cluster_rank() == 0 &&
+        cli_video_make(opt, out, &err) != VCT_OK)
+        return cli_fail(&err);
+    return rc;
+}
+
+static int render(const cli_options *opt, vct_method method, const char *out) {
+    vct_error err = {0};
     if (opt->denoise && method != VCT_METHOD_PATHTRACE && method != VCT_METHOD_PM &&
         method != VCT_METHOD_VCT) {
         fprintf(stderr, "vct render: --denoise is for --method pt, pm and vct\n");

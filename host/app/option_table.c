@@ -78,6 +78,9 @@ static const cli_option time_rows[] = {
     {"frames", 0, OPT_FRAMES, 1, "A:B",
      "frames A to B, one image each: -o names them with a number pattern (out/shot_%04d.png)"},
     {"fps", 0, OPT_FPS, 1, "F", "frames per second of --frame and --frames (default 24)"},
+    {"video", 0, OPT_VIDEO, 1, "FILE",
+     "--frames: also encode the frames (PNG or EXR) into a video with ffmpeg, by FILE's ending "
+     "(.mp4, .webm, .gif, ...), at --fps"},
     {"resume", 0, OPT_RESUME, 0, NULL,
      "--frames: render only the frames whose files are not there yet (files are written whole "
      "or not at all, so a sequence that was stopped goes on where it stopped)"},

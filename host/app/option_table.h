@@ -27,6 +27,7 @@ typedef enum cli_option_id {
     OPT_FRAMES,
     OPT_FPS,
     OPT_RESUME,
+    OPT_VIDEO,
     OPT_ACCEL,
     OPT_BVH_BUILD,
     OPT_BVH_LEVELS,

@@ -372,6 +372,9 @@ static int apply(const parse_state *ps, cli_option_id id, char **w, int nw, cli_
     case OPT_RESUME:
         opt->resume_frames = 1;
         return 0;
+    case OPT_VIDEO:
+        opt->video = w[0];
+        return 0;
     case OPT_METHOD:
         opt->method = w[0];
         return 0;

@@ -51,6 +51,7 @@ struct cli_options {
     int frames[2]; /* --frames A:B; frames[1] < 0: none */
     float fps;
     int resume_frames; /* --resume: skip the frames whose files exist */
+    const char *video; /* --video FILE: the frames encoded by ffmpeg, or NULL */
     /* vct method */
     int print_plan;
     vct_effect_force force[VCT_EFFECTS];

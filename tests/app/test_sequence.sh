@@ -72,6 +72,27 @@ for m in raycast pt vct; do
     fi
 done
 
+# --stats: what each frame rebuilt. A moving camera and light: after the
+# first frame no BVH and no voxels, the light alone; a moving instance:
+# the two-level structure's top level alone.
+"$VCT" render "$MOVING" --method vct --voxel-res 32 --size 32 24 --frames 0:2 --stats \
+    -o "$DIR/st_%d.pfm" >/dev/null 2>"$DIR/stats"
+rows=$(awk '$1 ~ /^[12]$/ && NF == 7 && $3 == 0 && $4 == 0 && $5 == 0 && $6 == 1' "$DIR/stats" | wc -l)
+if [ "$rows" -eq 2 ] && grep -q '^frame .*seconds.*BVH.*top level.*voxels.*light' "$DIR/stats"; then
+    ok "--stats: a moving camera and light rebuild only the voxels' light"
+else
+    cat "$DIR/stats"
+    fail "--stats: the per-frame table of a moving camera and light"
+fi
+"$VCT" render "$SCENE" --method raycast --size 32 24 --frames 11:12 --stats \
+    -o "$DIR/si_%d.pfm" >/dev/null 2>"$DIR/stats"
+if awk '$1 == 12 && NF == 7 && $3 == 0 && $4 == 1' "$DIR/stats" | grep -q .; then
+    ok "--stats: a moving instance rebuilds the top level alone"
+else
+    cat "$DIR/stats"
+    fail "--stats: the per-frame table of a moving instance"
+fi
+
 # A sequence on two devices (each holding a device scene): one device's files.
 for m in whitted pt; do
     case $m in
@@ -93,6 +114,31 @@ for m in whitted pt; do
     fi
 done
 
+# --video: the frames encoded by ffmpeg where it is installed, refused with
+# what to do where it is not (before anything renders).
+if command -v ffmpeg >/dev/null 2>&1; then
+    "$VCT" render "$MOVING" --method raycast --size 32 24 --frames 2:4 -o "$DIR/v/f_%02d.png" \
+        --video "$DIR/v/fly.mp4" >/dev/null 2>"$DIR/log"
+    frames=$(ffprobe -v error -count_frames -select_streams v:0 \
+        -show_entries stream=nb_read_frames -of csv=p=0 "$DIR/v/fly.mp4" 2>/dev/null)
+    if [ "$frames" = 3 ] && [ ! -e "$DIR/v/fly.partial.mp4" ]; then
+        ok "--video: 3 frames encoded by ffmpeg"
+    else
+        cat "$DIR/log"
+        fail "--video: the video holds '$frames' frames"
+    fi
+else
+    if PATH=/nonexistent "$VCT" render "$MOVING" --frames 2:4 -o "$DIR/v/f_%02d.png" \
+        --video "$DIR/v/fly.mp4" >/dev/null 2>"$DIR/log"; then
+        fail "--video without ffmpeg was accepted"
+    elif grep -q "ffmpeg is not installed" "$DIR/log" && [ ! -e "$DIR/v" ]; then
+        ok "--video without ffmpeg: refused before rendering"
+    else
+        cat "$DIR/log"
+        fail "--video without ffmpeg: no message, or frames written"
+    fi
+fi
+
 refused() { # name expected-text args...
     name=$1 text=$2
     shift 2
@@ -111,6 +157,10 @@ refused "a scene without an animation" "has no animation" "$SRC/scenes/cornell_b
 refused "--frame without an animation" "has no animation" "$SRC/scenes/cornell_box.gltf" \
     --frame 3 -o "$DIR/refused_x.png"
 refused "--frames B before A" "A <= B" "$SCENE" --frames 5:2 -o "$DIR/refused_%d.png"
+refused "--video of PFM frames" "PNG or EXR" "$SCENE" --frames 0:1 -o "$DIR/refused_%d.pfm" \
+    --video "$DIR/refused.mp4"
+refused "--video without --frames" "give --frames" "$SCENE" -o "$DIR/refused_x.png" \
+    --video "$DIR/refused.mp4"
 
 [ "$failures" -eq 0 ] && echo "test_sequence: all passed"
 exit "$failures"
