@@ -1,0 +1,40 @@
+#!/usr/bin/env python3
+"""Flicker where nothing moved: two consecutive frames of a method, and
+the ray-cast frames that say which pixels the moving object touches
+(directly or by its shadow: any pixel that differs, grown by `grow`
+pixels). Prints the RMS change of the other pixels between the frames
+over the first frame's mean, and their count.
+
+usage: temporal_flicker.py A.pfm B.pfm RAYCAST_A.pfm RAYCAST_B.pfm GROW"""
+import sys
+
+import numpy as np
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        kind = f.readline().strip()
+        w, h = map(int, f.readline().split())
+        f.readline()
+        n = 3 if kind == b"PF" else 1
+        return np.frombuffer(f.read(), dtype="<f4").reshape(h, w, n)[::-1].astype(np.float64)
+
+
+def main():
+    a, b, ra, rb = (read_pfm(p) for p in sys.argv[1:5])
+    grow = int(sys.argv[5])
+    touched = np.any(ra != rb, axis=-1)
+    for _ in range(grow):  # grown by one pixel a step, 4-connected
+        t = touched.copy()
+        t[1:, :] |= touched[:-1, :]
+        t[:-1, :] |= touched[1:, :]
+        t[:, 1:] |= touched[:, :-1]
+        t[:, :-1] |= touched[:, 1:]
+        touched = t
+    rest = ~touched
+    change = np.sqrt(np.mean((b[rest] - a[rest]) ** 2)) / np.mean(a)
+    print(f"{change:.5f} {int(rest.sum())}")
+
+
+if __name__ == "__main__":
+    main()
