@@ -42,18 +42,20 @@ for method in raycast pt vct; do
     frame_rows "$method, camera and light move" <"$work/cam.txt" >>"$rows"
     # shellcheck disable=SC2086
     ./build/vct render scenes/instanced_spheres.gltf --method $method $extra $size --frames 8:16 \
-        --stats -o "$work/roll_%d.pfm" >/dev/null 2>"$work/roll_$method.txt"
+        --stats -o "$work/roll_%d.pfm" >"$work/roll_stages_$method.txt" 2>"$work/roll_$method.txt"
     frame_rows "$method, a sphere rolls" <"$work/roll_$method.txt" >>"$rows"
 done
-# cone tracing's device time by stage over the rolling frames (--stats' kernel table)
+# cone tracing's device time by stage over the rolling frames (--stats' stage table)
 stages=$(awk '
-    $1 == "vox_chunks" || $1 ~ /^oct_/ { geo += $(NF - 1) }
-    $1 ~ /^brick_/ { bricks += $(NF - 1) }
-    $1 == "inject_direct" { direct += $(NF - 1) }
-    $1 == "inject_bounce" || $1 ~ /^bounce_/ { bounce += $(NF - 1) }
-    $1 ~ /^vct_/ { frame += $(NF - 1) }
+    $1 == "voxelize" { geo += $2 }
+    $1 == "octree" && $2 == "build" { geo += $3 }
+    ($1 == "brick" || $1 == "radiance") && $2 ~ /^(creation|filtering)$/ { bricks += $3 }
+    $1 == "light" && $2 == "injection" { direct += $3 }
+    $1 == "light" && $2 == "bounce" && $3 ~ /^[0-9.]+$/ { bounce += $3 }
+    $1 == "light" && $2 == "bounce" && $3 == "rest" { bounce += $4 }
+    $1 == "vct" { frame += $3 }
     END { printf "| %.0f | %.0f | %.0f | %.0f | %.0f |", geo, bricks, direct, bounce, frame }' \
-    "$work/roll_vct.txt")
+    "$work/roll_stages_vct.txt")
 # flicker between frames 12 and 13 of the roll
 for f in 12 13; do
     ./build/vct render scenes/instanced_spheres.gltf --method raycast $size --frame $f \
@@ -76,15 +78,16 @@ pt_flicker=$(flicker pt)
     echo "averaged over the frames after the first: the frame's wall time and what it rebuilt"
     echo "(BVHs, two-level top levels alone, voxels, the voxels' light). A camera and a light that"
     echo "move rebuild no BVH and no voxels; cone tracing relights its voxels. A rolling sphere"
-    echo "rebuilds the top level over its 64 instances, and cone tracing its voxels whole."
+    echo "rebuilds the top level over its 64 instances, and cone tracing its voxels whole. The"
+    echo "two scenes differ (a few boxes; 64 spheres of 5,120 triangles): compare within one."
     echo
     echo "| sequence | seconds a frame | BVH | top level | voxels | light |"
     echo "|---|---:|---:|---:|---:|---:|"
     cat "$rows"
     echo
     echo "Where cone tracing's rolling frames spend their device time (ms, all 9 frames): the"
-    echo "voxels' geometry (voxelization and octree), their bricks, direct light, bounces, and"
-    echo "the camera's frame. Re-voxelizing only what moved could save at most the first two"
+    echo "voxels' geometry (voxelization and octree), their bricks (creation and filtering, of"
+    echo "the light too), direct light, bounces, and the camera's frame. Re-voxelizing only what moved could save at most the first two"
     echo "columns; the light has to follow the moved sphere everywhere its bounces reach."
     echo
     echo "| voxelize + octree | bricks | direct light | bounces | frame |"
