@@ -120,12 +120,17 @@ static int group_voxels(view_app *app, vct_error *err) {
                            "voxels");
     const int needed = app->method == VIEW_VCT && vct_plan_needs_voxels(&app->plan);
     const int lit = vct_plan_needs_voxel_light(&app->plan);
-    if (!needed || (app->voxels_for_plan && (app->voxels_lit || !lit) && !app->light_moved))
+    if (!needed && app->scene_changed) { /* the devices' BVHs follow what moved */
+        app->scene_changed = 0;
+        app->voxels_for_plan = 0;
+        return group_prepare(app, 0, err);
+    }
+    if (!needed || (app->voxels_for_plan && (app->voxels_lit || !lit) && !app->scene_changed))
         return VCT_OK;
     int rc = group_prepare(app, 1, err);
     app->voxels_for_plan = rc == VCT_OK;
     app->voxels_lit = rc == VCT_OK && lit;
-    app->light_moved = 0;
+    app->scene_changed = 0;
     return rc;
 }
 
@@ -211,7 +216,8 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
 }
 
 int view_app_wants_frame(const view_app *app) {
-    return app->dirty || (view_app_progressive(app) && app->pt_spp < VIEW_PT_MAX_SPP);
+    return app->dirty || app->playing ||
+           (view_app_progressive(app) && app->pt_spp < VIEW_PT_MAX_SPP);
 }
 
 int view_app_denoising(const view_app *app) {
@@ -307,9 +313,31 @@ int view_app_move_light(view_app *app, float dx, float dy, float dz) {
     target[0] += dx * scale;
     target[1] += dy * scale;
     target[2] += dz * scale;
-    app->light_moved = 1;
+    app->scene_changed = 1;
     app->pt_spp = 0;
     app->dirty = 1;
+    return 1;
+}
+
+int view_app_step_animation(view_app *app, int delta, vct_error *err) {
+    vct_scene *s = app->scene;
+    if (s->animation_count == 0)
+        return 0;
+    const int frame = app->anim_frame + delta > 0 ? app->anim_frame + delta : 0;
+    if (vct_scene_pose(s, 0, (double)frame / app->opt.fps, err) != VCT_OK)
+        return -1;
+    app->anim_frame = frame;
+    if (s->camera_attachment.node != VCT_NO_NODE) /* the animation's camera is followed */
+        view_camera_init(&app->camera, &s->camera, scene_extent(s));
+    app->scene_changed = 1; /* a group prepares again: what moved is rebuilt */
+    view_app_camera_changed(app);
+    return 1;
+}
+
+int view_app_toggle_play(view_app *app) {
+    if (app->scene->animation_count == 0)
+        return 0;
+    app->playing = !app->playing;
     return 1;
 }
 
@@ -333,8 +361,12 @@ void view_app_status(const view_app *app, const char *display_path, char *out, s
                  app->pt_spp);
     else if (app->method == VIEW_VOXELS)
         snprintf(extra, sizeof extra, " level %u/%u", app->voxel_level, app->voxel_levels);
-    snprintf(out, size, "vct-view | %s%s%s | %dx%d %.0f ms (%s) | plan: %s | %s",
+    char anim[96] = "";
+    if (app->scene->animation_count)
+        snprintf(anim, sizeof anim, " | frame %d (%.2f s)%s", app->anim_frame,
+                 app->anim_frame / app->opt.fps, app->playing ? " playing" : "");
+    snprintf(out, size, "vct-view | %s%s%s%s | %dx%d %.0f ms (%s) | plan: %s | %s",
              view_method_name(app->method), extra, view_app_denoising(app) ? ", denoised" : "",
-             app->width, app->height, app->frame_ms, app->stages, plan[0] ? plan : "nothing",
+             anim, app->width, app->height, app->frame_ms, app->stages, plan[0] ? plan : "nothing",
              display_path);
 }

@@ -46,13 +46,23 @@ typedef struct view_app {
     view_camera camera;
     int width, height; /* the frame's size */
     int dirty;         /* the frame is out of date */
-    int light_moved;   /* a group's voxels' light is out of date */
+    int scene_changed; /* a group's structures are out of date (a moved light, a new pose) */
     uint32_t pt_spp;   /* samples (photon mapping: passes) in the progressive frame */
     double frame_ms;
     char stages[256]; /* ms per stage of the last frame */
+    /* The scene's first animation: the frame shown (at opt.fps), and
+     * whether it plays (a frame further at each frame drawn). */
+    int anim_frame;
+    int playing;
 } view_app;
 
 const char *view_method_name(view_method m);
+/* Frame `delta` frames on of the first animation (not before frame 0):
+ * the scene posed there; a camera the animation carries is followed. 0
+ * when the scene has no animation. */
+int view_app_step_animation(view_app *app, int delta, vct_error *err);
+/* Space: plays or pauses the animation; 0 when there is none. */
+int view_app_toggle_play(view_app *app);
 /* Loads the scene and checks the options (before any window opens). */
 int view_app_init(view_app *app, const cli_options *opt, vct_error *err);
 /* Commits the scene to the caller's context, which renders from now on. */

@@ -31,6 +31,7 @@ static void help(void) {
         "      F1 indirect, F2 specular, F3 AO, F4 shadows, F5 soft shadows (forced against\n"
         "      the plan; --light-radius R gives the lights a size)\n"
         "      N denoise (path tracer, photon mapping, cone tracing; one device)\n"
+        "      space play/pause the animation, comma/period a frame back/on (--fps F)\n"
         "      arrows, R F move the first light | + - exposure | P screenshot | H help | Esc quit");
 }
 
@@ -93,6 +94,14 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods) {
         screenshot(v);
     } else if (key == GLFW_KEY_N && action == GLFW_PRESS) {
         view_app_toggle_denoise(app);
+    } else if (key == GLFW_KEY_SPACE && action == GLFW_PRESS) {
+        if (!view_app_toggle_play(app))
+            fprintf(stderr, "vct-view: the scene has no animation to play\n");
+    } else if (key == GLFW_KEY_COMMA || key == GLFW_KEY_PERIOD) {
+        vct_error err = {0};
+        app->playing = 0;
+        if (view_app_step_animation(app, key == GLFW_KEY_PERIOD ? 1 : -1, &err) < 0)
+            fprintf(stderr, "vct-view: %s\n", err.message);
     } else if (key == GLFW_KEY_H && action == GLFW_PRESS) {
         help();
     } else if (key == GLFW_KEY_ESCAPE) {
@@ -174,7 +183,10 @@ static const struct {
                  {"+", GLFW_KEY_EQUAL},
                  {"-", GLFW_KEY_MINUS},
                  {"p", GLFW_KEY_P},
-                 {"n", GLFW_KEY_N}};
+                 {"n", GLFW_KEY_N},
+                 {"space", GLFW_KEY_SPACE},
+                 {"comma", GLFW_KEY_COMMA},
+                 {"period", GLFW_KEY_PERIOD}};
 
 /* Renders, takes the frame into the window's texture and puts the status
  * in the title (and on stdout with `print`). A failure keeps the last image
@@ -328,6 +340,13 @@ static int run(viewer *v, const view_args *va) {
             view_app_camera_changed(app);
         }
         vct_error err = {0};
+        if (app->playing) { /* every frame of the animation, one per frame drawn */
+            vct_error step_err = {0};
+            if (view_app_step_animation(app, 1, &step_err) < 0) {
+                fprintf(stderr, "vct-view: %s\n", step_err.message);
+                status = 1;
+            }
+        }
         if (view_app_wants_frame(app) && render_frame(v, capture != NULL) != VCT_OK)
             status = 1;
         if (display_draw(d, &err) != VCT_OK) {

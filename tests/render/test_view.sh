@@ -104,6 +104,40 @@ grep -q "device 0 working.*device 1 working" "$TMP/devices-vct.view.log" ||
     { echo "FAIL devices: both devices did not work on the frame"; cat "$TMP/devices-vct.view.log"; failed=1; }
 unset POCL_DEVICES
 
+# Animation: period (.) steps a frame on, comma (,) a frame back (the scene posed, a camera
+# the animation carries followed); the window shows what vct render
+# --frame N renders. Space plays: the title says so and frames go on.
+anim_compare() { # name scene keys frame args
+    name=$1 scene=$2 keys=$3 frame=$4 args=$5
+    # shellcheck disable=SC2086
+    "$VIEW" "$scene" --display host --capture "$TMP/$name.view.png" --keys "$keys" $args \
+        >"$TMP/$name.view.log" 2>&1
+    # shellcheck disable=SC2086
+    "$VCT" render "$scene" --frame "$frame" -o "$TMP/$name.offline.png" $args \
+        >"$TMP/$name.render.log" 2>&1
+    if "$COMPARE" "$TMP/$name.view.png" "$TMP/$name.offline.png" 1 &&
+        grep -q "frame $frame (" "$TMP/$name.view.log"; then
+        echo "ok   $name"
+    else
+        echo "FAIL $name: the window at frame $frame differs from vct render --frame $frame"
+        cat "$TMP/$name.view.log"
+        failed=1
+    fi
+}
+ANIMATED=${VCT_SOURCE_DIR:-.}/scenes/instanced_spheres.gltf
+MOVING=${VCT_SOURCE_DIR:-.}/scenes/moving_camera.gltf
+p=period
+anim_compare roll-step "$ANIMATED" "$p,$p,$p,$p,$p,$p,$p,$p,$p,$p,$p,$p,$p,comma" 12 \
+    "--size 64 48 --method raycast"
+anim_compare camera-step "$MOVING" "$p,$p,$p,$p,$p,$p,$p,$p,$p,$p" 10 "--size 64 48 --method raycast"
+anim_compare camera-step-vct "$MOVING" "$p,$p,$p,$p,$p" 5 "--size 48 36 --voxel-res 32"
+POCL_DEVICES="pthread pthread" anim_compare roll-step-devices "$ANIMATED" "$p,$p,$p,$p,$p,$p" 6 \
+    "--size 64 48 --method raycast --device 0,1"
+"$VIEW" "$ANIMATED" --display host --size 32 24 --method raycast --keys "space" \
+    --capture "$TMP/play.png" >"$TMP/play.log" 2>&1
+grep -q "frame 1 (0.04 s) playing" "$TMP/play.log" ||
+    { echo "FAIL play: the title does not say it plays frame 1"; cat "$TMP/play.log"; failed=1; }
+
 # The voxel view at a coarse level: a window of octree cells, not black.
 "$VIEW" "$SCENE" --voxel-res 32 --display host --size 64 64 --keys "4,[,[" \
     --capture "$TMP/voxels.png" >"$TMP/voxels.log" 2>&1 ||
