@@ -14,14 +14,7 @@ import time
 import numpy as np
 import OpenEXR
 
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        w, h = map(int, f.readline().split())
-        f.readline()
-        n = 3 if kind == b"PF" else 1
-        return np.frombuffer(f.read(), dtype="<f4").reshape(h, w, n)[::-1].astype(np.float64)
+from pfm import read_pfm
 
 
 def layer(channels, name, letters):

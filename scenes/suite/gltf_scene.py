@@ -203,10 +203,7 @@ class Scene:
                 nodes.append(node)
         gltf = {"asset": {"version": "2.0", "generator": "vct scenes/suite"},
                 "scene": 0, "materials": self.materials, "meshes": meshes,
-                "accessors": accessors, "bufferViews": views,
-                "buffers": [{"byteLength": len(blob),
-                             "uri": "data:application/octet-stream;base64,"
-                                    + base64.b64encode(bytes(blob)).decode()}]}
+                "accessors": accessors, "bufferViews": views}
         if self.images:
             gltf["images"] = [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}
                               for png in self.images]
@@ -282,7 +279,7 @@ class Scene:
                                  "target": {"node": node, "path": "rotation"}})
         if animations:
             gltf["animations"] = animations
-        # the animations' keys were added to the blob after it was first encoded
+        # once everything, the animations' keys included, is in the blob
         gltf["buffers"] = [{"byteLength": len(blob),
                             "uri": "data:application/octet-stream;base64,"
                                    + base64.b64encode(bytes(blob)).decode()}]
