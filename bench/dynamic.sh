@@ -56,6 +56,45 @@ stages=$(awk '
     $1 == "vct" { frame += $3 }
     END { printf "| %.0f | %.0f | %.0f | %.0f | %.0f |", geo, bricks, direct, bounce, frame }' \
     "$work/roll_stages_vct.txt")
+# the light carried over frames against every bounce again: the moving
+# light of moving_camera.gltf (it stops at frame 48), frames 40 to 60
+for mode in full carry; do
+    flag=""
+    [ $mode = carry ] && flag="--light-carry"
+    # shellcheck disable=SC2086
+    ./build/vct render scenes/moving_camera.gltf --method vct $size --frames 40:60 $flag --stats \
+        -o "$work/${mode}_%02d.pfm" >/dev/null 2>"$work/$mode.txt"
+done
+carry_rows=$(tools/python.sh - "$work" <<'PY'
+import sys
+sys.path.insert(0, "bench")
+import numpy as np
+from pfm import read_pfm
+work = sys.argv[1]
+def table(mode):
+    rows = {}
+    on = False
+    for line in open(f"{work}/{mode}.txt"):
+        f = line.split()
+        if f[:2] == ["frame", "seconds"]:
+            on = True
+        elif on and len(f) == 7 and f[0].isdigit():
+            rows[int(f[0])] = (float(f[1]), int(f[5]))
+    return rows
+full, carry = table("full"), table("carry")
+def nrmse(k):
+    a, b = read_pfm(f"{work}/carry_{k:02d}.pfm"), read_pfm(f"{work}/full_{k:02d}.pfm")
+    return np.sqrt(np.mean((a - b) ** 2)) / np.mean(b)
+moving = range(41, 49)
+print("| every bounce again | %.3f | %.3f | - | - |" % (
+    np.mean([full[k][0] for k in moving]), np.mean([full[k][0] for k in range(49, 61)])))
+settled = [k for k in range(49, 61) if carry[k][1] == 0]
+print("| carried (`--light-carry`) | %.3f | %.3f | %.4f | %s |" % (
+    np.mean([carry[k][0] for k in moving]), np.mean([carry[k][0] for k in range(49, 61)]),
+    np.mean([nrmse(k) for k in moving]),
+    ", ".join("%.4f" % nrmse(k) for k in range(48, (settled[0] if settled else 60) + 1))))
+PY
+)
 # flicker between frames 12 and 13 of the roll
 for f in 12 13; do
     ./build/vct render scenes/instanced_spheres.gltf --method raycast $size --frame $f \
@@ -93,6 +132,16 @@ pt_flicker=$(flicker pt)
     echo "| voxelize + octree | bricks | direct light | bounces | frame |"
     echo "|---:|---:|---:|---:|---:|"
     echo "$stages"
+    echo
+    echo "Light carried over frames (\`--light-carry\`) against every bounce gathered again, on"
+    echo "the light of \`moving_camera.gltf\`, which moves until frame 48 and then stays: seconds"
+    echo "a frame while it moves (frames 41 to 48) and after (49 to 60), the NRMSE of the carried"
+    echo "frames against the recomputed ones while it moves (mean), and from the frame it stops"
+    echo "until the carried light has settled (no more bounces gathered)."
+    echo
+    echo "| voxels' light | s a frame, moving | s a frame, after | NRMSE moving | NRMSE after the stop, frame by frame |"
+    echo "|---|---:|---:|---:|---|"
+    echo "$carry_rows"
     echo
     echo "Flicker where nothing moved: between frames 12 and 13 of the roll, the RMS change of"
     echo "the pixels that the sphere and its shadow do not touch (the ray caster's changed pixels"

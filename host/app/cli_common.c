@@ -241,6 +241,7 @@ vct_render_job cli_render_job(const cli_options *opt, vct_method method, const v
     cli_voxel_options(opt, 128, &job.voxel_options);
     job.brick_options = (vct_brick_options){opt->bricks, opt->anisotropic == 1, 0};
     job.bounces = (uint32_t)opt->bounces;
+    job.light_carry = opt->light_carry;
     return job;
 }
 

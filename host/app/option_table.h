@@ -47,6 +47,7 @@ typedef enum cli_option_id {
     OPT_EDGE_SAMPLES,
     OPT_AO_DISTANCE,
     OPT_BOUNCES,
+    OPT_LIGHT_CARRY,
     OPT_EXACT_BOUNCES,
     OPT_EMITTERS,
     OPT_COPY_VOXELS,

@@ -203,6 +203,9 @@ static int apply_vct(const parse_state *ps, cli_option_id id, char **w, cli_opti
     case OPT_EXACT_BOUNCES:
         opt->exact_bounces = 1;
         return 0;
+    case OPT_LIGHT_CARRY:
+        opt->light_carry = 1;
+        return 0;
     case OPT_EMITTERS:
         return choose(ps, w[0], "rays|cones", &opt->emitters_by_cones);
     case OPT_COPY_VOXELS:

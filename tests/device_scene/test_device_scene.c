@@ -5,6 +5,7 @@
  * what it renders then equals a fresh device scene of the changed scene;
  * resumed progressive renders add to their scene's own sums and start over
  * on a change; objects of another context are refused. */
+#include <math.h>
 #include <string.h>
 
 #include "check.h"
@@ -340,6 +341,96 @@ static void check_resume(void) {
     vct_scene_release(s);
 }
 
+static double nrmse(const vct_image *a, const vct_image *ref) {
+    double e = 0.0, m = 0.0;
+    for (size_t i = 0; i < (size_t)a->width * a->height * 4; ++i) {
+        if (i % 4 == 3)
+            continue;
+        e += (a->rgba[i] - ref->rgba[i]) * (a->rgba[i] - ref->rgba[i]);
+        m += ref->rgba[i];
+    }
+    const double n = (double)a->width * a->height * 3;
+    return sqrt(e / n) / (m / n);
+}
+
+/* Cone tracing's indirect light (its AOV), where the voxels' light shows. */
+static vct_image indirect_of(vct_device_scene *ds, const vct_render_job *job) {
+    vct_error err = {0};
+    vct_aovs aovs;
+    memset(&aovs, 0, sizeof aovs);
+    vct_render_job own = *job;
+    own.aovs = &aovs;
+    vct_image im;
+    REQUIRE_OK(vct_device_scene_render(ds, &own, &im, NULL, &err), err);
+    vct_image_release(&im);
+    vct_image indirect = aovs.indirect;
+    aovs.indirect.rgba = NULL;
+    vct_aovs_release(&aovs);
+    return indirect;
+}
+
+/* Light carried over (light_carry): a moved light relights without a BVH
+ * or voxels, one bounce a render until the light from before has faded
+ * (as many renders as the measured bounce ratio asks), then nothing more;
+ * settled, the indirect light is a fresh build's within 2 %, where the
+ * light from before differs from it by more than ten times that. */
+static void check_light_carry(void) {
+    vct_error err = {0};
+    vct_scene *s = check_cornell_box_point_light();
+    vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
+    REQUIRE_OK(ds ? VCT_OK : err.status, err);
+    vct_render_job job = job_for(VCT_METHOD_VCT);
+    job.light_carry = 1;
+    job.bounces = 4; /* measures the bounce ratio that sets how long the light settles */
+    vct_image old_indirect = indirect_of(ds, &job);
+    const double ratio = vct_voxels_bounce_ratio(vct_device_scene_voxels(ds));
+    uint32_t settle = ratio > 0.0 ? (uint32_t)ceil(log(0.01) / log(ratio)) : 8;
+    settle = settle < 4 ? 4 : settle > 16 ? 16 : settle;
+    s->lights[0].position[0] += 200.0f; /* towards a coloured wall (millimetres) */
+    vct_device_scene_stats before, after;
+    vct_device_scene_stats_get(ds, &before);
+    uint32_t relit[18] = {0}, ones = 0;
+    vct_image carried = {0};
+    for (uint32_t r = 0; r < settle + 2; ++r) {
+        vct_device_scene_stats a, b;
+        vct_device_scene_stats_get(ds, &a);
+        vct_image_release(&carried);
+        carried = indirect_of(ds, &job);
+        vct_device_scene_stats_get(ds, &b);
+        relit[r] = b.light_builds - a.light_builds;
+    }
+    while (ones < settle + 2 && relit[ones] == 1)
+        ++ones;
+    vct_device_scene_stats_get(ds, &after);
+    CHECK(after.accel_builds == before.accel_builds && after.voxel_builds == before.voxel_builds,
+          "carried light: %u BVH and %u voxel builds", after.accel_builds - before.accel_builds,
+          after.voxel_builds - before.voxel_builds);
+    CHECK(ones == settle && relit[settle] == 0 && relit[settle + 1] == 0,
+          "carried light: relit in %u renders in a row, expected %u (bounce ratio %.3f)", ones,
+          settle, ratio);
+    /* a fresh build of the moved light, with the same job */
+    vct_scene copy = *s;
+    vct_device_scene *again = vct_device_scene_create(ctx, &copy, &err);
+    REQUIRE_OK(again ? VCT_OK : err.status, err);
+    job.light_carry = 0;
+    vct_image fresh_indirect = indirect_of(again, &job);
+    vct_device_scene_release(again);
+    const double e = nrmse(&carried, &fresh_indirect),
+                 moved = nrmse(&old_indirect, &fresh_indirect);
+    CHECK(e < 0.02 && moved > 10.0 * e,
+          "carried light, settled: indirect NRMSE %.4f against a fresh build (the light before "
+          "the move: %.4f)",
+          e, moved);
+    printf("carried light: 1 bounce a render, settled after %u (bounce ratio %.3f); indirect "
+           "NRMSE %.4f against a fresh build, %.4f before the move\n",
+           settle, ratio, e, moved);
+    vct_image_release(&carried);
+    vct_image_release(&old_indirect);
+    vct_image_release(&fresh_indirect);
+    vct_device_scene_release(ds);
+    vct_scene_release(s);
+}
+
 /* A structure of another context is refused by name. */
 static void check_other_context(void) {
     vct_error err = {0};
@@ -370,6 +461,7 @@ int main(void) {
     check_changes();
     check_moved_instances();
     check_resume();
+    check_light_carry();
     check_other_context();
     vct_context_release(ctx);
     return check_exit("test_device_scene");

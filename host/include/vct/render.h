@@ -353,6 +353,14 @@ typedef struct vct_render_job {
     vct_voxel_options voxel_options;
     vct_brick_options brick_options;
     uint32_t bounces;
+    /* Cone tracing through a device scene, when only the lights changed:
+     * 1 carries the voxels' light over from the frame before, as engines
+     * do: the new direct light plus one bounce gathered from the light the
+     * voxels held, then one bounce more at each render until `bounces`
+     * are gathered (bench/dynamic.sh measures how it settles). A relit
+     * frame costs one bounce instead of all of them. 0 (the default):
+     * every bounce again, the image of a fresh build, bit for bit. */
+    int light_carry;
 } vct_render_job;
 
 typedef struct vct_render_result {

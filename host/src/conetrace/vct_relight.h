@@ -11,4 +11,12 @@
 int vct_vct_relight(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
                     uint32_t bounces, const vct_cone_settings *cs, vct_error *err);
 
+/* Light carried over from the frame before, as engines do: with
+ * inject_direct the lights' direct light again, then one bounce gathered
+ * from the light the bricks hold (the frame before's, every bounce in it);
+ * without, one more bounce of the same direct light. Repeated, the light
+ * settles to every bounce of the new lights. */
+int vct_vct_relight_carry(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
+                          const vct_cone_settings *cs, int inject_direct, vct_error *err);
+
 #endif

@@ -193,6 +193,20 @@ int vct_vct_relight(vct_context *ctx, const vct_scene *s, const vct_accel *g, vc
     return rc == VCT_OK ? light_bounces(ctx, s, g, v, cs, bounces, err) : rc;
 }
 
+int vct_vct_relight_carry(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
+                          const vct_cone_settings *cs, int inject_direct, vct_error *err) {
+    /* the light already holds the higher bounces: no rest of the series */
+    const int rest = v->bounce_rest;
+    v->bounce_rest = 0;
+    int rc = VCT_OK;
+    if (inject_direct) /* else the direct light kept from the injection before */
+        rc = vct_voxels_inject_light_kept(ctx, s, g, v, err);
+    if (rc == VCT_OK)
+        rc = inject_bounce(ctx, s, g, v, cs, 6, 1, err);
+    v->bounce_rest = rest;
+    return rc;
+}
+
 /* -D options: the planned effects, which also choose the kernels the
  * program holds (a kernel no pass runs is not compiled), then the cones'
  * (pool kind, levels). */

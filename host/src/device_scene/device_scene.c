@@ -1,6 +1,7 @@
 /* A scene committed to a context: the resident scene data, the emitter
  * tables, the acceleration structure and the voxels, each built at first
  * need and kept until a commit finds a change it depends on. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -39,7 +40,9 @@ struct vct_device_scene {
     vct_voxels *voxels; /* NULL: none built, or the last plan needed none */
     voxel_key voxel_key;
     light_key light_key;
-    int light_stale;              /* the lights changed since the voxels' light was made */
+    int light_stale;         /* the lights changed since the voxels' light was made */
+    uint32_t light_settling; /* carried light: bounces still to gather (light_carry) */
+    double light_ratio;      /* the bounce ratio the last full light build measured (0: none) */
     vct_device_scene_stats stats; /* scene_bytes: the acceleration structures' uploads */
 };
 
@@ -80,6 +83,7 @@ static void drop_voxels(vct_device_scene *ds) {
     vct_voxels_release(ds->voxels);
     ds->voxels = NULL;
     ds->light_stale = 0;
+    ds->light_settling = 0;
 }
 
 vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
@@ -159,6 +163,17 @@ static void keys_make(const vct_render_job *job, const vct_plan *plan, voxel_key
         lk->cones = job->vct.cones;
 }
 
+/* Bounces a carried light gathers after a change: enough that the light
+ * from before fades below 1 % at the scene's measured bounce ratio (8
+ * where none was measured), no fewer than the job's bounces, at most 16. */
+static uint32_t carry_bounces(double ratio, uint32_t bounces) {
+    uint32_t k = 8;
+    if (ratio > 0.0 && ratio < 1.0)
+        k = (uint32_t)ceil(log(0.01) / log(ratio));
+    k = k < bounces ? bounces : k;
+    return k > 16 ? 16 : k;
+}
+
 /* The voxels the job reads: kept when built with the same settings from
  * the same geometry, relit when only the lights or the light settings
  * changed, else built again. */
@@ -168,16 +183,29 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
     light_key lk;
     keys_make(job, plan, &vk, &lk);
     const int same_shape = ds->voxels && memcmp(&vk, &ds->voxel_key, sizeof vk) == 0;
-    const int same_light = memcmp(&lk, &ds->light_key, sizeof lk) == 0 && !ds->light_stale;
-    if (same_shape && same_light)
+    const int same_settings = memcmp(&lk, &ds->light_key, sizeof lk) == 0;
+    const int same_light = same_settings && !ds->light_stale;
+    const int carry = job->light_carry && same_shape && lk.lit && same_settings;
+    if (same_shape && same_light && !(carry && ds->light_settling))
         return VCT_OK;
     /* a plan that drops light needs voxels without it: build them again */
     if (same_shape && lk.lit && ds->light_key.lit) {
-        const int rc =
-            vct_vct_relight(ds->ctx, ds->scene, ds->accel, ds->voxels, lk.bounces, &lk.cones, err);
+        /* carried: the new direct light and one bounce of the light before,
+         * then a bounce more at each render until `bounces` are gathered */
+        const int rc = carry ? vct_vct_relight_carry(ds->ctx, ds->scene, ds->accel, ds->voxels,
+                                                     &lk.cones, ds->light_stale, err)
+                             : vct_vct_relight(ds->ctx, ds->scene, ds->accel, ds->voxels,
+                                               lk.bounces, &lk.cones, err);
         if (rc != VCT_OK) {
             drop_voxels(ds);
             return rc;
+        }
+        if (carry) {
+            ds->light_settling = ds->light_stale ? carry_bounces(ds->light_ratio, lk.bounces) - 1
+                                                 : ds->light_settling - 1;
+        } else {
+            ds->light_settling = 0;
+            ds->light_ratio = vct_voxels_bounce_ratio(ds->voxels);
         }
         ds->light_key = lk;
         ds->light_stale = 0;
@@ -191,6 +219,7 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
         return rc;
     ds->voxel_key = vk;
     ds->light_key = lk;
+    ds->light_ratio = vct_voxels_bounce_ratio(ds->voxels);
     ++ds->stats.voxel_builds;
     ds->stats.light_builds += (uint32_t)lk.lit;
     return VCT_OK;

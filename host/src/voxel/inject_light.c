@@ -14,9 +14,24 @@ vct_status vct_voxels_inject_light(vct_context *ctx, const vct_scene *s, const v
     return vct_voxels_inject_light_with(ctx, s, g, v, NULL, err);
 }
 
+static int inject(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
+                  const vct_light_bins_options *bins_options, int refresh, vct_error *err);
+
 int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                  vct_voxels *v, const vct_light_bins_options *bins_options,
                                  vct_error *err) {
+    return inject(ctx, s, g, v, bins_options, 1, err);
+}
+
+int vct_voxels_inject_light_kept(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                                 vct_voxels *v, vct_error *err) {
+    return inject(ctx, s, g, v, NULL, 0, err);
+}
+
+/* refresh 0: the bricks keep the light they held (the light of the frame
+ * before, which the next bounce gathers). */
+static int inject(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
+                  const vct_light_bins_options *bins_options, int refresh, vct_error *err) {
     const uint32_t n = v->info.voxels;
     vct_stage_begin(ctx, STAGE);
     cl_program p;
@@ -75,9 +90,9 @@ int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct
     vct_stage_end(ctx);
     v->bounces = 0; /* the radiance is direct light again */
     v->bounces_measured = 0;
-    v->radiance_stale = 0;
+    v->radiance_stale = !refresh;
     v->bounce_ratio = 0.0;
-    if (rc == VCT_OK)
+    if (rc == VCT_OK && refresh)
         rc = vct_bricks_refresh_radiance(ctx, v, err);
     return rc;
 }

@@ -66,6 +66,11 @@ int vct_voxel_buffer_fits(vct_context *ctx, const vct_voxel_info *info, const ch
 /* vct_voxels_inject_light, with the shadow rays of hard point and spot
  * lights through light-space triangle bins as `bins_options` says (NULL:
  * the defaults), or through the grid: the same radiance. */
+/* Direct light into the voxels, the bricks left holding the light they
+ * held: the next bounce (vct_vct_relight_carry) gathers the light of the
+ * frame before. */
+int vct_voxels_inject_light_kept(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                                 vct_voxels *v, vct_error *err);
 int vct_voxels_inject_light_with(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                  vct_voxels *v, const vct_light_bins_options *bins_options,
                                  vct_error *err);
