@@ -45,6 +45,14 @@ expect_failure "index out of range" "index.obj: line 4: a face uses vertex 9, bu
 expect_failure "empty scene" "empty.obj: no triangles" render empty.obj -o out.png
 expect_failure "missing texture" "names texture \"missing.png\", which does not exist" render texture.obj -o out.png
 expect_failure "unreadable glTF" "garbage.gltf" render garbage.gltf -o out.png
+# bad animation data: refused on load, naming the file, the animation and the channel
+python3 "${VCT_SOURCE_DIR:-.}/tests/load/make_bad_animations.py" .
+expect_failure "a key that is not a number" 'nan_key.gltf: animation "bad", the channel of node "tri": translation key 1' \
+    render nan_key.gltf --frame 3 -o out.png
+expect_failure "key times out of order" "key times must increase" render unordered.gltf -o out.png
+expect_failure "a scale of 0" "scale key 1 (at 1 s): a scale of 0" render zero_scale.gltf -o out.png
+expect_failure "a channel naming no node" 'out of bounds (1) for "nodes"' render no_node.gltf \
+    -o out.png
 expect_failure "bad output name" "must end in .exr, .pfm or .png" render ok.obj -o out.jpg
 expect_failure "bad size" "--size" render ok.obj --size 0 10 -o out.png
 expect_failure "bad number" "not a finite number" render ok.obj --point-light 1 2 x 1 1 1 -o out.png

@@ -356,6 +356,49 @@ static int read_channel(const builder *b, const struct aiNodeAnim *ch, double ti
     return 1;
 }
 
+/* One part of a channel (translation, rotation or scale): its times
+ * finite and increasing, its values finite, a scale never 0 on an axis, a
+ * rotation not of length 0. */
+static int check_keys(const vct_scene *s, const char *animation, const char *node, const char *part,
+                      const float *times, const float *values, uint32_t count, int n,
+                      vct_error *err) {
+    for (uint32_t k = 0; k < count; ++k) {
+        const float *v = &values[n * k];
+        const char *bad = NULL;
+        if (!isfinite(times[k]))
+            bad = "its time is not finite";
+        else if (k > 0 && !(times[k] > times[k - 1]))
+            bad = "its time is not after the key before's: key times must increase";
+        for (int c = 0; !bad && c < n; ++c)
+            if (!isfinite(v[c]))
+                bad = "a value is not finite";
+        if (!bad && n == 3 && strcmp(part, "scale") == 0 &&
+            (v[0] == 0.0f || v[1] == 0.0f || v[2] == 0.0f))
+            bad = "a scale of 0 collapses the node";
+        if (!bad && n == 4 && v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f && v[3] == 0.0f)
+            bad = "a rotation of length 0 is no rotation";
+        if (bad)
+            return vct_fail(err, VCT_ERR_INPUT,
+                            "scene %s: animation \"%s\", the channel of node \"%s\": %s key %u "
+                            "(at %g s): %s",
+                            s->source, animation, node, part, k, (double)times[k], bad);
+    }
+    return VCT_OK;
+}
+
+static int check_channel(const vct_scene *s, const char *animation, const char *node,
+                         const vct_animation_channel *c, vct_error *err) {
+    int rc = check_keys(s, animation, node, "translation", c->translation_times, c->translations,
+                        c->translation_keys, 3, err);
+    if (rc == VCT_OK)
+        rc = check_keys(s, animation, node, "rotation", c->rotation_times, c->rotations,
+                        c->rotation_keys, 4, err);
+    if (rc == VCT_OK)
+        rc = check_keys(s, animation, node, "scale", c->scale_times, c->scales, c->scale_keys, 3,
+                        err);
+    return rc;
+}
+
 /* The file's animations: name, duration and each channel's keys. */
 static int read_animations(const builder *b, const struct aiScene *sc, vct_scene *s,
                            vct_error *err) {
@@ -382,6 +425,10 @@ static int read_animations(const builder *b, const struct aiScene *sc, vct_scene
                                 "scene %s: animation \"%s\" moves node \"%s\", which the file "
                                 "does not have",
                                 s->source, info->name, an->mChannels[c]->mNodeName.data);
+            const int rc = check_channel(s, info->name, an->mChannels[c]->mNodeName.data,
+                                         &info->channel[c], err);
+            if (rc != VCT_OK)
+                return rc;
         }
         double last = 0.0;
         for (unsigned c = 0; c < an->mNumChannels; ++c) {
