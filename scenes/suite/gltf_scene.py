@@ -160,33 +160,27 @@ class Scene:
     def write(self, path):
         blob = bytearray()
         accessors, views, meshes, nodes = [], [], [], []
+
+        def accessor(fmt, items, kind, **extra):
+            """items packed into the blob as a view and an accessor: its index"""
+            offset = len(blob)
+            for item in items:
+                blob.extend(struct.pack(fmt, *(item if isinstance(item, tuple | list)
+                                               else (item,))))
+            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
+            accessors.append({"bufferView": len(views) - 1,
+                              "componentType": 5125 if fmt == "<I" else 5126,
+                              "count": len(items), "type": kind, **extra})
+            return len(accessors) - 1
+
         placed_nodes = {}  # mesh -> its nodes' indices, in placement order
         for material, pos, idx, uvs in self.meshes:
             lo = [min(p[k] for p in pos) for k in range(3)]
             hi = [max(p[k] for p in pos) for k in range(3)]
-            offset = len(blob)
-            for p in pos:
-                blob += struct.pack("<3f", *p)
-            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
-            accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
-                              "count": len(pos), "type": "VEC3", "min": lo, "max": hi})
-            offset = len(blob)
-            for i in idx:
-                blob += struct.pack("<I", i)
-            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
-            accessors.append({"bufferView": len(views) - 1, "componentType": 5125,
-                              "count": len(idx), "type": "SCALAR"})
-            attributes = {"POSITION": len(accessors) - 2}
-            indices = len(accessors) - 1
+            attributes = {"POSITION": accessor("<3f", pos, "VEC3", min=lo, max=hi)}
+            indices = accessor("<I", idx, "SCALAR")
             if uvs:
-                offset = len(blob)
-                for uv in uvs:
-                    blob += struct.pack("<2f", *uv)
-                views.append({"buffer": 0, "byteOffset": offset,
-                              "byteLength": len(blob) - offset})
-                accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
-                                  "count": len(uvs), "type": "VEC2"})
-                attributes["TEXCOORD_0"] = len(accessors) - 1
+                attributes["TEXCOORD_0"] = accessor("<2f", uvs, "VEC2")
             meshes.append({"primitives": [{"attributes": attributes, "indices": indices,
                                            "material": material}]})
             mesh = len(meshes) - 1
@@ -235,19 +229,8 @@ class Scene:
                           "rotation": _rotation_from_minus_z(fwd)})
         animations = []
         for name, mesh, placement, times, translations, rotations in self.animations:
-            offset = len(blob)
-            for t in times:
-                blob += struct.pack("<f", t)
-            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
-            accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
-                              "count": len(times), "type": "SCALAR",
-                              "min": [min(times)], "max": [max(times)]})
-            offset = len(blob)
-            for v in translations:
-                blob += struct.pack("<3f", *v)
-            views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
-            accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
-                              "count": len(translations), "type": "VEC3"})
+            times_accessor = accessor("<f", times, "SCALAR", min=[min(times)], max=[max(times)])
+            moves = accessor("<3f", translations, "VEC3")
             if mesh == "camera":
                 node = camera_node
             elif mesh == "light":
@@ -260,23 +243,14 @@ class Scene:
                 anim = {"name": name, "samplers": [], "channels": []}
                 animations.append(anim)
             samplers, channels = anim["samplers"], anim["channels"]
-            times_accessor = len(accessors) - 2
-            samplers.append({"input": times_accessor, "output": len(accessors) - 1,
-                             "interpolation": "LINEAR"})
-            channels.append({"sampler": len(samplers) - 1,
-                             "target": {"node": node, "path": "translation"}})
+            parts = [("translation", moves)]
             if rotations:
-                offset = len(blob)
-                for q in rotations:
-                    blob += struct.pack("<4f", *q)
-                views.append({"buffer": 0, "byteOffset": offset,
-                              "byteLength": len(blob) - offset})
-                accessors.append({"bufferView": len(views) - 1, "componentType": 5126,
-                                  "count": len(rotations), "type": "VEC4"})
-                samplers.append({"input": times_accessor, "output": len(accessors) - 1,
+                parts.append(("rotation", accessor("<4f", rotations, "VEC4")))
+            for part, values in parts:
+                samplers.append({"input": times_accessor, "output": values,
                                  "interpolation": "LINEAR"})
                 channels.append({"sampler": len(samplers) - 1,
-                                 "target": {"node": node, "path": "rotation"}})
+                                 "target": {"node": node, "path": part}})
         if animations:
             gltf["animations"] = animations
         # once everything, the animations' keys included, is in the blob
