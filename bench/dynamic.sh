@@ -95,6 +95,34 @@ print("| carried (`--light-carry`) | %.3f | %.3f | %.4f | %s |" % (
     ", ".join("%.4f" % nrmse(k) for k in range(48, (settled[0] if settled else 60) + 1))))
 PY
 )
+# One sphere of 64 (1.6 % of the triangles) moves: each stage's device time
+# for frame 12 alone (a full build and a frame) and for frames 12 and 13
+# (the same, then the update and a frame); the update is the difference.
+stage_table() { # file: "stage ms" lines from --stats' stage table
+    awk '$1 == "stage" && $2 == "device" { on = 1; next }
+         on && NF >= 5 && $(NF - 3) ~ /^[0-9.]+$/ {
+             name = $1; for (i = 2; i <= NF - 4; ++i) name = name " " $i
+             print name "\t" $(NF - 3); next }
+         on { on = 0 }' "$1"
+}
+./build/vct render scenes/instanced_spheres.gltf --method vct $size --frame 12 --stats \
+    -o "$work/one.pfm" >"$work/one.txt" 2>/dev/null
+./build/vct render scenes/instanced_spheres.gltf --method vct $size --frames 12:13 --stats \
+    -o "$work/two_%d.pfm" >"$work/two.txt" 2>/dev/null
+stage_table "$work/one.txt" >"$work/one.tsv"
+stage_table "$work/two.txt" >"$work/two.tsv"
+update_rows=$(awk -F '\t' 'NR == FNR { one[$1] = $2; next }
+    { full = one[$1]; upd = $2 - full
+      frame = $1 ~ /^vct / ? " (the frame)" : ""
+      ratio = full ? upd / full : 0
+      printf "| %s%s | %.1f | %.1f | %.2f |\n", $1, frame, full, upd, ratio }' \
+    "$work/one.tsv" "$work/two.tsv")
+# cone tracing at 512x512 while the sphere rolls: frames a second
+./build/vct render scenes/instanced_spheres.gltf --method vct --size 512 512 --frames 11:14 \
+    --stats -o "$work/big_%d.pfm" >/dev/null 2>"$work/big.txt"
+fps=$(awk '$1 == "frame" && $2 == "seconds" { on = 1; next }
+    on && $1 ~ /^[0-9]+$/ && NF == 7 { n++; if (n > 1) { s += $2; k++ } }
+    END { printf "%.2f s a frame, %.2f frames a second", s / k, k / s }' "$work/big.txt")
 # flicker between frames 12 and 13 of the roll
 for f in 12 13; do
     ./build/vct render scenes/instanced_spheres.gltf --method raycast $size --frame $f \
@@ -132,6 +160,17 @@ pt_flicker=$(flicker pt)
     echo "| voxelize + octree | bricks | direct light | bounces | frame |"
     echo "|---:|---:|---:|---:|---:|"
     echo "$stages"
+    echo
+    echo "One sphere of the 64 moves (1.6 % of the triangles): cone tracing's device time (ms)"
+    echo "by stage for a full build and its frame (frame 12 alone), and for the update that"
+    echo "follows it with its frame (frames 12 and 13, less frame 12 alone). The frame stages"
+    echo "(vct ...) run once in each. Ratio: the update over the full build."
+    echo
+    echo "| stage | full build | update | ratio |"
+    echo "|---|---:|---:|---:|"
+    echo "$update_rows"
+    echo
+    echo "Cone tracing at 512x512 while the sphere rolls (frames 12 to 14): $fps."
     echo
     echo "Light carried over frames (\`--light-carry\`) against every bounce gathered again, on"
     echo "the light of \`moving_camera.gltf\`, which moves until frame 48 and then stays: seconds"
