@@ -129,8 +129,49 @@ static void check_camera_and_light(void) {
     vct_scene_release(s);
 }
 
+/* glTF's STEP sampler holds each key until the next (an unnamed node's,
+ * matched as assimp names it); a LINEAR one beside it interpolates. */
+static void check_step_keys(void) {
+    vct_error err = {0};
+    vct_scene *s = check_scene_file("tests/load/inputs/load_step_keys.gltf");
+    const vct_animation_channel *c = s->animations[0].channel;
+    int stepped = -1, turned = -1;
+    for (uint32_t i = 0; i < s->animations[0].channels; ++i) {
+        if (c[i].translation_keys)
+            stepped = (int)i;
+        if (c[i].rotation_keys)
+            turned = (int)i;
+    }
+    if (stepped < 0 || turned < 0) {
+        CHECK(0, "step_keys: the two channels were not read");
+        vct_scene_release(s);
+        return;
+    }
+    CHECK(c[stepped].translation_step && !c[turned].rotation_step,
+          "step_keys: STEP read as %d, LINEAR as %d", c[stepped].translation_step,
+          c[turned].rotation_step);
+    uint32_t moved = 0;
+    while (moved < s->instance_count && s->instances[moved].node != c[stepped].node)
+        ++moved;
+    CHECK(moved < s->instance_count, "step_keys: no instance of the stepped node");
+    if (moved == s->instance_count) {
+        vct_scene_release(s);
+        return;
+    }
+    const double at[4] = {0.5, 0.999, 1.0, 1.5}, expect[4] = {0.0, 0.0, 1.0, 1.0};
+    for (int k = 0; k < 4; ++k) {
+        REQUIRE_OK(vct_scene_pose(s, 0, at[k], &err), err);
+        const float x = s->instances[moved].transform[3];
+        CHECK(fabsf(x - (float)expect[k]) < 1e-6f, "STEP keys at %g s: x %g, expected %g", at[k], x,
+              expect[k]);
+    }
+    printf("STEP keys held until the next (x 0 at 0.5 and 0.999 s, 1 at 1 and 1.5 s)\n");
+    vct_scene_release(s);
+}
+
 int main(void) {
     check_camera_and_light();
+    check_step_keys();
     check_pose_at(0.5, -4.2f);  /* halfway between the first two keys */
     check_pose_at(1.0, -3.5f);  /* on a key */
     check_pose_at(5.0, -4.9f);  /* after the last: held there */

@@ -113,6 +113,9 @@ typedef struct vct_node {
 typedef struct vct_animation_channel {
     uint32_t node;
     uint32_t translation_keys, rotation_keys, scale_keys;
+    /* 1 where the part's keys step (glTF's STEP sampler): each key held
+     * until the next, not interpolated */
+    uint8_t translation_step, rotation_step, scale_step;
     float *translation_times, *translations; /* 3 floats per key */
     float *rotation_times, *rotations;       /* 4 per key */
     float *scale_times, *scales;             /* 3 per key */

@@ -165,3 +165,54 @@ int vct_gltf_extensions_apply(const char *path, vct_scene *s, vct_error *err) {
     cJSON_Delete(root);
     return rc;
 }
+
+/* The name assimp gives glTF node n: its own, or "nodes[n]". */
+static void gltf_node_name(const cJSON *nodes, int n, char *out, size_t size) {
+    const cJSON *name = cJSON_GetObjectItemCaseSensitive(cJSON_GetArrayItem(nodes, n), "name");
+    if (cJSON_IsString(name) && name->valuestring[0])
+        snprintf(out, size, "%s", name->valuestring);
+    else
+        snprintf(out, size, "nodes[%d]", n);
+}
+
+void vct_gltf_sampler_steps(const char *path, vct_scene *s, const char *const *node_names) {
+    char *text = read_json(path);
+    cJSON *root = text ? cJSON_Parse(text) : NULL;
+    free(text);
+    if (!root)
+        return;
+    const cJSON *nodes = cJSON_GetObjectItemCaseSensitive(root, "nodes");
+    const cJSON *animations = cJSON_GetObjectItemCaseSensitive(root, "animations");
+    /* assimp keeps the file's animations in order */
+    for (uint32_t a = 0; a < s->animation_count; ++a) {
+        const cJSON *an = cJSON_GetArrayItem(animations, (int)a);
+        const cJSON *samplers = cJSON_GetObjectItemCaseSensitive(an, "samplers");
+        const cJSON *ch;
+        cJSON_ArrayForEach(ch, cJSON_GetObjectItemCaseSensitive(an, "channels")) {
+            const cJSON *index = cJSON_GetObjectItemCaseSensitive(ch, "sampler");
+            const cJSON *sampler =
+                cJSON_IsNumber(index) ? cJSON_GetArrayItem(samplers, index->valueint) : NULL;
+            const cJSON *mode = cJSON_GetObjectItemCaseSensitive(sampler, "interpolation");
+            const cJSON *target = cJSON_GetObjectItemCaseSensitive(ch, "target");
+            const cJSON *node = cJSON_GetObjectItemCaseSensitive(target, "node");
+            const cJSON *part = cJSON_GetObjectItemCaseSensitive(target, "path");
+            if (!cJSON_IsString(mode) || strcmp(mode->valuestring, "STEP") != 0 ||
+                !cJSON_IsNumber(node) || !cJSON_IsString(part))
+                continue;
+            char name[256];
+            gltf_node_name(nodes, node->valueint, name, sizeof name);
+            for (uint32_t c = 0; c < s->animations[a].channels; ++c) {
+                vct_animation_channel *mine = &s->animations[a].channel[c];
+                if (mine->node >= s->node_count || strcmp(node_names[mine->node], name) != 0)
+                    continue;
+                if (strcmp(part->valuestring, "translation") == 0)
+                    mine->translation_step = 1;
+                else if (strcmp(part->valuestring, "rotation") == 0)
+                    mine->rotation_step = 1;
+                else if (strcmp(part->valuestring, "scale") == 0)
+                    mine->scale_step = 1;
+            }
+        }
+    }
+    cJSON_Delete(root);
+}

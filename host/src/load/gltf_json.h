@@ -13,4 +13,10 @@ int vct_gltf_precheck(const char *path, vct_error *err);
  * extensions say and assimp left out; nothing for other formats. */
 int vct_gltf_extensions_apply(const char *path, vct_scene *s, vct_error *err);
 
+/* Marks the channels of s's animations whose glTF samplers step (STEP),
+ * which assimp 5.2 reads as keys without saying how they interpolate.
+ * node_names: each of s's nodes' names as assimp gave them (a glTF node
+ * without a name is "nodes[N]"). Nothing for other formats. */
+void vct_gltf_sampler_steps(const char *path, vct_scene *s, const char *const *node_names);
+
 #endif

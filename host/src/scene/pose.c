@@ -24,22 +24,26 @@ static void key_at(const float *times, uint32_t n, float t, uint32_t *i, float *
     *f = span > 0.0f ? (t - times[*i]) / span : 0.0f;
 }
 
-static void sample_vec3(const float *times, const float *values, uint32_t n, float t,
+static void sample_vec3(const float *times, const float *values, uint32_t n, float t, int step,
                         float out[3]) {
     uint32_t i;
     float f;
     key_at(times, n, t, &i, &f);
+    if (step)
+        f = 0.0f;
     for (int k = 0; k < 3; ++k)
         out[k] = f > 0.0f ? values[3 * i + k] + f * (values[3 * i + 3 + k] - values[3 * i + k])
                           : values[3 * i + k];
 }
 
 /* Spherical interpolation of unit quaternions (x y z w), the shorter way. */
-static void sample_quat(const float *times, const float *values, uint32_t n, float t,
+static void sample_quat(const float *times, const float *values, uint32_t n, float t, int step,
                         float out[4]) {
     uint32_t i;
     float f;
     key_at(times, n, t, &i, &f);
+    if (step)
+        f = 0.0f;
     const float *a = &values[4 * i];
     if (!(f > 0.0f)) {
         memcpy(out, a, 4 * sizeof(float));
@@ -158,11 +162,13 @@ vct_status vct_scene_pose(vct_scene *s, uint32_t animation, double seconds, vct_
         memcpy(q, node->rotation, sizeof q);
         memcpy(sc, node->scale, sizeof sc);
         if (ch->translation_keys)
-            sample_vec3(ch->translation_times, ch->translations, ch->translation_keys, t, tr);
+            sample_vec3(ch->translation_times, ch->translations, ch->translation_keys, t,
+                        ch->translation_step, tr);
         if (ch->rotation_keys)
-            sample_quat(ch->rotation_times, ch->rotations, ch->rotation_keys, t, q);
+            sample_quat(ch->rotation_times, ch->rotations, ch->rotation_keys, t, ch->rotation_step,
+                        q);
         if (ch->scale_keys)
-            sample_vec3(ch->scale_times, ch->scales, ch->scale_keys, t, sc);
+            sample_vec3(ch->scale_times, ch->scales, ch->scale_keys, t, ch->scale_step, sc);
         compose(tr, q, sc, &local[12 * ch->node]);
         moved[ch->node] = 1;
     }
