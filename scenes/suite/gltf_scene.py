@@ -81,7 +81,7 @@ class Scene:
     def quads(self, material, quads, textured=False, repeat=(1, 1)):
         """Each quad: four corners in order around it; textured: the texture
         over it repeat[0] x repeat[1] times, (0, 0) at its first corner,
-        (repeat[0], 0) at its second."""
+        (repeat[0], 0) at its second. Returns the mesh's index."""
         pos, idx, uvs = [], [], []
         ru, rv = repeat
         for q in quads:
@@ -89,7 +89,7 @@ class Scene:
             pos.extend(q)
             uvs.extend([(0, 0), (ru, 0), (ru, rv), (0, rv)])
             idx.extend([base, base + 1, base + 2, base, base + 2, base + 3])
-        self.mesh(material, pos, idx, uvs if textured else None)
+        return self.mesh(material, pos, idx, uvs if textured else None)
 
     def box(self, material, lo, hi, skip=()):
         """An axis-aligned box as six quads (faces named -x +x -y +y -z +z
@@ -103,7 +103,7 @@ class Scene:
             "-z": [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
             "+z": [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
         }
-        self.quads(material, [f for k, f in faces.items() if k not in skip])
+        return self.quads(material, [f for k, f in faces.items() if k not in skip])
 
     def sphere(self, material, centre, radius, rings=24, segments=48):
         pos, idx = [], []
