@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "cli_common.h"
+#include "cluster.h"
 
 int cli_fail_input(vct_error *err, const char *fmt, ...) {
     va_list ap;
@@ -20,7 +21,10 @@ int cli_fail_input(vct_error *err, const char *fmt, ...) {
 }
 
 int cli_fail(const vct_error *err) {
-    fprintf(stderr, "vct: %s\n", err->message);
+    const char *tag;
+    FILE *out = cli_cluster_errors(&tag);
+    fprintf(out, "vct%s: %s\n", tag, err->message);
+    fflush(out);
     return 1;
 }
 

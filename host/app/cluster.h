@@ -6,6 +6,8 @@
 #ifndef VCT_APP_CLUSTER_H
 #define VCT_APP_CLUSTER_H
 
+#include <stdio.h>
+
 #include "options.h"
 
 /* Joins the MPI job when an MPI launcher started this process (else does
@@ -14,6 +16,10 @@
 int cli_cluster_start(int *argc, char ***argv);
 /* Leaves the MPI job. */
 void cli_cluster_end(void);
+/* Where errors go: stderr, or a worker rank's own stderr (kept when the
+ * rest of its output is silenced); tag names the rank (" (rank 2 of 3)"),
+ * empty in one process. */
+FILE *cli_cluster_errors(const char **tag);
 int cli_cluster_rank(void);
 int cli_cluster_size(void); /* 1 outside an MPI job */
 /* The render across the ranks: a sequence dealt frame by frame, the path

@@ -78,6 +78,13 @@ void cli_cluster_end(void) {
     joined = 0;
 }
 
+FILE *cli_cluster_errors(const char **tag) {
+    static char name[48];
+    snprintf(name, sizeof name, size > 1 ? " (rank %d of %d)" : "", rank, size);
+    *tag = name;
+    return errors ? errors : stderr;
+}
+
 int cli_cluster_rank(void) {
     return rank;
 }

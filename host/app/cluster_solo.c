@@ -25,6 +25,11 @@ int cli_cluster_start(int *argc, char ***argv) {
 
 void cli_cluster_end(void) {}
 
+FILE *cli_cluster_errors(const char **tag) {
+    *tag = "";
+    return stderr;
+}
+
 int cli_cluster_rank(void) {
     return 0;
 }
