@@ -171,7 +171,7 @@ int cluster_render_sequence(member *m, const char *pattern) {
     /* rank 0 decides which frames are left (--resume looks at its files) */
     int rc = VCT_OK;
     if (m->rank == 0)
-        rc = cli_frames_todo(m->opt, m->scene, pattern, frames, &d.count, &err);
+        rc = cli_frames_left(m->opt, m->scene, pattern, frames, &d.count, &err);
     MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD);
     if (rc != VCT_OK) {
         free(frames);

@@ -85,7 +85,7 @@ static double now_s(void) {
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-int cli_frames_todo(const cli_options *opt, const vct_scene *s, const char *pattern, int *frames,
+int cli_frames_left(const cli_options *opt, const vct_scene *s, const char *pattern, int *frames,
                     int *count, vct_error *err) {
     char path[1024];
     *count = 0;
@@ -107,14 +107,18 @@ typedef struct frame_row {
     vct_device_scene_stats built; /* the device scene's counts during the frame */
 } frame_row;
 
-static void print_frame_table(const frame_row *rows, int count) {
+static void print_frame_table(const frame_row *rows, int count, int counted) {
     fprintf(stderr, "%-7s %9s %6s %10s %7s %6s %12s\n", "frame", "seconds", "BVH", "top level",
             "voxels", "light", "scene bytes");
     for (int k = 0; k < count; ++k) {
         const vct_device_scene_stats *b = &rows[k].built;
-        fprintf(stderr, "%-7d %9.3f %6u %10u %7u %6u %12llu\n", rows[k].frame, rows[k].seconds,
-                b->accel_builds, b->accel_moves, b->voxel_builds, b->light_builds,
-                (unsigned long long)b->scene_bytes);
+        if (counted)
+            fprintf(stderr, "%-7d %9.3f %6u %10u %7u %6u %12llu\n", rows[k].frame, rows[k].seconds,
+                    b->accel_builds, b->accel_moves, b->voxel_builds, b->light_builds,
+                    (unsigned long long)b->scene_bytes);
+        else
+            fprintf(stderr, "%-7d %9.3f %6s %10s %7s %6s %12s\n", rows[k].frame, rows[k].seconds,
+                    "-", "-", "-", "-", "-");
     }
     fprintf(stderr, "(built during each frame: BVHs, two-level top levels alone, voxels, their "
                     "light; scene data uploaded)\n");
@@ -130,8 +134,8 @@ static vct_device_scene_stats stats_since(const vct_device_scene_stats *a,
     return d;
 }
 
-int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, const cli_options *opt,
-                      vct_method method, const char *pattern, vct_error *err) {
+int cli_render_frames(const cli_options *opt, vct_scene *s, const char *pattern,
+                      const cli_frame_source *source, vct_error *err) {
     const int total = opt->frames[1] - opt->frames[0] + 1;
     int *frames = malloc(sizeof(int) * (size_t)total), count = 0;
     frame_row *rows = calloc((size_t)total, sizeof *rows);
@@ -140,7 +144,7 @@ int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, cons
         free(rows);
         return cli_fail_input(err, "vct render --frames: out of host memory");
     }
-    int rc = cli_frames_todo(opt, s, pattern, frames, &count, err);
+    int rc = cli_frames_left(opt, s, pattern, frames, &count, err);
     if (rc == VCT_OK && count < total)
         fprintf(stderr, "vct render --resume: %d of %d frames are there; rendering %d\n",
                 total - count, total, count);
@@ -149,14 +153,21 @@ int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, cons
     for (int k = 0; rc == VCT_OK && k < count; ++k) {
         const int f = frames[k];
         const double t0 = now_s();
-        vct_device_scene_stats before, after;
-        vct_device_scene_stats_get(ds, &before);
+        vct_device_scene_stats before = {0}, after = {0};
+        if (source->ds)
+            vct_device_scene_stats_get(source->ds, &before);
+        cli_frame frame;
         rc = vct_scene_pose(s, 0, (double)f / opt->fps, err);
         if (rc == VCT_OK)
             rc = cli_frame_path(pattern, f, path, sizeof path, err);
         if (rc == VCT_OK)
-            rc = cli_render_frame(ctx, ds, s, opt, method, path, err);
-        vct_device_scene_stats_get(ds, &after);
+            rc = source->make(source->user, &frame, err);
+        if (rc == VCT_OK) {
+            rc = cli_write_image(opt, &frame.image, &frame.layers, path, err);
+            cli_frame_release(&frame);
+        }
+        if (source->ds)
+            vct_device_scene_stats_get(source->ds, &after);
         rows[k] = (frame_row){f, now_s() - t0, stats_since(&before, &after)};
         if (rc == VCT_OK) {
             const double spent = now_s() - start, left = spent / (k + 1) * (count - k - 1);
@@ -165,7 +176,7 @@ int cli_render_frames(vct_context *ctx, vct_device_scene *ds, vct_scene *s, cons
         }
     }
     if (rc == VCT_OK && opt->stats)
-        print_frame_table(rows, count);
+        print_frame_table(rows, count, source->ds != NULL);
     free(frames);
     free(rows);
     return rc;

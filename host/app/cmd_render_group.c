@@ -2,7 +2,6 @@
  * the frame is split between them, and --stats says what each held, built
  * and did. */
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "cli_common.h"
@@ -87,32 +86,19 @@ int cli_devices_frame(vct_group *g, const vct_scene *s, const cli_options *opt, 
     return rc;
 }
 
-/* --frames on the group: each frame posed, prepared (each device's device
- * scene rebuilds what moved) and rendered. */
-static int render_frames(vct_group *g, vct_scene *s, const cli_options *opt, vct_method method,
-                         const vct_group_build *build, const char *pattern, vct_error *err) {
-    const int total = opt->frames[1] - opt->frames[0] + 1;
-    int *frames = malloc(sizeof(int) * (size_t)total), count = 0;
-    if (!frames)
-        return cli_fail_input(err, "vct render --frames: out of host memory");
-    int rc = cli_frames_todo(opt, s, pattern, frames, &count, err);
-    char path[1024];
-    for (int k = 0; rc == VCT_OK && k < count; ++k) {
-        cli_frame f;
-        rc = vct_scene_pose(s, 0, (double)frames[k] / opt->fps, err);
-        if (rc == VCT_OK)
-            rc = cli_frame_path(pattern, frames[k], path, sizeof path, err);
-        if (rc == VCT_OK)
-            rc = cli_devices_frame(g, s, opt, method, build, &f, err);
-        if (rc == VCT_OK) {
-            rc = cli_write_image(opt, &f.image, NULL, path, err);
-            fprintf(stderr, "frame %d (%.3f s): %s in %.2f s\n", frames[k],
-                    (double)frames[k] / opt->fps, path, f.result.seconds);
-            cli_frame_release(&f);
-        }
-    }
-    free(frames);
-    return rc;
+/* A sequence's frames on the group: each device's device scene rebuilds
+ * what a frame moved when the group is prepared again. */
+typedef struct group_frames {
+    vct_group *group;
+    const vct_scene *scene;
+    const cli_options *opt;
+    vct_method method;
+    const vct_group_build *build;
+} group_frames;
+
+static int group_frame(void *user, cli_frame *frame, vct_error *err) {
+    const group_frames *g = user;
+    return cli_devices_frame(g->group, g->scene, g->opt, g->method, g->build, frame, err);
 }
 
 int cli_render_group(const cli_options *opt, vct_scene *s, vct_method method, const char *out) {
@@ -136,7 +122,9 @@ int cli_render_group(const cli_options *opt, vct_scene *s, vct_method method, co
     cli_devices_build(opt, method, &plan, &build);
     int rc = VCT_OK;
     if (opt->frames[1] >= 0) {
-        rc = render_frames(g, s, opt, method, &build, out, &err);
+        group_frames frames = {g, s, opt, method, &build};
+        const cli_frame_source source = {group_frame, &frames, NULL};
+        rc = cli_render_frames(opt, s, out, &source, &err);
     } else {
         cli_frame f;
         rc = cli_devices_frame(g, s, opt, method, &build, &f, &err);

@@ -97,6 +97,20 @@ int cmd_info(const cli_options *opt) {
     return rc == VCT_OK ? 0 : cli_fail(&err);
 }
 
+/* A sequence's frames on one device, through its device scene. */
+typedef struct one_device {
+    vct_context *ctx;
+    vct_device_scene *ds;
+    const vct_scene *scene;
+    const cli_options *opt;
+    vct_method method;
+} one_device;
+
+static int one_device_frame(void *user, cli_frame *frame, vct_error *err) {
+    const one_device *d = user;
+    return cli_frame_make(d->ctx, d->ds, d->scene, d->opt, d->method, frame, err);
+}
+
 /* The render itself: one device, several, or several processes. */
 static int render(const cli_options *opt, vct_method method, const char *out);
 
@@ -160,9 +174,11 @@ static int render(const cli_options *opt, vct_method method, const char *out) {
     }
     vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
     int rc = ds ? VCT_OK : err.status;
-    if (rc == VCT_OK && opt->frames[1] >= 0)
-        rc = cli_render_frames(ctx, ds, s, opt, (vct_method)method, out, &err);
-    else if (rc == VCT_OK)
+    if (rc == VCT_OK && opt->frames[1] >= 0) {
+        one_device dev = {ctx, ds, s, opt, method};
+        const cli_frame_source source = {one_device_frame, &dev, ds};
+        rc = cli_render_frames(opt, s, out, &source, &err);
+    } else if (rc == VCT_OK)
         rc = cli_render_frame(ctx, ds, s, opt, (vct_method)method, out, &err);
     if (rc == VCT_OK) {
         rc = cli_print_accel(ctx, vct_device_scene_accel(ds), stderr, &err);

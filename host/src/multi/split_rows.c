@@ -105,17 +105,25 @@ static void active_shares(const vct_group *g, double *share) {
         share[i] = g->devices[i].active ? 1.0 : 0.0;
 }
 
+/* Where a range's rows go: rgba holds rows [first_row, first_row + rows)
+ * of an image width x height (the whole image, or a band of it). */
+typedef struct rows_target {
+    float *rgba;
+    int width, height, first_row, rows;
+} rows_target;
+
 static int render_range(vct_group *g, const vct_render_job *job, int first, int rows,
-                        vct_image *image, vct_render_result *result, int measure, vct_error *err);
+                        const rows_target *t, vct_render_result *result, int measure,
+                        vct_error *err);
 
 /* Band i's own rows into the image, what it did into the result, and with
  * `measure` its time into its speed. */
-static void take_band(vct_group *g, const rows_round *r, int i, vct_image *image,
+static void take_band(vct_group *g, const rows_round *r, int i, const rows_target *t,
                       vct_render_result *result, int measure) {
     const band b = r->bands[i];
     const size_t row_floats = 4 * (size_t)r->width;
     const int skip = b.first - rendered_rows(r, b).first;
-    memcpy(image->rgba + (size_t)b.first * row_floats,
+    memcpy(t->rgba + (size_t)(b.first - t->first_row) * row_floats,
            r->images[i].rgba + (size_t)skip * row_floats,
            (size_t)b.rows * row_floats * sizeof(float));
     result->traced += r->results[i].traced;
@@ -139,7 +147,7 @@ static void take_band(vct_group *g, const rows_round *r, int i, vct_image *image
  * stopped them all and the frame starts again without the device that
  * failed (the bands' grids must agree, pass after pass). */
 static int lockstep_outcome(vct_group *g, const vct_render_job *job, rows_round *r,
-                            vct_image *image, vct_render_result *result, vct_error *err) {
+                            const rows_target *t, vct_render_result *result, vct_error *err) {
     int failed = -1;
     for (int i = 0; i < g->count; ++i)
         if (r->bands[i].rows && r->rc[i] != VCT_OK && (failed < 0 || r->sync->culprit[i]))
@@ -163,32 +171,33 @@ static int lockstep_outcome(vct_group *g, const vct_render_job *job, rows_round 
         }
         vct_render_job fresh = *job;
         fresh.pm.resume = 0;
-        return render_range(g, &fresh, 0, image->height, image, result, 0, err);
+        return render_range(g, &fresh, t->first_row, t->rows, t, result, 0, err);
     }
-    g->pm_height = image->height;
+    g->pm_height = t->height;
     for (int i = 0; i < g->count; ++i) {
         const band b = r->bands[i];
         g->pm_first[i] = b.first;
         g->pm_rows[i] = b.rows;
         if (b.rows)
-            take_band(g, r, i, image, result, 1);
+            take_band(g, r, i, t, result, 1);
         vct_image_release(&r->images[i]);
     }
     return VCT_OK;
 }
 
-/* Renders rows [first, first + rows) of the image into `image`; measure:
+/* Renders rows [first, first + rows) of the image into `t`; measure:
  * this round's times set the devices' speeds. */
 static int render_range(vct_group *g, const vct_render_job *job, int first, int rows,
-                        vct_image *image, vct_render_result *result, int measure, vct_error *err) {
+                        const rows_target *t, vct_render_result *result, int measure,
+                        vct_error *err) {
     int align, above, below;
     vct_band_shape(job, &align, &above, &below);
     rows_round *r = calloc(1, sizeof *r);
     if (!r)
         return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
     r->job = job;
-    r->width = image->width;
-    r->height = image->height;
+    r->width = t->width;
+    r->height = t->height;
     r->halo_above = above;
     r->halo_below = below;
     double share[VCT_GROUP_MAX];
@@ -198,7 +207,7 @@ static int render_range(vct_group *g, const vct_render_job *job, int first, int 
     active_shares(g, share);
     /* The image's last row, when it is a row of square corners, is the
      * bottom edge of the squares above it: it goes with them, never alone. */
-    const int edge_row = below == 1 && first + rows == image->height && rows > 1;
+    const int edge_row = below == 1 && first + rows == t->height && rows > 1;
     const int unit_count = (rows - edge_row + align - 1) / align;
     vct_balance_split(g->count, share, unit_count, units);
     int at = first, last = -1;
@@ -226,7 +235,7 @@ render:;
     int rc = vct_group_each(g, render_band, r, err);
     if (r->sync) {
         vct_pass_sync_destroy(&sync);
-        rc = rc == VCT_OK ? lockstep_outcome(g, job, r, image, result, err) : rc;
+        rc = rc == VCT_OK ? lockstep_outcome(g, job, r, t, result, err) : rc;
         free(r);
         return rc;
     }
@@ -248,7 +257,7 @@ render:;
             last_failure = i;
             continue;
         }
-        take_band(g, r, i, image, result, measure);
+        take_band(g, r, i, t, result, measure);
     }
     for (int i = 0; i < g->count; ++i)
         vct_image_release(&r->images[i]);
@@ -258,7 +267,7 @@ render:;
     if (failures && vct_group_active_count(g) == 0)
         return err->status ? (int)err->status : VCT_ERR_OPENCL;
     for (int k = 0; rc == VCT_OK && k < failures; ++k)
-        rc = render_range(g, job, failed[k].first, failed[k].rows, image, result, 0, err);
+        rc = render_range(g, job, failed[k].first, failed[k].rows, t, result, 0, err);
     return rc;
 }
 
@@ -274,41 +283,36 @@ static uint64_t job_signature(const vct_render_job *job, int width, int height) 
 }
 
 /* A band of a taller image: the whole image's rows [band.first, band.first
- * + height) rendered as the group renders rows of a range, then cut out. */
+ * + height), rendered as the group renders rows of a range, straight into
+ * an image of the band's rows. */
 static int render_band_rows(vct_group *g, const vct_render_job *job, vct_image *image,
                             vct_render_result *result, vct_error *err) {
     vct_render_job whole = *job;
     whole.height = job->band.height;
     whole.band.first = whole.band.height = 0; /* pass_sync stays: render_range reads it */
     const int width = job->width, first = job->band.first, rows = job->height;
-    vct_image all = {0};
-    all.width = width;
-    all.height = whole.height;
-    all.rgba = malloc(16 * (size_t)width * (size_t)whole.height);
     image->rgba = malloc(16 * (size_t)width * (size_t)rows);
-    int rc = all.rgba && image->rgba ? VCT_OK
-                                     : vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+    if (!image->rgba)
+        return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
+    image->width = width;
+    image->height = rows;
+    const rows_target t = {image->rgba, width, whole.height, first, rows};
     vct_render_result sum;
     memset(&sum, 0, sizeof sum);
     const double t0 = vct_now_ms();
-    if (rc == VCT_OK)
-        rc = render_range(g, &whole, first, rows, &all, &sum, 1, err);
-    if (rc == VCT_OK) {
-        image->width = width;
-        image->height = rows;
-        memcpy(image->rgba, all.rgba + 4 * (size_t)width * first, 16 * (size_t)width * rows);
-    } else {
+    const int rc = render_range(g, &whole, first, rows, &t, &sum, 1, err);
+    if (rc != VCT_OK) {
         vct_image_release(image);
+        return rc;
     }
-    vct_image_release(&all);
-    if (rc == VCT_OK && result) {
+    if (result) {
         *result = sum;
         result->method = job->method;
         result->width = width;
         result->height = rows;
         result->seconds = (vct_now_ms() - t0) * 1e-3;
     }
-    return rc;
+    return VCT_OK;
 }
 
 int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *image,
@@ -333,8 +337,9 @@ int vct_group_render_rows(vct_group *g, const vct_render_job *job, vct_image *im
     int rc = image->rgba ? VCT_OK : vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");
     for (int i = 0; i < g->count; ++i)
         g->devices[i].last_ms = g->devices[i].last_work = 0.0;
+    const rows_target t = {image->rgba, width, height, 0, height};
     if (rc == VCT_OK)
-        rc = render_range(g, job, 0, height, image, &sum, 1, err);
+        rc = render_range(g, job, 0, height, &t, &sum, 1, err);
     if (rc != VCT_OK) {
         vct_image_release(image);
         return rc;

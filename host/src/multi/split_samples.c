@@ -105,10 +105,8 @@ static int host_sums(sample_run *s, uint64_t *sum, size_t bytes, uint32_t *disca
     for (int i = 0; rc == VCT_OK && i < g->count; ++i) {
         if (!g->devices[i].active || !s->began[i])
             continue;
-        cl_uint dropped = 0;
-        rc = vct_buffer_read(g->ctx[i], STAGE, s->pt[i].acc->pt_sums, 0, bytes, part, err);
-        if (rc == VCT_OK)
-            rc = vct_buffer_read(g->ctx[i], STAGE, s->pt[i].acc->pt_discarded, 0, 4, &dropped, err);
+        uint32_t dropped = 0;
+        rc = vct_pt_sums_read(&s->pt[i], part, &dropped, err);
         if (rc == VCT_OK)
             vct_sample_sums_add_words(sum, part, bytes / 16);
         *discarded += dropped;

@@ -63,6 +63,22 @@ static int kernel_name_of(cl_kernel kernel, char *name, size_t size) {
     return clGetKernelInfo(kernel, CL_KERNEL_FUNCTION_NAME, size, name, NULL);
 }
 
+/* The enqueue both launch shapes end in: the fault switches, the launch,
+ * the slowdown a test asked for, and the event recorded for the stage. */
+static int enqueue(vct_context *ctx, cl_kernel kernel, const char *name, cl_uint dims,
+                   const size_t *global, const size_t *local, vct_error *err) {
+    cl_event ev = NULL;
+    const char *stage = ctx->current_stage >= 0 ? ctx->stages[ctx->current_stage].name : name;
+    double slow = 0.0;
+    if (launch_switches(ctx, stage, &slow, err) != VCT_OK)
+        return err->status;
+    const double start_ms = vct_now_ms();
+    VCT_CL(err, stage,
+           clEnqueueNDRangeKernel(ctx->queue, kernel, dims, NULL, global, local, 0, NULL, &ev));
+    launch_slowdown(ctx, ev, slow, start_ms);
+    return vct_record_event(ctx, ev, name, err);
+}
+
 int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, vct_error *err) {
     char name[64];
     kernel_name_of(kernel, name, sizeof name);
@@ -80,17 +96,7 @@ int vct_launch(vct_context *ctx, cl_kernel kernel, size_t global, size_t local, 
             local = most;
     }
     global = (global + local - 1) / local * local;
-    cl_event ev = NULL;
-    const char *stage = ctx->current_stage >= 0 ? ctx->stages[ctx->current_stage].name : name;
-    double slow = 0.0;
-    if (launch_switches(ctx, stage, &slow, err) != VCT_OK)
-        return err->status;
-    const double start_ms = vct_now_ms();
-    VCT_CL(err, stage,
-           clEnqueueNDRangeKernel(ctx->queue, kernel, 1, NULL, &global, local ? &local : NULL, 0,
-                                  NULL, &ev));
-    launch_slowdown(ctx, ev, slow, start_ms);
-    return vct_record_event(ctx, ev, name, err);
+    return enqueue(ctx, kernel, name, 1, &global, local ? &local : NULL, err);
 }
 
 int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global_in[2],
@@ -102,16 +108,7 @@ int vct_launch_2d(vct_context *ctx, cl_kernel kernel, const size_t global_in[2],
         return VCT_OK;
     for (int i = 0; local && i < 2; ++i)
         global[i] = (global[i] + local[i] - 1) / local[i] * local[i];
-    cl_event ev = NULL;
-    const char *stage = ctx->current_stage >= 0 ? ctx->stages[ctx->current_stage].name : name;
-    double slow = 0.0;
-    if (launch_switches(ctx, stage, &slow, err) != VCT_OK)
-        return err->status;
-    const double start_ms = vct_now_ms();
-    VCT_CL(err, stage,
-           clEnqueueNDRangeKernel(ctx->queue, kernel, 2, NULL, global, local, 0, NULL, &ev));
-    launch_slowdown(ctx, ev, slow, start_ms);
-    return vct_record_event(ctx, ev, name, err);
+    return enqueue(ctx, kernel, name, 2, global, local, err);
 }
 
 static int set_args_v(vct_error *err, const char *stage, cl_kernel kernel, int first, int count,
