@@ -6,7 +6,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 PACKAGES="build-essential cmake pkg-config ocl-icd-opencl-dev opencl-c-headers pocl-opencl-icd
-clinfo libcglm-dev libassimp-dev libcjson-dev libxxhash-dev libopenmpi-dev openmpi-bin libstb-dev libembree-dev libopenexr-dev gnuplot-nox
+clinfo libcglm-dev libassimp-dev libcjson-dev libxxhash-dev libb64-dev libopenmpi-dev openmpi-bin libstb-dev libembree-dev libopenexr-dev gnuplot-nox
 python3 python3-pip python3-numpy python3-pil python3-pyopencl python3-openvdb
 libglfw3-dev libxrandr-dev libepoxy-dev xvfb xauth libgl1-mesa-dri"
 missing=""

@@ -51,6 +51,12 @@ expect_failure "a key that is not a number" 'nan_key.gltf: animation "bad", the 
     render nan_key.gltf --frame 3 -o out.png
 expect_failure "key times out of order" "key times must increase" render unordered.gltf -o out.png
 expect_failure "a scale of 0" "scale key 1 (at 1 s): a scale of 0" render zero_scale.gltf -o out.png
+python3 "${VCT_SOURCE_DIR:-.}/tests/load/make_cubic_animation.py" .
+expect_failure "a cubic tangent that is not a number" \
+    'cubic_nan_tangent.gltf: animation "splines", the translation channel of node "nodes\[0\]": key 0: a tangent is not finite' \
+    render cubic_nan_tangent.gltf -o out.png
+expect_failure "a cubic spline without its tangents" "sampler 0: 2 values for 2 keys: a cubic spline has 3 a key" \
+    render cubic_short.gltf -o out.png
 expect_failure "a channel naming no node" 'out of bounds (1) for "nodes"' render no_node.gltf \
     -o out.png
 expect_failure "bad output name" "must end in .exr, .pfm or .png" render ok.obj -o out.jpg

@@ -169,9 +169,52 @@ static void check_step_keys(void) {
     vct_scene_release(s);
 }
 
+/* glTF's CUBICSPLINE samplers follow their tangents (assimp keeps only the
+ * values): x from 1 at 0 s to 4 at 2 s, out-tangent 3, in-tangent 5, is
+ * 1.84375 at 0.5 s and 2 at 1 s (a line would give 1.75 and 2.5); a turn
+ * from 0 to 90 degrees with zero tangents, its quaternion's spline
+ * normalised, is 13.21 degrees at 0.25 s (a slerp: 22.5). The buffers read
+ * three ways: embedded, a file beside, a .glb's binary chunk. */
+static void check_cubic_keys(const char *file) {
+    vct_error err = {0};
+    vct_scene *s = check_scene_file(file);
+    uint32_t moved = UINT32_MAX, turned = UINT32_MAX;
+    for (uint32_t i = 0; i < s->instance_count; ++i) {
+        if (s->instances[i].transform[3] == 3.0f)
+            turned = i;
+        else
+            moved = i;
+    }
+    if (moved == UINT32_MAX || turned == UINT32_MAX) {
+        CHECK(0, "%s: the moved and the turned instances were not found", file);
+        vct_scene_release(s);
+        return;
+    }
+    const double at[4] = {0.5, 1.0, 2.0, 3.0}, expect[4] = {1.84375, 2.0, 4.0, 4.0};
+    for (int k = 0; k < 4; ++k) {
+        REQUIRE_OK(vct_scene_pose(s, 0, at[k], &err), err);
+        const float x = s->instances[moved].transform[3];
+        CHECK(fabs(x - expect[k]) < 1e-5, "%s: cubic spline at %g s: x %.6f, expected %g", file,
+              at[k], x, expect[k]);
+    }
+    const double h = sqrt(0.5), y = 0.15625 * h, w = 0.84375 + 0.15625 * h;
+    const double expect_deg = 2.0 * atan2(y, w) * 57.29577951308232;
+    REQUIRE_OK(vct_scene_pose(s, 0, 0.25, &err), err);
+    const float *m = s->instances[turned].transform;
+    const double deg = atan2(m[2], m[0]) * 57.29577951308232;
+    CHECK(fabs(deg - expect_deg) < 1e-3,
+          "%s: cubic rotation at 0.25 s: %.4f degrees, expected %.4f", file, deg, expect_deg);
+    printf("%s: cubic splines follow their tangents (x %.5f at 0.5 s; %.3f degrees at 0.25 s)\n",
+           file, expect[0], expect_deg);
+    vct_scene_release(s);
+}
+
 int main(void) {
     check_camera_and_light();
     check_step_keys();
+    check_cubic_keys("tests/load/inputs/cubic_keys.gltf");
+    check_cubic_keys("tests/load/inputs/cubic_keys_bin.gltf");
+    check_cubic_keys("tests/load/inputs/cubic_keys.glb");
     check_pose_at(0.5, -4.2f);  /* halfway between the first two keys */
     check_pose_at(1.0, -3.5f);  /* on a key */
     check_pose_at(5.0, -4.9f);  /* after the last: held there */

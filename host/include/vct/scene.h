@@ -108,8 +108,9 @@ typedef struct vct_node {
 
 /* What an animation does to one node: keys of its translation, rotation
  * (x y z w) and scale, each at times in seconds, interpolated linearly
- * (rotations spherically) and held before the first key and after the
- * last. A part without keys stays at rest. */
+ * (rotations spherically), stepped, or along cubic Hermite splines, and
+ * held before the first key and after the last. A part without keys stays
+ * at rest. */
 typedef struct vct_animation_channel {
     uint32_t node;
     uint32_t translation_keys, rotation_keys, scale_keys;
@@ -119,6 +120,10 @@ typedef struct vct_animation_channel {
     float *translation_times, *translations; /* 3 floats per key */
     float *rotation_times, *rotations;       /* 4 per key */
     float *scale_times, *scales;             /* 3 per key */
+    /* glTF's CUBICSPLINE: per key its in-tangent, then its out-tangent
+     * (2 x 3 or 2 x 4 floats, in units per second); NULL for other parts.
+     * A cubic rotation is normalised after the spline. */
+    float *translation_tangents, *rotation_tangents, *scale_tangents;
 } vct_animation_channel;
 
 /* A camera or light that a node of the file carries, in that node's space,

@@ -3,6 +3,7 @@
  * KHR_materials_emissive_strength (the factor on emissiveFactor, which the
  * core format limits to 1). Materials are matched by index, as assimp
  * imports them in order, and by name where the names disagree. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 
 #include <cjson/cJSON.h>
 
+#include "load/gltf_buffers.h"
 #include "load/gltf_json.h"
 
 /* The file's JSON: a whole .gltf, or a .glb's first chunk. NULL if neither. */
@@ -97,6 +99,39 @@ static int glb_without_header(const char *path) {
     return !ok;
 }
 
+static int accessor_count(const cJSON *root, const cJSON *index) {
+    const cJSON *acc = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(root, "accessors"),
+                                          cJSON_IsNumber(index) ? index->valueint : -1);
+    const cJSON *count = cJSON_GetObjectItemCaseSensitive(acc, "count");
+    return cJSON_IsNumber(count) ? count->valueint : -1;
+}
+
+/* A CUBICSPLINE sampler's output holds three values a key; assimp 5.2
+ * reads that many whatever the accessor holds. */
+static int check_cubic_samplers(const char *path, const cJSON *root, vct_error *err) {
+    const cJSON *an;
+    cJSON_ArrayForEach(an, cJSON_GetObjectItemCaseSensitive(root, "animations")) {
+        const cJSON *name = cJSON_GetObjectItemCaseSensitive(an, "name"), *sampler;
+        int i = 0;
+        cJSON_ArrayForEach(sampler, cJSON_GetObjectItemCaseSensitive(an, "samplers")) {
+            const cJSON *mode = cJSON_GetObjectItemCaseSensitive(sampler, "interpolation");
+            const int keys =
+                accessor_count(root, cJSON_GetObjectItemCaseSensitive(sampler, "input"));
+            const int values =
+                accessor_count(root, cJSON_GetObjectItemCaseSensitive(sampler, "output"));
+            if (cJSON_IsString(mode) && strcmp(mode->valuestring, "CUBICSPLINE") == 0 &&
+                (keys < 0 || values != 3 * keys))
+                return vct_fail(err, VCT_ERR_INPUT,
+                                "scene %s: animation \"%s\", sampler %d: %d values for %d keys: a "
+                                "cubic spline has 3 a key (in-tangent, value, out-tangent)",
+                                path, cJSON_IsString(name) ? name->valuestring : "", i, values,
+                                keys);
+            ++i;
+        }
+    }
+    return VCT_OK;
+}
+
 int vct_gltf_precheck(const char *path, vct_error *err) {
     if (glb_without_header(path))
         return vct_fail(err, VCT_ERR_INPUT,
@@ -125,6 +160,8 @@ int vct_gltf_precheck(const char *path, vct_error *err) {
             ++i;
         }
     }
+    if (rc == VCT_OK)
+        rc = check_cubic_samplers(path, root, err);
     cJSON_Delete(root);
     return rc;
 }
@@ -175,16 +212,81 @@ static void gltf_node_name(const cJSON *nodes, int n, char *out, size_t size) {
         snprintf(out, size, "nodes[%d]", n);
 }
 
-void vct_gltf_sampler_steps(const char *path, vct_scene *s, const char *const *node_names) {
+/* The in- and out-tangents of a CUBICSPLINE sampler whose output accessor
+ * holds (in-tangent, value, out-tangent) for each of `keys` keys. */
+static int read_tangents(vct_gltf_buffers *buffers, const cJSON *sampler, uint32_t keys, int n,
+                         float **tangents, vct_error *err) {
+    float *triples = NULL;
+    uint32_t count = 0;
+    const cJSON *output = cJSON_GetObjectItemCaseSensitive(sampler, "output");
+    int rc = vct_gltf_accessor_floats(buffers, cJSON_IsNumber(output) ? output->valueint : -1, n,
+                                      &triples, &count, err);
+    if (rc != VCT_OK)
+        return rc;
+    if (count != 3 * keys) {
+        free(triples);
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%u values for %u keys: a cubic spline has 3 a key (in-tangent, value, "
+                        "out-tangent)",
+                        count, keys);
+    }
+    free(*tangents);
+    *tangents = malloc(sizeof(float) * 2 * n * (keys + 1));
+    if (!*tangents) {
+        free(triples);
+        return vct_fail(err, VCT_ERR_MEMORY, "out of host memory");
+    }
+    for (uint32_t k = 0; k < keys; ++k)
+        for (int c = 0; c < n; ++c) {
+            const float in = triples[(3 * k) * n + c], out = triples[(3 * k + 2) * n + c];
+            if (!isfinite(in) || !isfinite(out)) {
+                free(triples);
+                return vct_fail(err, VCT_ERR_INPUT, "key %u: a tangent is not finite", k);
+            }
+            (*tangents)[2 * n * k + c] = in;
+            (*tangents)[2 * n * k + n + c] = out;
+        }
+    free(triples);
+    return VCT_OK;
+}
+
+/* The glTF sampler of one channel of one part of `mine`, as its mode says. */
+static int apply_sampler(vct_gltf_buffers *buffers, const cJSON *sampler, const char *part,
+                         vct_animation_channel *mine, vct_error *err) {
+    const cJSON *mode = cJSON_GetObjectItemCaseSensitive(sampler, "interpolation");
+    const int step = cJSON_IsString(mode) && strcmp(mode->valuestring, "STEP") == 0;
+    const int cubic = cJSON_IsString(mode) && strcmp(mode->valuestring, "CUBICSPLINE") == 0;
+    if (strcmp(part, "translation") == 0) {
+        mine->translation_step = (uint8_t)step;
+        if (cubic)
+            return read_tangents(buffers, sampler, mine->translation_keys, 3,
+                                 &mine->translation_tangents, err);
+    } else if (strcmp(part, "rotation") == 0) {
+        mine->rotation_step = (uint8_t)step;
+        if (cubic)
+            return read_tangents(buffers, sampler, mine->rotation_keys, 4, &mine->rotation_tangents,
+                                 err);
+    } else if (strcmp(part, "scale") == 0) {
+        mine->scale_step = (uint8_t)step;
+        if (cubic)
+            return read_tangents(buffers, sampler, mine->scale_keys, 3, &mine->scale_tangents, err);
+    }
+    return VCT_OK;
+}
+
+int vct_gltf_sampler_modes(const char *path, vct_scene *s, const char *const *node_names,
+                           vct_error *err) {
     char *text = read_json(path);
     cJSON *root = text ? cJSON_Parse(text) : NULL;
     free(text);
     if (!root)
-        return;
+        return VCT_OK;
+    vct_gltf_buffers *buffers = vct_gltf_buffers_open(path, root);
+    int rc = buffers ? VCT_OK : vct_fail(err, VCT_ERR_MEMORY, "scene %s: out of host memory", path);
     const cJSON *nodes = cJSON_GetObjectItemCaseSensitive(root, "nodes");
     const cJSON *animations = cJSON_GetObjectItemCaseSensitive(root, "animations");
     /* assimp keeps the file's animations in order */
-    for (uint32_t a = 0; a < s->animation_count; ++a) {
+    for (uint32_t a = 0; rc == VCT_OK && a < s->animation_count; ++a) {
         const cJSON *an = cJSON_GetArrayItem(animations, (int)a);
         const cJSON *samplers = cJSON_GetObjectItemCaseSensitive(an, "samplers");
         const cJSON *ch;
@@ -192,27 +294,31 @@ void vct_gltf_sampler_steps(const char *path, vct_scene *s, const char *const *n
             const cJSON *index = cJSON_GetObjectItemCaseSensitive(ch, "sampler");
             const cJSON *sampler =
                 cJSON_IsNumber(index) ? cJSON_GetArrayItem(samplers, index->valueint) : NULL;
-            const cJSON *mode = cJSON_GetObjectItemCaseSensitive(sampler, "interpolation");
             const cJSON *target = cJSON_GetObjectItemCaseSensitive(ch, "target");
             const cJSON *node = cJSON_GetObjectItemCaseSensitive(target, "node");
             const cJSON *part = cJSON_GetObjectItemCaseSensitive(target, "path");
-            if (!cJSON_IsString(mode) || strcmp(mode->valuestring, "STEP") != 0 ||
-                !cJSON_IsNumber(node) || !cJSON_IsString(part))
+            if (!sampler || !cJSON_IsNumber(node) || !cJSON_IsString(part))
                 continue;
             char name[256];
             gltf_node_name(nodes, node->valueint, name, sizeof name);
-            for (uint32_t c = 0; c < s->animations[a].channels; ++c) {
+            for (uint32_t c = 0; rc == VCT_OK && c < s->animations[a].channels; ++c) {
                 vct_animation_channel *mine = &s->animations[a].channel[c];
                 if (mine->node >= s->node_count || strcmp(node_names[mine->node], name) != 0)
                     continue;
-                if (strcmp(part->valuestring, "translation") == 0)
-                    mine->translation_step = 1;
-                else if (strcmp(part->valuestring, "rotation") == 0)
-                    mine->rotation_step = 1;
-                else if (strcmp(part->valuestring, "scale") == 0)
-                    mine->scale_step = 1;
+                rc = apply_sampler(buffers, sampler, part->valuestring, mine, err);
+                if (rc != VCT_OK) {
+                    char why[sizeof err->message];
+                    snprintf(why, sizeof why, "%s", err->message);
+                    rc = vct_fail(err, rc,
+                                  "scene %s: animation \"%s\", the %s channel of node \"%s\": %s",
+                                  path, s->animations[a].name, part->valuestring, name, why);
+                }
             }
+            if (rc != VCT_OK)
+                break;
         }
     }
+    vct_gltf_buffers_close(buffers);
     cJSON_Delete(root);
+    return rc;
 }

@@ -626,7 +626,7 @@ vct_scene *vct_scene_load(const char *path, vct_error *err) {
     if (rc == VCT_OK)
         rc = read_animations(&b, sc, s, err);
     if (rc == VCT_OK && s->animation_count)
-        vct_gltf_sampler_steps(path, s, b.node_names);
+        rc = vct_gltf_sampler_modes(path, s, b.node_names, err);
     if (rc == VCT_OK && s->triangle_count == 0)
         rc = vct_fail(err, VCT_ERR_INPUT, "scene %s: no triangles to render (%u meshes)", path,
                       sc->mNumMeshes);

@@ -24,21 +24,33 @@ static void key_at(const float *times, uint32_t n, float t, uint32_t *i, float *
     *f = span > 0.0f ? (t - times[*i]) / span : 0.0f;
 }
 
-static void sample_vec3(const float *times, const float *values, uint32_t n, float t, int step,
-                        float out[3]) {
+/* glTF's cubic Hermite spline between keys i and i+1 at fraction f, for
+ * component c of n: the values and the out-tangent of i and in-tangent of
+ * i+1, scaled by the keys' spacing (tangents: in, out per key). */
+static float hermite(const float *times, const float *values, const float *tangents, uint32_t i,
+                     float f, int n, int c) {
+    const double s = f, s2 = s * s, s3 = s2 * s, span = (double)times[i + 1] - times[i];
+    const double out_i = tangents[2 * n * i + n + c], in_next = tangents[2 * n * (i + 1) + c];
+    return (float)((2 * s3 - 3 * s2 + 1) * values[n * i + c] + span * (s3 - 2 * s2 + s) * out_i +
+                   (-2 * s3 + 3 * s2) * values[n * (i + 1) + c] + span * (s3 - s2) * in_next);
+}
+
+static void sample_vec3(const float *times, const float *values, const float *tangents, uint32_t n,
+                        float t, int step, float out[3]) {
     uint32_t i;
     float f;
     key_at(times, n, t, &i, &f);
     if (step)
         f = 0.0f;
     for (int k = 0; k < 3; ++k)
-        out[k] = f > 0.0f ? values[3 * i + k] + f * (values[3 * i + 3 + k] - values[3 * i + k])
-                          : values[3 * i + k];
+        out[k] = !(f > 0.0f) ? values[3 * i + k]
+                 : tangents  ? hermite(times, values, tangents, i, f, 3, k)
+                             : values[3 * i + k] + f * (values[3 * i + 3 + k] - values[3 * i + k]);
 }
 
 /* Spherical interpolation of unit quaternions (x y z w), the shorter way. */
-static void sample_quat(const float *times, const float *values, uint32_t n, float t, int step,
-                        float out[4]) {
+static void sample_quat(const float *times, const float *values, const float *tangents, uint32_t n,
+                        float t, int step, float out[4]) {
     uint32_t i;
     float f;
     key_at(times, n, t, &i, &f);
@@ -47,6 +59,20 @@ static void sample_quat(const float *times, const float *values, uint32_t n, flo
     const float *a = &values[4 * i];
     if (!(f > 0.0f)) {
         memcpy(out, a, 4 * sizeof(float));
+        return;
+    }
+    if (tangents) { /* the spline, then normalised (glTF 2.0, appendix C) */
+        double q[4], len = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            q[k] = hermite(times, values, tangents, i, f, 4, k);
+            len += q[k] * q[k];
+        }
+        if (!(len > 1e-12)) { /* tangents that pass through no rotation: hold the key */
+            memcpy(out, a, 4 * sizeof(float));
+            return;
+        }
+        for (int k = 0; k < 4; ++k)
+            out[k] = (float)(q[k] / sqrt(len));
         return;
     }
     const float *b = &values[4 * i + 4];
@@ -162,13 +188,14 @@ vct_status vct_scene_pose(vct_scene *s, uint32_t animation, double seconds, vct_
         memcpy(q, node->rotation, sizeof q);
         memcpy(sc, node->scale, sizeof sc);
         if (ch->translation_keys)
-            sample_vec3(ch->translation_times, ch->translations, ch->translation_keys, t,
-                        ch->translation_step, tr);
+            sample_vec3(ch->translation_times, ch->translations, ch->translation_tangents,
+                        ch->translation_keys, t, ch->translation_step, tr);
         if (ch->rotation_keys)
-            sample_quat(ch->rotation_times, ch->rotations, ch->rotation_keys, t, ch->rotation_step,
-                        q);
+            sample_quat(ch->rotation_times, ch->rotations, ch->rotation_tangents, ch->rotation_keys,
+                        t, ch->rotation_step, q);
         if (ch->scale_keys)
-            sample_vec3(ch->scale_times, ch->scales, ch->scale_keys, t, ch->scale_step, sc);
+            sample_vec3(ch->scale_times, ch->scales, ch->scale_tangents, ch->scale_keys, t,
+                        ch->scale_step, sc);
         compose(tr, q, sc, &local[12 * ch->node]);
         moved[ch->node] = 1;
     }

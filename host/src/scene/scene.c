@@ -42,6 +42,9 @@ void vct_scene_release(vct_scene *scene) {
             free(ch->rotations);
             free(ch->scale_times);
             free(ch->scales);
+            free(ch->translation_tangents);
+            free(ch->rotation_tangents);
+            free(ch->scale_tangents);
         }
         free(an->channel);
     }
