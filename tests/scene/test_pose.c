@@ -5,6 +5,7 @@
  * keeps its transform and vertices bit for bit, and bad requests (another
  * animation, a NaN time, a NaN key) are refused with the scene unchanged. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -209,9 +210,42 @@ static void check_cubic_keys(const char *file) {
     vct_scene_release(s);
 }
 
+/* Keys that are equal hold the node still bit for bit between them: a
+ * rotation blended with itself and normalised could round to another float
+ * (a still camera that moved by an ulp changed a still sequence's pixels). */
+static void check_equal_keys_hold(void) {
+    vct_error err = {0};
+    vct_scene *s = check_scene_file("scenes/instanced_spheres.gltf");
+    vct_animation_channel *c = &s->animations[0].channel[0];
+    free(c->rotation_times);
+    free(c->rotations);
+    c->rotation_keys = 2;
+    c->rotation_times = malloc(2 * sizeof(float));
+    c->rotations = malloc(8 * sizeof(float));
+    const float q[4] = {0.1f, 0.3f, 0.2f, 0.92736f}; /* as stored: a few ulps off unit length */
+    c->rotation_times[0] = 0.0f;
+    c->rotation_times[1] = 1.0f;
+    memcpy(c->rotations, q, sizeof q);
+    memcpy(c->rotations + 4, q, sizeof q);
+    const uint32_t moved = animated_instance(s);
+    float first[12];
+    REQUIRE_OK(vct_scene_pose(s, 0, 0.0, &err), err);
+    memcpy(first, s->instances[moved].transform, sizeof first);
+    int differ = 0;
+    for (int k = 1; k < 10; ++k) {
+        REQUIRE_OK(vct_scene_pose(s, 0, 0.1 * k, &err), err);
+        for (int j = 0; j < 12; ++j)
+            differ += j % 4 != 3 && s->instances[moved].transform[j] != first[j];
+    }
+    CHECK(differ == 0, "equal rotation keys: %d rotation entries differ between 0 and 1 s", differ);
+    printf("equal rotation keys hold the node's turn bit for bit between them\n");
+    vct_scene_release(s);
+}
+
 int main(void) {
     check_camera_and_light();
     check_step_keys();
+    check_equal_keys_hold();
     check_cubic_keys("tests/load/inputs/cubic_keys.gltf");
     check_cubic_keys("tests/load/inputs/cubic_keys_bin.gltf");
     check_cubic_keys("tests/load/inputs/cubic_keys.glb");

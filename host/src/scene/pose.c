@@ -57,7 +57,9 @@ static void sample_quat(const float *times, const float *values, const float *ta
     if (step)
         f = 0.0f;
     const float *a = &values[4 * i];
-    if (!(f > 0.0f)) {
+    /* equal keys hold exactly: a blend of a with itself, normalised, may
+     * round to another float and turn the node by an ulp */
+    if (!(f > 0.0f) || memcmp(a, a + 4, 4 * sizeof(float)) == 0) {
         memcpy(out, a, 4 * sizeof(float));
         return;
     }
