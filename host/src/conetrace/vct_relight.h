@@ -19,4 +19,17 @@ int vct_vct_relight(vct_context *ctx, const vct_scene *s, const vct_accel *g, vc
 int vct_vct_relight_carry(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
                           const vct_cone_settings *cs, int inject_direct, vct_error *err);
 
+/* New voxels for a scene whose geometry moved, their light carried over
+ * from `before` (the voxels of the frame before): direct light injected
+ * anew, then one bounce gathered through before's bricks, where the light
+ * of every bounce of the frame before is. Repeated renders then settle it
+ * with vct_vct_relight_carry. Where before's volume frame or bricks differ
+ * (the scene's bounds grew, other settings), every bounce is gathered as
+ * vct_vct_prepare does, and *carried says 0. */
+vct_status vct_vct_prepare_carry(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                                 const vct_plan *plan, const vct_voxel_options *vo,
+                                 const vct_brick_options *bo, uint32_t bounces,
+                                 const vct_cone_settings *cs, const vct_voxels *before,
+                                 vct_voxels **out, int *carried, vct_error *err);
+
 #endif

@@ -71,9 +71,12 @@ static int keep_direct(vct_context *ctx, vct_voxels *v, vct_error *err) {
 
 /* One bounce; `refresh` 0 leaves the bricks' radiance to the rest of the
  * bounces that follows (v->radiance_stale), which filters it once. */
+/* One bounce into v's voxels, gathered by cones through `light`'s bricks:
+ * v's own, or the voxels of the frame before (the same volume frame) whose
+ * light a moved scene carries over. */
 static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
-                         const vct_cone_settings *cs, uint32_t diffuse_cones, int refresh,
-                         vct_error *err) {
+                         const vct_voxels *light, const vct_cone_settings *cs,
+                         uint32_t diffuse_cones, int refresh, vct_error *err) {
     if (!v->radiance || !v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT,
                         "%s: inject light into built bricks first (vct_bricks_build, "
@@ -88,7 +91,7 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
         rc = keep_direct(ctx, v, err);
     cl_program p;
     char options[256];
-    vct_cone_options(v, cs, options, sizeof options);
+    vct_cone_options(light, cs, options, sizeof options);
     /* the accel's options too: rays test the sky */
     snprintf(options + strlen(options), sizeof options - strlen(options), " %s",
              vct_accel_program_options(g));
@@ -97,11 +100,11 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
     cl_mem cones = rc == VCT_OK ? cone_buffer(ctx, diffuse_cones, BOUNCE_STAGE, err) : NULL;
     cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
     vct_cone_desc desc;
-    vct_cone_desc_make(v, cs, s->ambient, &desc);
+    vct_cone_desc_make(light, cs, s->ambient, &desc);
     int next = 5; /* after ACCEL_ARGS */
     rc = k ? vct_accel_set_args(k, g, BOUNCE_STAGE, err) : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_cone_set_args(k, v, &desc, BOUNCE_STAGE, &next, err);
+        rc = vct_cone_set_args(k, light, &desc, BOUNCE_STAGE, &next, err);
     if (rc == VCT_OK)
         rc = vct_set_args(err, BOUNCE_STAGE, k, next, 9, VCT_ARG_OF(cones),
                           VCT_ARG(cone_count, diffuse_cones), VCT_ARG_OF(v->keys),
@@ -131,7 +134,7 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
 vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                     vct_voxels *v, const vct_cone_settings *cs,
                                     uint32_t diffuse_cones, vct_error *err) {
-    return inject_bounce(ctx, s, g, v, cs, diffuse_cones, 1, err);
+    return inject_bounce(ctx, s, g, v, v, cs, diffuse_cones, 1, err);
 }
 
 /* The bounces after direct light: the last bounce's radiance is filtered
@@ -140,7 +143,7 @@ static int light_bounces(vct_context *ctx, const vct_scene *s, const vct_accel *
                          const vct_cone_settings *cs, uint32_t bounces, vct_error *err) {
     int rc = VCT_OK;
     for (uint32_t b = 1; rc == VCT_OK && b < bounces; ++b)
-        rc = inject_bounce(ctx, s, g, v, cs, 6, b + 1 < bounces || !v->bounce_rest, err);
+        rc = inject_bounce(ctx, s, g, v, v, cs, 6, b + 1 < bounces || !v->bounce_rest, err);
     return rc == VCT_OK ? vct_voxels_bounce_rest(ctx, v, err) : (vct_status)rc;
 }
 
@@ -151,11 +154,25 @@ static int check_bounces(uint32_t bounces, vct_error *err) {
     return VCT_OK;
 }
 
-vct_status vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                           const vct_plan *plan, const vct_voxel_options *vo,
-                           const vct_brick_options *bo, uint32_t bounces,
-                           const vct_cone_settings *cs, vct_voxels **out, vct_error *err) {
+/* 1 when a's bricks can be read for b's voxels: the same volume frame,
+ * resolution and brick layout, and light in a's bricks. */
+static int same_frame(const vct_voxels *a, const vct_voxels *b) {
+    return a->has_bricks && a->radiance_ready && !a->radiance_stale &&
+           a->info.resolution == b->info.resolution && a->info.side == b->info.side &&
+           memcmp(a->info.origin, b->info.origin, sizeof a->info.origin) == 0 &&
+           a->brick_info.anisotropic == b->brick_info.anisotropic &&
+           a->brick_info.image == b->brick_info.image;
+}
+
+/* New voxels, lit: every bounce, or (carry_from) one bounce gathered from
+ * the light the voxels before held. *carried: which was done. */
+static vct_status prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                          const vct_plan *plan, const vct_voxel_options *vo,
+                          const vct_brick_options *bo, uint32_t bounces,
+                          const vct_cone_settings *cs, const vct_voxels *carry_from,
+                          vct_voxels **out, int *carried, vct_error *err) {
     *out = NULL;
+    *carried = 0;
     if (!vct_plan_needs_voxels(plan))
         return VCT_OK;
     if (check_bounces(bounces, err) != VCT_OK)
@@ -175,14 +192,38 @@ vct_status vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel
     bricks.radiance_later = 0;
     if (rc == VCT_OK)
         rc = vct_bricks_build(ctx, v, &bricks, err);
-    if (rc == VCT_OK && lit)
+    if (rc == VCT_OK && lit && carry_from && same_frame(carry_from, v)) {
+        /* the light carried holds the higher bounces: no rest of the series */
+        const int rest = v->bounce_rest;
+        v->bounce_rest = 0;
+        rc = inject_bounce(ctx, s, g, v, carry_from, cs, 6, 1, err);
+        v->bounce_rest = rest;
+        *carried = 1;
+    } else if (rc == VCT_OK && lit) {
         rc = light_bounces(ctx, s, g, v, cs, bounces, err);
+    }
     if (rc != VCT_OK) {
         vct_voxels_release(v);
         return rc;
     }
     *out = v;
     return VCT_OK;
+}
+
+vct_status vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                           const vct_plan *plan, const vct_voxel_options *vo,
+                           const vct_brick_options *bo, uint32_t bounces,
+                           const vct_cone_settings *cs, vct_voxels **out, vct_error *err) {
+    int carried;
+    return prepare(ctx, s, g, plan, vo, bo, bounces, cs, NULL, out, &carried, err);
+}
+
+vct_status vct_vct_prepare_carry(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                                 const vct_plan *plan, const vct_voxel_options *vo,
+                                 const vct_brick_options *bo, uint32_t bounces,
+                                 const vct_cone_settings *cs, const vct_voxels *before,
+                                 vct_voxels **out, int *carried, vct_error *err) {
+    return prepare(ctx, s, g, plan, vo, bo, bounces, cs, before, out, carried, err);
 }
 
 int vct_vct_relight(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
@@ -202,7 +243,7 @@ int vct_vct_relight_carry(vct_context *ctx, const vct_scene *s, const vct_accel 
     if (inject_direct) /* else the direct light kept from the injection before */
         rc = vct_voxels_inject_light_kept(ctx, s, g, v, err);
     if (rc == VCT_OK)
-        rc = inject_bounce(ctx, s, g, v, cs, 6, 1, err);
+        rc = inject_bounce(ctx, s, g, v, v, cs, 6, 1, err);
     v->bounce_rest = rest;
     return rc;
 }

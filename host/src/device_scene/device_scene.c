@@ -38,6 +38,9 @@ struct vct_device_scene {
     vct_accel *accel;
     vct_accel_options accel_key;
     vct_voxels *voxels; /* NULL: none built, or the last plan needed none */
+    /* The voxels a change of geometry or materials left, kept until the next
+     * render that needs voxels: a job that carries light gathers from them. */
+    vct_voxels *voxels_before;
     voxel_key voxel_key;
     light_key light_key;
     int light_stale;         /* the lights changed since the voxels' light was made */
@@ -86,6 +89,20 @@ static void drop_voxels(vct_device_scene *ds) {
     ds->light_settling = 0;
 }
 
+/* The voxels out of date, kept aside for their light (voxels_before). */
+static void set_voxels_aside(vct_device_scene *ds) {
+    vct_voxels_release(ds->voxels_before);
+    ds->voxels_before = ds->voxels;
+    ds->voxels = NULL;
+    ds->light_stale = 0;
+    ds->light_settling = 0;
+}
+
+static void drop_voxels_before(vct_device_scene *ds) {
+    vct_voxels_release(ds->voxels_before);
+    ds->voxels_before = NULL;
+}
+
 vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
     vct_scene_digest now;
     vct_scene_digest_make(ds->scene, &now);
@@ -119,7 +136,7 @@ vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
         ds->accel = NULL;
     }
     if (changed & shape)
-        drop_voxels(ds);
+        set_voxels_aside(ds);
     else if (changed & VCT_CHANGED_LIGHTS)
         ds->light_stale = 1;
     /* the camera is read at each render; nothing holds it */
@@ -213,13 +230,28 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
         return VCT_OK;
     }
     drop_voxels(ds);
-    const int rc = vct_vct_prepare(ds->ctx, ds->scene, ds->accel, plan, &vk.voxel, &vk.bricks,
-                                   job->bounces, &job->vct.cones, &ds->voxels, err);
+    /* geometry moved: carried, the light of the voxels before, gathered
+     * once into the new ones, then settled a bounce a render as above */
+    vct_voxels *before = ds->voxels_before;
+    ds->voxels_before = NULL;
+    const int carry_before = job->light_carry && before && lk.lit && same_settings &&
+                             memcmp(&vk, &ds->voxel_key, sizeof vk) == 0;
+    int carried = 0;
+    const int rc = carry_before
+                       ? vct_vct_prepare_carry(ds->ctx, ds->scene, ds->accel, plan, &vk.voxel,
+                                               &vk.bricks, job->bounces, &job->vct.cones, before,
+                                               &ds->voxels, &carried, err)
+                       : vct_vct_prepare(ds->ctx, ds->scene, ds->accel, plan, &vk.voxel, &vk.bricks,
+                                         job->bounces, &job->vct.cones, &ds->voxels, err);
+    vct_voxels_release(before);
     if (rc != VCT_OK || !ds->voxels)
         return rc;
     ds->voxel_key = vk;
     ds->light_key = lk;
-    ds->light_ratio = vct_voxels_bounce_ratio(ds->voxels);
+    if (carried)
+        ds->light_settling = carry_bounces(ds->light_ratio, lk.bounces) - 1;
+    else
+        ds->light_ratio = vct_voxels_bounce_ratio(ds->voxels);
     ++ds->stats.voxel_builds;
     ds->stats.light_builds += (uint32_t)lk.lit;
     return VCT_OK;
@@ -254,6 +286,8 @@ static int prepare(vct_device_scene *ds, const vct_render_job *job, const job_ne
         rc = need_accel(ds, &job->accel_options, err);
     if (rc == VCT_OK && n->voxels)
         rc = need_voxels(ds, job, &n->voxel_plan, err);
+    else
+        drop_voxels_before(ds); /* a job without voxels: their light is of no use */
     return rc;
 }
 
@@ -266,6 +300,7 @@ int vct_device_scene_prepare(vct_device_scene *ds, const vct_render_job *job, vc
 void vct_device_scene_adopt_voxels(vct_device_scene *ds, vct_voxels *voxels,
                                    const vct_device_scene *from) {
     drop_voxels(ds);
+    drop_voxels_before(ds);
     ds->voxels = voxels;
     ds->voxel_key = from->voxel_key;
     ds->light_key = from->light_key;
@@ -313,6 +348,7 @@ void vct_device_scene_release(vct_device_scene *ds) {
         return;
     vct_context *ctx = ds->ctx;
     drop_voxels(ds);
+    drop_voxels_before(ds);
     drop_accumulation(ds);
     vct_accel_release(ds->accel);
     vct_emitters_release_resident(ctx, &ds->resident);
