@@ -6,7 +6,7 @@
 
 /* The kernel interface's version: bumped whenever an entry point's
  * arguments, a buffer layout or the meaning of a -D option changes. */
-#define VCT_KERNEL_ABI_VERSION 14
+#define VCT_KERNEL_ABI_VERSION 15
 
 #ifdef __OPENCL_VERSION__
 typedef float4 vct_f4;
@@ -95,6 +95,8 @@ typedef vct_f4 vct_hit_desc;
 #define VCT_VOXEL_MAX_LEVELS 10
 /* float4s per voxel in the sides array (voxel/voxel_side.h) */
 #define VCT_VOXEL_SIDE_FLOAT4S 2
+/* A voxel with no counterpart (kernels/voxel/voxel_carry.h). */
+#define VCT_NO_VOXEL 0xffffffffu
 
 typedef struct vct_volume_desc {
     vct_f4 origin; /* xyz: world position of the cube's minimum corner; w = side length */

@@ -50,11 +50,25 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
                             __global const vct_cone_dir *cones, uint cone_count,
                             __global const uint *keys, uint voxels, __global const float4 *albedo,
                             __global const float4 *direct, __global const float4 *direct_side,
-                            __global float4 *voxel_radiance, __global float4 *side) {
+                            __global float4 *voxel_radiance, __global float4 *side,
+                            __global const uint *carried_from,
+                            __global const float4 *before_radiance,
+                            __global const float4 *before_side, uint carry_every,
+                            uint carry_phase) {
     const accel_view acc = ACCEL_VIEW();
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
+    /* carried light gathered over carry_every renders: a voxel whose direct
+     * light was carried and whose turn it is not keeps all its light before */
+    if (carry_every > 0u && carried_from[v] != VCT_NO_VOXEL &&
+        (keys[v] * 2654435761u) % carry_every != carry_phase) {
+        const uint from = carried_from[v];
+        voxel_radiance[v] = before_radiance[from];
+        for (uint k = 0; k < VCT_VOXEL_SIDE_FLOAT4S; ++k)
+            side[VCT_VOXEL_SIDE_FLOAT4S * v + k] = before_side[VCT_VOXEL_SIDE_FLOAT4S * from + k];
+        return;
+    }
     const float voxel = cd.volume.w / (float)cd.res.x;
     const float3 centre = cd.volume.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * voxel;
     __global const float4 *sides = direct_side + VCT_VOXEL_SIDE_FLOAT4S * v;

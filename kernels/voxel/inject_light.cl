@@ -26,6 +26,7 @@
 #include "voxel/fragment_albedo.h"
 #include "light/light_bins.h"
 #include "voxel/octree.h"
+#include "voxel/voxel_carry.h"
 #include "voxel/voxel_side.h"
 #include "vct_types.h"
 
@@ -169,6 +170,37 @@ inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
     return irradiance / (float)e->samples;
 }
 
+/* Per new voxel, the voxel before at its key whose direct light it keeps
+ * (carried_from; the light copied into radiance and side), or
+ * VCT_NO_VOXEL where it is new or what moved can reach it (inject_direct
+ * lights those). before_*: the direct light of the voxels before. */
+__kernel void carry_direct(vct_volume_desc vol, __global const uint *keys, uint voxels,
+                           __global const uint *before_keys, uint before_voxels,
+                           __global const float4 *before_radiance,
+                           __global const float4 *before_side, __global const float4 *boxes,
+                           uint box_count, __global const vct_light_desc *lights,
+                           uint light_count, float4 emit_lo, float4 emit_hi,
+                           __global uint *carried_from, __global float4 *radiance,
+                           __global float4 *side) {
+    const uint v = get_global_id(0);
+    if (v >= voxels)
+        return;
+    const float size = vol.origin.w / (float)vol.res.x;
+    const float3 p = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * size;
+    uint from = carry_find(before_keys, before_voxels, keys[v]);
+    if (from != VCT_NO_VOXEL &&
+        carry_dirty(p, 2.0f * size, boxes, box_count, lights, light_count, emit_lo, emit_hi))
+        from = VCT_NO_VOXEL;
+    carried_from[v] = from;
+    if (from == VCT_NO_VOXEL)
+        return;
+    radiance[v] = before_radiance[from];
+    for (uint k = 0; k < VCT_VOXEL_SIDE_FLOAT4S; ++k)
+        side[VCT_VOXEL_SIDE_FLOAT4S * v + k] = before_side[VCT_VOXEL_SIDE_FLOAT4S * from + k];
+}
+
+/* carry 1: voxels with a voxel before (carried_from) keep the light
+ * carry_direct copied. */
 __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                             __global const uint *keys, uint voxels,
                             __global const uint *voxel_start, __global const uint *fragment_tri,
@@ -176,9 +208,10 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                             __global const uint *tri_material, __global const float4 *albedo,
                             __global const float4 *emission, __global const vct_light_desc *lights,
                             uint light_count, EMITTER_ARGS, TEXTURE_ARGS, __global float4 *radiance,
-                            __global const float4 *normal, __global float4 *side) {
+                            __global const float4 *normal, __global float4 *side,
+                            __global const uint *carried_from, uint carry) {
     const uint v = get_global_id(0);
-    if (v >= voxels)
+    if (v >= voxels || (carry && carried_from[v] != VCT_NO_VOXEL))
         return;
     const accel_view g = ACCEL_VIEW();
     const light_bins_view bins = LIGHT_BINS_VIEW();

@@ -69,14 +69,16 @@ static int keep_direct(vct_context *ctx, vct_voxels *v, vct_error *err) {
                                      &v->direct_side, 16 * VCT_VOXEL_SIDE_FLOAT4S * n, err);
 }
 
-/* One bounce; `refresh` 0 leaves the bricks' radiance to the rest of the
- * bounces that follows (v->radiance_stale), which filters it once. */
 /* One bounce into v's voxels, gathered by cones through `light`'s bricks:
- * v's own, or the voxels of the frame before (the same volume frame) whose
- * light a moved scene carries over. */
+ * v's own, or (carry) the voxels before, whose light a moved scene carries
+ * over; then a carried voxel keeps its light before until its turn to
+ * gather comes (carry->every). `refresh` 0 leaves the bricks' radiance to
+ * the rest of the bounces that follows (v->radiance_stale), which filters
+ * it once. */
 static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
-                         const vct_voxels *light, const vct_cone_settings *cs,
+                         const vct_voxel_carry *carry, const vct_cone_settings *cs,
                          uint32_t diffuse_cones, int refresh, vct_error *err) {
+    const vct_voxels *light = carry ? carry->before : v;
     if (!v->radiance || !v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT,
                         "%s: inject light into built bricks first (vct_bricks_build, "
@@ -111,6 +113,14 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
                           VCT_ARG(voxels, n), VCT_ARG_OF(v->albedo),
                           VCT_ARG(direct, v->direct_radiance), VCT_ARG_OF(v->direct_side),
                           VCT_ARG(voxel_radiance, v->radiance), VCT_ARG_OF(v->side));
+    /* without carried light carry_every is 0 and the buffers never read */
+    cl_mem carried_from = carry ? carry->carried_from : v->radiance;
+    const cl_uint carry_every = carry ? carry->every : 0u, carry_phase = carry ? carry->phase : 0u;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, BOUNCE_STAGE, k, next + 9, 5, VCT_ARG_OF(carried_from),
+                          VCT_ARG(before_radiance, light->radiance),
+                          VCT_ARG(before_side, light->side), VCT_ARG_OF(carry_every),
+                          VCT_ARG_OF(carry_phase));
     if (rc == VCT_OK)
         rc = vct_bounce_rest_keep(ctx, v, err);
     if (rc == VCT_OK)
@@ -134,7 +144,7 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
 vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                     vct_voxels *v, const vct_cone_settings *cs,
                                     uint32_t diffuse_cones, vct_error *err) {
-    return inject_bounce(ctx, s, g, v, v, cs, diffuse_cones, 1, err);
+    return inject_bounce(ctx, s, g, v, NULL, cs, diffuse_cones, 1, err);
 }
 
 /* The bounces after direct light: the last bounce's radiance is filtered
@@ -143,7 +153,7 @@ static int light_bounces(vct_context *ctx, const vct_scene *s, const vct_accel *
                          const vct_cone_settings *cs, uint32_t bounces, vct_error *err) {
     int rc = VCT_OK;
     for (uint32_t b = 1; rc == VCT_OK && b < bounces; ++b)
-        rc = inject_bounce(ctx, s, g, v, v, cs, 6, b + 1 < bounces || !v->bounce_rest, err);
+        rc = inject_bounce(ctx, s, g, v, NULL, cs, 6, b + 1 < bounces || !v->bounce_rest, err);
     return rc == VCT_OK ? vct_voxels_bounce_rest(ctx, v, err) : (vct_status)rc;
 }
 
@@ -154,23 +164,29 @@ static int check_bounces(uint32_t bounces, vct_error *err) {
     return VCT_OK;
 }
 
-/* 1 when a's bricks can be read for b's voxels: the same volume frame,
- * resolution and brick layout, and light in a's bricks. */
+/* 1 when b's voxels can take a's light: the same volume frame, and light
+ * in a's voxels. */
 static int same_frame(const vct_voxels *a, const vct_voxels *b) {
-    return a->has_bricks && a->radiance_ready && !a->radiance_stale &&
-           a->info.resolution == b->info.resolution && a->info.side == b->info.side &&
-           memcmp(a->info.origin, b->info.origin, sizeof a->info.origin) == 0 &&
+    return a->radiance && a->side && a->info.resolution == b->info.resolution &&
+           a->info.side == b->info.side &&
+           memcmp(a->info.origin, b->info.origin, sizeof a->info.origin) == 0;
+}
+
+/* 1 when cones for b's voxels can march through a's bricks. */
+static int same_bricks(const vct_voxels *a, const vct_voxels *b) {
+    return a->has_bricks && a->radiance_ready && !a->radiance_stale && b->has_bricks &&
            a->brick_info.anisotropic == b->brick_info.anisotropic &&
            a->brick_info.image == b->brick_info.image;
 }
 
-/* New voxels, lit: every bounce, or (carry_from) one bounce gathered from
- * the light the voxels before held. *carried: which was done. */
+/* New voxels, lit: every bounce, or (carry) direct light kept from the
+ * voxels before where nothing that moved reaches and one bounce gathered
+ * from their light. *carried: which was done. */
 static vct_status prepare(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                           const vct_plan *plan, const vct_voxel_options *vo,
                           const vct_brick_options *bo, uint32_t bounces,
-                          const vct_cone_settings *cs, const vct_voxels *carry_from,
-                          vct_voxels **out, int *carried, vct_error *err) {
+                          const vct_cone_settings *cs, vct_voxel_carry *carry, vct_voxels **out,
+                          int *carried, vct_error *err) {
     *out = NULL;
     *carried = 0;
     if (!vct_plan_needs_voxels(plan))
@@ -181,26 +197,33 @@ static vct_status prepare(vct_context *ctx, const vct_scene *s, const vct_accel 
     if (v)
         v->emitters_by_cones = plan->emitters_by_cones;
     int rc = v ? vct_octree_build(ctx, v, err) : err->status;
+    if (carry && v && !same_frame(carry->before, v))
+        carry = NULL; /* the scene's bounds moved the voxels: nothing to carry */
     /* Light first, into the voxels: the bricks then build and filter every
      * channel in one pass (1.2x faster than re-filtering radiance after). */
     const int lit = vct_plan_needs_voxel_light(plan);
     if (rc == VCT_OK && lit)
-        rc = vct_voxels_inject_light(ctx, s, g, v, err);
+        rc = carry ? vct_voxels_inject_light_carried(ctx, s, g, v, carry, err)
+                   : (int)vct_voxels_inject_light(ctx, s, g, v, err);
     vct_brick_options bricks = {VCT_BRICKS_AUTO, 0, 0};
     if (bo)
         bricks = *bo;
     bricks.radiance_later = 0;
     if (rc == VCT_OK)
         rc = vct_bricks_build(ctx, v, &bricks, err);
-    if (rc == VCT_OK && lit && carry_from && same_frame(carry_from, v)) {
+    if (rc == VCT_OK && lit && carry && same_bricks(carry->before, v)) {
         /* the light carried holds the higher bounces: no rest of the series */
         const int rest = v->bounce_rest;
         v->bounce_rest = 0;
-        rc = inject_bounce(ctx, s, g, v, carry_from, cs, 6, 1, err);
+        rc = inject_bounce(ctx, s, g, v, carry, cs, 6, 1, err);
         v->bounce_rest = rest;
         *carried = 1;
     } else if (rc == VCT_OK && lit) {
         rc = light_bounces(ctx, s, g, v, cs, bounces, err);
+    }
+    if (carry) {
+        vct_buffer_release(ctx, carry->carried_from);
+        carry->carried_from = NULL;
     }
     if (rc != VCT_OK) {
         vct_voxels_release(v);
@@ -221,9 +244,9 @@ vct_status vct_vct_prepare(vct_context *ctx, const vct_scene *s, const vct_accel
 vct_status vct_vct_prepare_carry(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                  const vct_plan *plan, const vct_voxel_options *vo,
                                  const vct_brick_options *bo, uint32_t bounces,
-                                 const vct_cone_settings *cs, const vct_voxels *before,
+                                 const vct_cone_settings *cs, vct_voxel_carry *carry,
                                  vct_voxels **out, int *carried, vct_error *err) {
-    return prepare(ctx, s, g, plan, vo, bo, bounces, cs, before, out, carried, err);
+    return prepare(ctx, s, g, plan, vo, bo, bounces, cs, carry, out, carried, err);
 }
 
 int vct_vct_relight(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
@@ -243,7 +266,7 @@ int vct_vct_relight_carry(vct_context *ctx, const vct_scene *s, const vct_accel 
     if (inject_direct) /* else the direct light kept from the injection before */
         rc = vct_voxels_inject_light_kept(ctx, s, g, v, err);
     if (rc == VCT_OK)
-        rc = inject_bounce(ctx, s, g, v, v, cs, 6, 1, err);
+        rc = inject_bounce(ctx, s, g, v, NULL, cs, 6, 1, err);
     v->bounce_rest = rest;
     return rc;
 }

@@ -7,6 +7,7 @@
 
 #include "accel/accel.h"
 #include "device_scene/device_scene_prepare.h"
+#include "device_scene/moved_region.h"
 #include "device_scene/scene_digest.h"
 #include "light/emitters.h"
 #include "conetrace/vct_relight.h"
@@ -41,6 +42,8 @@ struct vct_device_scene {
     /* The voxels a change of geometry or materials left, kept until the next
      * render that needs voxels: a job that carries light gathers from them. */
     vct_voxels *voxels_before;
+    vct_moved_region moved; /* what moved since the voxels were built */
+    uint32_t carry_renders; /* geometry carried so far: whose turn it is to gather */
     voxel_key voxel_key;
     light_key light_key;
     int light_stale;         /* the lights changed since the voxels' light was made */
@@ -72,6 +75,7 @@ vct_device_scene *vct_device_scene_create(vct_context *ctx, const vct_scene *sce
     ds->resident.next = ctx->resident;
     ctx->resident = &ds->resident;
     vct_scene_digest_make(scene, &ds->digest);
+    vct_moved_region_init(&ds->moved, scene);
     ds->stats.commits = 1;
     return ds;
 }
@@ -112,6 +116,7 @@ vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
         return VCT_OK;
     ++ds->stats.changes;
     drop_accumulation(ds);
+    vct_moved_region_note(&ds->moved, ds->scene, changed);
     const int masks_changed = now.masks != ds->digest.masks;
     ds->digest = now;
     vct_context *ctx = ds->ctx;
@@ -237,9 +242,13 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
     const int carry_before = job->light_carry && before && lk.lit && same_settings &&
                              memcmp(&vk, &ds->voxel_key, sizeof vk) == 0;
     int carried = 0;
+    vct_voxel_carry moved = {before, 0, {{{0}}}, VCT_CARRY_EVERY, 0, NULL};
+    moved.phase = ds->carry_renders++ % VCT_CARRY_EVERY;
+    vct_moved_region_boxes(&ds->moved, &moved);
+    vct_moved_region_clear(&ds->moved);
     const int rc = carry_before
                        ? vct_vct_prepare_carry(ds->ctx, ds->scene, ds->accel, plan, &vk.voxel,
-                                               &vk.bricks, job->bounces, &job->vct.cones, before,
+                                               &vk.bricks, job->bounces, &job->vct.cones, &moved,
                                                &ds->voxels, &carried, err)
                        : vct_vct_prepare(ds->ctx, ds->scene, ds->accel, plan, &vk.voxel, &vk.bricks,
                                          job->bounces, &job->vct.cones, &ds->voxels, err);
@@ -349,6 +358,7 @@ void vct_device_scene_release(vct_device_scene *ds) {
     vct_context *ctx = ds->ctx;
     drop_voxels(ds);
     drop_voxels_before(ds);
+    vct_moved_region_release(&ds->moved);
     drop_accumulation(ds);
     vct_accel_release(ds->accel);
     vct_emitters_release_resident(ctx, &ds->resident);

@@ -53,6 +53,26 @@ struct vct_voxels {
     cl_mem brick_window;
 };
 
+/* Light carried from the voxels before into new ones after geometry moved
+ * (kernels/voxel/voxel_carry.h): the world boxes that moved (before and
+ * after), and how many renders the carried bounce is spread over. */
+#define VCT_CARRY_BOXES 16
+/* The carried bounce is gathered by a voxel in VCT_CARRY_EVERY at each
+ * render (and by every voxel lit anew). */
+#define VCT_CARRY_EVERY 4
+typedef struct vct_voxel_carry {
+    const vct_voxels *before;
+    uint32_t box_count;
+    cl_float4 boxes[2 * VCT_CARRY_BOXES]; /* lo, hi */
+    uint32_t every, phase; /* a voxel gathers at the render where hash(key) % every == phase */
+    cl_mem carried_from;   /* per new voxel, its voxel before or VCT_NO_VOXEL (made by injection) */
+} vct_voxel_carry;
+
+/* Direct light into new voxels, kept from carry->before where nothing
+ * moved can reach (carry_direct), injected elsewhere. */
+int vct_voxels_inject_light_carried(vct_context *ctx, const vct_scene *s, const vct_accel *g,
+                                    vct_voxels *v, vct_voxel_carry *carry, vct_error *err);
+
 /* Volume description for kernels (vct_volume_desc in kernels/vct_types.h). */
 void vct_voxels_volume_desc(const vct_voxels *voxels, void *out_desc);
 /* The largest power-of-two resolution below `res` at which `bytes`, growing
