@@ -116,13 +116,15 @@ inline uint vox_visit(__global const int4 *tris, uint t, uint first, vct_volume_
 
 /* Chunks per triangle, and its unit normal with the material index in w
  * (as a float: exact below 2^24, and not a denormal that could be flushed). */
-__kernel void vox_chunks(__global const int4 *tris, vct_volume_desc vol, __global uint *chunks,
-                         __global float4 *tri_normals) {
-    const uint t = get_global_id(0);
-    if (t >= vol.res.w)
+/* Triangles first_tri .. first_tri + vol.res.w - 1 (all of them, or the
+ * ones that moved): chunks is indexed from first_tri, the rest by triangle. */
+__kernel void vox_chunks(__global const int4 *tris, vct_volume_desc vol, uint first_tri,
+                         __global uint *chunks, __global float4 *tri_normals) {
+    const uint i = get_global_id(0), t = first_tri + i;
+    if (i >= vol.res.w)
         return;
     vox_setup s;
-    chunks[t] = vox_setup_make(tris, t, vol, &s)
+    chunks[i] = vox_setup_make(tris, t, vol, &s)
                     ? (vox_columns(&s) + VOX_COLUMNS_PER_CHUNK - 1) / VOX_COLUMNS_PER_CHUNK
                     : 0u;
     const long3 a = vox_vertex(tris, 3 * t), b = vox_vertex(tris, 3 * t + 1),
@@ -146,25 +148,85 @@ inline uint vox_chunk_owner(__global const uint *chunk_start, uint triangles, ui
     return lo;
 }
 
-__kernel void vox_count(__global const int4 *tris, vct_volume_desc vol, int thin,
+__kernel void vox_count(__global const int4 *tris, vct_volume_desc vol, uint first_tri, int thin,
                         __global const uint *chunk_start, uint chunks, __global uint *counts) {
     const uint c = get_global_id(0);
     if (c >= chunks)
         return;
-    const uint t = vox_chunk_owner(chunk_start, vol.res.w, c);
-    const uint first = (c - chunk_start[t]) * VOX_COLUMNS_PER_CHUNK;
-    counts[c] = vox_visit(tris, t, first, vol, thin, 0, counts, counts, 0);
+    const uint i = vox_chunk_owner(chunk_start, vol.res.w, c);
+    const uint first = (c - chunk_start[i]) * VOX_COLUMNS_PER_CHUNK;
+    counts[c] = vox_visit(tris, first_tri + i, first, vol, thin, 0, counts, counts, 0);
 }
 
-__kernel void vox_write(__global const int4 *tris, vct_volume_desc vol, int thin,
+__kernel void vox_write(__global const int4 *tris, vct_volume_desc vol, uint first_tri, int thin,
                         __global const uint *chunk_start, uint chunks, __global const uint *offsets,
                         __global uint *keys, __global uint *ids) {
     const uint c = get_global_id(0);
     if (c >= chunks)
         return;
-    const uint t = vox_chunk_owner(chunk_start, vol.res.w, c);
-    const uint first = (c - chunk_start[t]) * VOX_COLUMNS_PER_CHUNK;
-    vox_visit(tris, t, first, vol, thin, 1, keys, ids, offsets[c]);
+    const uint i = vox_chunk_owner(chunk_start, vol.res.w, c);
+    const uint first = (c - chunk_start[i]) * VOX_COLUMNS_PER_CHUNK;
+    vox_visit(tris, first_tri + i, first, vol, thin, 1, keys, ids, offsets[c]);
+}
+
+/* The fragments before that stay: each fragment's voxel key (from its
+ * voxel's), and 1 where its triangle is outside [moved_lo, moved_hi). */
+__kernel void vox_kept(__global const uint *voxel_keys, __global const uint *voxel_start,
+                       uint voxels, uint fragments, __global const uint *ids, uint moved_lo,
+                       uint moved_hi, __global uint *keys, __global uint *keep) {
+    const uint v = get_global_id(0);
+    if (v >= voxels)
+        return;
+    const uint end = v + 1u < voxels ? voxel_start[v + 1u] : fragments;
+    for (uint f = voxel_start[v]; f < end; ++f) {
+        keys[f] = voxel_keys[v];
+        keep[f] = ids[f] < moved_lo || ids[f] >= moved_hi;
+    }
+}
+
+/* Scatters the kept fragments to their places in order (index: the
+ * exclusive scan of keep). */
+__kernel void vox_compact(__global const uint *keys, __global const uint *ids,
+                          __global const uint *keep, __global const uint *index, uint n,
+                          __global uint *kept_keys, __global uint *kept_ids) {
+    const uint f = get_global_id(0);
+    if (f < n && keep[f]) {
+        kept_keys[index[f]] = keys[f];
+        kept_ids[index[f]] = ids[f];
+    }
+}
+
+/* How many of the n (key, id) pairs sort before (key, id), by key then id. */
+inline uint vox_rank(__global const uint *keys, __global const uint *ids, uint n, uint key,
+                     uint id) {
+    uint lo = 0u, hi = n;
+    while (lo < hi) {
+        const uint mid = lo + (hi - lo) / 2u;
+        if (keys[mid] < key || (keys[mid] == key && ids[mid] < id))
+            lo = mid + 1u;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Two lists sorted by (key, triangle), a kept one and one of the moved
+ * triangles (no triangle in both), merged into one so sorted: the order a
+ * full voxelization gives. Work-items 0 .. a - 1 place a's pairs, the
+ * rest b's. */
+__kernel void vox_merge(__global const uint *a_keys, __global const uint *a_ids, uint a,
+                        __global const uint *b_keys, __global const uint *b_ids, uint b,
+                        __global uint *keys, __global uint *ids) {
+    const uint i = get_global_id(0);
+    if (i < a) {
+        const uint at = i + vox_rank(b_keys, b_ids, b, a_keys[i], a_ids[i]);
+        keys[at] = a_keys[i];
+        ids[at] = a_ids[i];
+    } else if (i < a + b) {
+        const uint j = i - a, at = j + vox_rank(a_keys, a_ids, a, b_keys[j], b_ids[j]);
+        keys[at] = b_keys[j];
+        ids[at] = b_ids[j];
+    }
 }
 
 /* 1 where a sorted key starts a new voxel. */

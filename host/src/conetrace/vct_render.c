@@ -193,7 +193,11 @@ static vct_status prepare(vct_context *ctx, const vct_scene *s, const vct_accel 
         return VCT_OK;
     if (check_bounces(bounces, err) != VCT_OK)
         return err->status;
-    vct_voxels *v = vct_voxelize(ctx, s, vo, err);
+    /* only what moved voxelized again, where that is known */
+    vct_voxels *v =
+        carry && carry->moved_hi > carry->moved_lo
+            ? vct_voxelize_moved(ctx, s, vo, carry->before, carry->moved_lo, carry->moved_hi, err)
+            : vct_voxelize(ctx, s, vo, err);
     if (v)
         v->emitters_by_cones = plan->emitters_by_cones;
     int rc = v ? vct_octree_build(ctx, v, err) : err->status;

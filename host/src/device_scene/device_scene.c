@@ -242,7 +242,7 @@ static int need_voxels(vct_device_scene *ds, const vct_render_job *job, const vc
     const int carry_before = job->light_carry && before && lk.lit && same_settings &&
                              memcmp(&vk, &ds->voxel_key, sizeof vk) == 0;
     int carried = 0;
-    vct_voxel_carry moved = {before, 0, {{{0}}}, VCT_CARRY_EVERY, 0, NULL};
+    vct_voxel_carry moved = {before, 0, 0, 0, {{{0}}}, VCT_CARRY_EVERY, 0, NULL};
     moved.phase = ds->carry_renders++ % VCT_CARRY_EVERY;
     vct_moved_region_boxes(&ds->moved, &moved);
     vct_moved_region_clear(&ds->moved);

@@ -70,6 +70,10 @@ void vct_moved_region_note(vct_moved_region *r, const vct_scene *s, unsigned cha
             continue;
         add_box(r, &r->box[6 * i]); /* where it was */
         add_box(r, box);            /* and where it is */
+        const uint32_t first = s->instances[i].first_triangle,
+                       end = first + s->meshes[s->instances[i].mesh].triangle_count;
+        r->tri_lo = r->tri_hi > r->tri_lo && r->tri_lo < first ? r->tri_lo : first;
+        r->tri_hi = r->tri_hi > end ? r->tri_hi : end;
         r->hash[i] = hash;
         memcpy(&r->box[6 * i], box, sizeof box);
     }
@@ -78,10 +82,13 @@ void vct_moved_region_note(vct_moved_region *r, const vct_scene *s, unsigned cha
 void vct_moved_region_clear(vct_moved_region *r) {
     r->everything = 0;
     r->box_count = 0;
+    r->tri_lo = r->tri_hi = 0;
 }
 
 void vct_moved_region_boxes(const vct_moved_region *r, vct_voxel_carry *carry) {
     memset(carry->boxes, 0, sizeof carry->boxes);
+    carry->moved_lo = r->everything ? 0 : r->tri_lo;
+    carry->moved_hi = r->everything ? 0 : r->tri_hi;
     if (r->everything) {
         carry->box_count = 1;
         for (int k = 0; k < 3; ++k) {

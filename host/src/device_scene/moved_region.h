@@ -14,6 +14,7 @@ typedef struct vct_moved_region {
     int everything; /* something moved that no box holds (or out of memory) */
     uint32_t box_count;
     float boxes[VCT_CARRY_BOXES][6];
+    uint32_t tri_lo, tri_hi; /* the moved instances' triangles lie in tri_lo .. tri_hi - 1 */
 } vct_moved_region;
 
 /* Records s's instances as they are, nothing moved yet. */
@@ -23,7 +24,8 @@ void vct_moved_region_init(vct_moved_region *r, const vct_scene *s);
 void vct_moved_region_note(vct_moved_region *r, const vct_scene *s, unsigned changed);
 /* The voxels were built: nothing has moved since. */
 void vct_moved_region_clear(vct_moved_region *r);
-/* carry's boxes: the moved ones, or one that holds everything. */
+/* carry's boxes (the moved ones, or one that holds everything) and its
+ * range of moved triangles (none where everything moved). */
 void vct_moved_region_boxes(const vct_moved_region *r, vct_voxel_carry *carry);
 void vct_moved_region_release(vct_moved_region *r);
 

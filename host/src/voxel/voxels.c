@@ -34,7 +34,8 @@ void vct_voxels_release(vct_voxels *v) {
     cl_mem *mems[] = {
         &v->keys,         &v->albedo,      &v->normal,      &v->emission,        &v->child,
         &v->neighbours,   &v->tile_parent, &v->radiance,    &v->direct_radiance, &v->fragment_start,
-        &v->fragment_tri, &v->side,        &v->direct_side, &v->before_radiance, &v->before_side};
+        &v->fragment_tri, &v->side,        &v->direct_side, &v->before_radiance, &v->before_side,
+        &v->tris,         &v->tri_normals};
     for (size_t i = 0; i < sizeof mems / sizeof mems[0]; ++i)
         vct_buffer_release(v->ctx, *mems[i]);
     vct_bricks_release(v);

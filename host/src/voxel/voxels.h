@@ -17,6 +17,10 @@ struct vct_voxels {
     /* Per voxel, its first fragment; per fragment (sorted by voxel), its
      * triangle: light injection lights each surface in a voxel on its own. */
     cl_mem fragment_start, fragment_tri;
+    /* Per triangle, kept for an update that voxelizes only what moved
+     * (vct_voxelize_moved): its vertices in integer units with its material,
+     * and its unit normal. */
+    cl_mem tris, tri_normals;
     cl_mem radiance; /* outgoing radiance, after vct_voxels_inject_light */
     /* Per voxel, two float4 beside radiance (which holds the brighter side's):
      * (brighter - darker side's radiance, 0), then the brighter side's unit
@@ -61,7 +65,10 @@ struct vct_voxels {
  * render (and by every voxel lit anew). */
 #define VCT_CARRY_EVERY 4
 typedef struct vct_voxel_carry {
-    const vct_voxels *before;
+    vct_voxels *before; /* its triangle buffers are taken by vct_voxelize_moved */
+    /* the triangles that moved lie in moved_lo .. moved_hi - 1 (none known
+     * where equal: everything is voxelized again) */
+    uint32_t moved_lo, moved_hi;
     uint32_t box_count;
     cl_float4 boxes[2 * VCT_CARRY_BOXES]; /* lo, hi */
     uint32_t every, phase; /* a voxel gathers at the render where hash(key) % every == phase */
@@ -72,6 +79,16 @@ typedef struct vct_voxel_carry {
  * moved can reach (carry_direct), injected elsewhere. */
 int vct_voxels_inject_light_carried(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                     vct_voxels *v, vct_voxel_carry *carry, vct_error *err);
+
+/* The voxels of s where only triangles moved_lo .. moved_hi - 1 moved since
+ * `before` was voxelized (same options): the fragments of the rest kept,
+ * the moved ones voxelized again, merged in the order a full voxelization
+ * gives, so that the voxels are the same bit for bit. Takes before's
+ * triangle buffers. Where before cannot serve (another volume frame or
+ * triangle count, no triangle buffers), voxelizes all of s. */
+vct_voxels *vct_voxelize_moved(vct_context *ctx, const vct_scene *s, const vct_voxel_options *o,
+                               vct_voxels *before, uint32_t moved_lo, uint32_t moved_hi,
+                               vct_error *err);
 
 /* Volume description for kernels (vct_volume_desc in kernels/vct_types.h). */
 void vct_voxels_volume_desc(const vct_voxels *voxels, void *out_desc);
