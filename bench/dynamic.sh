@@ -4,7 +4,10 @@
 # --stats: the seconds of each frame after the first and what it rebuilt,
 # for a camera and a light that move (moving_camera.gltf) and a sphere that
 # rolls (instanced_spheres.gltf); the device time of cone tracing's voxel
-# stages summed over the rolling frames. Then flicker: the RMS change,
+# stages summed over the rolling frames; the update of one moved object by
+# stage against a full build, rebuilt and carried (--light-carry), on the
+# spheres, the lamp room and the dense hall (bench/make_moving.py moves its
+# pedestal); frames a second at 512x512. Then flicker: the RMS change,
 # between two frames of the roll, of the pixels the sphere and its shadow
 # do not touch, by cone tracing and by a 256-spp path tracer (its samples
 # repeat from frame to frame, so its change there is the light that the
@@ -95,9 +98,11 @@ print("| carried (`--light-carry`) | %.3f | %.3f | %.4f | %s |" % (
     ", ".join("%.4f" % nrmse(k) for k in range(48, (settled[0] if settled else 60) + 1))))
 PY
 )
-# One sphere of 64 (1.6 % of the triangles) moves: each stage's device time
-# for frame 12 alone (a full build and a frame) and for frames 12 and 13
-# (the same, then the update and a frame); the update is the difference.
+# One object moves: each stage's device time for frame F alone (a full
+# build and a frame) and for frames F to F + 8 (the same, then 8 updates
+# and frames); an update is the difference over 8. Rebuilt (the default)
+# and carried (--light-carry: moved triangles voxelized alone, direct light
+# kept where nothing moved reaches, the carried bounce spread over renders).
 stage_table() { # file: "stage ms" lines from --stats' stage table
     awk '$1 == "stage" && $2 == "device" { on = 1; next }
          on && NF >= 5 && $(NF - 3) ~ /^[0-9.]+$/ {
@@ -105,30 +110,49 @@ stage_table() { # file: "stage ms" lines from --stats' stage table
              print name "\t" $(NF - 3); next }
          on { on = 0 }' "$1"
 }
-update_rows() { # scene frame: "| stage | full | update | ratio |" rows
-    ./build/vct render "$1" --method vct $size --frame "$2" --stats \
+update_ms() { # scene frame flag: "stage<TAB>full<TAB>update" lines
+    # shellcheck disable=SC2086
+    ./build/vct render "$1" --method vct $size --frame "$2" --stats $3 \
         -o "$work/one.pfm" >"$work/one.txt" 2>/dev/null
-    ./build/vct render "$1" --method vct $size --frames "$2:$(($2 + 1))" --stats \
+    # shellcheck disable=SC2086
+    ./build/vct render "$1" --method vct $size --frames "$2:$(($2 + 8))" --stats $3 \
         -o "$work/two_%d.pfm" >"$work/two.txt" 2>/dev/null
     stage_table "$work/one.txt" >"$work/one.tsv"
     stage_table "$work/two.txt" >"$work/two.tsv"
-    awk -F '\t' 'NR == FNR { one[$1] = $2; next }
-        { full = one[$1]; upd = $2 - full
-          frame = $1 ~ /^vct / ? " (the frame)" : ""
-          ratio = full ? upd / full : 0
-          printf "| %s%s | %.1f | %.1f | %.2f |\n", $1, frame, full, upd, ratio }' \
+    awk -F '\t' 'NR == FNR { one[$1] = $2; next } { print $1 "\t" one[$1] "\t" ($2 - one[$1]) / 8 }' \
         "$work/one.tsv" "$work/two.tsv"
 }
+update_rows() { # scene frame: "| stage | full | rebuilt | ratio | carried | ratio |" rows
+    update_ms "$1" "$2" "" >"$work/rebuilt.tsv"
+    update_ms "$1" "$2" --light-carry >"$work/carried.tsv"
+    awk -F '\t' 'NR == FNR { carried[$1] = $3; next }
+        { full = $2; a = $3; b = carried[$1]
+          frame = $1 ~ /^vct / ? " (the frame)" : ""
+          if (frame == "") { F += full; A += a; B += b }
+          printf "| %s%s | %.1f | %.1f | %.2f | %.1f | %.2f |\n", $1, frame, full, a,
+              full ? a / full : 0, b, full ? b / full : 0 }
+        END { printf "| **all but the frame** | **%.1f** | **%.1f** | **%.2f** | **%.1f** | **%.2f** |\n",
+              F, A, A / F, B, B / F }' "$work/carried.tsv" "$work/rebuilt.tsv"
+}
 tools/python.sh scenes/suite/make_suite.py >/dev/null
+# the suite's dense hall: its pedestal (12 of 105,624 triangles) slides under the model
+tools/python.sh bench/make_moving.py scenes/suite/dense_hall.gltf "$work/hall_move.gltf" 2 0.5 0 0.3 1
 spheres_update=$(update_rows scenes/instanced_spheres.gltf 12)
 lamp_update=$(update_rows scenes/suite/lamp_room.gltf 12)
-# cone tracing at 512x512 while the sphere rolls: frames a second
-./build/vct render scenes/instanced_spheres.gltf --method vct --size 512 512 --frames 11:14 \
-    --stats -o "$work/big_%d.pfm" >/dev/null 2>"$work/big.txt"
-fps=$(awk '$1 == "frame" && $2 == "seconds" { on = 1; next }
-    on && $1 ~ /^[0-9]+$/ && NF == 7 { n++; if (n > 1) { s += $2; k++ } }
-    END { printf "%.2f s a frame, %.2f frames a second", s / k, k / s }' "$work/big.txt")
-# flicker between frames 12 and 13 of the roll
+hall_update=$(update_rows "$work/hall_move.gltf" 6)
+# cone tracing at 512x512 while the sphere rolls: frames a second, rebuilt and carried
+fps_of() { # flag
+    # shellcheck disable=SC2086
+    ./build/vct render scenes/instanced_spheres.gltf --method vct --size 512 512 --frames 11:15 \
+        --stats $1 -o "$work/big_%d.pfm" >/dev/null 2>"$work/big.txt"
+    awk '$1 == "frame" && $2 == "seconds" { on = 1; next }
+        on && $1 ~ /^[0-9]+$/ && NF == 7 { n++; if (n > 1) { s += $2; k++ } }
+        END { printf "%.2f s a frame, %.2f frames a second", s / k, k / s }' "$work/big.txt"
+}
+fps=$(fps_of "")
+fps_carried=$(fps_of --light-carry)
+# flicker between frames 12 and 13 of the roll; carried light as in a
+# sequence that has rolled for a while (frames 4 to 13)
 for f in 12 13; do
     ./build/vct render scenes/instanced_spheres.gltf --method raycast $size --frame $f \
         -o "$work/rc_$f.pfm" >/dev/null 2>&1
@@ -137,9 +161,13 @@ for f in 12 13; do
     ./build/vct render scenes/instanced_spheres.gltf --method pt --spp 256 $size --frame $f \
         -o "$work/pt_$f.pfm" >/dev/null 2>&1
 done
+# shellcheck disable=SC2086
+./build/vct render scenes/instanced_spheres.gltf --method vct $size --frames 4:13 --light-carry \
+    -o "$work/carried_%d.pfm" >/dev/null 2>&1
 flicker() { tools/python.sh bench/temporal_flicker.py "$work/$1_12.pfm" "$work/$1_13.pfm" \
     "$work/rc_12.pfm" "$work/rc_13.pfm" 4; }
 vct_flicker=$(flicker vct)
+carried_flicker=$(flicker carried)
 pt_flicker=$(flicker pt)
 {
     echo "# Scenes that move: what a frame costs, and what stays still"
@@ -159,29 +187,41 @@ pt_flicker=$(flicker pt)
     echo
     echo "Where cone tracing's rolling frames spend their device time (ms, all 9 frames): the"
     echo "voxels' geometry (voxelization and octree), their bricks (creation and filtering, of"
-    echo "the light too), direct light, bounces, and the camera's frame. Re-voxelizing only what moved could save at most the first two"
-    echo "columns; the light has to follow the moved sphere everywhere its bounces reach."
+    echo "the light too), direct light, bounces, and the camera's frame. Rebuilt, the bounces dominate."
     echo
     echo "| voxelize + octree | bricks | direct light | bounces | frame |"
     echo "|---:|---:|---:|---:|---:|"
     echo "$stages"
     echo
     echo "One object moves: cone tracing's device time (ms) by stage for a full build and its"
-    echo "frame (frame 12 alone), and for the update that follows it with its frame (frames 12"
-    echo "and 13, less frame 12 alone). The frame stages (vct ...) run once in each. Ratio: the"
-    echo "update over the full build. One sphere of the 64 (1.6 % of the triangles):"
+    echo "frame (frame F alone), and for an update with its frame (frames F to F + 8, less frame F"
+    echo "alone, over 8), rebuilt (the default: the voxels and their light built again, bit for"
+    echo "bit a fresh build) and carried (\`--light-carry\`: the moved triangles voxelized alone and"
+    echo "merged, direct light kept wherever nothing that moved reaches it, and the bounce gathered"
+    echo "from the light before by a quarter of the voxels each frame and by those lit anew). Ratio:"
+    echo "the update over the full build. Single frames vary by 10-30 % from run to run."
     echo
-    echo "| stage | full build | update | ratio |"
-    echo "|---|---:|---:|---:|"
+    echo "One sphere of the 64 rolls (1.6 % of 327,684 triangles):"
+    echo
+    echo "| stage | full build | update, rebuilt | ratio | update, carried | ratio |"
+    echo "|---|---:|---:|---:|---:|---:|"
     echo "$spheres_update"
     echo
     echo "The suite's \`lamp_room\`, its table sliding (50 of its 150 triangles):"
     echo
-    echo "| stage | full build | update | ratio |"
-    echo "|---|---:|---:|---:|"
+    echo "| stage | full build | update, rebuilt | ratio | update, carried | ratio |"
+    echo "|---|---:|---:|---:|---:|---:|"
     echo "$lamp_update"
     echo
-    echo "Cone tracing at 512x512 while the sphere rolls (frames 12 to 14): $fps."
+    echo "The suite's \`dense_hall\`, its pedestal sliding under the model (12 of 105,624 triangles;"
+    echo "\`bench/make_moving.py\`):"
+    echo
+    echo "| stage | full build | update, rebuilt | ratio | update, carried | ratio |"
+    echo "|---|---:|---:|---:|---:|---:|"
+    echo "$hall_update"
+    echo
+    echo "Cone tracing at 512x512 while the sphere rolls (frames 12 to 15): rebuilt $fps;"
+    echo "carried $fps_carried."
     echo
     echo "Light carried over frames (\`--light-carry\`) against every bounce gathered again, on"
     echo "the light of \`moving_camera.gltf\`, which moves until frame 48 and then stays: seconds"
@@ -201,6 +241,7 @@ pt_flicker=$(flicker pt)
     echo "| method | change where nothing moved | pixels |"
     echo "|---|---:|---:|"
     echo "| cone tracing | $(echo "$vct_flicker" | cut -d' ' -f1) | $(echo "$vct_flicker" | cut -d' ' -f2) |"
+    echo "| cone tracing, light carried | $(echo "$carried_flicker" | cut -d' ' -f1) | $(echo "$carried_flicker" | cut -d' ' -f2) |"
     echo "| path tracing, 256 spp | $(echo "$pt_flicker" | cut -d' ' -f1) | $(echo "$pt_flicker" | cut -d' ' -f2) |"
 } >doc/results/dynamic.md
 cat doc/results/dynamic.md

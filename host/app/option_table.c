@@ -144,9 +144,10 @@ static const cli_option vct_rows[] = {
      "the scene's bounce ratio"},
     {"exact-bounces", 0, OPT_EXACT_BOUNCES, 0, NULL, "no rest of the series after the last bounce"},
     {"light-carry", 0, OPT_LIGHT_CARRY, 0, NULL,
-     "--frames: where only lights move, carry the voxels' light over from the frame before (the "
-     "new direct light and one bounce a frame, settling over --bounces frames) instead of "
-     "gathering every bounce again"},
+     "--frames: where lights or objects move, carry the voxels' light over from the frame "
+     "before (what moved voxelized alone, direct light kept where nothing moved reaches, one "
+     "bounce a frame, settling over a few frames) instead of building the voxels and gathering "
+     "every bounce again"},
     {"emitters", 0, OPT_EMITTERS, 1, "rays|cones",
      "emissive triangles as lights sampled with shadow rays (default), or seen through the "
      "voxels' cones alone"},

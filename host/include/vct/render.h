@@ -353,13 +353,17 @@ typedef struct vct_render_job {
     vct_voxel_options voxel_options;
     vct_brick_options brick_options;
     uint32_t bounces;
-    /* Cone tracing through a device scene, when only the lights changed:
-     * 1 carries the voxels' light over from the frame before, as engines
-     * do: the new direct light plus one bounce gathered from the light the
-     * voxels held, then one bounce more at each render until `bounces`
-     * are gathered (bench/dynamic.sh measures how it settles). A relit
-     * frame costs one bounce instead of all of them. 0 (the default):
-     * every bounce again, the image of a fresh build, bit for bit. */
+    /* Cone tracing through a device scene, when lights or geometry
+     * changed: 1 carries the voxels' light over from the frame before, as
+     * engines do. Lights moved: the new direct light plus one bounce
+     * gathered from the light the voxels held. Geometry moved: the moved
+     * triangles voxelized alone, direct light kept wherever nothing that
+     * moved can reach it, and one bounce gathered from the light before by
+     * the voxels lit anew and a quarter of the others in turn (the rest
+     * keep their light before). Then one bounce more at each render until
+     * the light before has faded (bench/dynamic.sh measures how it
+     * settles). 0 (the default): every bounce again, the image of a fresh
+     * build, bit for bit. */
     int light_carry;
 } vct_render_job;
 
