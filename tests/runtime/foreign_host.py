@@ -162,16 +162,16 @@ tris_buf = buf(tris)
 vol_desc = np.frombuffer(vol.tobytes(), np.uint8)
 chunk_start = empty(4 * n_tris)
 tri_normals = empty(16 * n_tris)
-vox.vox_chunks(queue, (n_tris,), None, tris_buf, vol_desc, chunk_start, tri_normals)
+vox.vox_chunks(queue, (n_tris,), None, tris_buf, vol_desc, np.uint32(0), chunk_start, tri_normals)
 chunks = exclusive_scan(chunk_start, n_tris, chunk_start)
 counts = empty(4 * chunks)
 thin = np.int32(0)
-vox.vox_count(queue, (chunks,), None, tris_buf, vol_desc, thin, chunk_start, np.uint32(chunks),
+vox.vox_count(queue, (chunks,), None, tris_buf, vol_desc, np.uint32(0), thin, chunk_start, np.uint32(chunks),
               counts)
 fragments = exclusive_scan(counts, chunks, counts)
 keys = empty(4 * fragments)
 ids = empty(4 * fragments)
-vox.vox_write(queue, (chunks,), None, tris_buf, vol_desc, thin, chunk_start, np.uint32(chunks),
+vox.vox_write(queue, (chunks,), None, tris_buf, vol_desc, np.uint32(0), thin, chunk_start, np.uint32(chunks),
               counts, keys, ids)
 frag_keys = read(keys, np.uint32, fragments)
 frag_ids = read(ids, np.uint32, fragments)

@@ -88,6 +88,8 @@ vct_voxels *vct_voxels_copy(vct_context *ctx, const vct_voxels *src, vct_error *
     }
     *v = *src;
     v->ctx = ctx;
+    /* not copied: an update on this device voxelizes everything again */
+    v->tris = v->tri_normals = NULL;
     cl_mem *mems[] = {
         &v->keys,           &v->albedo,       &v->normal,          &v->emission,
         &v->fragment_start, &v->fragment_tri, &v->radiance,        &v->direct_radiance,
