@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-"""Flicker under a moving camera: each frame of a sequence against the frame
-before, brought into its view. Every pixel's surface point (the position
-AOV) is projected into the previous frame's camera and that frame is read
-there (bilinear); pixels whose point the previous frame does not show (off
-screen, hidden, or on an edge: the point read there is more than 0.2 % of its
-distance away, or one of the four taps more than 3 %) are left out. Prints the mean absolute change
-of the rest over the mean of the image, averaged over the frame pairs, then
-its largest pair, then the share of pixels kept.
+"""Flicker under a camera that turns about its eye: each frame of a sequence
+against the frame before, brought into its view. A turn moves no surface
+across another, so each pixel's ray, turned into the previous frame's
+camera, says exactly where that frame saw the same point; it is read there
+(bilinear). Pixels left out: those the previous frame does not show (off
+screen), and those on an edge (a tap's surface point, from the position
+AOV, more than 3 % of its distance from the pixel's own). Prints the mean
+absolute change of the rest over the mean of the image, averaged over the
+frame pairs, then its largest pair, then the share of pixels kept.
 
 usage: temporal_pan.py PAN.gltf DEG SECONDS FPS PATTERN POSITIONS N
   PAN.gltf, DEG, SECONDS: as make_pan.py made it (the eye and the camera's
@@ -38,13 +39,23 @@ def basis(q):
     return r[:, 0], r[:, 1], r[:, 2]
 
 
-def project(points, eye, q, fov_y, w, h):
+def pixel_rays(q, fov_y, w, h):
+    """Each pixel centre's ray direction in the world (vct's camera: y down)."""
     right, up, back = basis(q)
-    d = points - eye
-    z = -(d @ back)
+    t = math.tan(math.radians(fov_y) / 2)
+    x, y = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
+    sx = (2 * x / w - 1) * t * w / h
+    sy = (1 - 2 * y / h) * t
+    return sx[..., None] * right + sy[..., None] * up - back
+
+
+def project(dirs, q, fov_y, w, h):
+    """Where directions from the eye fall in the camera turned by q (pixel coordinates)."""
+    right, up, back = basis(q)
+    z = -(dirs @ back)
     t = math.tan(math.radians(fov_y) / 2)
     with np.errstate(divide="ignore", invalid="ignore"):
-        sx, sy = (d @ right) / z, (d @ up) / z
+        sx, sy = (dirs @ right) / z, (dirs @ up) / z
     px = (sx / (t * w / h) + 1) * w / 2 - 0.5
     py = (1 - sy / t) * h / 2 - 0.5
     return px, py, z
@@ -75,12 +86,13 @@ def main():
         now, before = read_pfm(pattern % k), read_pfm(pattern % (k - 1))
         p_now, p_before = read_pfm(positions % k), read_pfm(positions % (k - 1))
         h, w = now.shape[:2]
-        angle = -deg + 2 * deg * ((k - 1) / fps) / seconds
-        px, py, z = project(p_now, eye, yaw(angle, q0), fov_y, w, h)
+        angle = lambda f: -deg + 2 * deg * (f / fps) / seconds
+        dirs = pixel_rays(yaw(angle(k), q0), fov_y, w, h)
+        px, py, z = project(dirs, yaw(angle(k - 1), q0), fov_y, w, h)
         value, _, inside = bilinear(before, px, py)
-        p_read, taps, _ = bilinear(p_before, px, py)
+        _, taps, _ = bilinear(p_before, px, py)
         dist = np.linalg.norm(p_now - eye, axis=-1)
-        same = np.linalg.norm(p_read - p_now, axis=-1) <= 0.002 * dist
+        same = np.ones_like(inside)
         for t in taps:
             same &= np.linalg.norm(t - p_now, axis=-1) <= 0.03 * dist
         valid = inside & same & (z > 0) & np.all(np.isfinite(p_now), axis=-1)
