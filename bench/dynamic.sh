@@ -176,12 +176,13 @@ pt_flicker=$(flicker pt)
     echo
     echo "Sequences at 256x192 through one device scene (\`vct render --frames ... --stats\`),"
     echo "averaged over the frames after the first: the frame's wall time and what it rebuilt"
-    echo "(BVHs, two-level top levels alone, voxels, the voxels' light). A camera and a light that"
+    echo "(BVHs built, BVHs moved: a top level placed again or boxes refit, voxels, the voxels' light)."
+    echo "A camera and a light that"
     echo "move rebuild no BVH and no voxels; cone tracing relights its voxels. A rolling sphere"
     echo "rebuilds the top level over its 64 instances, and cone tracing its voxels whole. The"
     echo "two scenes differ (a few boxes; 64 spheres of 5,120 triangles): compare within one."
     echo
-    echo "| sequence | seconds a frame | BVH | top level | voxels | light |"
+    echo "| sequence | seconds a frame | BVH | BVH moved | voxels | light |"
     echo "|---|---:|---:|---:|---:|---:|"
     cat "$rows"
     echo

@@ -108,7 +108,7 @@ typedef struct frame_row {
 } frame_row;
 
 static void print_frame_table(const frame_row *rows, int count, int counted) {
-    fprintf(stderr, "%-7s %9s %6s %10s %7s %6s %12s\n", "frame", "seconds", "BVH", "top level",
+    fprintf(stderr, "%-7s %9s %6s %10s %7s %6s %12s\n", "frame", "seconds", "BVH", "BVH moved",
             "voxels", "light", "scene bytes");
     for (int k = 0; k < count; ++k) {
         const vct_device_scene_stats *b = &rows[k].built;
@@ -120,8 +120,9 @@ static void print_frame_table(const frame_row *rows, int count, int counted) {
             fprintf(stderr, "%-7d %9.3f %6s %10s %7s %6s %12s\n", rows[k].frame, rows[k].seconds,
                     "-", "-", "-", "-", "-");
     }
-    fprintf(stderr, "(built during each frame: BVHs, two-level top levels alone, voxels, their "
-                    "light; scene data uploaded)\n");
+    fprintf(stderr, "(built during each frame: BVHs, BVHs moved (two levels' top level placed "
+                    "again, or one level's boxes refit), voxels, their light; scene data "
+                    "uploaded)\n");
 }
 
 static vct_device_scene_stats stats_since(const vct_device_scene_stats *a,

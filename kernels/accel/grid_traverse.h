@@ -78,7 +78,8 @@ __attribute__((always_inline)) inline int accel_trace(const accel_view *g, float
                 float t, u, v;
                 if (ray_triangle(&shear, a.xyz, g->tri_vertices[3 * tri + 1].xyz,
                                  g->tri_vertices[3 * tri + 2].xyz, tmin, best, &t, &u, &v) &&
-                    t <= cell_exit + slack && !accel_masked(g->tri_vertices, as_uint(a.w), u, v)) {
+                    (t < best || !found || tri < hit->tri) && t <= cell_exit + slack &&
+                    !accel_masked(g->tri_vertices, as_uint(a.w), u, v)) {
                     best = t;
                     found = 1;
                     hit->t = t;

@@ -179,7 +179,7 @@ __kernel void carry_direct(vct_volume_desc vol, __global const uint *keys, uint 
                            __global const float4 *before_radiance,
                            __global const float4 *before_side, __global const float4 *boxes,
                            uint box_count, __global const vct_light_desc *lights,
-                           uint light_count, float4 emitters,
+                           uint light_count, float4 emit_lo, float4 emit_hi,
                            __global uint *carried_from, __global float4 *radiance,
                            __global float4 *side) {
     const uint v = get_global_id(0);
@@ -189,7 +189,8 @@ __kernel void carry_direct(vct_volume_desc vol, __global const uint *keys, uint 
     const float3 p = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * size;
     uint from = carry_find(before_keys, before_voxels, keys[v]);
     if (from != VCT_NO_VOXEL &&
-        carry_dirty(p, 2.0f * size, boxes, box_count, lights, light_count, emitters))
+        carry_dirty(p, 2.0f * size, boxes, box_count, lights, light_count, emit_lo,
+                    emit_hi))
         from = VCT_NO_VOXEL;
     carried_from[v] = from;
     if (from == VCT_NO_VOXEL)

@@ -38,16 +38,24 @@ inline int carry_segment_meets_box(float3 a, float3 b, float3 lo, float3 hi) {
     return 1;
 }
 
+inline int carry_boxes_overlap(float3 alo, float3 ahi, float3 blo, float3 bhi) {
+    return all(alo <= bhi) && all(blo <= ahi);
+}
+
 /* 1 if what moved can change the direct light at p: p in a moved box, or a
  * shadow ray across one, towards a light (to its extent: the box grown by
  * its radius; a directional light's, as far as the box's far corner
- * reaches) or an emitter (to any point of the ball holding them all:
- * emitters, centre and radius, w < 0 where there are none). boxes: (lo,
- * hi) pairs, grown by `margin` here. Rays from p to a ball of radius r
- * stay within r of the ray to its centre, so the box grown by r tests them
- * all. */
+ * reaches) or an emitter. For emitters two tests that each hold every ray
+ * from p to them, both of which must pass: the box around p and the
+ * emitters' box, and the box grown by the radius of the ball around the
+ * emitters (rays from p to a ball of radius r stay within r of the ray to
+ * its centre). emit_lo.w 0: no emitters; emit_hi.w: the ball's radius.
+ * boxes: (lo, hi) pairs, grown by `margin` here. */
 inline int carry_dirty(float3 p, float margin, __global const float4 *boxes, uint box_count,
-                       __global const vct_light_desc *lights, uint light_count, float4 emitters) {
+                       __global const vct_light_desc *lights, uint light_count, float4 emit_lo,
+                       float4 emit_hi) {
+    const float3 emit_centre = 0.5f * (emit_lo.xyz + emit_hi.xyz);
+    const float emit_radius = emit_hi.w;
     for (uint b = 0; b < box_count; ++b) {
         const float3 lo = boxes[2u * b].xyz - margin, hi = boxes[2u * b + 1u].xyz + margin;
         if (all(p >= lo) && all(p <= hi))
@@ -67,8 +75,9 @@ inline int carry_dirty(float3 p, float margin, __global const float4 *boxes, uin
             if (carry_segment_meets_box(p, to, lo - grow, hi + grow))
                 return 1;
         }
-        if (emitters.w >= 0.0f &&
-            carry_segment_meets_box(p, emitters.xyz, lo - emitters.w, hi + emitters.w))
+        if (emit_lo.w > 0.0f &&
+            carry_boxes_overlap(fmin(p, emit_lo.xyz), fmax(p, emit_hi.xyz), lo, hi) &&
+            carry_segment_meets_box(p, emit_centre, lo - emit_radius, hi + emit_radius))
             return 1;
     }
     return 0;

@@ -127,6 +127,7 @@ static vct_image fresh(const vct_scene *s, vct_method method) {
 
 typedef struct builds {
     int accel, voxels, light;
+    int moves; /* the BVH placed again or refit */
 } builds;
 
 /* Renders ds after `what` changed s, compares with a fresh device scene of
@@ -168,6 +169,9 @@ static void check_change(vct_device_scene *ds, const vct_scene *s, const char *w
           expect.accel, expect.voxels, expect.light);
     CHECK(after.changes == before.changes + 1, "%s: the commit saw %u changes", what,
           after.changes - before.changes);
+    CHECK((int)(after.accel_moves - before.accel_moves) == expect.moves,
+          "%s: the BVH moved %u times, expected %d", what, after.accel_moves - before.accel_moves,
+          expect.moves);
     printf("%s: rebuilt %d BVH, %d voxels, %d light; images equal a fresh device scene's\n", what,
            accel, voxels, light);
     vct_image_release(&kept);
@@ -185,16 +189,23 @@ static void check_changes(void) {
     vct_image_release(&first);
 
     s->lights[0].position[0] += 0.2f;
-    check_change(ds, s, "a moved light", (builds){0, 0, 1});
+    check_change(ds, s, "a moved light", (builds){0, 0, 1, 0});
     s->lights[0].color[1] *= 0.5f;
-    check_change(ds, s, "a dimmer light", (builds){0, 0, 1});
+    check_change(ds, s, "a dimmer light", (builds){0, 0, 1, 0});
     s->materials[0].albedo[0] *= 0.5f;
-    check_change(ds, s, "a changed material", (builds){0, 1, 1});
+    check_change(ds, s, "a changed material", (builds){0, 1, 1, 0});
+    /* one level: its boxes refit to the moved vertices, the same hits */
     for (uint32_t v = 0; v < s->vertex_count; ++v)
         s->positions[3 * v + 1] *= 0.9f;
-    check_change(ds, s, "moved geometry", (builds){1, 1, 1});
+    check_change(ds, s, "moved geometry", (builds){0, 1, 1, 1});
+    /* a wall torn far away: the refit tree much worse than a built one, so
+     * built again */
+    const uint32_t wall = s->instances[1].first_vertex;
+    for (uint32_t v = 0; v < s->meshes[s->instances[1].mesh].vertex_count; ++v)
+        s->positions[3 * (wall + v)] += 5000.0f;
+    check_change(ds, s, "a wall torn away", (builds){1, 1, 1, 0});
     s->camera.position[0] += 0.1f;
-    check_change(ds, s, "a moved camera", (builds){0, 0, 0});
+    check_change(ds, s, "a moved camera", (builds){0, 0, 0, 0});
 
     /* nothing changed: a commit finds nothing */
     vct_device_scene_stats st0, st1;

@@ -61,7 +61,8 @@ typedef struct vct_device_scene_stats {
     uint32_t commits;      /* commits, those of renders included */
     uint32_t changes;      /* commits that found the scene changed */
     uint32_t accel_builds; /* acceleration structures built */
-    uint32_t accel_moves;  /* two levels: the top level built again, the meshes' BVHs kept */
+    uint32_t accel_moves;  /* placed again: two levels' top level built again (the meshes'
+                              BVHs kept), or one level's boxes refit to moved vertices */
     uint32_t voxel_builds; /* voxelization, octree and bricks */
     uint32_t light_builds; /* direct light and bounces into the voxels (new or kept) */
     uint64_t scene_bytes;  /* scene data uploaded: geometry, materials, lights, textures */

@@ -116,7 +116,7 @@ vct_status vct_accel_info_get(vct_context *ctx, const vct_accel *a, vct_accel_in
                      b->children, b->parents,       b->boxes,   b->arrivals};
     for (size_t i = 0; i < sizeof mems / sizeof *mems; ++i)
         info->bytes += mem_bytes(mems[i]);
-    return vct_bvh_cost(ctx, b, &info->sah_cost, &info->leaves, err);
+    return vct_bvh_cost(ctx, b, &info->sah_cost, NULL, &info->leaves, err);
 }
 
 void vct_accel_release(vct_accel *a) {

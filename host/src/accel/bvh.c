@@ -284,7 +284,7 @@ static double box_area(const float lo[3], const float hi[3]) {
     return 2.0 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
 }
 
-int vct_bvh_cost(vct_context *ctx, const vct_bvh *b, double *sah, uint32_t *leaves,
+int vct_bvh_cost(vct_context *ctx, const vct_bvh *b, double *sah, double *area, uint32_t *leaves,
                  vct_error *err) {
     float *nodes = malloc((size_t)NODE_BYTES * b->node_count);
     if (!nodes)
@@ -318,6 +318,8 @@ int vct_bvh_cost(vct_context *ctx, const vct_bvh *b, double *sah, uint32_t *leav
             root = a;
     }
     *sah = root > 0.0 ? total / root : 0.0;
+    if (area)
+        *area = total;
     free(nodes);
     return rc;
 }

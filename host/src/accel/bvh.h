@@ -31,8 +31,10 @@ int vct_bvh_refit(vct_context *ctx, vct_bvh *b, const vct_scene *s, vct_error *e
 int vct_bvh_read(vct_context *ctx, const vct_bvh *b, float *nodes, uint32_t *tri_ids,
                  vct_error *err);
 /* Surface-area cost: (sum over nodes of area + sum over leaves of area x
- * triangles) / root area, both costs 1; also leaf count and bytes. */
-int vct_bvh_cost(vct_context *ctx, const vct_bvh *b, double *sah, uint32_t *leaves, vct_error *err);
+ * triangles) / root area, both costs 1; *area (where not NULL) that sum
+ * before the division; also the leaf count. */
+int vct_bvh_cost(vct_context *ctx, const vct_bvh *b, double *sah, double *area, uint32_t *leaves,
+                 vct_error *err);
 void vct_bvh_free(vct_bvh *b);
 
 #endif

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "accel/accel.h"
+#include "accel/bvh.h"
 #include "device_scene/device_scene_prepare.h"
 #include "device_scene/moved_region.h"
 #include "device_scene/scene_digest.h"
@@ -38,7 +39,8 @@ struct vct_device_scene {
     vct_scene_digest digest;
     vct_accel *accel;
     vct_accel_options accel_key;
-    vct_voxels *voxels; /* NULL: none built, or the last plan needed none */
+    double accel_built_area; /* one level: its nodes' area sum as built (0: not measured) */
+    vct_voxels *voxels;      /* NULL: none built, or the last plan needed none */
     /* The voxels a change of geometry or materials left, kept until the next
      * render that needs voxels: a job that carries light gathers from them. */
     vct_voxels *voxels_before;
@@ -107,6 +109,35 @@ static void drop_voxels_before(vct_device_scene *ds) {
     ds->voxels_before = NULL;
 }
 
+/* One level, its vertices moved: the BVH's boxes refit to them (the same
+ * hits as a rebuild: ties go to the lower triangle index), unless that grew
+ * the surface area its nodes sum to (the SAH cost before it is divided by
+ * the root's) past VCT_REFIT_DEGRADED times the built tree's; then it is
+ * built again at the next render. */
+#define VCT_REFIT_DEGRADED 1.5
+
+static int refit_one_level(vct_device_scene *ds, vct_error *err) {
+    vct_context *ctx = ds->ctx;
+    uint32_t leaves = 0;
+    double sah = 0.0, area = 0.0;
+    int rc = VCT_OK;
+    if (!(ds->accel_built_area > 0.0))
+        rc = vct_bvh_cost(ctx, ds->accel->bvh, &sah, &ds->accel_built_area, &leaves, err);
+    const uint64_t before = ctx->transfers.uploaded;
+    if (rc == VCT_OK)
+        rc = vct_accel_refit(ctx, ds->accel, ds->scene, err);
+    ds->stats.scene_bytes += ctx->transfers.uploaded - before;
+    if (rc == VCT_OK)
+        rc = vct_bvh_cost(ctx, ds->accel->bvh, &sah, &area, &leaves, err);
+    if (rc != VCT_OK || area > VCT_REFIT_DEGRADED * ds->accel_built_area) {
+        vct_accel_release(ds->accel);
+        ds->accel = NULL;
+        return rc;
+    }
+    ++ds->stats.accel_moves;
+    return VCT_OK;
+}
+
 vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
     vct_scene_digest now;
     vct_scene_digest_make(ds->scene, &now);
@@ -132,6 +163,9 @@ vct_status vct_device_scene_commit(vct_device_scene *ds, vct_error *err) {
         rc = vct_accel_refit(ctx, ds->accel, ds->scene, err);
         ds->stats.scene_bytes += ctx->transfers.uploaded - before;
         ++ds->stats.accel_moves;
+    } else if (ds->accel && !(changed & VCT_CHANGED_GEOMETRY) && !masks_changed &&
+               (changed & VCT_CHANGED_POSITIONS) && ds->accel->bvh) {
+        rc = refit_one_level(ds, err);
     } else if ((changed & (VCT_CHANGED_GEOMETRY | VCT_CHANGED_POSITIONS)) || masks_changed) {
         vct_accel_release(ds->accel);
         ds->accel = NULL;
@@ -158,6 +192,7 @@ static int need_accel(vct_device_scene *ds, const vct_accel_options *options, vc
     if (!ds->accel)
         return err->status;
     ds->accel_key = *options;
+    ds->accel_built_area = 0.0; /* measured at the first refit */
     ++ds->stats.accel_builds;
     return VCT_OK;
 }

@@ -39,33 +39,28 @@ int vct_voxels_inject_light_carried(vct_context *ctx, const vct_scene *s, const 
     return inject(ctx, s, g, v, &no_bins, 1, carry, err);
 }
 
-/* A ball holding the scene's emissive triangles: centre, radius (w); w -1
- * where there are none. */
-static cl_float4 emitter_ball(const vct_scene *s) {
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    int any = 0;
+/* The box around the scene's emissive triangles (lo.w 1 if any) and the
+ * radius of the ball around it (hi.w). */
+static void emitter_bounds(const vct_scene *s, cl_float4 *lo, cl_float4 *hi) {
+    for (int k = 0; k < 3; ++k)
+        lo->s[k] = INFINITY, hi->s[k] = -INFINITY;
+    lo->s[3] = hi->s[3] = 0.0f;
     for (uint32_t t = 0; t < s->triangle_count; ++t) {
         const float *e = s->materials[s->triangle_material[t]].emission;
         if (!(e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f))
             continue;
-        any = 1;
+        lo->s[3] = 1.0f;
         for (int i = 0; i < 3; ++i)
             for (int k = 0; k < 3; ++k) {
                 const float x = s->positions[3ull * s->triangles[3ull * t + i] + k];
-                lo[k] = fminf(lo[k], x);
-                hi[k] = fmaxf(hi[k], x);
+                lo->s[k] = fminf(lo->s[k], x);
+                hi->s[k] = fmaxf(hi->s[k], x);
             }
     }
-    cl_float4 ball = {{0.0f, 0.0f, 0.0f, -1.0f}};
-    if (!any)
-        return ball;
     double r2 = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        ball.s[k] = 0.5f * (lo[k] + hi[k]);
-        r2 += 0.25 * ((double)hi[k] - lo[k]) * ((double)hi[k] - lo[k]);
-    }
-    ball.s[3] = (float)(sqrt(r2) * (1.0 + 1e-6)) + 1e-6f; /* rounded up */
-    return ball;
+    for (int k = 0; lo->s[3] > 0.0f && k < 3; ++k)
+        r2 += 0.25 * ((double)hi->s[k] - lo->s[k]) * ((double)hi->s[k] - lo->s[k]);
+    hi->s[3] = (float)(sqrt(r2) * (1.0 + 1e-6)) + 1e-6f; /* rounded up */
 }
 
 /* carry_direct: each new voxel's voxel before, and its direct light kept
@@ -85,18 +80,20 @@ static int carry_direct(vct_context *ctx, cl_program p, const vct_scene *s, vct_
     const int bounced = before->bounces > 0 && before->direct_radiance;
     cl_mem before_radiance = bounced ? before->direct_radiance : before->radiance;
     cl_mem before_side = bounced ? before->direct_side : before->side;
-    cl_float4 emitters = emitter_ball(s);
+    cl_float4 emit_lo, emit_hi;
+    emitter_bounds(s, &emit_lo, &emit_hi);
     if (v->emitters_by_cones)
-        emitters.s[3] = -1.0f; /* emitters light no voxel directly */
+        emit_lo.s[3] = 0.0f; /* emitters light no voxel directly */
     vct_volume_desc vol;
     vct_voxels_volume_desc(v, &vol);
     int rc =
-        vct_run_kernel(ctx, p, "carry_direct", STAGE, n, err, 15, VCT_ARG_OF(vol),
+        vct_run_kernel(ctx, p, "carry_direct", STAGE, n, err, 16, VCT_ARG_OF(vol),
                        VCT_ARG_OF(v->keys), VCT_ARG(voxels, n), VCT_ARG(before_keys, before->keys),
                        VCT_ARG(before_voxels, before->info.voxels), VCT_ARG_OF(before_radiance),
                        VCT_ARG_OF(before_side), VCT_ARG_OF(boxes), VCT_ARG(box_count, c->box_count),
-                       VCT_ARG_OF(sb->lights), VCT_ARG_OF(sb->light_count), VCT_ARG_OF(emitters),
-                       VCT_ARG_OF(c->carried_from), VCT_ARG_OF(v->radiance), VCT_ARG_OF(v->side));
+                       VCT_ARG_OF(sb->lights), VCT_ARG_OF(sb->light_count), VCT_ARG_OF(emit_lo),
+                       VCT_ARG_OF(emit_hi), VCT_ARG_OF(c->carried_from), VCT_ARG_OF(v->radiance),
+                       VCT_ARG_OF(v->side));
     vct_buffer_release(ctx, boxes);
     return rc;
 }

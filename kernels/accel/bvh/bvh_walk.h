@@ -111,7 +111,11 @@ __attribute__((always_inline)) inline int bvh_take_hits(__global const float4 *t
                                                         hit_record *hit) {
     for (int k = 0; k < 4; ++k) {
         const float t = lane_get(h->t, k);
-        if (lane_geti(h->hit, k) && t <= *best &&
+        /* of two hits at the same distance the lower triangle index, so
+         * that the hit does not depend on the tree's order (a refit tree
+         * and a rebuilt one agree) */
+        const uint id = (uint)lane_geti(ids, k);
+        if (lane_geti(h->hit, k) && (t < *best || (t == *best && (!*found || id < hit->tri))) &&
             !accel_masked(tri_vertices, (uint)lane_geti(masks, k), lane_get(h->u, k),
                           lane_get(h->v, k))) {
             *best = t;
@@ -119,7 +123,7 @@ __attribute__((always_inline)) inline int bvh_take_hits(__global const float4 *t
             hit->t = t;
             hit->u = lane_get(h->u, k);
             hit->v = lane_get(h->v, k);
-            hit->tri = (uint)lane_geti(ids, k);
+            hit->tri = id;
             if (any_hit)
                 return 1;
         }
