@@ -95,8 +95,7 @@ static const cli_option accel_rows[] = {
      "(faster build)"},
     {"bvh-levels", 0, OPT_BVH_LEVELS, 1, "auto|one|two",
      "one BVH over every triangle, or a BVH per mesh under one over the instances (holds a "
-     "shared mesh once); auto (default): two where a mesh is placed more than once or the scene "
-     "is animated"},
+     "shared mesh once); auto (default): two where a mesh is placed more than once"},
     {"grid-res", 0, OPT_GRID_RES, CLI_ONE_OR_THREE, "N | NX NY NZ",
      "triangle grid cells per axis (default: from the triangle count)"},
 };

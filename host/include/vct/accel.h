@@ -47,11 +47,11 @@ typedef enum vct_bvh_builder { VCT_BVH_PLOC = 0, VCT_BVH_LINEAR = 1 } vct_bvh_bu
  * (each mesh once, however many instances place it) under a BVH over the
  * instances. Rays meet the same triangles either way and report the same
  * hits; two levels hold shared meshes once and move an instance by
- * rebuilding the top level alone. AUTO: two levels where some mesh is
- * placed more than once or the scene has animations (a moving instance is
- * then placed again, not built again). Two levels need the flat positions to be the
- * instances' (as loading and vct_scene_set_instance_transform keep them);
- * where a host edited the positions alone, one level is built. */
+ * rebuilding the top level alone, one level refits its boxes when vertices
+ * move. AUTO: two levels where some mesh is placed more than once. Two
+ * levels need the flat positions to be the instances' (as loading and
+ * vct_scene_set_instance_transform keep them); where a host edited the
+ * positions alone, one level is built. */
 typedef enum vct_bvh_levels {
     VCT_BVH_LEVELS_AUTO = 0,
     VCT_BVH_ONE_LEVEL = 1,

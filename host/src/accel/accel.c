@@ -36,11 +36,10 @@ vct_accel *vct_accel_build(vct_context *ctx, const vct_scene *s, const vct_accel
     a->ctx = ctx;
     const double start = vct_now_ms();
     const vct_bvh_levels levels = a->options.bvh_levels;
-    const int two =
-        s->instance_count > 0 &&
-        (levels == VCT_BVH_TWO_LEVELS ||
-         (levels == VCT_BVH_LEVELS_AUTO && (vct_instances_shared(s) || s->animation_count > 0))) &&
-        vct_instances_consistent(s);
+    const int two = s->instance_count > 0 &&
+                    (levels == VCT_BVH_TWO_LEVELS ||
+                     (levels == VCT_BVH_LEVELS_AUTO && vct_instances_shared(s))) &&
+                    vct_instances_consistent(s);
     if (a->kind == VCT_ACCEL_GRID)
         a->grid = vct_grid_build(ctx, s, a->options.grid_res, err);
     else if (two)
