@@ -129,8 +129,9 @@ update_rows() { # scene frame: "| stage | full | rebuilt | ratio | carried | rat
         { full = $2; a = $3; b = carried[$1]
           frame = $1 ~ /^vct / ? " (the frame)" : ""
           if (frame == "") { F += full; A += a; B += b }
-          printf "| %s%s | %.1f | %.1f | %.2f | %.1f | %.2f |\n", $1, frame, full, a,
-              full ? a / full : 0, b, full ? b / full : 0 }
+          ra = full ? sprintf("%.2f", a / full) : "-"
+          rb = full ? sprintf("%.2f", b / full) : "-"
+          printf "| %s%s | %.1f | %.1f | %s | %.1f | %s |\n", $1, frame, full, a, ra, b, rb }
         END { printf "| **all but the frame** | **%.1f** | **%.1f** | **%.2f** | **%.1f** | **%.2f** |\n",
               F, A, A / F, B, B / F }' "$work/carried.tsv" "$work/rebuilt.tsv"
 }
