@@ -12,11 +12,8 @@
 # usage: bench/flicker.sh
 set -eu
 cd "$(dirname "$0")/.."
-export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
-export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
-tools/python.sh scenes/suite/make_suite.py >/dev/null
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+# shellcheck source=bench/suite_env.sh
+. bench/suite_env.sh
 size="--size 192 144"
 frames=60
 deg=6

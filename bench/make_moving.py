@@ -4,10 +4,10 @@ buffers embedded) and replaces its animations by one, "move", that slides
 node NODE by (DX, DY, DZ) from its place over SECONDS and back over as many.
 
 usage: make_moving.py IN.gltf OUT.gltf NODE DX DY DZ SECONDS"""
-import base64
 import json
-import struct
 import sys
+
+from gltf_anim import add_animation
 
 
 def main():
@@ -17,22 +17,8 @@ def main():
     g = json.load(open(src))
     rest = g["nodes"][node].get("translation", [0.0, 0.0, 0.0])
     moved = [rest[k] + d[k] for k in range(3)]
-    keys = struct.pack("<3f", 0.0, seconds, 2 * seconds) + struct.pack("<9f", *rest, *moved, *rest)
-    g["buffers"].append({"byteLength": len(keys), "uri": "data:application/octet-stream;base64,"
-                         + base64.b64encode(keys).decode()})
-    buf = len(g["buffers"]) - 1
-    g["bufferViews"] += [{"buffer": buf, "byteOffset": 0, "byteLength": 12},
-                         {"buffer": buf, "byteOffset": 12, "byteLength": 36}]
-    view = len(g["bufferViews"]) - 2
-    g["accessors"] += [{"bufferView": view, "componentType": 5126, "count": 3, "type": "SCALAR",
-                        "min": [0.0], "max": [2 * seconds]},
-                       {"bufferView": view + 1, "componentType": 5126, "count": 3,
-                        "type": "VEC3"}]
-    acc = len(g["accessors"]) - 2
-    g["animations"] = [{"name": "move",
-                        "samplers": [{"input": acc, "output": acc + 1, "interpolation": "LINEAR"}],
-                        "channels": [{"sampler": 0,
-                                      "target": {"node": node, "path": "translation"}}]}]
+    add_animation(g, "move", node, "translation", [0.0, seconds, 2 * seconds],
+                  [rest, moved, rest])
     json.dump(g, open(dst, "w"))
 
 

@@ -5,11 +5,11 @@ world's up axis from -DEG to +DEG degrees over SECONDS, its eye still. With
 DEG 0 the camera stays: the same sequence with nothing moving.
 
 usage: make_pan.py IN.gltf OUT.gltf DEG SECONDS"""
-import base64
 import json
 import math
-import struct
 import sys
+
+from gltf_anim import add_animation
 
 
 def yaw(deg, q):
@@ -29,21 +29,7 @@ def main():
     g = json.load(open(src))
     cam = next(i for i, n in enumerate(g["nodes"]) if "camera" in n)
     q0 = g["nodes"][cam].get("rotation", [0, 0, 0, 1])
-    keys = struct.pack("<2f", 0.0, seconds) + struct.pack("<8f", *yaw(-deg, q0), *yaw(deg, q0))
-    g["buffers"].append({"byteLength": len(keys), "uri": "data:application/octet-stream;base64,"
-                         + base64.b64encode(keys).decode()})
-    buf = len(g["buffers"]) - 1
-    g["bufferViews"] += [{"buffer": buf, "byteOffset": 0, "byteLength": 8},
-                         {"buffer": buf, "byteOffset": 8, "byteLength": 32}]
-    view = len(g["bufferViews"]) - 2
-    g["accessors"] += [{"bufferView": view, "componentType": 5126, "count": 2, "type": "SCALAR",
-                        "min": [0.0], "max": [seconds]},
-                       {"bufferView": view + 1, "componentType": 5126, "count": 2,
-                        "type": "VEC4"}]
-    acc = len(g["accessors"]) - 2
-    g["animations"] = [{"name": "pan",
-                        "samplers": [{"input": acc, "output": acc + 1, "interpolation": "LINEAR"}],
-                        "channels": [{"sampler": 0, "target": {"node": cam, "path": "rotation"}}]}]
+    add_animation(g, "pan", cam, "rotation", [0.0, seconds], [yaw(-deg, q0), yaw(deg, q0)])
     json.dump(g, open(dst, "w"))
 
 

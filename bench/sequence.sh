@@ -6,11 +6,8 @@
 # usage: bench/sequence.sh
 set -eu
 cd "$(dirname "$0")/.."
-export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
-export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
-tools/python.sh scenes/suite/make_suite.py >/dev/null
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+# shellcheck source=bench/suite_env.sh
+. bench/suite_env.sh
 ./build/vct render scenes/suite/lamp_room.gltf --size 240 180 --frames 0:24 --stats \
     -o "$work/f_%02d.png" >/dev/null 2>"$work/stats.txt"
 tools/python.sh - "$work" <<'PY'

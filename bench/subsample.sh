@@ -7,11 +7,8 @@
 # usage: bench/subsample.sh
 set -eu
 cd "$(dirname "$0")/.."
-export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
-export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
-tools/python.sh scenes/suite/make_suite.py >/dev/null
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+# shellcheck source=bench/suite_env.sh
+. bench/suite_env.sh
 rows=$work/rows.md
 for scene in scenes/cornell_box.gltf scenes/suite/glass_mirror_box.gltf scenes/suite/small_objects.gltf; do
     ./build/vct render "$scene" --method whitted --size 320 240 -o "$work/full.pfm" >/dev/null 2>&1

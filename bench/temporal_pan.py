@@ -19,15 +19,8 @@ import sys
 
 import numpy as np
 
+from make_pan import yaw
 from pfm import read_pfm
-
-
-def yaw(deg, q):
-    h = math.radians(deg) / 2
-    ax, ay, az, aw = 0.0, math.sin(h), 0.0, math.cos(h)
-    bx, by, bz, bw = q
-    return (aw * bx + ax * bw + ay * bz - az * by, aw * by - ax * bz + ay * bw + az * bx,
-            aw * bz + ax * by - ay * bx + az * bw, aw * bw - ax * bx - ay * by - az * bz)
 
 
 def basis(q):

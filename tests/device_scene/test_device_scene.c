@@ -380,12 +380,87 @@ static vct_image indirect_of(vct_device_scene *ds, const vct_render_job *job) {
     return indirect;
 }
 
-/* Light carried over (light_carry): a moved light relights without a BVH
- * or voxels, one bounce a render until the light from before has faded
- * (as many renders as the measured bounce ratio asks), then nothing more;
+/* Renders a carrying job on ds until its light has settled, and more: how
+ * many renders in a row relit (settle expected: as many as the measured
+ * bounce ratio asks), the first render's indirect light and the last's. */
+typedef struct carried_renders {
+    uint32_t settle, relit_in_a_row, relit_after; /* relit_after: in the 2 renders after */
+    vct_image first, last;
+    vct_device_scene_stats before, after;
+} carried_renders;
+
+static uint32_t settle_renders(double ratio) {
+    uint32_t settle = ratio > 0.0 ? (uint32_t)ceil(log(0.01) / log(ratio)) : 8;
+    return settle < 4 ? 4 : settle > 16 ? 16 : settle;
+}
+
+static carried_renders render_until_settled(vct_device_scene *ds, const vct_render_job *job,
+                                            double ratio) {
+    carried_renders c;
+    memset(&c, 0, sizeof c);
+    c.settle = settle_renders(ratio);
+    vct_device_scene_stats_get(ds, &c.before);
+    uint32_t relit[18] = {0};
+    for (uint32_t r = 0; r < c.settle + 2; ++r) {
+        vct_device_scene_stats a, b;
+        vct_device_scene_stats_get(ds, &a);
+        vct_image im = indirect_of(ds, job);
+        vct_device_scene_stats_get(ds, &b);
+        relit[r] = b.light_builds - a.light_builds;
+        if (r == 0)
+            c.first = im;
+        else {
+            vct_image_release(&c.last);
+            c.last = im;
+        }
+    }
+    while (c.relit_in_a_row < c.settle + 2 && relit[c.relit_in_a_row] == 1)
+        ++c.relit_in_a_row;
+    c.relit_after = relit[c.settle] + relit[c.settle + 1];
+    vct_device_scene_stats_get(ds, &c.after);
+    return c;
+}
+
+/* The indirect light of a fresh device scene of s, every bounce built. */
+static vct_image fresh_indirect_of(const vct_scene *s, vct_render_job job) {
+    vct_error err = {0};
+    vct_scene copy = *s; /* another address: another resident copy */
+    vct_device_scene *again = vct_device_scene_create(ctx, &copy, &err);
+    REQUIRE_OK(again ? VCT_OK : err.status, err);
+    job.light_carry = 0;
+    vct_image im = indirect_of(again, &job);
+    vct_device_scene_release(again);
+    return im;
+}
+
+static void move_light(vct_scene *s) {
+    s->lights[0].position[0] += 200.0f; /* towards a coloured wall (millimetres) */
+}
+
+static void move_green_wall(vct_scene *s) {
+    vct_error err = {0};
+    for (uint32_t i = 0; i < s->instance_count; ++i) {
+        if (strcmp(s->materials[s->triangle_material[s->instances[i].first_triangle]].name,
+                   "green") != 0)
+            continue;
+        float m[12];
+        memcpy(m, s->instances[i].transform, sizeof m);
+        m[3] += 60.0f; /* inward: the scene's bounds stay */
+        REQUIRE_OK(vct_scene_set_instance_transform(s, i, m, &err), err);
+    }
+}
+
+/* Light carried over (light_carry) after `change`, on the Cornell box:
+ * the voxels built `voxel_builds` times (0 for a light, once for moved
+ * geometry), one bounce a render until the light from before has faded (as
+ * many renders as the measured bounce ratio asks), then nothing more;
  * settled, the indirect light is a fresh build's within 2 %, where the
- * light from before differs from it by more than ten times that. */
-static void check_light_carry(void) {
+ * light from before differs from it by more than ten times that. first:
+ * where not 0, the bound at the first render (moved geometry gathers from
+ * the voxels before, every bounce of the frame before: without them the
+ * first render would hold one bounce alone). */
+static void check_carry(const char *what, void (*change)(vct_scene *), uint32_t voxel_builds,
+                        double first) {
     vct_error err = {0};
     vct_scene *s = check_cornell_box_point_light();
     vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
@@ -395,127 +470,30 @@ static void check_light_carry(void) {
     job.bounces = 4; /* measures the bounce ratio that sets how long the light settles */
     vct_image old_indirect = indirect_of(ds, &job);
     const double ratio = vct_voxels_bounce_ratio(vct_device_scene_voxels(ds));
-    uint32_t settle = ratio > 0.0 ? (uint32_t)ceil(log(0.01) / log(ratio)) : 8;
-    settle = settle < 4 ? 4 : settle > 16 ? 16 : settle;
-    s->lights[0].position[0] += 200.0f; /* towards a coloured wall (millimetres) */
-    vct_device_scene_stats before, after;
-    vct_device_scene_stats_get(ds, &before);
-    uint32_t relit[18] = {0}, ones = 0;
-    vct_image carried = {0};
-    for (uint32_t r = 0; r < settle + 2; ++r) {
-        vct_device_scene_stats a, b;
-        vct_device_scene_stats_get(ds, &a);
-        vct_image_release(&carried);
-        carried = indirect_of(ds, &job);
-        vct_device_scene_stats_get(ds, &b);
-        relit[r] = b.light_builds - a.light_builds;
-    }
-    while (ones < settle + 2 && relit[ones] == 1)
-        ++ones;
-    vct_device_scene_stats_get(ds, &after);
-    CHECK(after.accel_builds == before.accel_builds && after.voxel_builds == before.voxel_builds,
-          "carried light: %u BVH and %u voxel builds", after.accel_builds - before.accel_builds,
-          after.voxel_builds - before.voxel_builds);
-    CHECK(ones == settle && relit[settle] == 0 && relit[settle + 1] == 0,
-          "carried light: relit in %u renders in a row, expected %u (bounce ratio %.3f)", ones,
-          settle, ratio);
-    /* a fresh build of the moved light, with the same job */
-    vct_scene copy = *s;
-    vct_device_scene *again = vct_device_scene_create(ctx, &copy, &err);
-    REQUIRE_OK(again ? VCT_OK : err.status, err);
-    job.light_carry = 0;
-    vct_image fresh_indirect = indirect_of(again, &job);
-    vct_device_scene_release(again);
-    const double e = nrmse(&carried, &fresh_indirect),
-                 moved = nrmse(&old_indirect, &fresh_indirect);
-    CHECK(e < 0.02 && moved > 10.0 * e,
-          "carried light, settled: indirect NRMSE %.4f against a fresh build (the light before "
-          "the move: %.4f)",
-          e, moved);
-    printf("carried light: 1 bounce a render, settled after %u (bounce ratio %.3f); indirect "
-           "NRMSE %.4f against a fresh build, %.4f before the move\n",
-           settle, ratio, e, moved);
-    vct_image_release(&carried);
+    change(s);
+    carried_renders c = render_until_settled(ds, &job, ratio);
+    CHECK(c.after.accel_builds == c.before.accel_builds &&
+              c.after.voxel_builds == c.before.voxel_builds + voxel_builds,
+          "%s: %u BVH and %u voxel builds, expected 0 and %u", what,
+          c.after.accel_builds - c.before.accel_builds,
+          c.after.voxel_builds - c.before.voxel_builds, voxel_builds);
+    CHECK(c.relit_in_a_row == c.settle && c.relit_after == 0,
+          "%s: relit in %u renders in a row, expected %u (bounce ratio %.3f)", what,
+          c.relit_in_a_row, c.settle, ratio);
+    vct_image fresh = fresh_indirect_of(s, job);
+    const double e_first = nrmse(&c.first, &fresh), e = nrmse(&c.last, &fresh),
+                 moved = nrmse(&old_indirect, &fresh);
+    CHECK(e < 0.02 && moved > 10.0 * e && (!(first > 0.0) || e_first < first),
+          "%s: indirect NRMSE %.4f at the first render, %.4f settled, against a fresh build "
+          "(the light before the change: %.4f)",
+          what, e_first, e, moved);
+    printf("%s: %u voxel builds, one bounce a render, settled after %u (bounce ratio %.3f); "
+           "indirect NRMSE %.4f at the first render, %.4f settled, %.4f before the change\n",
+           what, voxel_builds, c.settle, ratio, e_first, e, moved);
+    vct_image_release(&c.first);
+    vct_image_release(&c.last);
     vct_image_release(&old_indirect);
-    vct_image_release(&fresh_indirect);
-    vct_device_scene_release(ds);
-    vct_scene_release(s);
-}
-
-/* Light carried over a change of geometry (light_carry): the green wall of
- * the Cornell box moves 60 mm inward. The voxels are built again once; their
- * light is the new direct light and one bounce gathered through the voxels
- * before (every bounce of the frame before), so that the first render is
- * already close to a fresh build, and a bounce a render settles it. Without
- * the light before, the first render would hold one bounce alone. */
-static void check_geometry_carry(void) {
-    vct_error err = {0};
-    vct_scene *s = check_cornell_box_point_light();
-    vct_device_scene *ds = vct_device_scene_create(ctx, s, &err);
-    REQUIRE_OK(ds ? VCT_OK : err.status, err);
-    vct_render_job job = job_for(VCT_METHOD_VCT);
-    job.light_carry = 1;
-    job.bounces = 4;
-    vct_image old_indirect = indirect_of(ds, &job);
-    const double ratio = vct_voxels_bounce_ratio(vct_device_scene_voxels(ds));
-    uint32_t settle = ratio > 0.0 ? (uint32_t)ceil(log(0.01) / log(ratio)) : 8;
-    settle = settle < 4 ? 4 : settle > 16 ? 16 : settle;
-    uint32_t wall = 0;
-    while (wall < s->instance_count &&
-           strcmp(s->materials[s->triangle_material[s->instances[wall].first_triangle]].name,
-                  "green") != 0)
-        ++wall;
-    if (wall == s->instance_count) {
-        CHECK(0, "geometry carry: no green wall");
-        return;
-    }
-    float m[12];
-    memcpy(m, s->instances[wall].transform, sizeof m);
-    m[3] += 60.0f; /* inward: the scene's bounds stay */
-    REQUIRE_OK(vct_scene_set_instance_transform(s, wall, m, &err), err);
-    vct_device_scene_stats before, after;
-    vct_device_scene_stats_get(ds, &before);
-    uint32_t relit[18] = {0}, ones = 0;
-    vct_image carried = {0}, first = {0};
-    for (uint32_t r = 0; r < settle + 2; ++r) {
-        vct_device_scene_stats a, b;
-        vct_device_scene_stats_get(ds, &a);
-        vct_image_release(&carried);
-        carried = indirect_of(ds, &job);
-        if (r == 0) { /* kept: the first render after the move */
-            first = carried;
-            memset(&carried, 0, sizeof carried);
-        }
-        vct_device_scene_stats_get(ds, &b);
-        relit[r] = b.light_builds - a.light_builds;
-    }
-    while (ones < settle + 2 && relit[ones] == 1)
-        ++ones;
-    vct_device_scene_stats_get(ds, &after);
-    CHECK(after.voxel_builds == before.voxel_builds + 1,
-          "geometry carry: %u voxel builds, expected 1", after.voxel_builds - before.voxel_builds);
-    CHECK(ones == settle && relit[settle] == 0 && relit[settle + 1] == 0,
-          "geometry carry: relit in %u renders in a row, expected %u (bounce ratio %.3f)", ones,
-          settle, ratio);
-    vct_scene copy = *s;
-    vct_device_scene *again = vct_device_scene_create(ctx, &copy, &err);
-    REQUIRE_OK(again ? VCT_OK : err.status, err);
-    job.light_carry = 0;
-    vct_image fresh_indirect = indirect_of(again, &job);
-    vct_device_scene_release(again);
-    const double e_first = nrmse(&first, &fresh_indirect), e = nrmse(&carried, &fresh_indirect),
-                 moved = nrmse(&old_indirect, &fresh_indirect);
-    CHECK(e_first < 0.05 && e < 0.02 && moved > 2.0 * e_first,
-          "geometry carry: indirect NRMSE %.4f at the first render, %.4f settled, against a "
-          "fresh build (the light before the move: %.4f)",
-          e_first, e, moved);
-    printf("geometry carry: voxels built once, their light carried and settled after %u renders; "
-           "indirect NRMSE %.4f at the first render, %.4f settled, %.4f before the move\n",
-           settle, e_first, e, moved);
-    vct_image_release(&first);
-    vct_image_release(&carried);
-    vct_image_release(&old_indirect);
-    vct_image_release(&fresh_indirect);
+    vct_image_release(&fresh);
     vct_device_scene_release(ds);
     vct_scene_release(s);
 }
@@ -550,8 +528,8 @@ int main(void) {
     check_changes();
     check_moved_instances();
     check_resume();
-    check_light_carry();
-    check_geometry_carry();
+    check_carry("carried light, a light moved", move_light, 0, 0.0);
+    check_carry("carried light, the green wall moved", move_green_wall, 1, 0.05);
     check_other_context();
     vct_context_release(ctx);
     return check_exit("test_device_scene");
