@@ -19,6 +19,11 @@ glTF file cannot hold, is given as --ambient).
                     (base-colour textures), a table and a lamp
   spot_gallery      a closed gallery lit by three spot lights alone (soft and
                     hard cone edges) on pictures, a statue and the floor
+  long_hall         a long stone hall, columns 3 voxels wide, gallery slabs one
+                    voxel thick, banners of zero thickness, lit by the sun
+                    and sky through a slit in its roof
+  panel_room        a furnished room lit only by two small emissive ceiling
+                    panels: a table on thin legs, stools, a shelf of thin books
 """
 import math
 import os
@@ -333,8 +338,82 @@ def spot_gallery():
     s.write(os.path.join(OUT, "spot_gallery.gltf"))
 
 
+def long_hall():
+    s = Scene()
+    stone = s.material("stone", STONE)
+    floor = s.material("floor", (0.45, 0.42, 0.38))
+    cloth = [s.material("red banner", (0.6, 0.1, 0.08)),
+             s.material("blue banner", (0.1, 0.18, 0.55))]
+    # a long closed hall, 36 x 10 m and 10 m high (a voxel at 128^3 is about 0.3 m)
+    s.quads(floor, [[(-18, 0, -5), (-18, 0, 5), (18, 0, 5), (18, 0, -5)]])
+    for x0, x1, z0, z1 in [(-18.3, 18.3, -5.3, -5), (-18.3, 18.3, 5, 5.3), (-18.3, -18, -5, 5),
+                           (18, 18.3, -5, 5)]:
+        s.box(stone, (x0, 0, z0), (x1, 10, z1))
+    # the roof, open along a slit 0.8 m wide down the middle
+    s.box(stone, (-18.3, 10, -5.3), (18.3, 10.3, -0.4))
+    s.box(stone, (-18.3, 10, 0.4), (18.3, 10.3, 5.3))
+    # galleries: slabs one voxel thick on both sides, on columns 3 voxels wide
+    for z0, z1 in [(-5, -2.6), (2.6, 5)]:
+        s.box(stone, (-18, 4.0, z0), (18, 4.3, z1))
+    for side in (-2.6, 2.6):
+        for i in range(9):
+            x = -16 + 4 * i
+            zc = side - 0.45 if side > 0 else side + 0.45
+            s.box(stone, (x - 0.45, 0, zc - 0.45), (x + 0.45, 4.0, zc + 0.45))
+    # banners of zero thickness hanging from the galleries' edges
+    for k, x in enumerate((-14, -6, 2, 10)):
+        for side in (-2.6, 2.6):
+            s.quads(cloth[k % 2], [[(x, 1.6, side), (x + 1.4, 1.6, side), (x + 1.4, 3.9, side),
+                                    (x, 3.9, side)]])
+    # the sun through the slit, a strip of light along the floor
+    s.sun((0.25, -0.95, 0.18), 6.0, (1.0, 0.93, 0.82))
+    s.look((-16.5, 1.7, -1.2), (6, 3.5, 1.0), 60)
+    s.write(os.path.join(OUT, "long_hall.gltf"))
+
+
+def panel_room():
+    s = Scene()
+    wall = s.material("walls", (0.75, 0.73, 0.68))
+    floor = s.material("floor", (0.42, 0.3, 0.2))
+    wood = s.material("wood", (0.5, 0.34, 0.18))
+    book_colours = [s.material("red books", (0.55, 0.08, 0.06)),
+                    s.material("green books", (0.1, 0.35, 0.12)),
+                    s.material("cream books", (0.8, 0.75, 0.6))]
+    panel = s.material("ceiling panel", (0, 0, 0), emission=(1.0, 0.9, 0.75), strength=30.0)
+    s.quads(floor, [[(0, 0, 0), (0, 0, 4), (5, 0, 4), (5, 0, 0)]])
+    s.box(wall, (0, 0, 0), (5, 2.7, 4), skip=("-y",))
+    # two small emissive panels, 0.4 m square, 1 cm below the ceiling
+    for cx, cz in [(1.6, 1.6), (3.5, 2.6)]:
+        s.quads(panel, [[(cx - 0.2, 2.69, cz - 0.2), (cx + 0.2, 2.69, cz - 0.2),
+                         (cx + 0.2, 2.69, cz + 0.2), (cx - 0.2, 2.69, cz + 0.2)]])
+    # a table: a top 3 cm thick on four legs 4 cm square
+    s.box(wood, (1.8, 0.72, 1.4), (3.4, 0.75, 2.4))
+    for x, z in [(1.85, 1.45), (3.31, 1.45), (1.85, 2.31), (3.31, 2.31)]:
+        s.box(wood, (x, 0, z), (x + 0.04, 0.72, z + 0.04))
+    # three stools: a seat on three thin legs
+    for cx, cz in [(1.5, 2.9), (2.6, 0.9), (3.8, 2.9)]:
+        s.box(wood, (cx - 0.17, 0.45, cz - 0.17), (cx + 0.17, 0.48, cz + 0.17))
+        for k in range(3):
+            a = 2 * math.pi * k / 3
+            x, z = cx + 0.12 * math.cos(a), cz + 0.12 * math.sin(a)
+            s.box(wood, (x - 0.015, 0, z - 0.015), (x + 0.015, 0.45, z + 0.015))
+    # a shelf against the back wall, thin books standing on its boards
+    for y in (0.9, 1.35, 1.8):
+        s.box(wood, (0.6, y - 0.02, 3.7), (2.4, y, 3.98))
+        x = 0.65
+        k = 0
+        while x < 2.3:
+            t = 0.02 + 0.01 * (k % 3)
+            h = 0.22 + 0.03 * ((k * 7) % 4)
+            s.box(book_colours[k % 3], (x, y, 3.75), (x + t, y + h, 3.96))
+            x += t + 0.005
+            k += 1
+    s.look((4.6, 1.6, 0.3), (1.8, 0.8, 3.2), 60)
+    s.write(os.path.join(OUT, "panel_room.gltf"))
+
+
 if __name__ == "__main__":
     for make in (atrium, window_room, glass_mirror_box, blinds_fins, dense_hall, lamp_room,
-                 small_objects, textured_room, spot_gallery):
+                 small_objects, textured_room, spot_gallery, long_hall, panel_room):
         make()
         print("wrote", make.__name__)
