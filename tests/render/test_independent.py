@@ -2,8 +2,10 @@
 """The path tracer against an independent one (Mitsuba 3, through
 tools/mitsuba_check.py) on scenes of the suite that together hold every light
 and material kind the converter maps: a point light, a sky through a window
-with a sun, double-sided emissive lamp shades, an emissive panel, mirrors,
-glass, a glossy metal, base-colour textures and an alpha-masked plant. Both render the same glTF file at 64x64 and 1024
+with a sun (through a window, and through a roof slit onto thin slabs and
+banners), double-sided emissive lamp shades, an emissive panel and two small
+ones lighting a room alone, mirrors, glass, a glossy metal, base-colour
+textures and an alpha-masked plant. Both render the same glTF file at 64x64 and 1024
 spp; the NRMSE of 4x4-pixel block means and the ratio of the means must stay
 within a bound above the noise left at that count (measured: block NRMSE at
 most 0.039, in the lamp room, means within 0.7 %) and below what a wrong light
@@ -25,7 +27,9 @@ SCENES = [("cornell_box", "scenes/cornell_box.gltf", None),
           ("small_objects", "scenes/suite/small_objects.gltf", None),
           ("glass_mirror_box", "scenes/suite/glass_mirror_box.gltf", None),
           ("textured_room", "scenes/suite/textured_room.gltf", None),
-          ("blinds_fins", "scenes/suite/blinds_fins.gltf", (0.35, 0.45, 0.6))]
+          ("blinds_fins", "scenes/suite/blinds_fins.gltf", (0.35, 0.45, 0.6)),
+          ("long_hall", "scenes/suite/long_hall.gltf", (0.35, 0.45, 0.6)),
+          ("panel_room", "scenes/suite/panel_room.gltf", None)]
 
 
 def main():
