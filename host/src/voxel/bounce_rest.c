@@ -65,9 +65,15 @@ vct_status vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *v, vct_error *er
     float rest = 0.0f;
     if (v->bounce_rest && v->bounces_measured >= 2 && v->bounce_light[0] > 0.0) {
         /* A ratio near 1 would make the rest unbounded: no surface keeps
-         * 90 % of what reaches it, bounce after bounce, in a scene we render. */
+         * 90 % of what reaches it, bounce after bounce, in a scene we render;
+         * nor more than the brightest albedo. After a few bounces light
+         * entering by a slit can still be spreading (the ratio of the first
+         * bounces above the series' own): the bound keeps the rest finite. */
+        const double most = v->albedo_max > 0.0 && v->albedo_max < VCT_BOUNCE_RATIO_MAX
+                                ? v->albedo_max
+                                : VCT_BOUNCE_RATIO_MAX;
         double r = v->bounce_light[1] / v->bounce_light[0];
-        r = r < 0.0 ? 0.0 : (r > VCT_BOUNCE_RATIO_MAX ? VCT_BOUNCE_RATIO_MAX : r);
+        r = r < 0.0 ? 0.0 : (r > most ? most : r);
         v->bounce_ratio = r;
         rest = (float)(r / (1.0 - r));
     }

@@ -274,6 +274,13 @@ static vct_voxels *voxels_new(vct_context *ctx, const vct_scene *s, const vct_vo
         ++info->levels;
     info->units = UNITS;
     info->triangles = s->triangle_count;
+    uint8_t *used = calloc(s->material_count + 1, 1); /* materials some triangle has */
+    for (uint32_t t = 0; used && t < s->triangle_count; ++t)
+        used[s->triangle_material[t]] = 1;
+    for (uint32_t m = 0; m < s->material_count; ++m)
+        for (int c = 0; c < 3 && (!used || used[m]); ++c)
+            v->albedo_max = fmax(v->albedo_max, (double)s->materials[m].albedo[c]);
+    free(used);
     if (o->has_bounds) {
         memcpy(info->origin, o->bounds_min, sizeof info->origin);
         info->side = o->bounds_size;

@@ -40,6 +40,10 @@ struct vct_voxels {
     double bounce_light[2];
     uint32_t bounces_measured;
     double bounce_ratio;
+    /* The brightest albedo channel of the scene's materials (textures only
+     * darken it): no bounce can keep more of the light before it, which
+     * bounds the measured ratio where a few bounces are not yet its own. */
+    double albedo_max;
     int radiance_stale; /* the bricks' radiance waits for the rest */
     /* Octree: built by vct_octree_build (child is NULL before). */
     cl_mem child, neighbours, tile_parent;
