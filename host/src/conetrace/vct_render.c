@@ -167,9 +167,7 @@ static int check_bounces(uint32_t bounces, vct_error *err) {
 /* 1 when b's voxels can take a's light: the same volume frame, and light
  * in a's voxels. */
 static int same_frame(const vct_voxels *a, const vct_voxels *b) {
-    return a->radiance && a->side && a->info.resolution == b->info.resolution &&
-           a->info.side == b->info.side &&
-           memcmp(a->info.origin, b->info.origin, sizeof a->info.origin) == 0;
+    return a->radiance && a->side && vct_voxels_same_frame(a, b);
 }
 
 /* 1 when cones for b's voxels can march through a's bricks. */

@@ -409,11 +409,9 @@ static vct_voxels *voxelize(vct_context *ctx, const vct_scene *s, const vct_voxe
         return NULL;
     /* what moved is voxelized again where the triangles before are at hand
      * in the same volume frame */
-    if (before &&
-        !(before->tris && before->tri_normals && before->fragment_tri &&
-          before->info.triangles == s->triangle_count && lo <= hi && hi <= s->triangle_count &&
-          before->info.resolution == v->info.resolution && before->info.side == v->info.side &&
-          memcmp(before->info.origin, v->info.origin, sizeof v->info.origin) == 0))
+    if (before && !(before->tris && before->tri_normals && before->fragment_tri &&
+                    before->info.triangles == s->triangle_count && lo <= hi &&
+                    hi <= s->triangle_count && vct_voxels_same_frame(before, v)))
         before = NULL;
     voxelize_state st = {.ctx = ctx, .v = v, .thin = o->thin != 0};
     if (before) { /* taken over: the triangles that did not move are there */

@@ -42,6 +42,11 @@ void vct_voxels_release(vct_voxels *v) {
     free(v);
 }
 
+int vct_voxels_same_frame(const vct_voxels *a, const vct_voxels *b) {
+    return a->info.resolution == b->info.resolution && a->info.side == b->info.side &&
+           memcmp(a->info.origin, b->info.origin, sizeof a->info.origin) == 0;
+}
+
 void vct_voxels_info_get(const vct_voxels *v, vct_voxel_info *info) {
     *info = v->info;
 }

@@ -94,6 +94,10 @@ vct_voxels *vct_voxelize_moved(vct_context *ctx, const vct_scene *s, const vct_v
                                vct_voxels *before, uint32_t moved_lo, uint32_t moved_hi,
                                vct_error *err);
 
+/* 1 when a and b cover the same volume at the same resolution: a voxel
+ * key means the same place in both. */
+int vct_voxels_same_frame(const vct_voxels *a, const vct_voxels *b);
+
 /* Volume description for kernels (vct_volume_desc in kernels/vct_types.h). */
 void vct_voxels_volume_desc(const vct_voxels *voxels, void *out_desc);
 /* The largest power-of-two resolution below `res` at which `bytes`, growing
