@@ -20,6 +20,8 @@ static const cli_option_group *const voxelize_groups[] = {&cli_group_output,
                                                           &cli_group_scene,
                                                           &cli_group_voxels,
                                                           NULL};
+static const cli_option_group *const compile_groups[] = {
+    &cli_group_device, &cli_group_scene, &cli_group_accel, &cli_group_vct, &cli_group_voxels, NULL};
 static const cli_option_group *const compare_groups[] = {&cli_group_compare, NULL};
 static const cli_option_group *const view_groups[] = {&cli_group_view,     &cli_group_denoise,
                                                       &cli_group_tone,     &cli_group_device,
@@ -51,6 +53,15 @@ static const cli_command voxelize = {
     "counts, memory and time; -o renders the voxels",
     voxelize_groups,
     cmd_voxelize};
+static const cli_command compile = {
+    "compile",
+    "SCENE",
+    1,
+    1,
+    "compile the kernel programs that rendering the scene needs, by every method, into the "
+    "kernel cache, so that no render waits for the compiler (once per device and driver)",
+    compile_groups,
+    cmd_compile};
 static const cli_command compare = {
     "compare",
     "TEST.pfm REFERENCE.pfm",
@@ -61,7 +72,8 @@ static const cli_command compare = {
     compare_groups,
     cmd_compare};
 
-const cli_command *const vct_commands[] = {&devices, &info, &render, &voxelize, &compare, NULL};
+const cli_command *const vct_commands[] = {&devices, &info,    &render, &voxelize,
+                                           &compile, &compare, NULL};
 
 const cli_command vct_view_command = {
     "",

@@ -9,5 +9,6 @@ int cmd_info(const cli_options *opt);
 int cmd_render(const cli_options *opt);
 int cmd_compare(const cli_options *opt);
 int cmd_voxelize(const cli_options *opt);
+int cmd_compile(const cli_options *opt);
 
 #endif

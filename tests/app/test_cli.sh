@@ -27,7 +27,7 @@ expect_exit() {
 expect_exit 0 "vct --help" "$VCT" --help
 expect_exit 0 "vct -h" "$VCT" -h
 expect_exit 0 "vct --version" "$VCT" --version
-for cmd in devices info render voxelize compare; do
+for cmd in devices info render voxelize compile compare; do
     expect_exit 0 "vct $cmd --help" "$VCT" $cmd --help
 done
 expect_exit 0 "vct-view --help" "$VIEW" --help
