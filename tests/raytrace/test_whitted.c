@@ -235,7 +235,9 @@ static vct_image render_sub(const vct_scene *s, int w, int h, uint32_t n, float 
  * contrast test traces the centre, finds it far from the corners' bilinear
  * value, and refines the square, so the spot is traced. */
 static void check_centre_peak(void) {
-    const float plane[12] = {-L, -L, 0.0f, L, -L, 0.0f, L, L, 0.0f, -L, L, 0.0f};
+    /* far wider than the view: not a small object the guard would split */
+    const float plane[12] = {-4 * L, -4 * L, 0.0f, 4 * L,  -4 * L, 0.0f,
+                             4 * L,  4 * L,  0.0f, -4 * L, 4 * L,  0.0f};
     const vct_material m = matte(0.8f);
     vct_scene *s = quads_scene(plane, 1, &m);
     const vct_camera camera = {{0.0f, 0.0f, 100.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 40.0f};
@@ -441,20 +443,22 @@ static void check_small_objects(void) {
     s->camera = (vct_camera){{0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 40.0f};
     vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
-    vct_image im[3];
-    uint64_t traced[3], small = 0;
-    for (int i = 0; i < 3; ++i) {
-        vct_whitted_options o = {W, H, 8, 1e-3f, i ? 16u : 0u, i == 1, 0.0f};
+    /* full; N = 16 plain; N = 16 guarded; N = 2 guarded, where the spheres'
+     * boxes span 2 to 2.6 pixels: not smaller than the first squares, but
+     * smaller than the twice their size below which sub_fill splits */
+    vct_image im[4];
+    uint64_t traced[4], small[4] = {0};
+    for (int i = 0; i < 4; ++i) {
+        vct_whitted_options o = {W, H, 8, 1e-3f, i == 3 ? 2u : i ? 16u : 0u, i == 1, 0.0f};
         vct_whitted_result r = {0, 0, NULL, 0};
         REQUIRE_OK(vct_render_whitted(ctx, s, a, &o, &im[i], &r, &err), err);
         traced[i] = r.traced_pixels;
-        if (i == 2)
-            small = r.small_objects;
+        small[i] = r.small_objects;
     }
     /* The pixel at each sphere's centre, by the pinhole camera in double. */
     const v3 eye = v(0, 0, 10), f = v(0, 0, -1), rt = norm(cross(f, v(0, 1, 0))), up = cross(rt, f);
     const double th = tan(20.0 * PI / 180.0), aspect = (double)W / H;
-    int lost[2] = {0, 0}, seen = 0;
+    int lost[3] = {0, 0, 0}, seen = 0;
     for (int i = 0; i < NX * NY; ++i) {
         const v3 d = sub(v(centre[i][0], centre[i][1], centre[i][2]), eye);
         const double z = dot(d, f);
@@ -464,18 +468,21 @@ static void check_small_objects(void) {
             continue;
         const float *full = &im[0].rgba[4 * (y * W + x)];
         seen += full[1] < full[0] * 0.5f; /* red: the sphere, not the grey wall */
-        for (int k = 0; k < 2; ++k)
+        for (int k = 0; k < 3; ++k)
             lost[k] += memcmp(full, &im[1 + k].rgba[4 * (y * W + x)], 12) != 0;
     }
     CHECK(seen == NX * NY, "small objects: %d of %d sphere centres show the sphere", seen, NX * NY);
     CHECK(lost[0] > 0, "small objects: the plain scheme lost none: a weak test");
-    CHECK(lost[1] == 0 && small == (uint64_t)NX * NY,
+    CHECK(lost[1] == 0 && small[2] == (uint64_t)NX * NY,
           "small objects: the guard lost %d of %d spheres (%llu small objects found)", lost[1],
-          NX * NY, (unsigned long long)small);
+          NX * NY, (unsigned long long)small[2]);
+    CHECK(lost[2] == 0 && small[3] == (uint64_t)NX * NY,
+          "small objects at N = 2: the guard lost %d of %d spheres (%llu small objects found)",
+          lost[2], NX * NY, (unsigned long long)small[3]);
     printf("small objects at N = 16: the plain scheme loses %d of %d spheres (%llu of %d pixels "
            "traced), the guard none (%llu traced)\n",
            lost[0], NX * NY, (unsigned long long)traced[1], W * H, (unsigned long long)traced[2]);
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 4; ++i)
         vct_image_release(&im[i]);
     vct_accel_release(a);
     vct_scene_release(s);

@@ -46,7 +46,7 @@ static void mark(const vct_camera_desc *c, const float lo[3], const float hi[3],
     }
     const double extent = fmax(x1 - x0, y1 - y0);
     const int w = (int)c->size.s[0], h = (int)c->size.s[1];
-    if (!(extent < size) || x1 < -1.0 || y1 < -1.0 || x0 > w || y0 > h)
+    if (!(extent < 2.0 * size) || x1 < -1.0 || y1 < -1.0 || x0 > w || y0 > h)
         return;
     ++*count;
     const uint16_t v = (uint16_t)fmax(1.0, ceil(extent));
