@@ -21,6 +21,7 @@
 #include "scene/bsdf.h"
 #include "scene/rng.h"
 #include "scene/texture.h"
+#include "scene/turn.h"
 #include "vct_types.h"
 
 #define PHOTON_PI 3.14159265f
@@ -32,7 +33,8 @@ inline float3 photon_dir_about(float3 w, float cos_theta, float u) {
     float3 t, b;
     basis_of(w, &t, &b);
     const float s = sqrt(fmax(0.0f, 1.0f - cos_theta * cos_theta));
-    return normalize(s * cospi(2.0f * u) * t + s * sinpi(2.0f * u) * b + cos_theta * w);
+    const float2 cs = turn_cos_sin(u);
+    return normalize(s * cs.x * t + s * cs.y * b + cos_theta * w);
 }
 
 /* A photon's start: origin, direction and power, for light source `src`. */
@@ -42,7 +44,8 @@ inline float3 photon_from_disk(float4 bounds, float3 d, float u1, float u2) {
     float3 t, b;
     basis_of(d, &t, &b);
     const float rad = bounds.w * sqrt(u1);
-    return bounds.xyz - d * (2.0f * bounds.w) + rad * (cospi(2.0f * u2) * t + sinpi(2.0f * u2) * b);
+    const float2 cs = turn_cos_sin(u2);
+    return bounds.xyz - d * (2.0f * bounds.w) + rad * (cs.x * t + cs.y * b);
 }
 
 inline int photon_emit(const accel_view *g, __global const vct_light_desc *lights, float4 source,

@@ -5,6 +5,7 @@
 #ifndef VCT_BSDF_H
 #define VCT_BSDF_H
 
+#include "scene/turn.h"
 #include "vct_types.h"
 
 #define BSDF_PI 3.14159265f
@@ -142,14 +143,18 @@ inline int bsdf_sample_dir(const vct_material_desc *m, float3 n, float3 wo, int 
         const float3 r = reflect_dir(wo, n);
         basis_of(r, &t, &b);
         const float ct = pow_unit(u1, 1.0f / (e + 1.0f)), st = sqrt(fmax(0.0f, 1.0f - ct * ct));
-        /* sinpi/cospi of 2 u2: no general range reduction on the hot path. */
-        const float c = cospi(2.0f * u2), sn = sinpi(2.0f * u2);
-        s->wi = normalize(st * c * t + st * sn * b + ct * r);
+        const float2 cs = turn_cos_sin(u2);
+        s->wi = normalize(st * cs.x * t + st * cs.y * b + ct * r);
     } else {
         basis_of(n, &t, &b);
-        const float r = sqrt(u1);
-        const float c = cospi(2.0f * u2), sn = sinpi(2.0f * u2);
-        s->wi = normalize(r * c * t + r * sn * b + sqrt(fmax(0.0f, 1.0f - u1)) * n);
+        const float r = sqrt(u1), cos_i = sqrt(fmax(0.0f, 1.0f - u1));
+        const float2 cs = turn_cos_sin(u2);
+        s->wi = normalize(r * cs.x * t + r * cs.y * b + cos_i * n);
+        if (!(pg > 0.0f)) { /* Lambert alone: f cos / pdf is the albedo */
+            s->pdf = cos_i / BSDF_PI;
+            s->weight = diffuse_color(m);
+            return s->pdf > 0.0f;
+        }
     }
     float pdf;
     const float3 fc = bsdf_eval(m, n, wo, s->wi, &pdf);
