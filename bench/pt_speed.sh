@@ -25,13 +25,12 @@ for entry in "cornell_box ../cornell_box.gltf 256" "lamp_room lamp_room.gltf 64"
     name=$1 file=scenes/suite/$2 spp=$3
     ambient=$(awk -v n="$name" '$1 == n' scenes/suite/suite.txt | grep -o -- '--ambient [0-9. ]*' || true)
     ./build/vct render "$file" --method pt --spp 1 --size 16 16 -o "$work/warm.pfm" >/dev/null 2>&1
-    vct_s=
     for k in 1 2 3; do
         ./build/vct render "$file" --method pt --spp "$spp" --size $W $H --max-depth $DEPTH \
             $ambient -o "$work/vct.pfm" --stats >"$work/vct.log" 2>&1
-        s=$(awk '/^path trace / { printf "%.3f", $3 / 1000; exit }' "$work/vct.log")
-        vct_s=$(awk "BEGIN { print (\"$vct_s\" == \"\" || $s < 0$vct_s) ? $s : $vct_s }")
-    done
+        awk '/^path trace / { printf "%.3f\n", $3 / 1000; exit }' "$work/vct.log"
+    done >"$work/vct_s"
+    vct_s=$(sort -n "$work/vct_s" | head -1)
     mts_s=$(tools/python.sh bench/pt_mitsuba.py "$file" "$spp" $W $H $DEPTH $RR \
         ${ambient:+--ambient ${ambient#--ambient }})
     ratio=$(awk "BEGIN { printf \"%.2f\", $vct_s / $mts_s }")
