@@ -13,7 +13,7 @@
  * offsets, isotropic against anisotropic bricks, 1 to 4 bounces, and 2 to 4
  * bounces without the rest of the series; its time is split into building the
  * voxel hierarchy (voxels, octree, bricks, light) and tracing.
- * --quick runs cone tracing at its default, with sparse diffuse, with its
+ * --quick runs cone tracing at its default, with dense diffuse, with its
  * bounces exactly, with directional bricks and with 6 cones (the scene
  * suite's table); --ambient gives the scene
  * a sky; --accel picks the structure every ray goes through (its build counts as "accel ms"). */
@@ -53,7 +53,7 @@ typedef struct vct_setting {
     int anisotropic;
     float offset; /* cone start offset in voxels; 0: the default */
     int nearest;  /* 1: each sample reads the nearest level alone */
-    int sparse;   /* 1: diffuse cones at every other pixel per axis */
+    int dense;    /* 1: diffuse cones at every pixel (default: every other per axis) */
     int exact;    /* 1: only the bounces asked for, no rest of the series */
 } vct_setting;
 
@@ -112,7 +112,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     if (vs->offset > 0.0f)
         o.cones.offset = vs->offset;
     o.cones.nearest_level = vs->nearest;
-    o.sparse_diffuse = vs->sparse;
+    o.sparse_diffuse = !vs->dense;
     vct_voxels *v = NULL;
     vct_image im;
     if (vct_vct_prepare(ctx, s, g, &plan, &vo, &bo, vs->bounces, &o.cones, &v, &err) ||
@@ -127,7 +127,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
              "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s%s%s%s", vs->res, vs->cones,
              vs->step, o.cones.offset, vs->anisotropic ? "aniso" : "iso", vs->bounces,
              vs->bounces == 1 ? "" : "s", vs->exact ? " exactly" : "",
-             vs->nearest ? ", nearest level" : "", vs->sparse ? ", sparse diffuse" : "");
+             vs->nearest ? ", nearest level" : "", vs->dense ? ", dense diffuse" : "");
     vct_voxels_release(v);
     vct_accel_release(g);
     return im;

@@ -87,6 +87,7 @@ int main(int argc, char **argv) {
         if (!g)
             bench_die(&err);
         vct_vct_options o = vct_vct_options_default(512, 512);
+        o.sparse_diffuse = 0; /* the rows time every pixel's cones, then sparse */
         o.width = o.height = size;
         o.diffuse_cones = 5;
         vct_plan plan;

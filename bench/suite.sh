@@ -2,7 +2,7 @@
 # The scene suite against converged path-traced references: writes the suite
 # (scenes/suite/make_suite.py), then runs bench/accuracy --quick on each scene
 # (the ray caster, the path tracer from 1 spp up, cone tracing at its default
-# and with sparse diffuse, photon mapping progressive, fixed and with final
+# and with dense diffuse, photon mapping progressive, fixed and with final
 # gathering, each against a 2048-spp reference of another seed,
 # or what suite.txt gives the scene),
 # and gathers one table: out/suite/table.md, and the page doc/results/suite.md

@@ -131,9 +131,9 @@ static const cli_option vct_rows[] = {
      "how far cones start off their surface, in voxels (default 4)"},
     {"cone-levels", 0, OPT_CONE_LEVELS, 1, "blend|nearest",
      "a sample blends two octree levels (default) or reads the nearest one"},
-    {"sparse-diffuse", 0, OPT_SPARSE_DIFFUSE, 0, NULL,
-     "diffuse cones at every other pixel per axis, the rest filled in from traced neighbours on "
-     "the same surface"},
+    {"dense-diffuse", 0, OPT_DENSE_DIFFUSE, 0, NULL,
+     "diffuse cones at every pixel (by default at every other pixel per axis, the rest filled in "
+     "from traced neighbours on the same surface)"},
     {"edge-samples", 0, OPT_EDGE_SAMPLES, 1, "N",
      "N x N camera rays at pixels on an edge (surface, material, hard shadow), shown as their "
      "mean (default 4; 1: pixel centres only)"},

@@ -43,7 +43,7 @@ typedef enum cli_option_id {
     OPT_CONE_STEP,
     OPT_CONE_OFFSET,
     OPT_CONE_LEVELS,
-    OPT_SPARSE_DIFFUSE,
+    OPT_DENSE_DIFFUSE,
     OPT_EDGE_SAMPLES,
     OPT_AO_DISTANCE,
     OPT_BOUNCES,

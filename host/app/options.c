@@ -191,8 +191,8 @@ static int apply_vct(const parse_state *ps, cli_option_id id, char **w, cli_opti
         return to_float(ps, w[0], &opt->cones.offset);
     case OPT_CONE_LEVELS:
         return choose(ps, w[0], "blend|nearest", &opt->cones.nearest_level);
-    case OPT_SPARSE_DIFFUSE:
-        opt->sparse_diffuse = 1;
+    case OPT_DENSE_DIFFUSE:
+        opt->sparse_diffuse = 0;
         return 0;
     case OPT_EDGE_SAMPLES:
         return to_int(ps, w[0], 1, (int)VCT_EDGE_SAMPLES_MAX, &opt->edge_samples);
@@ -406,6 +406,7 @@ static void defaults(cli_options *opt) {
     opt->tone = vct_tone_default();
     opt->method = "vct";
     opt->diffuse_cones = 9;
+    opt->sparse_diffuse = 1;
     opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
     opt->bounces = (int)VCT_DEFAULT_BOUNCES;
     opt->frame = -1;

@@ -22,9 +22,11 @@ static inline vct_image vct_case_render_bricks(vct_context *ctx, const vct_scene
     o.width = w;
     o.height = h;
     o.aovs = aovs != NULL;
-    /* One ray through each pixel's centre, where the tests' references (the
-     * ray caster, light at a point) look; test_edge_samples tests edges. */
+    /* One ray through each pixel's centre and every pixel's own diffuse
+     * cones, where the tests' references (the ray caster, light at a point)
+     * look; test_edge_samples tests edges, test_vct sparse diffuse. */
     o.edge_samples = 1;
+    o.sparse_diffuse = 0;
     vct_voxels *v = NULL;
     REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, bounces, &o.cones, &v, &err), err);
     vct_image image;

@@ -568,6 +568,7 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
     o.width = w;
     o.height = h;
     o.aovs = 1;
+    o.sparse_diffuse = 0; /* the full render first: every pixel's cones */
     vct_voxels *v = NULL;
     REQUIRE_OK(vct_vct_prepare(ctx, s, g, &p, vo, NULL, 2, &o.cones, &v, &err), err);
     vct_voxel_info info;

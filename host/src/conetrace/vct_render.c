@@ -29,6 +29,7 @@ vct_vct_options vct_vct_options_default(int width, int height) {
     o.width = width;
     o.height = height;
     o.diffuse_cones = 9;
+    o.sparse_diffuse = 1;
     o.cones = vct_cone_settings_default();
     o.edge_samples = VCT_EDGE_SAMPLES_DEFAULT;
     return o;

@@ -186,7 +186,10 @@ int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_
         }
     }
     if (ctx->program_count >= VCT_MAX_PROGRAMS)
-        return vct_fail(err, VCT_ERR_MEMORY, "kernels: too many program variants");
+        return vct_fail(err, VCT_ERR_MEMORY,
+                        "kernels: %s would be the %dth program variant of one context, more than "
+                        "it holds: release the context and create another",
+                        file, VCT_MAX_PROGRAMS + 1);
 
     char full_options[1024];
     snprintf(full_options, sizeof full_options, "-cl-std=CL1.2%s%s %s",

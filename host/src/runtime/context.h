@@ -6,7 +6,7 @@
 #include "runtime/error.h"
 
 #define VCT_MAX_STAGES 32
-#define VCT_MAX_PROGRAMS 32
+#define VCT_MAX_PROGRAMS 128
 #define VCT_MAX_KERNEL_NAMES 64
 #define VCT_MAX_PENDING_EVENTS 256
 #define VCT_MAX_RELEASE_HOOKS 8
