@@ -13,7 +13,8 @@
  * offsets, isotropic against anisotropic bricks, 1 to 4 bounces, and 2 to 4
  * bounces without the rest of the series; its time is split into building the
  * voxel hierarchy (voxels, octree, bricks, light) and tracing.
- * --quick runs cone tracing at its default, with dense diffuse, with its
+ * --quick runs cone tracing at its default, with dense diffuse, with dense
+ * bounces, with its
  * bounces exactly, with directional bricks and with 6 cones (the scene
  * suite's table); --ambient gives the scene
  * a sky; --accel picks the structure every ray goes through (its build counts as "accel ms"). */
@@ -51,10 +52,11 @@ typedef struct vct_setting {
     uint32_t res, cones, bounces;
     float step;
     int anisotropic;
-    float offset; /* cone start offset in voxels; 0: the default */
-    int nearest;  /* 1: each sample reads the nearest level alone */
-    int dense;    /* 1: diffuse cones at every pixel (default: every other per axis) */
-    int exact;    /* 1: only the bounces asked for, no rest of the series */
+    float offset;      /* cone start offset in voxels; 0: the default */
+    int nearest;       /* 1: each sample reads the nearest level alone */
+    int dense;         /* 1: diffuse cones at every pixel (default: every other per axis) */
+    int exact;         /* 1: only the bounces asked for, no rest of the series */
+    int dense_bounces; /* 1: every voxel gathers each bounce (default: half of them) */
 } vct_setting;
 
 #define MAX_RUNS 64
@@ -103,6 +105,7 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     vct_voxel_options vo = {0};
     vo.resolution = vs->res;
     vo.exact_bounces = vs->exact;
+    vo.dense_bounces = vs->dense_bounces;
     const vct_brick_options bo = {VCT_BRICKS_AUTO, vs->anisotropic, 0};
     vct_vct_options o = vct_vct_options_default(512, 512);
     o.width = cfg->width;
@@ -124,10 +127,11 @@ static vct_image render_vct(vct_context *ctx, const vct_scene *s, const settings
     r->render_ms = stages_ms(ctx, trace_stages, sizeof trace_stages / sizeof trace_stages[0]);
     r->total_ms = r->accel_ms + r->build_ms + r->render_ms;
     snprintf(r->name, sizeof r->name,
-             "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s%s%s%s", vs->res, vs->cones,
+             "vct %u^3, %u cones, step %g, offset %g, %s, %u bounce%s%s%s%s%s", vs->res, vs->cones,
              vs->step, o.cones.offset, vs->anisotropic ? "aniso" : "iso", vs->bounces,
              vs->bounces == 1 ? "" : "s", vs->exact ? " exactly" : "",
-             vs->nearest ? ", nearest level" : "", vs->dense ? ", dense diffuse" : "");
+             vs->nearest ? ", nearest level" : "", vs->dense ? ", dense diffuse" : "",
+             vs->dense_bounces ? ", dense bounces" : "");
     vct_voxels_release(v);
     vct_accel_release(g);
     return im;
@@ -476,28 +480,27 @@ int main(int argc, char **argv) {
      * setting changed at a time. */
     enum { D = VCT_DEFAULT_BOUNCES };
     static const vct_setting vct_runs[] = {
-        {64, 9, D, 1.0f, 0, 0.0f, 0, 0, 0},   {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 0},
-        {256, 9, D, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 1, D, 1.0f, 0, 0.0f, 0, 0, 0},
-        {128, 5, D, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 6, D, 1.0f, 0, 0.0f, 0, 0, 0},
-        {128, 16, D, 1.0f, 0, 0.0f, 0, 0, 0}, {128, 9, D, 0.25f, 0, 0.0f, 0, 0, 0},
-        {128, 9, D, 0.5f, 0, 0.0f, 0, 0, 0},  {128, 9, D, 1.0f, 1, 0.0f, 0, 0, 0},
-        {128, 9, 1, 1.0f, 0, 0.0f, 0, 0, 0},  {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 0},
-        {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0},  {64, 9, D, 1.0f, 0, 2.0f, 0, 0, 0},
-        {64, 9, D, 1.0f, 0, 8.0f, 0, 0, 0},   {128, 9, D, 1.0f, 0, 2.0f, 0, 0, 0},
-        {128, 9, D, 1.0f, 0, 8.0f, 0, 0, 0},  {128, 9, D, 1.0f, 0, 16.0f, 0, 0, 0},
-        {256, 9, D, 1.0f, 0, 8.0f, 0, 0, 0},  {256, 9, D, 1.0f, 0, 16.0f, 0, 0, 0},
-        {256, 9, D, 1.0f, 0, 32.0f, 0, 0, 0}, {64, 9, D, 1.0f, 0, 0.0f, 1, 0, 0},
-        {128, 9, D, 1.0f, 0, 0.0f, 1, 0, 0},  {256, 9, D, 1.0f, 0, 0.0f, 1, 0, 0},
-        {128, 9, D, 1.0f, 0, 2.0f, 1, 0, 0},  {128, 16, D, 1.0f, 0, 0.0f, 1, 0, 0},
-        {64, 9, D, 1.0f, 0, 0.0f, 0, 1, 0},   {128, 9, D, 1.0f, 0, 0.0f, 0, 1, 0},
-        {256, 9, D, 1.0f, 0, 0.0f, 0, 1, 0},  {128, 9, D, 1.0f, 0, 0.0f, 1, 1, 0},
-        {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 1},  {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 1},
-        {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 1}};
-    static const vct_setting quick_runs[] = {{128, 9, D, 1.0f, 0, 0.0f, 0, 0, 0},
-                                             {128, 9, D, 1.0f, 0, 0.0f, 0, 1, 0},
-                                             {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 1},
-                                             {128, 9, D, 1.0f, 1, 0.0f, 0, 0, 0},
-                                             {128, 6, D, 1.0f, 0, 0.0f, 0, 0, 0}};
+        {64, 9, D, 1.0f, 0, 0.0f, 0, 0, 0, 0},   {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 0, 0},
+        {256, 9, D, 1.0f, 0, 0.0f, 0, 0, 0, 0},  {128, 1, D, 1.0f, 0, 0.0f, 0, 0, 0, 0},
+        {128, 5, D, 1.0f, 0, 0.0f, 0, 0, 0, 0},  {128, 6, D, 1.0f, 0, 0.0f, 0, 0, 0, 0},
+        {128, 16, D, 1.0f, 0, 0.0f, 0, 0, 0, 0}, {128, 9, D, 0.25f, 0, 0.0f, 0, 0, 0, 0},
+        {128, 9, D, 0.5f, 0, 0.0f, 0, 0, 0, 0},  {128, 9, D, 1.0f, 1, 0.0f, 0, 0, 0, 0},
+        {128, 9, 1, 1.0f, 0, 0.0f, 0, 0, 0, 0},  {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 0, 0},
+        {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 0, 0},  {64, 9, D, 1.0f, 0, 2.0f, 0, 0, 0, 0},
+        {64, 9, D, 1.0f, 0, 8.0f, 0, 0, 0, 0},   {128, 9, D, 1.0f, 0, 2.0f, 0, 0, 0, 0},
+        {128, 9, D, 1.0f, 0, 8.0f, 0, 0, 0, 0},  {128, 9, D, 1.0f, 0, 16.0f, 0, 0, 0, 0},
+        {256, 9, D, 1.0f, 0, 8.0f, 0, 0, 0, 0},  {256, 9, D, 1.0f, 0, 16.0f, 0, 0, 0, 0},
+        {256, 9, D, 1.0f, 0, 32.0f, 0, 0, 0, 0}, {64, 9, D, 1.0f, 0, 0.0f, 1, 0, 0, 0},
+        {128, 9, D, 1.0f, 0, 0.0f, 1, 0, 0, 0},  {256, 9, D, 1.0f, 0, 0.0f, 1, 0, 0, 0},
+        {128, 9, D, 1.0f, 0, 2.0f, 1, 0, 0, 0},  {128, 16, D, 1.0f, 0, 0.0f, 1, 0, 0, 0},
+        {64, 9, D, 1.0f, 0, 0.0f, 0, 1, 0, 0},   {128, 9, D, 1.0f, 0, 0.0f, 0, 1, 0, 0},
+        {256, 9, D, 1.0f, 0, 0.0f, 0, 1, 0, 0},  {128, 9, D, 1.0f, 0, 0.0f, 1, 1, 0, 0},
+        {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 1, 0},  {128, 9, 2, 1.0f, 0, 0.0f, 0, 0, 1, 0},
+        {128, 9, 3, 1.0f, 0, 0.0f, 0, 0, 1, 0}};
+    static const vct_setting quick_runs[] = {
+        {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 0, 0}, {128, 9, D, 1.0f, 0, 0.0f, 0, 1, 0, 0},
+        {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 0, 1}, {128, 9, D, 1.0f, 0, 0.0f, 0, 0, 1, 0},
+        {128, 9, D, 1.0f, 1, 0.0f, 0, 0, 0, 0}, {128, 6, D, 1.0f, 0, 0.0f, 0, 0, 0, 0}};
     const vct_setting *list = cfg.quick ? quick_runs : vct_runs;
     const size_t listed =
         cfg.quick ? sizeof quick_runs / sizeof quick_runs[0] : sizeof vct_runs / sizeof vct_runs[0];

@@ -125,6 +125,7 @@ void cli_voxel_options(const cli_options *opt, uint32_t default_res, vct_voxel_o
     vo->resolution = opt->voxel_res ? (uint32_t)opt->voxel_res : default_res;
     vo->thin = opt->thin_voxels;
     vo->exact_bounces = opt->exact_bounces;
+    vo->dense_bounces = opt->dense_bounces;
     vo->has_bounds = opt->has_voxel_bounds;
     for (int k = 0; k < 3; ++k)
         vo->bounds_min[k] = opt->voxel_bounds[k];

@@ -143,6 +143,9 @@ static const cli_option vct_rows[] = {
      "light bounces gathered in the voxels, 1 to 4 (default 4), then the rest of the series at "
      "the scene's bounce ratio"},
     {"exact-bounces", 0, OPT_EXACT_BOUNCES, 0, NULL, "no rest of the series after the last bounce"},
+    {"dense-bounces", 0, OPT_DENSE_BOUNCES, 0, NULL,
+     "every voxel gathers each bounce (by default half of them do, the others take the mean of "
+     "their neighbours on the same surface)"},
     {"light-carry", 0, OPT_LIGHT_CARRY, 0, NULL,
      "--frames: where lights or objects move, carry the voxels' light over from the frame "
      "before (what moved voxelized alone, direct light kept where nothing moved reaches, one "

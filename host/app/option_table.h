@@ -49,6 +49,7 @@ typedef enum cli_option_id {
     OPT_BOUNCES,
     OPT_LIGHT_CARRY,
     OPT_EXACT_BOUNCES,
+    OPT_DENSE_BOUNCES,
     OPT_EMITTERS,
     OPT_COPY_VOXELS,
     OPT_VOXEL_RES,

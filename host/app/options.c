@@ -200,6 +200,9 @@ static int apply_vct(const parse_state *ps, cli_option_id id, char **w, cli_opti
         return to_float(ps, w[0], &opt->cones.ao_distance);
     case OPT_BOUNCES:
         return to_int(ps, w[0], 1, 4, &opt->bounces);
+    case OPT_DENSE_BOUNCES:
+        opt->dense_bounces = 1;
+        return 0;
     case OPT_EXACT_BOUNCES:
         opt->exact_bounces = 1;
         return 0;

@@ -42,6 +42,7 @@ struct cli_options {
     float light_radius;
     int voxel_res, thin_voxels, has_voxel_bounds;
     int exact_bounces;     /* no rest of the bounces after the last one */
+    int dense_bounces;     /* every voxel gathers each bounce */
     int light_carry;       /* --light-carry (vct_render_job.light_carry) */
     float voxel_bounds[4]; /* x, y, z, size */
     vct_brick_storage bricks;

@@ -17,6 +17,7 @@
 #include "conetrace/cone_near.h"
 #include "conetrace/cone_sky.h"
 #include "voxel/octree.h"
+#include "voxel/voxel_carry.h"
 #include "voxel/voxel_side.h"
 #include "vct_types.h"
 
@@ -46,6 +47,49 @@ inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint
     return gathered;
 }
 
+/* The voxels of odd parity (x + y + z) in a sparse gather: each of their
+ * six neighbours is even. */
+inline uint bounce_parity(uint key) {
+    const uint3 c = morton_decode(key);
+    return (c.x + c.y + c.z) & 1u;
+}
+
+/* What voxel v's two sides receive: gathered by its own cones. */
+inline void gather_voxel(const accel_view *acc, CONE_POOLS, __global const uint *child,
+                         const vct_cone_desc *cd, __global const vct_cone_dir *cones,
+                         uint cone_count, uint key, float4 plane, float3 *front, float3 *back) {
+    const float voxel = cd->volume.w / (float)cd->res.x;
+    const float3 centre = cd->volume.xyz + (convert_float3(morton_decode(key)) + 0.5f) * voxel;
+    const int has_normal = any(plane.xyz != 0.0f);
+    const float3 n = has_normal ? plane.xyz : (float3)(0.0f, 0.0f, 1.0f);
+    /* the voxel's plane's point nearest its centre: where near rays start */
+    const float3 c_unit = (centre - cd->volume.xyz) * cd->ambient.w - 0.5f;
+    const float3 surface =
+        cd->volume.xyz + (c_unit - (dot(n, c_unit) - plane.w) * n + 0.5f) * cd->volume.w;
+    *front = gather_side(acc, CONE_POOLS_PASS, child, cd, cones, cone_count, centre, n, has_normal,
+                         surface);
+    *back = gather_side(acc, CONE_POOLS_PASS, child, cd, cones, cone_count, centre, -n, has_normal,
+                        surface);
+}
+
+/* Voxel v's radiance and sides from what its sides receive. */
+inline void bounce_store(uint v, float3 front, float3 back, __global const float4 *albedo,
+                         __global const float4 *direct, __global const float4 *direct_side,
+                         __global float4 *voxel_radiance, __global float4 *side) {
+    __global const float4 *sides = direct_side + VCT_VOXEL_SIDE_FLOAT4S * v;
+    const float4 bright = direct[v], shade = sides[0], plane = sides[1];
+    const int has_normal = any(plane.xyz != 0.0f);
+    const float3 rho = albedo[v].xyz;
+    /* without a normal both sides send what the brighter side receives */
+    const float3 more = side_luminance(front) >= side_luminance(back) ? front : back;
+    const float3 toward = has_normal ? front : more, away = has_normal ? back : more;
+    voxel_side_store(bright.xyz + rho * toward, bright.xyz - shade.xyz + rho * away, plane.xyz,
+                     plane.w * plane.xyz, bright.w, voxel_radiance, side, v);
+}
+
+/* sparse 1: only the voxels of even parity gather (and keep what they
+ * received in `received`, two float4 each); inject_bounce_fill gives the
+ * others theirs. */
 __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                             __global const vct_cone_dir *cones, uint cone_count,
                             __global const uint *keys, uint voxels, __global const float4 *albedo,
@@ -53,11 +97,11 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
                             __global float4 *voxel_radiance, __global float4 *side,
                             __global const uint *carried_from,
                             __global const float4 *before_radiance,
-                            __global const float4 *before_side, uint carry_every,
-                            uint carry_phase) {
+                            __global const float4 *before_side, uint carry_every, uint carry_phase,
+                            uint sparse, __global float4 *received) {
     const accel_view acc = ACCEL_VIEW();
     const uint v = get_global_id(0);
-    if (v >= voxels)
+    if (v >= voxels || (sparse && bounce_parity(keys[v])))
         return;
     /* carried light gathered over carry_every renders: a voxel whose direct
      * light was carried and whose turn it is not keeps all its light before */
@@ -69,24 +113,73 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
             side[VCT_VOXEL_SIDE_FLOAT4S * v + k] = before_side[VCT_VOXEL_SIDE_FLOAT4S * from + k];
         return;
     }
-    const float voxel = cd.volume.w / (float)cd.res.x;
-    const float3 centre = cd.volume.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * voxel;
-    __global const float4 *sides = direct_side + VCT_VOXEL_SIDE_FLOAT4S * v;
-    const float4 bright = direct[v], shade = sides[0], plane = sides[1];
+    float3 front, back;
+    gather_voxel(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, keys[v],
+                 direct_side[VCT_VOXEL_SIDE_FLOAT4S * v + 1], &front, &back);
+    if (sparse) {
+        received[2u * v] = (float4)(front, 0.0f);
+        received[2u * v + 1u] = (float4)(back, 0.0f);
+    }
+    bounce_store(v, front, back, albedo, direct, direct_side, voxel_radiance, side);
+}
+
+/* A neighbour's surface is this voxel's where their planes face the same
+ * way (or exactly the other way: then its sides swap) and lie within a
+ * tenth of a voxel of each other. */
+#define FILL_FACING 0.95f
+#define FILL_OFFSET 0.1f
+
+/* sparse gathers, second pass: each voxel of odd parity takes the mean of
+ * what its face neighbours on its own surface received (inject_bounce), and
+ * gathers itself where it has none. */
+__kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *child,
+                                 vct_cone_desc cd, __global const vct_cone_dir *cones,
+                                 uint cone_count, __global const uint *keys, uint voxels,
+                                 __global const float4 *albedo, __global const float4 *direct,
+                                 __global const float4 *direct_side,
+                                 __global float4 *voxel_radiance, __global float4 *side,
+                                 __global const float4 *received) {
+    const accel_view acc = ACCEL_VIEW();
+    const uint v = get_global_id(0);
+    if (v >= voxels || !bounce_parity(keys[v]))
+        return;
+    const float4 plane = direct_side[VCT_VOXEL_SIDE_FLOAT4S * v + 1];
     const int has_normal = any(plane.xyz != 0.0f);
-    const float3 n = has_normal ? plane.xyz : (float3)(0.0f, 0.0f, 1.0f);
-    /* the voxel's plane's point nearest its centre: where near rays start */
-    const float3 c_unit = (centre - cd.volume.xyz) * cd.ambient.w - 0.5f;
-    const float3 surface =
-        cd.volume.xyz + (c_unit - (dot(n, c_unit) - plane.w) * n + 0.5f) * cd.volume.w;
-    const float3 front = gather_side(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, centre,
-                                     n, has_normal, surface);
-    const float3 back = gather_side(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, centre,
-                                    -n, has_normal, surface);
-    const float3 rho = albedo[v].xyz;
-    /* without a normal both sides send what the brighter side receives */
-    const float3 more = side_luminance(front) >= side_luminance(back) ? front : back;
-    const float3 toward = has_normal ? front : more, away = has_normal ? back : more;
-    voxel_side_store(bright.xyz + rho * toward, bright.xyz - shade.xyz + rho * away, plane.xyz,
-                     plane.w * plane.xyz, bright.w, voxel_radiance, side, v);
+    const uint3 c = morton_decode(keys[v]);
+    const float offset = FILL_OFFSET / (float)cd.res.x;
+    float3 front = (float3)(0.0f), back = (float3)(0.0f);
+    uint found = 0u;
+    for (uint k = 0; k < 6u; ++k) {
+        const int axis = (int)(k % 3u), step = k < 3u ? 1 : -1;
+        int3 q = convert_int3(c);
+        q.x += axis == 0 ? step : 0;
+        q.y += axis == 1 ? step : 0;
+        q.z += axis == 2 ? step : 0;
+        if (any(q < 0) || any(q >= (int)cd.res.x))
+            continue;
+        const uint u = carry_find(keys, voxels, morton_encode(convert_uint3(q)));
+        if (u == VCT_NO_VOXEL)
+            continue;
+        const float4 pu = direct_side[VCT_VOXEL_SIDE_FLOAT4S * u + 1];
+        const int u_normal = any(pu.xyz != 0.0f);
+        if (u_normal != has_normal)
+            continue;
+        const float facing = has_normal ? dot(pu.xyz, plane.xyz) : 1.0f;
+        const int same = facing > FILL_FACING, flipped = facing < -FILL_FACING;
+        if (has_normal && !((same && fabs(pu.w - plane.w) < offset) ||
+                            (flipped && fabs(pu.w + plane.w) < offset)))
+            continue;
+        const float3 f = received[2u * u].xyz, b = received[2u * u + 1u].xyz;
+        front += flipped ? b : f;
+        back += flipped ? f : b;
+        ++found;
+    }
+    if (found) {
+        front /= (float)found;
+        back /= (float)found;
+    } else {
+        gather_voxel(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, keys[v], plane, &front,
+                     &back);
+    }
+    bounce_store(v, front, back, albedo, direct, direct_side, voxel_radiance, side);
 }

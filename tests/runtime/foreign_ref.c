@@ -80,7 +80,7 @@ int main(int argc, char **argv) {
      * sample) and injected light: what the cone kernel reads. */
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_voxel_options vo = {64, 0, 0, {0, 0, 0}, 0, 0};
+    const vct_voxel_options vo = {64, 0, 0, {0, 0, 0}, 0, 0, 0};
     vct_voxels *v = vct_voxelize(ctx, s, &vo, &err);
     REQUIRE_OK(v ? VCT_OK : err.status, err);
     REQUIRE_OK(vct_octree_build(ctx, v, &err), err);

@@ -59,6 +59,9 @@ static brick_case make_case(const char *name, vct_scene *scene, uint32_t res, fl
     o.resolution = res;
     o.has_bounds = 1;
     o.bounds_size = side;
+    /* every voxel gathers its bounces, as test_cone's reference does
+     * (test_bounce_fill checks the sparse fill) */
+    o.dense_bounces = 1;
     c.voxels = vct_voxelize(ctx, scene, &o, &err);
     REQUIRE_OK(c.voxels ? VCT_OK : err.status, err);
     REQUIRE_OK(vct_octree_build(ctx, c.voxels, &err), err);

@@ -122,10 +122,42 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
                           VCT_ARG(before_radiance, light->radiance),
                           VCT_ARG(before_side, light->side), VCT_ARG_OF(carry_every),
                           VCT_ARG_OF(carry_phase));
+    /* carried light gathers a share of the voxels its own way */
+    const cl_uint sparse = !carry && !v->dense_bounces;
+    cl_mem received =
+        rc == VCT_OK ? vct_buffer_create(ctx, BOUNCE_STAGE, "received light",
+                                         sparse ? 32ull * n : 16u, CL_MEM_READ_WRITE, NULL, err)
+                     : NULL;
+    if (rc == VCT_OK && !received)
+        rc = (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, BOUNCE_STAGE, k, next + 14, 2, VCT_ARG_OF(sparse),
+                          VCT_ARG_OF(received));
     if (rc == VCT_OK)
         rc = vct_bounce_rest_keep(ctx, v, err);
     if (rc == VCT_OK)
         rc = vct_launch(ctx, k, n, 64, err);
+    cl_kernel fill =
+        rc == VCT_OK && sparse ? vct_kernel_create(ctx, p, "inject_bounce_fill", err) : NULL;
+    if (rc == VCT_OK && sparse && !fill)
+        rc = (int)err->status;
+    if (fill) {
+        int at = 5;
+        rc = vct_accel_set_args(fill, g, BOUNCE_STAGE, err);
+        if (rc == VCT_OK)
+            rc = vct_cone_set_args(fill, light, &desc, BOUNCE_STAGE, &at, err);
+        if (rc == VCT_OK)
+            rc = vct_set_args(err, BOUNCE_STAGE, fill, at, 10, VCT_ARG_OF(cones),
+                              VCT_ARG(cone_count, diffuse_cones), VCT_ARG_OF(v->keys),
+                              VCT_ARG(voxels, n), VCT_ARG_OF(v->albedo),
+                              VCT_ARG(direct, v->direct_radiance), VCT_ARG_OF(v->direct_side),
+                              VCT_ARG(voxel_radiance, v->radiance), VCT_ARG_OF(v->side),
+                              VCT_ARG_OF(received));
+        if (rc == VCT_OK)
+            rc = vct_launch(ctx, fill, n, 64, err);
+        clReleaseKernel(fill);
+    }
+    vct_buffer_release(ctx, received);
     if (rc == VCT_OK)
         rc = vct_bounce_rest_measure(ctx, v, err);
     if (rc == VCT_OK)

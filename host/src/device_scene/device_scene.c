@@ -211,6 +211,7 @@ static void keys_make(const vct_render_job *job, const vct_plan *plan, voxel_key
         vk->voxel.bounds_min[k] = o->bounds_min[k];
     vk->voxel.bounds_size = o->bounds_size;
     vk->voxel.exact_bounces = o->exact_bounces;
+    vk->voxel.dense_bounces = o->dense_bounces;
     vk->bricks = job->brick_options;
     vk->bricks.radiance_later = 0;
     vk->emitters_by_cones = plan->emitters_by_cones;

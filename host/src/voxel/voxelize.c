@@ -268,6 +268,7 @@ static vct_voxels *voxels_new(vct_context *ctx, const vct_scene *s, const vct_vo
     }
     v->ctx = ctx;
     v->bounce_rest = !o->exact_bounces;
+    v->dense_bounces = o->dense_bounces;
     vct_voxel_info *info = &v->info;
     info->resolution = o->resolution;
     while ((1u << info->levels) < o->resolution)

@@ -36,6 +36,7 @@ struct vct_voxels {
      * last two bounces added (summed over the voxels' sides), how many were
      * measured since light injection, and the ratio the rest used. */
     int bounce_rest;
+    int dense_bounces; /* vct_voxel_options.dense_bounces */
     cl_mem before_radiance, before_side;
     double bounce_light[2];
     uint32_t bounces_measured;
