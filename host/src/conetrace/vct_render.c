@@ -76,6 +76,26 @@ static int keep_direct(vct_context *ctx, vct_voxels *v, vct_error *err) {
  * gather comes (carry->every). `refresh` 0 leaves the bricks' radiance to
  * the rest of the bounces that follows (v->radiance_stale), which filters
  * it once. */
+/* The arguments inject_bounce and inject_bounce_fill share: the
+ * acceleration structure, the cone pools of the light gathered, the cones
+ * and the voxels; *next: the first argument after them. */
+static int bounce_shared_args(cl_kernel k, const vct_accel *g, const vct_voxels *light,
+                              const vct_cone_desc *desc, cl_mem cones, cl_uint cone_count,
+                              vct_voxels *v, int *next, vct_error *err) {
+    const cl_uint voxels = v->info.voxels;
+    *next = 5; /* after ACCEL_ARGS */
+    int rc = vct_accel_set_args(k, g, BOUNCE_STAGE, err);
+    if (rc == VCT_OK)
+        rc = vct_cone_set_args(k, light, desc, BOUNCE_STAGE, next, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, BOUNCE_STAGE, k, *next, 9, VCT_ARG_OF(cones), VCT_ARG_OF(cone_count),
+                          VCT_ARG_OF(v->keys), VCT_ARG_OF(voxels), VCT_ARG_OF(v->albedo),
+                          VCT_ARG(direct, v->direct_radiance), VCT_ARG_OF(v->direct_side),
+                          VCT_ARG(voxel_radiance, v->radiance), VCT_ARG_OF(v->side));
+    *next += 9;
+    return rc;
+}
+
 static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
                          const vct_voxel_carry *carry, const vct_cone_settings *cs,
                          uint32_t diffuse_cones, int refresh, vct_error *err) {
@@ -104,21 +124,14 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
     cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
     vct_cone_desc desc;
     vct_cone_desc_make(light, cs, s->ambient, &desc);
-    int next = 5; /* after ACCEL_ARGS */
-    rc = k ? vct_accel_set_args(k, g, BOUNCE_STAGE, err) : (int)err->status;
-    if (rc == VCT_OK)
-        rc = vct_cone_set_args(k, light, &desc, BOUNCE_STAGE, &next, err);
-    if (rc == VCT_OK)
-        rc = vct_set_args(err, BOUNCE_STAGE, k, next, 9, VCT_ARG_OF(cones),
-                          VCT_ARG(cone_count, diffuse_cones), VCT_ARG_OF(v->keys),
-                          VCT_ARG(voxels, n), VCT_ARG_OF(v->albedo),
-                          VCT_ARG(direct, v->direct_radiance), VCT_ARG_OF(v->direct_side),
-                          VCT_ARG(voxel_radiance, v->radiance), VCT_ARG_OF(v->side));
+    int next = 0;
+    rc = k ? bounce_shared_args(k, g, light, &desc, cones, diffuse_cones, v, &next, err)
+           : (int)err->status;
     /* without carried light carry_every is 0 and the buffers never read */
     cl_mem carried_from = carry ? carry->carried_from : v->radiance;
     const cl_uint carry_every = carry ? carry->every : 0u, carry_phase = carry ? carry->phase : 0u;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, BOUNCE_STAGE, k, next + 9, 5, VCT_ARG_OF(carried_from),
+        rc = vct_set_args(err, BOUNCE_STAGE, k, next, 5, VCT_ARG_OF(carried_from),
                           VCT_ARG(before_radiance, light->radiance),
                           VCT_ARG(before_side, light->side), VCT_ARG_OF(carry_every),
                           VCT_ARG_OF(carry_phase));
@@ -131,7 +144,7 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
     if (rc == VCT_OK && !received)
         rc = (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_set_args(err, BOUNCE_STAGE, k, next + 14, 2, VCT_ARG_OF(sparse),
+        rc = vct_set_args(err, BOUNCE_STAGE, k, next + 5, 2, VCT_ARG_OF(sparse),
                           VCT_ARG_OF(received));
     if (rc == VCT_OK)
         rc = vct_bounce_rest_keep(ctx, v, err);
@@ -142,17 +155,10 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
     if (rc == VCT_OK && sparse && !fill)
         rc = (int)err->status;
     if (fill) {
-        int at = 5;
-        rc = vct_accel_set_args(fill, g, BOUNCE_STAGE, err);
+        int at = 0;
+        rc = bounce_shared_args(fill, g, light, &desc, cones, diffuse_cones, v, &at, err);
         if (rc == VCT_OK)
-            rc = vct_cone_set_args(fill, light, &desc, BOUNCE_STAGE, &at, err);
-        if (rc == VCT_OK)
-            rc = vct_set_args(err, BOUNCE_STAGE, fill, at, 10, VCT_ARG_OF(cones),
-                              VCT_ARG(cone_count, diffuse_cones), VCT_ARG_OF(v->keys),
-                              VCT_ARG(voxels, n), VCT_ARG_OF(v->albedo),
-                              VCT_ARG(direct, v->direct_radiance), VCT_ARG_OF(v->direct_side),
-                              VCT_ARG(voxel_radiance, v->radiance), VCT_ARG_OF(v->side),
-                              VCT_ARG_OF(received));
+            rc = vct_set_args(err, BOUNCE_STAGE, fill, at, 1, VCT_ARG_OF(received));
         if (rc == VCT_OK)
             rc = vct_launch(ctx, fill, n, 64, err);
         clReleaseKernel(fill);
