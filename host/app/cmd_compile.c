@@ -10,7 +10,8 @@
 #include "commands.h"
 
 /* Every method, with the passes a user may ask of it: the denoiser for the
- * estimators, adaptive subsampling for Whitted. */
+ * estimators, adaptive subsampling for the ray caster and Whitted (whose
+ * programs are then built for both, plain and subsampled). */
 static const struct {
     vct_method method;
     const char *name;
