@@ -144,7 +144,8 @@ static const cli_option vct_rows[] = {
      "the scene's bounce ratio"},
     {"exact-bounces", 0, OPT_EXACT_BOUNCES, 0, NULL, "no rest of the series after the last bounce"},
     {"dense-bounces", 0, OPT_DENSE_BOUNCES, 0, NULL,
-     "every voxel gathers each bounce (by default half of them do, the others take the mean of "
+     "every voxel gathers each bounce (by default a quarter of them do, the others take the mean "
+     "of "
      "their neighbours on the same surface)"},
     {"light-carry", 0, OPT_LIGHT_CARRY, 0, NULL,
      "--frames: where lights or objects move, carry the voxels' light over from the frame "

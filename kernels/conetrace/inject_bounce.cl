@@ -47,11 +47,13 @@ inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint
     return gathered;
 }
 
-/* The voxels of odd parity (x + y + z) in a sparse gather: each of their
- * six neighbours is even. */
-inline uint bounce_parity(uint key) {
+/* 1 for the voxels that do not gather in a sparse bounce: all but those
+ * whose x + y + z is a multiple of 4, a quarter of any axis-aligned plane's
+ * voxels. Along each axis one of them lies at most two voxels away from
+ * every other voxel. */
+inline uint bounce_skips(uint key) {
     const uint3 c = morton_decode(key);
-    return (c.x + c.y + c.z) & 1u;
+    return ((c.x + c.y + c.z) & 3u) != 0u;
 }
 
 /* What voxel v's two sides receive: gathered by its own cones. */
@@ -87,9 +89,9 @@ inline void bounce_store(uint v, float3 front, float3 back, __global const float
                      plane.w * plane.xyz, bright.w, voxel_radiance, side, v);
 }
 
-/* sparse 1: only the voxels of even parity gather (and keep what they
- * received in `received`, two float4 each); inject_bounce_fill gives the
- * others theirs. */
+/* sparse 1: only the voxels whose x + y + z is a multiple of 4 gather (and
+ * keep what they received in `received`, two float4 each);
+ * inject_bounce_fill gives the others theirs. */
 __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, vct_cone_desc cd,
                             __global const vct_cone_dir *cones, uint cone_count,
                             __global const uint *keys, uint voxels, __global const float4 *albedo,
@@ -101,7 +103,7 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
                             uint sparse, __global float4 *received) {
     const accel_view acc = ACCEL_VIEW();
     const uint v = get_global_id(0);
-    if (v >= voxels || (sparse && bounce_parity(keys[v])))
+    if (v >= voxels || (sparse && bounce_skips(keys[v])))
         return;
     /* carried light gathered over carry_every renders: a voxel whose direct
      * light was carried and whose turn it is not keeps all its light before */
@@ -129,9 +131,10 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
 #define FILL_FACING 0.95f
 #define FILL_OFFSET 0.1f
 
-/* sparse gathers, second pass: each voxel of odd parity takes the mean of
- * what its face neighbours on its own surface received (inject_bounce), and
- * gathers itself where it has none. */
+/* sparse gathers, second pass: each voxel that did not gather takes the
+ * mean of what the gathering voxels one and two steps away along the axes,
+ * on its own surface, received (inject_bounce), and gathers itself where
+ * it has none. */
 __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *child,
                                  vct_cone_desc cd, __global const vct_cone_dir *cones,
                                  uint cone_count, __global const uint *keys, uint voxels,
@@ -141,7 +144,7 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
                                  __global const float4 *received) {
     const accel_view acc = ACCEL_VIEW();
     const uint v = get_global_id(0);
-    if (v >= voxels || !bounce_parity(keys[v]))
+    if (v >= voxels || !bounce_skips(keys[v]))
         return;
     const float4 plane = direct_side[VCT_VOXEL_SIDE_FLOAT4S * v + 1];
     const int has_normal = any(plane.xyz != 0.0f);
@@ -149,8 +152,8 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
     const float offset = FILL_OFFSET / (float)cd.res.x;
     float3 front = (float3)(0.0f), back = (float3)(0.0f);
     uint found = 0u;
-    for (uint k = 0; k < 6u; ++k) {
-        const int axis = (int)(k % 3u), step = k < 3u ? 1 : -1;
+    for (uint k = 0; k < 12u; ++k) { /* +x +y +z -x -y -z, then two steps */
+        const int axis = (int)(k % 3u), step = (k % 6u < 3u ? 1 : -1) * (k < 6u ? 1 : 2);
         int3 q = convert_int3(c);
         q.x += axis == 0 ? step : 0;
         q.y += axis == 1 ? step : 0;
@@ -158,7 +161,7 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
         if (any(q < 0) || any(q >= (int)cd.res.x))
             continue;
         const uint u = carry_find(keys, voxels, morton_encode(convert_uint3(q)));
-        if (u == VCT_NO_VOXEL)
+        if (u == VCT_NO_VOXEL || bounce_skips(keys[u]))
             continue;
         const float4 pu = direct_side[VCT_VOXEL_SIDE_FLOAT4S * u + 1];
         const int u_normal = any(pu.xyz != 0.0f);

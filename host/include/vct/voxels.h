@@ -31,11 +31,12 @@ typedef struct vct_voxel_options {
     /* 0: after two bounces or more, the voxels add the rest of the series
      * (vct_voxels_bounce_rest); 1: only the bounces asked for */
     int exact_bounces;
-    /* 0: each bounce is gathered by half the voxels (those of even x + y + z)
-     * and the others take the mean of what their face neighbours on the same
-     * surface received (they gather themselves where they have none): over
-     * the scene suite the error of every voxel gathering, at 0.6 of the
-     * bounces' time; 1: every voxel gathers */
+    /* 0: each bounce is gathered by a quarter of the voxels (those whose
+     * x + y + z is a multiple of 4) and the others take the mean of what the
+     * gathering voxels one and two steps away along the axes, on the same
+     * surface, received (they gather themselves where there is none): over
+     * the scene suite the error of every voxel gathering, at about half of
+     * the bounces' time; 1: every voxel gathers */
     int dense_bounces;
 } vct_voxel_options;
 
