@@ -11,7 +11,11 @@
  * what it receives to its own direct light, and the brighter of the two
  * becomes the voxel's radiance. Behind a closed room's wall it stays dark,
  * whichever way the wall is wound. A voxel whose fragments face every way
- * (no normal) gathers on both sides of z and sends the brighter both ways. */
+ * (no normal) gathers on both sides of z and sends the brighter both ways.
+ *
+ * Sparse (the default): a quarter of the voxels gather, and the others take
+ * what their gathering neighbours on the same surface received
+ * (inject_bounce_fill). A bounce's light varies slowly along a surface. */
 #include "scene/bsdf.h"
 #include "conetrace/cone_trace.h"
 #include "conetrace/cone_near.h"
