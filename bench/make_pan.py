@@ -6,22 +6,14 @@ DEG 0 the camera stays: the same sequence with nothing moving.
 
 usage: make_pan.py IN.gltf OUT.gltf DEG SECONDS"""
 import json
-import math
+import os
 import sys
 
 from gltf_anim import add_animation
 
-
-def yaw(deg, q):
-    """The world-space turn about +y by deg, then q (x y z w)."""
-    h = math.radians(deg) / 2
-    a = (0.0, math.sin(h), 0.0, math.cos(h))
-    ax, ay, az, aw = a
-    bx, by, bz, bw = q
-    return (aw * bx + ax * bw + ay * bz - az * by,
-            aw * by - ax * bz + ay * bw + az * bx,
-            aw * bz + ax * by - ay * bx + az * bw,
-            aw * bw - ax * bx - ay * by - az * bz)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenes",
+                                "suite"))
+from gltf_scene import quaternion_product, yaw_quaternion  # noqa: E402
 
 
 def main():
@@ -29,7 +21,8 @@ def main():
     g = json.load(open(src))
     cam = next(i for i, n in enumerate(g["nodes"]) if "camera" in n)
     q0 = g["nodes"][cam].get("rotation", [0, 0, 0, 1])
-    add_animation(g, "pan", cam, "rotation", [0.0, seconds], [yaw(-deg, q0), yaw(deg, q0)])
+    ends = [quaternion_product(yaw_quaternion(d), q0) for d in (-deg, deg)]
+    add_animation(g, "pan", cam, "rotation", [0.0, seconds], ends)
     json.dump(g, open(dst, "w"))
 
 

@@ -3,19 +3,12 @@
 light; an animation ("fly", 2 s) moves the camera's node (sideways, turning
 towards the boxes) and the light's node (across the room). Nothing with
 triangles moves: the camera and the light are what a frame changes."""
-import math
 import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "suite"))
-from gltf_scene import Scene  # noqa: E402
-
-
-def yaw(degrees):
-    """A turn about +y, as a quaternion (x y z w)."""
-    h = math.radians(degrees) / 2
-    return (0.0, math.sin(h), 0.0, math.cos(h))
+from gltf_scene import Scene, quaternion_product, yaw_quaternion  # noqa: E402
 
 
 def main():
@@ -33,23 +26,13 @@ def main():
     # The camera's node: rest pose as look() placed it; the animation moves it
     # 2 units to the right and back, turning it 10 degrees left at 1 s.
     rest = s.camera_rotation()
-    turned = _multiply(yaw(10.0), rest)
+    turned = quaternion_product(yaw_quaternion(10.0), rest)
     s.animate("fly", "camera", 0, [0.0, 1.0, 2.0],
               [(0.0, 1.6, 6.0), (2.0, 1.6, 5.5), (0.0, 1.6, 6.0)],
               rotations=[rest, turned, rest])
     s.animate("fly", "light", 0, [0.0, 1.0, 2.0],
               [(-3.0, 3.5, 1.0), (3.0, 3.0, 0.0), (-3.0, 3.5, 1.0)])
     s.write(os.path.join(HERE, "moving_camera.gltf"))
-
-
-def _multiply(a, b):
-    """The quaternion a b (x y z w)."""
-    ax, ay, az, aw = a
-    bx, by, bz, bw = b
-    return (aw * bx + ax * bw + ay * bz - az * by,
-            aw * by - ax * bz + ay * bw + az * bx,
-            aw * bz + ax * by - ay * bx + az * bw,
-            aw * bw - ax * bx - ay * by - az * bz)
 
 
 if __name__ == "__main__":

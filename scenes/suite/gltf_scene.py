@@ -263,6 +263,22 @@ class Scene:
             json.dump(gltf, f, indent=1)
 
 
+def yaw_quaternion(degrees):
+    """A turn about +y, as a quaternion (x y z w)."""
+    h = math.radians(degrees) / 2
+    return (0.0, math.sin(h), 0.0, math.cos(h))
+
+
+def quaternion_product(a, b):
+    """The quaternion a b (x y z w): b's turn, then a's."""
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+            aw * bw - ax * bx - ay * by - az * bz)
+
+
 def _normalise(v):
     n = math.sqrt(sum(c * c for c in v))
     return [c / n for c in v]

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "voxel_ref.h"
 
 static vct_context *ctx;
 
@@ -52,21 +53,6 @@ static void release(light_state *l) {
     free(l->albedo);
     free(l->radiance);
     free(l->sides);
-}
-
-static void decode(uint32_t key, int c[3]) {
-    c[0] = c[1] = c[2] = 0;
-    for (int b = 0; b < 10; ++b)
-        for (int k = 0; k < 3; ++k)
-            c[k] |= (int)((key >> (3 * b + k)) & 1u) << b;
-}
-
-static uint32_t encode(const int c[3]) {
-    uint32_t key = 0;
-    for (int b = 0; b < 10; ++b)
-        for (int k = 0; k < 3; ++k)
-            key |= (uint32_t)((c[k] >> b) & 1) << (3 * b + k);
-    return key;
 }
 
 static double luminance(const double c[3]) {
@@ -120,8 +106,8 @@ int main(void) {
     int gatherers_differ = 0, filled = 0, fill_wrong = 0, own = 0, own_differ = 0, skipped = 0;
     double worst = 0.0;
     for (uint32_t v = 0; v < n; ++v) {
-        int c[3];
-        decode(direct.keys[v], c);
+        int64_t c[3];
+        ref_unmorton(direct.keys[v], c);
         const int skips = (c[0] + c[1] + c[2]) % 4 != 0;
         const int bits_equal = !memcmp(dense.radiance + 4 * v, sparse.radiance + 4 * v, 16) &&
                                !memcmp(dense.sides + 8 * v, sparse.sides + 8 * v, 32);
@@ -134,11 +120,12 @@ int main(void) {
         double front[3] = {0}, back[3] = {0};
         int found = 0, known = 1;
         for (int k = 0; k < 12; ++k) {
-            int q[3] = {c[0], c[1], c[2]};
+            int64_t q[3] = {c[0], c[1], c[2]};
             q[k % 3] += (k % 6 < 3 ? 1 : -1) * (k < 6 ? 1 : 2);
             if (q[k % 3] < 0 || q[k % 3] >= 32 || (q[0] + q[1] + q[2]) % 4 != 0)
                 continue;
-            const int u = find(direct.keys, n, encode(q));
+            const int u =
+                find(direct.keys, n, ref_morton((uint32_t)q[0], (uint32_t)q[1], (uint32_t)q[2]));
             if (u < 0)
                 continue;
             const float *pu = direct.sides + 8 * u + 4;
@@ -184,8 +171,9 @@ int main(void) {
         worst = fmax(worst, e);
         ++filled;
         if (e > 1e-3 && fill_wrong++ < 3)
-            fprintf(stderr, "voxel (%d %d %d): %g %g %g, expected %g %g %g (%d neighbours)\n", c[0],
-                    c[1], c[2], got[0], got[1], got[2], bright[0], bright[1], bright[2], found);
+            fprintf(stderr, "voxel (%lld %lld %lld): %g %g %g, expected %g %g %g (%d neighbours)\n",
+                    (long long)c[0], (long long)c[1], (long long)c[2], got[0], got[1], got[2],
+                    bright[0], bright[1], bright[2], found);
     }
     CHECK(gatherers_differ == 0, "%d gathering voxels differ from the dense bounce",
           gatherers_differ);

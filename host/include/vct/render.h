@@ -134,8 +134,8 @@ typedef struct vct_vct_options {
     /* 1 (vct_vct_options_default): trace the diffuse cones at every other
      * pixel per axis and give the others the mean of the traced neighbours
      * on the same surface (a pixel with none traces its own); 0: at every
-     * pixel. Over the scene suite both give the same error, and 1 takes a
-     * third to a half of the time (doc/results/suite.md). */
+     * pixel. Over the scene suite both give the same error, and the frame
+     * takes 0.3 to 0.6 of its time with 1 (doc/results/suite.md). */
     int sparse_diffuse;
     /* Camera rays per axis at pixels on an edge (of a surface, a material or
      * a hard shadow), which then show their mean: 1 traces pixel centres
