@@ -78,10 +78,11 @@ inline void gather_voxel(const accel_view *acc, CONE_POOLS, __global const uint 
                         surface);
 }
 
-/* Voxel v's radiance and sides from what its sides receive. */
+/* Voxel v's radiance and sides from what its sides receive; keep_sides 1:
+ * on the plane its sides have (voxel_side.h). */
 inline void bounce_store(uint v, float3 front, float3 back, __global const float4 *albedo,
                          __global const float4 *direct, __global const float4 *direct_side,
-                         __global float4 *voxel_radiance, __global float4 *side) {
+                         __global float4 *voxel_radiance, __global float4 *side, uint keep_sides) {
     __global const float4 *sides = direct_side + VCT_VOXEL_SIDE_FLOAT4S * v;
     const float4 bright = direct[v], shade = sides[0], plane = sides[1];
     const int has_normal = any(plane.xyz != 0.0f);
@@ -89,8 +90,13 @@ inline void bounce_store(uint v, float3 front, float3 back, __global const float
     /* without a normal both sides send what the brighter side receives */
     const float3 more = side_luminance(front) >= side_luminance(back) ? front : back;
     const float3 toward = has_normal ? front : more, away = has_normal ? back : more;
-    voxel_side_store(bright.xyz + rho * toward, bright.xyz - shade.xyz + rho * away, plane.xyz,
-                     plane.w * plane.xyz, bright.w, voxel_radiance, side, v);
+    const float3 lit_toward = bright.xyz + rho * toward,
+                 lit_away = bright.xyz - shade.xyz + rho * away;
+    if (keep_sides)
+        voxel_side_keep(lit_toward, lit_away, plane.xyz, bright.w, voxel_radiance, side, v);
+    else
+        voxel_side_store(lit_toward, lit_away, plane.xyz, plane.w * plane.xyz, bright.w,
+                         voxel_radiance, side, v);
 }
 
 /* sparse 1: only the voxels whose x + y + z is a multiple of 4 gather (and
@@ -100,7 +106,7 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
                             __global const vct_cone_dir *cones, uint cone_count,
                             __global const uint *keys, uint voxels, __global const float4 *albedo,
                             __global const float4 *direct, __global const float4 *direct_side,
-                            __global float4 *voxel_radiance, __global float4 *side,
+                            __global float4 *voxel_radiance, __global float4 *side, uint keep_sides,
                             __global const uint *carried_from,
                             __global const float4 *before_radiance,
                             __global const float4 *before_side, uint carry_every, uint carry_phase,
@@ -126,7 +132,7 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
         received[2u * v] = (float4)(front, 0.0f);
         received[2u * v + 1u] = (float4)(back, 0.0f);
     }
-    bounce_store(v, front, back, albedo, direct, direct_side, voxel_radiance, side);
+    bounce_store(v, front, back, albedo, direct, direct_side, voxel_radiance, side, keep_sides);
 }
 
 /* A neighbour's surface is this voxel's where their planes face the same
@@ -145,7 +151,7 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
                                  __global const float4 *albedo, __global const float4 *direct,
                                  __global const float4 *direct_side,
                                  __global float4 *voxel_radiance, __global float4 *side,
-                                 __global const float4 *received) {
+                                 uint keep_sides, __global const float4 *received) {
     const accel_view acc = ACCEL_VIEW();
     const uint v = get_global_id(0);
     if (v >= voxels || !bounce_skips(keys[v]))
@@ -188,5 +194,5 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
         gather_voxel(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, keys[v], plane, &front,
                      &back);
     }
-    bounce_store(v, front, back, albedo, direct, direct_side, voxel_radiance, side);
+    bounce_store(v, front, back, albedo, direct, direct_side, voxel_radiance, side, keep_sides);
 }

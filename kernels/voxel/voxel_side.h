@@ -1,21 +1,29 @@
 /* The two sides of a voxel's surface.
  *
  * A wall lit on one face must not light what lies behind it, however thin
- * it is. So a voxel keeps, beside its radiance (the brighter side's), the
- * difference to its darker side and the plane between them: the brighter
- * side's unit normal n and offset h = n . c, c a point of its surfaces in
+ * it is. So a voxel keeps, beside its radiance (its front side's: the
+ * brighter one), the difference to its back side and the plane between
+ * them: the front side's unit normal n and offset h = n . c, c a point of its surfaces in
  * volume units less 0.5 (centred, for half precision in the bricks):
- *     radiance[v]    = (brighter side's radiance, opacity)
- *     side[2v]       = (brighter - darker side's radiance, k)
+ *     radiance[v]    = (front side's radiance, opacity)
+ *     side[2v]       = (front - back side's radiance, k)
  *     side[2v + 1]   = (n, h), n = 0 where the voxel has no normal
- * k is the difference's luminance: how much light the side a cone is on
+ * k is the difference's luminance (or more, voxel_side_keep): how much light the side a cone is on
  * decides. Bricks filter the difference premultiplied by opacity, like
  * radiance, and the plane by opacity times k, so that where surfaces meet,
  * the plane is the one that matters (a dark floor has no say in which side
- * of a sunlit wall a cone is on): VCT_BRICK_SHADE holds (opacity (brighter -
- * darker), opacity k), VCT_BRICK_PLANE opacity k (n, h).
- * A cone whose origin lies behind a sample's plane sees the darker side
- * (cone_trace.h). */
+ * of a sunlit wall a cone is on): VCT_BRICK_SHADE holds (opacity (front -
+ * back), opacity k), VCT_BRICK_PLANE opacity k (n, h).
+ * A cone whose origin lies behind a sample's plane sees the back side
+ * (cone_trace.h).
+ *
+ * The first bounce decides which side is which (voxel_side_store); the
+ * bounces between it and the last only add light to each side and may make a
+ * voxel more one-sided, never less (voxel_side_keep); the last decides again,
+ * from the light the cones will see. Deciding with every bounce made the
+ * gather depend on its own result: in a hall lit through a slit in a
+ * one-voxel roof, planes turned between bounces and the bounces' light
+ * oscillated, settling a fifth above the right mean. */
 #ifndef VCT_VOXEL_SIDE_H
 #define VCT_VOXEL_SIDE_H
 
@@ -80,6 +88,19 @@ inline void voxel_side_store(float3 toward, float3 away, float3 n, float3 centre
     __global float4 *out = side + VCT_VOXEL_SIDE_FLOAT4S * v;
     out[0] = (float4)(bright - dark, side_luminance(bright - dark));
     out[1] = (float4)(up, dot(up, centre));
+}
+
+/* Stores voxel v keeping the plane its sides have: `toward` is what it
+ * sends along +n, `away` along -n (n: the plane's normal up to its sign).
+ * The side the plane faces may now be the darker one: radiance less shade
+ * is still the other side's light, and k grows to the sides' difference. */
+inline void voxel_side_keep(float3 toward, float3 away, float3 n, float opacity,
+                            __global float4 *radiance, __global float4 *side, uint v) {
+    __global float4 *out = side + VCT_VOXEL_SIDE_FLOAT4S * v;
+    const int flip = dot(out[1].xyz, n) < 0.0f;
+    const float3 front = flip ? away : toward, back = flip ? toward : away;
+    radiance[v] = (float4)(front, opacity);
+    out[0] = (float4)(front - back, fmax(out[0].w, fabs(side_luminance(front - back))));
 }
 
 #endif

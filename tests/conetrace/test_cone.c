@@ -662,12 +662,15 @@ static double luminance(const double c[3]) {
  * must be its direct light plus albedo times the preset's weighted cones,
  * marched from its centre on that side of its plane through pyramid p (the
  * light the bounce read); the brighter side becomes its radiance `after`,
- * the difference its shade in `after_sides`. A voxel without a normal
- * gathers on both sides of z and sends the brighter both ways. A quarter of
- * the voxels at least must gain light over `direct`. */
+ * the difference its shade in `after_sides`. With `kept` (the sides before a
+ * bounce after the first), the side `kept`'s plane faces does instead, the
+ * plane stays and k is the larger of kept's and the difference's luminance.
+ * A voxel without a normal gathers on both sides of z and sends the brighter
+ * both ways. A quarter of the voxels at least must gain light over
+ * `direct`. */
 static void check_bounce(const char *what, const brick_case *c, const ref_pyramid *p,
-                         const float *direct, const float *direct_sides, const float *after,
-                         const float *after_sides) {
+                         const float *direct, const float *direct_sides, const float *kept,
+                         const float *after, const float *after_sides) {
     const uint32_t nv = c->info.voxels;
     uint32_t *keys = malloc(4ull * nv);
     float dirs[64], tan_half[16];
@@ -697,12 +700,23 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
             away[k] = lit - (has_normal ? direct_sides[8 * v + k] : 0.0) +
                       rho * (has_normal ? back[k] : more);
         }
-        const int flip = luminance(away) > luminance(toward);
-        double e = 0.0;
+        const float *up = kept ? kept + 8 * v + 4 : NULL;
+        const int flip =
+            up ? (double)up[0] * plane[0] + (double)up[1] * plane[1] + (double)up[2] * plane[2] <
+                     0.0
+               : luminance(away) > luminance(toward);
+        double e = 0.0, diff[3];
         for (int k = 0; k < 3; ++k) {
             const double bright = flip ? away[k] : toward[k], dark = flip ? toward[k] : away[k];
-            e = fmax(e, fabs(after[4 * v + k] - bright) / (1.0 + bright));
-            e = fmax(e, fabs(after_sides[8 * v + k] - (bright - dark)) / (1.0 + bright));
+            diff[k] = bright - dark;
+            e = fmax(e, fabs(after[4 * v + k] - bright) / (1.0 + fabs(bright)));
+            e = fmax(e, fabs(after_sides[8 * v + k] - diff[k]) / (1.0 + fabs(bright)));
+        }
+        if (up) {
+            const double k_want = fmax(kept[8 * v + 3], fabs(luminance(diff)));
+            e = fmax(e, fabs(after_sides[8 * v + 3] - k_want) / (1.0 + k_want));
+            for (int k = 0; k < 4; ++k)
+                e = after_sides[8 * v + 4 + k] == up[k] ? e : fmax(e, 1.0);
         }
         two_sided += !has_normal;
         brighter += after[4 * v] > direct[4 * v] + 1e-4f;
@@ -723,23 +737,28 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
 static void bounce_against_reference(const char *what, brick_case *c, const vct_scene *scene,
                                      const vct_cone_settings *s, const float *reads,
                                      const float *reads_sides, const float *direct,
-                                     const float *direct_sides, float *after, float *after_sides) {
+                                     const float *direct_sides, int keeps, float *after,
+                                     float *after_sides) {
     vct_error err = {0};
     memmove(c->radiance, reads, 16ull * c->info.voxels);
     memmove(c->sides, reads_sides, 32ull * c->info.voxels);
+    float *kept = keeps ? malloc(32ull * c->info.voxels) : NULL;
+    if (kept)
+        memcpy(kept, reads_sides, 32ull * c->info.voxels);
     ref_pyramid p = pyramid_of(c, 1);
     REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c->accel, c->voxels, s, 6, &err), err);
     REQUIRE_OK(vct_voxels_read_radiance(ctx, c->voxels, after, &err), err);
     REQUIRE_OK(vct_voxels_read_sides(ctx, c->voxels, after_sides, &err), err);
-    check_bounce(what, c, &p, direct, direct_sides, after, after_sides);
+    check_bounce(what, c, &p, direct, direct_sides, kept, after, after_sides);
+    free(kept);
     pyramid_free(&p);
 }
 
 /* Bounces (vct_voxels_inject_bounce): the second bounce gathers the direct
  * light's bricks; the third gathers the bricks of the second's radiance and
  * still adds to the direct light alone, so that the light of the second
- * bounce is not counted twice. Each is checked against the reference
- * marcher on the bricks it read. */
+ * bounce is not counted twice, on the sides the second decided. Each is
+ * checked against the reference marcher on the bricks it read. */
 static void bounces(void) {
     vct_material mats[4];
     for (int i = 0; i < 4; ++i)
@@ -758,14 +777,14 @@ static void bounces(void) {
     vct_error err = {0};
     const vct_cone_settings s = vct_cone_settings_default();
     bounce_against_reference("second bounce", &c, scene, &s, direct, direct_sides, direct,
-                             direct_sides, after, after_sides);
+                             direct_sides, 0, after, after_sides);
     /* The third bounce reads the second's radiance. */
     bounce_against_reference("third bounce", &c, scene, &s, after, after_sides, direct,
-                             direct_sides, after, after_sides);
+                             direct_sides, 1, after, after_sides);
     /* Light injection starts over: one bounce after it is the second again. */
     REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
     bounce_against_reference("second bounce again", &c, scene, &s, direct, direct_sides, direct,
-                             direct_sides, after, after_sides);
+                             direct_sides, 0, after, after_sides);
     free(direct);
     free(after);
     free(direct_sides);
