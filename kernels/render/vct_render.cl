@@ -114,11 +114,17 @@ inline float albedo_luminance(float3 a) {
     return dot(a, (float3)(0.2126f, 0.7152f, 0.0722f));
 }
 
-/* 1 where a pixel's 3x3 neighbourhood holds an edge: a neighbour with
+/* EDGE where a pixel's 3x3 neighbourhood holds an edge: a neighbour with
  * another key (material, dielectrics on the way, lights seen), on another
  * surface (its normal turned, or off this pixel's plane), or of another
- * albedo (a texture's detail). */
-__kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *keys, uint2 size,
+ * albedo (a texture's detail); EDGE_EMITTER where the centres of the 5x5
+ * pixels around meet both an emitting surface and something else: an
+ * emitter's border, which its own key may not tell (centres that miss a
+ * small emitter see the same ceiling). */
+#define EDGE 1u
+#define EDGE_EMITTER 2u
+__kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *keys,
+                             __global const vct_material_desc *materials, uint2 size,
                              __global uchar *flags) {
     const uint pixel = get_global_id(0);
     if (pixel >= size.x * size.y)
@@ -148,7 +154,45 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
             edge = dot(n.xyz, nq.xyz) < EDGE_NORMAL_COS || fabs(dot(n.xyz, d)) > reach ||
                    fabs(dot(nq.xyz, d)) > reach || fabs(la - lq) > EDGE_ALBEDO_SHARE * fmax(la, lq);
         }
-    flags[pixel] = (uchar)edge;
+    /* the centres within two pixels: emitters' and others' */
+    int glow = 0, dark = 0;
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int nx = (int)x + dx, ny = (int)y + dy;
+            if (nx < 0 || ny < 0 || nx >= (int)size.x || ny >= (int)size.y)
+                continue;
+            const uint q = (uint)ny * size.x + (uint)nx;
+            const int emits = gbuf[GBUF_SLOTS * q + 1u].w != 0.0f &&
+                              any(materials[as_uint(gbuf[GBUF_SLOTS * q].w)].emission.xyz > 0.0f);
+            glow |= emits;
+            dark |= !emits;
+        }
+    flags[pixel] = (uchar)(glow && dark ? EDGE_EMITTER : edge ? EDGE : 0u);
+}
+
+/* A pixel on an edge beside an emitting surface: its mean radiance over an
+ * m x m grid of camera rays. An emitter is far brighter than what lies
+ * beside it, so its share of the pixel decides the pixel: through the 4 x 4
+ * rays of other edges, a lamp's panel a few pixels wide came out off by up
+ * to a fifth of its radiance in the pixels it covers in part, or missed
+ * (a hundred times the image's mean there). */
+#define EMITTER_EDGE_SCALE 4u
+inline float3 emitter_edge_radiance(const shading_scene *ps, const vct_camera_desc *cam, uint x,
+                                    uint row, uint id, uint m) {
+    float3 sum = (float3)(0.0f);
+    /* One ray in each cell of the m x m grid, on a column and a row of the
+     * m^2 x m^2 grid of its own, their places within the cells shuffled per
+     * column and per row (correlated multi-jittered sampling without the
+     * jitter): an emitter's corner is met as finely as its edges. */
+    for (uint s = 0; s < m * m; ++s) {
+        const uint i = s % m, j = s / m;
+        const uint sx = rng_permute(j, m, 0x68bc21ebu ^ i), sy = rng_permute(i, m, 0x02e5be93u ^ j);
+        sum +=
+            primary_trace(ps, cam, (float)x + ((float)(i * m + sx) + 0.5f) / (float)(m * m),
+                          (float)row + ((float)(j * m + sy) + 0.5f) / (float)(m * m), id, s, m * m)
+                .radiance;
+    }
+    return sum / (float)(m * m);
 }
 
 /* Pixels on an edge: n x n camera rays over the pixel. The image
@@ -208,6 +252,9 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     }
     const float inv = 1.0f / (float)(n * n);
     gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(cover * inv, 0.0f);
+    if (flags[pixel] == EDGE_EMITTER)
+        radiance =
+            emitter_edge_radiance(&ps, &cam, x, row, id, n * EMITTER_EDGE_SCALE) * (float)(n * n);
     if (albedo_count > 0u)
         gbuf[GBUF_SLOTS * pixel + 4u] = (float4)(albedo_sum / (float)albedo_count, 0.0f);
     image[pixel] = (float4)(radiance * inv, 1.0f);

@@ -413,8 +413,9 @@ static int primary(frame *f, const vct_scene *s, const vct_accel *g, const vct_c
         flags = vct_buffer_create(f->ctx, PRIMARY_STAGE, "edge flags", pixels, CL_MEM_READ_WRITE,
                                   NULL, err);
         rc = flags ? vct_run_kernel(f->ctx, f->program, "vct_edge_flags", PRIMARY_STAGE, pixels,
-                                    err, 4, VCT_ARG_OF(f->gbuf), VCT_ARG_OF(keys),
-                                    VCT_ARG_OF(f->size), VCT_ARG_OF(flags))
+                                    err, 5, VCT_ARG_OF(f->gbuf), VCT_ARG_OF(keys),
+                                    VCT_ARG(materials, f->scene.materials), VCT_ARG_OF(f->size),
+                                    VCT_ARG_OF(flags))
                    : (int)err->status;
         if (rc == VCT_OK)
             rc = primary_launch(f, "vct_primary_refine", s, g, cam, flags, edge_samples, err);
