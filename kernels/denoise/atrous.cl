@@ -11,12 +11,19 @@
  *
  * Buffers, one element per pixel, rows top to bottom:
  *   color          float4 linear radiance
- *   albedo         float4 (rgb; w unused), render_guides' albedo
+ *   albedo         float4 (rgb; w: the share of the pixel not on an
+ *                  emitter), render_guides' albedo
  *   normal_depth   float4 (normal, not normalised; distance, 0: no surface)
  *   variance       float, the variance of each pixel's mean luminance
  *   signal         float4 (demodulated rgb, its luminance variance)
- *   guide, slope   float4 (unit normal, distance), float2 depth change per
- *                  pixel along x and y: normal_depth prepared once */
+ *   guide, slope   float4 (unit normal, distance; -1 where an emitter is
+ *                  seen), float2 depth change per pixel along x and y:
+ *                  normal_depth prepared once
+ *
+ * An emitter seen directly is no noise, and far brighter than what lies
+ * beside it: its pixels (albedo.w below 1) are left as they are and lend
+ * nothing to their neighbours. Spread, a ceiling panel's light lit the
+ * ceiling around it at 30 to 90 times the image's mean. */
 #include "denoise/denoise.h"
 
 /* Albedo below this is not divided by: the channel is filtered as it is. */
@@ -58,14 +65,16 @@ __kernel void denoise_estimate_variance(__global const float4 *color, uint2 size
 
 /* Each pixel's guide and depth slope, once for all passes. */
 __kernel void denoise_guides(__global const float4 *normal_depth, uint2 size,
-                             __global float4 *guide, __global float2 *slope) {
+                             __global float4 *guide, __global float2 *slope,
+                             __global const float4 *albedo) {
     const int x = (int)get_global_id(0), y = (int)get_global_id(1);
     if (x >= (int)size.x || y >= (int)size.y)
         return;
     const int p = y * (int)size.x + x;
     const float4 v = normal_depth[p];
     const float len = length(v.xyz);
-    guide[p] = (float4)(len > 0.0f ? v.xyz / len : (float3)(0.0f), v.w);
+    guide[p] = (float4)(len > 0.0f ? v.xyz / len : (float3)(0.0f),
+                        albedo[p].w < 1.0f ? DENOISE_EMITTER : v.w);
     slope[p] = (float2)(denoise_slope(v.w, denoise_depth_at(normal_depth, size, x - 1, y),
                                       denoise_depth_at(normal_depth, size, x + 1, y)),
                         denoise_slope(v.w, denoise_depth_at(normal_depth, size, x, y - 1),
@@ -150,11 +159,12 @@ __kernel void denoise_clamp(__global const float4 *in, uint2 size, float k, __gl
     out[y * w + x] = k > 0.0f && l > bound ? (float4)(c.xyz * (bound / l), c.w) : c;
 }
 
-/* The filtered signal times the albedo again. */
+/* The filtered signal times the albedo again; an emitter's pixels keep
+ * their colour. */
 __kernel void denoise_remodulate(__global const float4 *signal, __global const float4 *albedo,
                                  uint pixels, __global float4 *color) {
     const uint i = get_global_id(0);
-    if (i >= pixels)
+    if (i >= pixels || albedo[i].w < 1.0f)
         return;
     color[i] = (float4)(signal[i].xyz * safe_albedo(albedo[i].xyz), 1.0f);
 }

@@ -4,6 +4,9 @@
 #ifndef VCT_DENOISE_H
 #define VCT_DENOISE_H
 
+/* guide.w of a pixel where an emitter is seen (denoise/atrous.cl). */
+#define DENOISE_EMITTER (-1.0f)
+
 inline float denoise_luminance(float3 c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
@@ -45,9 +48,12 @@ inline float denoise_variance_blurred(__global const float4 *signal, uint2 size,
  * slope times the offset, sigma.z, with a thousandth of the distance for
  * flat surfaces), luminance (the difference against sigma.x standard
  * deviations of the two). Pixels without a surface weigh only by luminance,
- * among themselves. The three factors are one exp2. */
+ * among themselves; an emitter's pixels with none. The three factors are
+ * one exp2. */
 inline float denoise_edge_weight(float4 gc, float2 slope_c, float4 gq, int ox, int oy, float lc,
                                  float lq, float var_c, float var_q, float4 sigma) {
+    if (gc.w < 0.0f || gq.w < 0.0f)
+        return 0.0f;
     const float l = fabs(lc - lq) / (sigma.x * sqrt(var_c + var_q) + 1e-6f);
     const int surface_c = gc.w > 0.0f, surface_q = gq.w > 0.0f;
     if (!surface_c || !surface_q)

@@ -46,9 +46,11 @@ static void ref_unit(const ref_px *p, float n[3]) {
     n[2] = len > 0 ? p->b / len : 0.0f;
 }
 
-/* One pass over `in` (rgb demodulated, w variance) into `out`. */
-static void ref_atrous(const ref_px *in, const ref_px *nd, int w, int h, int step,
-                       const float sigma[3], ref_px *out) {
+/* One pass over `in` (rgb demodulated, w variance) into `out`; a pixel whose
+ * albedo's w is below 1 (an emitter seen) takes nothing from the others and
+ * gives them nothing. */
+static void ref_atrous(const ref_px *in, const ref_px *nd, const ref_px *albedo, int w, int h,
+                       int step, const float sigma[3], ref_px *out) {
     static const float k1[3] = {0.375f, 0.25f, 0.0625f};
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -78,7 +80,10 @@ static void ref_atrous(const ref_px *in, const ref_px *nd, int w, int h, int ste
                     const ref_px q = in[qy * w + qx], qnd = nd[qy * w + qx];
                     const float k = k1[abs(dx)] * k1[abs(dy)];
                     float e = 1.0f;
-                    if (dx || dy) {
+                    if ((dx || dy) &&
+                        (albedo[y * w + x].w < 1.0f || albedo[qy * w + qx].w < 1.0f)) {
+                        e = 0.0f;
+                    } else if (dx || dy) {
                         const float l = fabsf(lc - ref_lum(q.r, q.g, q.b)) /
                                         (sigma[0] * sqrtf(var_c + q.w) + 1e-6f);
                         const int sc = cnd.w > 0.0f, sq = qnd.w > 0.0f;
@@ -174,14 +179,16 @@ static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px 
     a = b;
     b = t0;
     for (int it = 0; it < iterations; ++it) {
-        ref_atrous(a, nd, w, h, 1 << it, sigma, b);
+        ref_atrous(a, nd, albedo, w, h, 1 << it, sigma, b);
         ref_px *t = a;
         a = b;
         b = t;
     }
-    for (size_t i = 0; i < n; ++i)
-        out[i] = (ref_px){a[i].r * ref_safe(albedo[i].r), a[i].g * ref_safe(albedo[i].g),
-                          a[i].b * ref_safe(albedo[i].b), 1.0f};
+    for (size_t i = 0; i < n; ++i) /* an emitter's pixels keep their colour */
+        out[i] = albedo[i].w < 1.0f
+                     ? color[i]
+                     : (ref_px){a[i].r * ref_safe(albedo[i].r), a[i].g * ref_safe(albedo[i].g),
+                                a[i].b * ref_safe(albedo[i].b), 1.0f};
     free(a);
     free(b);
 }

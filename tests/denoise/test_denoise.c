@@ -350,10 +350,58 @@ static void test_pathtrace(vct_context *ctx) {
     vct_scene_release(s);
 }
 
+/* A ceiling (albedo 0.5, irradiance 1, 30 % noise) with a small black
+ * panel in it, seen directly: its 3x3 pixels emit 400 (the albedo guide's w
+ * 0), the ring around them half covered (200, albedo 0.25, w 0.5, and the
+ * variance of 4 rays that met the panel or not), as a 4 spp path tracer's
+ * pixels show a lamp. The panel's pixels keep their colour, bit for bit,
+ * and lend no light to the ceiling: every ceiling pixel within 40 % of its
+ * clean value (spread, the panel lit the ceiling around it at 30 to 90
+ * times its light). */
+static void test_emitter(vct_context *ctx) {
+    inputs in;
+    const int w = 32, h = 24, cx = 15, cy = 11;
+    inputs_alloc(&in, w, h);
+    uint32_t seed = 5;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int i = y * w + x, ring = abs(x - cx) > abs(y - cy) ? abs(x - cx) : abs(y - cy);
+            pixel(&in, i, 0.5f, 1.0f, 0.3f, facing, 3.0f, &seed);
+            if (ring <= 1) { /* the panel: black but for its light */
+                set4(&in.color, i, 400.0f, 400.0f, 400.0f, 1.0f);
+                set4(&in.albedo, i, 0.0f, 0.0f, 0.0f, 0.0f);
+                set4(&in.variance, i, 0.0f, 0.0f, 0.0f, 1.0f);
+            } else if (ring == 2) { /* half of it, as 4 rays saw it: 400^2 / 16 */
+                set4(&in.color, i, 200.0f, 200.0f, 200.0f, 1.0f);
+                set4(&in.albedo, i, 0.25f, 0.25f, 0.25f, 0.5f);
+                set4(&in.variance, i, 1e4f, 0.0f, 0.0f, 1.0f);
+            }
+        }
+    against_reference(ctx, "ceiling panel", &in);
+    vct_error err = {0};
+    vct_image out;
+    REQUIRE_OK(run(ctx, &in, &out, &err), err);
+    int kept = 1;
+    double worst = 0.0;
+    for (int i = 0; i < w * h; ++i) {
+        if (in.albedo.rgba[4 * i + 3] < 1.0f) {
+            kept &= memcmp(&out.rgba[4 * i], &in.color.rgba[4 * i], 12) == 0;
+            continue;
+        }
+        worst = fmax(worst, fabs(out.rgba[4 * i] / in.clean.rgba[4 * i] - 1.0));
+    }
+    CHECK(kept, "the panel's pixels changed");
+    CHECK(worst < 0.4, "a ceiling pixel is off its clean value by %.3f of it", worst);
+    printf("ceiling panel: its pixels kept; the ceiling within %.3f of its clean value\n", worst);
+    vct_image_release(&out);
+    inputs_free(&in);
+}
+
 int main(void) {
     vct_context *ctx = check_context();
     test_checker(ctx);
     test_edge(ctx);
+    test_emitter(ctx);
     test_degenerate(ctx);
     test_firefly(ctx);
     test_sizes(ctx);

@@ -3,7 +3,9 @@
  * double: where all of a pixel's n x n rays hit it, the albedo is the
  * material's, the normal faces the viewer with length 1 and the depth is the
  * mean of the rays' distances; where none does, albedo 1, normal 0 and depth
- * 0. */
+ * 0. The albedo's w is the share of the rays that met no emitter: 1 on a
+ * plane that emits nothing, 1 less the share that met it on one that
+ * emits. */
 #include <math.h>
 #include <string.h>
 
@@ -23,11 +25,12 @@ static v3 ray_at(v3 eye, v3 at, v3 up, double fov_deg, double px, double py) {
     return norm(add(f, add(mul(r, sx), mul(u, sy))));
 }
 
-static void run_case(vct_context *ctx, const char *name, double eye_y) {
+static void run_case(vct_context *ctx, const char *name, double eye_y, int emits) {
     float pos[] = {-50, 0, -50, 50, 0, -50, 50, 0, 50, -50, 0, 50};
     uint32_t tris[] = {0, 1, 2, 0, 2, 3}, mats[] = {0, 0};
     vct_material m = vct_material_default();
     m.albedo[0] = 0.8f, m.albedo[1] = 0.5f, m.albedo[2] = 0.25f;
+    m.emission[0] = m.emission[1] = m.emission[2] = emits ? 3.0f : 0.0f;
     vct_error err = {0};
     vct_scene *s = vct_scene_from_arrays(pos, 4, tris, 2, mats, &m, 1, &err);
     REQUIRE_OK(s ? VCT_OK : err.status, err);
@@ -56,6 +59,11 @@ static void run_case(vct_context *ctx, const char *name, double eye_y) {
                         hits = -1000;
                 }
             const float *a = &albedo.rgba[4 * (y * W + x)], *q = &nd.rgba[4 * (y * W + x)];
+            const double clear = emits ? (double)(N * N - hits) / (N * N) : 1.0;
+            if (hits >= 0 && fabs(a[3] - clear) > 1e-6 && bad++ < 4)
+                fprintf(stderr,
+                        "%s (%d,%d): %d of %d rays on the plane, share clear %g (want %g)\n", name,
+                        x, y, hits, N * N, a[3], clear);
             if (hits == N * N) {
                 ++full;
                 const double depth = t_sum / hits, ny = eye_y > 0 ? 1.0 : -1.0;
@@ -88,8 +96,9 @@ static void run_case(vct_context *ctx, const char *name, double eye_y) {
 
 int main(void) {
     vct_context *ctx = check_context();
-    run_case(ctx, "from above", 2.0);
-    run_case(ctx, "from below", -2.0);
+    run_case(ctx, "from above", 2.0, 0);
+    run_case(ctx, "from below", -2.0, 0);
+    run_case(ctx, "an emitter from above", 2.0, 1);
     vct_error err = {0};
     vct_image a, b;
     vct_scene *s = NULL;

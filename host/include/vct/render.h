@@ -65,7 +65,8 @@ typedef struct vct_pathtrace_result {
 } vct_pathtrace_result;
 
 /* The denoiser's guides (vct/denoise.h) at width x height: the first hit's
- * albedo (textured; 1 where rays leave the scene) and, in normal_depth, its
+ * albedo (textured; 1 where rays leave the scene; in w the share of the rays
+ * whose first hit emits nothing) and, in normal_depth, its
  * normal facing the viewer (xyz, not normalised) and distance (w, 0 where
  * no ray hit), each the mean of rays_per_axis^2 rays across the pixel. */
 VCT_API vct_status vct_render_guides(vct_context *ctx, const vct_scene *scene,

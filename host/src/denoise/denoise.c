@@ -96,7 +96,7 @@ static int over_pixels(denoise_run *r, cl_kernel k, int rc, vct_error *err) {
     return rc;
 }
 
-/* A kernel over every pixel with arguments (in, size, out[, out2]). */
+/* A kernel over every pixel with arguments (in, size, out[, out2, albedo]). */
 static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, cl_mem out2,
                       vct_error *err) {
     cl_kernel k = vct_kernel_create(r->ctx, r->program, name, err);
@@ -108,7 +108,7 @@ static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, c
                               (const void *)&out, guides ? "guide" : "variance")
                : (int)err->status;
     if (rc == VCT_OK && out2)
-        rc = vct_set_args(err, STAGE, k, 3, 1, VCT_ARG(slope, out2));
+        rc = vct_set_args(err, STAGE, k, 3, 2, VCT_ARG(slope, out2), VCT_ARG_OF(r->albedo));
     return over_pixels(r, k, rc, err);
 }
 
