@@ -21,7 +21,10 @@ mean_ratio() { # image, reference -> the image's mean over the reference's
 grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
     [ -n "$name" ] || continue
     ref=out/suite/$name/reference.pfm
-    [ -f "$ref" ] || { echo "bounces: $name has no reference ($ref): run bench/suite.sh" >&2; continue; }
+    if [ ! -f "$ref" ]; then
+        echo "bounces: $name has no reference ($ref): run bench/suite.sh" >&2
+        continue
+    fi
     ambient=$(echo "$extra" | grep -o -- '--ambient [0-9. ]*' || true)
     vct="" pt=""
     for k in 1 2 3 4; do

@@ -3,17 +3,19 @@
  * A wall lit on one face must not light what lies behind it, however thin
  * it is. So a voxel keeps, beside its radiance (its front side's: the
  * brighter one), the difference to its back side and the plane between
- * them: the front side's unit normal n and offset h = n . c, c a point of its surfaces in
- * volume units less 0.5 (centred, for half precision in the bricks):
+ * them: the front side's unit normal n and offset h = n . c, c a point of
+ * its surfaces in volume units less 0.5 (centred, for half precision in the
+ * bricks):
  *     radiance[v]    = (front side's radiance, opacity)
  *     side[2v]       = (front - back side's radiance, k)
  *     side[2v + 1]   = (n, h), n = 0 where the voxel has no normal
- * k is the difference's luminance (or more, voxel_side_keep): how much light the side a cone is on
- * decides. Bricks filter the difference premultiplied by opacity, like
- * radiance, and the plane by opacity times k, so that where surfaces meet,
- * the plane is the one that matters (a dark floor has no say in which side
- * of a sunlit wall a cone is on): VCT_BRICK_SHADE holds (opacity (front -
- * back), opacity k), VCT_BRICK_PLANE opacity k (n, h).
+ * k is the difference's luminance (or more, voxel_side_keep): how much
+ * light the side a cone is on decides. Bricks filter the difference
+ * premultiplied by opacity, like radiance, and the plane by opacity times
+ * k, so that where surfaces meet, the plane is the one that matters (a dark
+ * floor has no say in which side of a sunlit wall a cone is on):
+ * VCT_BRICK_SHADE holds (opacity (front - back), opacity k),
+ * VCT_BRICK_PLANE opacity k (n, h).
  * A cone whose origin lies behind a sample's plane sees the back side
  * (cone_trace.h).
  *
