@@ -252,14 +252,14 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     }
     const float inv = 1.0f / (float)(n * n);
     gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(cover * inv, 0.0f);
-    if (flags[pixel] == EDGE_EMITTER)
-        radiance =
-            emitter_edge_radiance(&ps, &cam, x, row, id, n * EMITTER_EDGE_SCALE) * (float)(n * n);
+    const float3 mean = flags[pixel] == EDGE_EMITTER
+                            ? emitter_edge_radiance(&ps, &cam, x, row, id, n * EMITTER_EDGE_SCALE)
+                            : radiance * inv;
     if (albedo_count > 0u)
         gbuf[GBUF_SLOTS * pixel + 4u] = (float4)(albedo_sum / (float)albedo_count, 0.0f);
-    image[pixel] = (float4)(radiance * inv, 1.0f);
+    image[pixel] = (float4)(mean, 1.0f);
     if (aov)
-        aov[AOV_SLOTS * pixel] = (float4)(radiance * inv, 1.0f);
+        aov[AOV_SLOTS * pixel] = (float4)(mean, 1.0f);
     if (reflection && reflected) {
         rweight *= inv;
         reflection[3u * pixel].w = rweight.x;
