@@ -136,7 +136,8 @@ static const cli_option vct_rows[] = {
      "from traced neighbours on the same surface)"},
     {"edge-samples", 0, OPT_EDGE_SAMPLES, 1, "N",
      "N x N camera rays at pixels on an edge (surface, material, hard shadow), shown as their "
-     "mean, and 4N x 4N on an emitter's border (default 4; 1: pixel centres only)"},
+     "mean; 2N x 2N where the shading on its two sides is four times apart, 4N x 4N on an "
+     "emitter's border (default 4; 1: pixel centres only)"},
     {"ao-distance", 0, OPT_AO_DISTANCE, 1, "F",
      "ambient occlusion's reach as a fraction of the voxel volume (default 0.125)"},
     {"bounces", 0, OPT_BOUNCES, 1, "N",

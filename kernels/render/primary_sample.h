@@ -38,6 +38,7 @@
 /* What one camera ray found. */
 typedef struct primary_sample {
     float3 radiance;   /* emission and direct light, through the throughput on the way */
+    float3 sampled;    /* the part of it from emitter samples: noise, not detail */
     float3 throughput; /* of the dielectrics and mirrors on the way to the surface */
     int found;         /* a surface other than a dielectric or mirror was reached */
     float4 gpos, gnormal, gview, galbedo; /* the G-buffer's slots 0, 1, 2 and 4 */
@@ -74,7 +75,7 @@ inline float3 direct_shade(const vct_material_desc *m, direct_terms d, float e) 
 inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_desc *cam, float px,
                                     float py, uint seed, uint part, uint parts) {
     primary_sample out;
-    out.radiance = (float3)(0.0f);
+    out.radiance = out.sampled = (float3)(0.0f);
     out.throughput = (float3)(1.0f);
     out.found = 0;
     out.gpos = out.gnormal = out.gview = out.galbedo = (float4)(0.0f);
@@ -153,12 +154,15 @@ inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_de
          * top half) would all take the same strata (the same of a quad's two
          * triangles), and an edge that one side of them sees alone would be
          * lit by those strata alone. */
+        direct_terms de = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u};
         direct_emitters_part(&ps->g, &ps->e, ps->materials, ps->tri_material, p, n, r, e, seed,
-                             rng_permute(part, parts, seed), parts, &d);
+                             rng_permute(part, parts, seed), parts, &de);
+        out.sampled = out.throughput * direct_shade(&m, de, e);
+        out.radiance += out.sampled;
         /* None, some or all of the emitter samples seen: an area light's
          * shadow edge. */
         const uint seen_class =
-            d.emitters_seen == 0u ? 0u : (d.emitters_seen == d.emitters_facing ? 2u : 1u);
+            de.emitters_seen == 0u ? 0u : (de.emitters_seen == de.emitters_facing ? 2u : 1u);
         out.key = rng_hash(out.key ^ (seen_class << 30));
 #endif
         out.key = rng_hash(out.key ^ d.lights_seen);

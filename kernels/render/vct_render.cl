@@ -6,8 +6,10 @@
  *                      writes the G-buffer
  *   vct_edge_flags, vct_primary_refine  pixels on an edge (of a surface,
  *                      a material or a shadow) traced again with n x n rays
- *                      each, so that the image is the pixel's mean as a
- *                      converged reference's is, not its centre's value
+ *                      each ((2 n)^2 on an edge of high contrast, (4 n)^2 on
+ *                      an emitter's border), so that the image is the
+ *                      pixel's mean as a converged reference's is, not its
+ *                      centre's value
  *   vct_soft_shadows   direct light of the lights with a radius, through one
  *                      cone per light as wide as the light
  *   vct_diffuse_cones  indirect diffuse light and ambient occlusion
@@ -29,7 +31,8 @@
  * G-buffer, GBUF_SLOTS float4 per pixel: position and material id (as bits);
  * normal facing the viewer and 1 where a surface was found; direction
  * towards the viewer; the throughput of the refractions on the way; the
- * albedo there, the material's times its texture (scene/texture.h). AOVs, AOV_SLOTS
+ * albedo there, the material's times its texture (scene/texture.h), and
+ * until the edges are refined the centre's shading (sample_shade). AOVs, AOV_SLOTS
  * float4 per pixel when given: direct, indirect diffuse, specular, (open
  * fraction, mean level sampled, 0, 1), position and normal (w 1 where a
  * surface was found, else the slot stays 0). Glass reflections, 3 float4
@@ -63,12 +66,28 @@
 /* Neighbours whose albedos differ by more than this share of the brighter
  * one's luminance (a texture's detail) hold an edge too. */
 #define EDGE_ALBEDO_SHARE 0.1f
+/* An edge is of high contrast where the shading on its two sides differs
+ * by more than this share of the brighter's: through the N x N rays of
+ * other edges, its pixels' error reaches 1/N^2 of that difference. */
+#define EDGE_CONTRAST 0.75f
 
 #define PRIMARY_ARGS                                                                               \
     ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,                  \
         __global const uint *tri_material, TEXTURE_ARGS, __global const vct_light_desc *lights,    \
         uint light_count, EMITTER_ARGS, float4 ambient, __global float4 *gbuf,                     \
         __global float4 *image, __global float4 *aov, __global float4 *reflection
+
+inline float albedo_luminance(float3 a) {
+    return dot(a, (float3)(0.2126f, 0.7152f, 0.0722f));
+}
+
+/* A camera sample's shading, what edges of high contrast are found by: its
+ * radiance less the emitter samples' part (noise, not detail), over its
+ * albedo where it found a surface (a texture's detail is no contrast). */
+inline float sample_shade(const primary_sample *t) {
+    const float l = albedo_luminance(t->radiance - t->sampled);
+    return t->found ? l / fmax(albedo_luminance(t->galbedo.xyz), 0.02f) : l;
+}
 
 /* A sample's surface into the G-buffer, with the throughput given. */
 inline void gbuffer_write(__global float4 *gbuf, uint pixel, const primary_sample *s,
@@ -99,6 +118,7 @@ __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
         primary_trace(&ps, &cam, (float)x + 0.5f, (float)camera_row(&cam, y) + 0.5f,
                       camera_pixel_id(&cam, x, y), 0u, 1u);
     gbuffer_write(gbuf, pixel, &s, s.throughput);
+    gbuf[GBUF_SLOTS * pixel + 4u].w = sample_shade(&s);
     keys[pixel] = s.key;
     image[pixel] = (float4)(s.radiance, 1.0f);
     if (aov) {
@@ -110,19 +130,18 @@ __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
         reflection_write(reflection, pixel, s.rpos, s.rnormal, s.rdir);
 }
 
-inline float albedo_luminance(float3 a) {
-    return dot(a, (float3)(0.2126f, 0.7152f, 0.0722f));
-}
-
 /* EDGE where a pixel's 3x3 neighbourhood holds an edge: a neighbour with
  * another key (material, dielectrics on the way, lights seen), on another
  * surface (its normal turned, or off this pixel's plane), or of another
- * albedo (a texture's detail); EDGE_EMITTER where the centres of the 5x5
+ * albedo (a texture's detail). EDGE_EMITTER where the centres of the 5x5
  * pixels around meet both an emitting surface and something else: an
  * emitter's border, which its own key may not tell (centres that miss a
- * small emitter see the same ceiling). */
+ * small emitter see the same ceiling). EDGE_CONTRAST on an edge whose 3x3
+ * centres' shading spans more than EDGE_CONTRAST of the brightest's: a
+ * hard shadow's, a lit wall's against a dark sky. */
 #define EDGE 1u
 #define EDGE_EMITTER 2u
+#define EDGE_CONTRAST_FLAG 3u
 __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *keys,
                              __global const vct_material_desc *materials, uint2 size,
                              __global uchar *flags) {
@@ -167,18 +186,38 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
             glow |= emits;
             dark |= !emits;
         }
-    flags[pixel] = (uchar)(glow && dark ? EDGE_EMITTER : edge ? EDGE : 0u);
+    /* the centres' shading within one pixel */
+    float lo = INFINITY, hi = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = (int)x + dx, ny = (int)y + dy;
+            if (nx < 0 || ny < 0 || nx >= (int)size.x || ny >= (int)size.y)
+                continue;
+            const float shade = gbuf[GBUF_SLOTS * ((uint)ny * size.x + (uint)nx) + 4u].w;
+            lo = fmin(lo, shade);
+            hi = fmax(hi, shade);
+        }
+    const int contrast = edge && hi - lo > EDGE_CONTRAST * hi;
+    flags[pixel] = (uchar)(glow && dark ? EDGE_EMITTER
+                           : contrast   ? EDGE_CONTRAST_FLAG
+                           : edge       ? EDGE
+                                        : 0u);
 }
 
-/* A pixel on an edge beside an emitting surface: its mean radiance over an
- * m x m grid of camera rays. An emitter is far brighter than what lies
- * beside it, so its share of the pixel decides the pixel: through the 4 x 4
- * rays of other edges, a lamp's panel a few pixels wide came out off by up
- * to a fifth of its radiance in the pixels it covers in part, or missed
- * (a hundred times the image's mean there). */
+/* A pixel on a sharp edge: its mean radiance over an m x m grid of camera
+ * rays. One side of the edge is far brighter than the other, so its share
+ * of the pixel decides the pixel. Through the 4 x 4 rays of other edges, a
+ * lamp's panel a few pixels wide came out off by up to a fifth of its
+ * radiance in the pixels it covers in part, or missed (a hundred times the
+ * image's mean there): an emitter's border takes EMITTER_EDGE_SCALE times
+ * the rays per axis. A hard shadow's pixels came out off by up to a tenth
+ * of the light it stops: edges of high contrast take CONTRAST_EDGE_SCALE
+ * times the rays, which leave a third of that error at a quarter of the
+ * emitters' cost. */
 #define EMITTER_EDGE_SCALE 4u
-inline float3 emitter_edge_radiance(const shading_scene *ps, const vct_camera_desc *cam, uint x,
-                                    uint row, uint id, uint m) {
+#define CONTRAST_EDGE_SCALE 2u
+inline float3 sharp_edge_radiance(const shading_scene *ps, const vct_camera_desc *cam, uint x,
+                                  uint row, uint id, uint m) {
     float3 sum = (float3)(0.0f);
     /* One ray in each cell of the m x m grid, on a column and a row of the
      * m^2 x m^2 grid of its own, their places within the cells shuffled per
@@ -218,6 +257,8 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     float3 albedo_sum = (float3)(0.0f);
     uint albedo_count = 0u;
     uint material = found ? as_uint(gbuf[GBUF_SLOTS * pixel].w) : 0u;
+    /* the samples' own contrast: an edge of high contrast between the centres */
+    float lo = INFINITY, hi = 0.0f;
     for (uint s = 0; s < n * n; ++s) {
         /* Cell (i, j) of the n x n grid, and within it the sub-cell (j, i)
          * of an n x n grid of its own: every ray on its own column and row
@@ -229,6 +270,9 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
         const primary_sample t = primary_trace(&ps, &cam, px, py, id, s, n * n);
         radiance += t.radiance;
         rweight += (float3)(t.rpos.w, t.rnormal.w, t.rdir.w);
+        const float shade = sample_shade(&t);
+        lo = fmin(lo, shade);
+        hi = fmax(hi, shade);
         if (t.found) {
             cover += t.throughput;
             if (!found) {
@@ -252,9 +296,12 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     }
     const float inv = 1.0f / (float)(n * n);
     gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(cover * inv, 0.0f);
-    const float3 mean = flags[pixel] == EDGE_EMITTER
-                            ? emitter_edge_radiance(&ps, &cam, x, row, id, n * EMITTER_EDGE_SCALE)
-                            : radiance * inv;
+    const uint scale = flags[pixel] == EDGE_EMITTER ? EMITTER_EDGE_SCALE
+                       : flags[pixel] == EDGE_CONTRAST_FLAG || hi - lo > EDGE_CONTRAST * hi
+                           ? CONTRAST_EDGE_SCALE
+                           : 1u;
+    const float3 mean =
+        scale > 1u ? sharp_edge_radiance(&ps, &cam, x, row, id, n * scale) : radiance * inv;
     if (albedo_count > 0u)
         gbuf[GBUF_SLOTS * pixel + 4u] = (float4)(albedo_sum / (float)albedo_count, 0.0f);
     image[pixel] = (float4)(mean, 1.0f);

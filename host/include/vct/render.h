@@ -139,8 +139,10 @@ typedef struct vct_vct_options {
      * takes 0.3 to 0.6 of its time with 1 (doc/results/suite.md). */
     int sparse_diffuse;
     /* Camera rays per axis at pixels on an edge (of a surface, a material or
-     * a hard shadow), which then show their mean; four times as many on an
-     * emitting surface's border, whose share of a pixel decides it: 1 traces
+     * a hard shadow), which then show their mean; twice as many where the
+     * shading on its two sides is four times apart (a hard shadow's, a lit
+     * wall's against a dark sky), four times on an emitting surface's
+     * border: there the bright side's share of a pixel decides it. 1 traces
      * pixel centres only; 0 means VCT_EDGE_SAMPLES_DEFAULT. At most
      * VCT_EDGE_SAMPLES_MAX. */
     uint32_t edge_samples;
