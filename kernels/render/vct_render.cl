@@ -186,7 +186,7 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
             glow |= emits;
             dark |= !emits;
         }
-    /* the centres' shading within one pixel */
+    /* the shading of the centres one pixel around */
     float lo = INFINITY, hi = 0.0f;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
