@@ -6,7 +6,8 @@
  * Surfaces are two-sided, whatever their winding: each fragment of a voxel
  * (one triangle crossing it) is lit from the side its light is on, and each
  * side of the voxel (about its normal axis) sends out the mean of what its
- * fragments reflect to that side (voxel_side.h). A fragment is
+ * fragments reflect to that side (voxel_side.h), over the fragments' sides
+ * that do not look into a closed object (fragment_enclosed). A fragment is
  * shaded at the voxel's centre with its triangle's normal (and its albedo
  * averaged over the voxel, fragment_albedo.h), and seen from the light at
  * the point of its triangle nearest that centre, lifted by a relative
@@ -170,6 +171,45 @@ inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
     return irradiance / (float)e->samples;
 }
 
+/* A fragment's side that looks into a closed object within its voxel (a
+ * table top's upper face seen from below, inside the top; a leg's faces
+ * seen from within the leg) is hidden: another fragment of the voxel lies
+ * parallel to it, in front of that side (more along its normal than across
+ * it), less than a voxel away. Such a
+ * side sends no light and does not count in the voxel's mean, or a thin
+ * closed object's lit faces would be averaged with its hidden inner sides
+ * and send out half their light. Bit 0: the side n faces, bit 1: the other.
+ * Voxels of more than ENCLOSED_MAX fragments (a dense mesh's) are left
+ * open. */
+#define ENCLOSED_MAX 24u
+#define ENCLOSED_PARALLEL 0.9f
+inline uint fragment_enclosed(__global const float4 *tri_vertices,
+                              __global const uint *fragment_tri, uint begin, uint end, uint f,
+                              float3 p, float3 n, float3 q, float size) {
+    uint hidden = 0u;
+    if (end - begin > ENCLOSED_MAX)
+        return 0u;
+    for (uint k = begin; k < end && hidden != 3u; ++k) {
+        if (k == f)
+            continue;
+        const uint t = fragment_tri[k];
+        const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
+                     c = tri_vertices[3u * t + 2u].xyz;
+        const float3 cr = cross(b - a, c - a);
+        const float len = length(cr);
+        if (!(len > 0.0f) || fabs(dot(cr / len, n)) < ENCLOSED_PARALLEL)
+            continue;
+        /* in front: along the normal more than across it (a curved
+         * surface's next facet lies beside, not in front) */
+        const float3 to = triangle_nearest(p, a, b, c) - q;
+        const float d = dot(to, n);
+        const float3 across = to - d * n;
+        if (fabs(d) > 1e-3f * size && fabs(d) < size && dot(across, across) < d * d)
+            hidden |= d > 0.0f ? 1u : 2u;
+    }
+    return hidden;
+}
+
 /* Per new voxel, the voxel before at its key whose direct light it keeps
  * (carried_from; the light copied into radiance and side), or
  * VCT_NO_VOXEL where it is new or what moved can reach it (inject_direct
@@ -178,10 +218,9 @@ __kernel void carry_direct(vct_volume_desc vol, __global const uint *keys, uint 
                            __global const uint *before_keys, uint before_voxels,
                            __global const float4 *before_radiance,
                            __global const float4 *before_side, __global const float4 *boxes,
-                           uint box_count, __global const vct_light_desc *lights,
-                           uint light_count, float4 emit_lo, float4 emit_hi,
-                           __global uint *carried_from, __global float4 *radiance,
-                           __global float4 *side) {
+                           uint box_count, __global const vct_light_desc *lights, uint light_count,
+                           float4 emit_lo, float4 emit_hi, __global uint *carried_from,
+                           __global float4 *radiance, __global float4 *side) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
@@ -189,8 +228,7 @@ __kernel void carry_direct(vct_volume_desc vol, __global const uint *keys, uint 
     const float3 p = vol.origin.xyz + (convert_float3(morton_decode(keys[v])) + 0.5f) * size;
     uint from = carry_find(before_keys, before_voxels, keys[v]);
     if (from != VCT_NO_VOXEL &&
-        carry_dirty(p, 2.0f * size, boxes, box_count, lights, light_count, emit_lo,
-                    emit_hi))
+        carry_dirty(p, 2.0f * size, boxes, box_count, lights, light_count, emit_lo, emit_hi))
         from = VCT_NO_VOXEL;
     carried_from[v] = from;
     if (from == VCT_NO_VOXEL)
@@ -225,6 +263,7 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
     side_cube sides = side_cube_empty();
     float3 q_sum = (float3)(0.0f);
     uint surfaces = 0;
+    float open_sides = 0.0f; /* the fragments' sides not hidden, in halves */
     /* lights and emitters keep apart: each has its own shared rays */
     shared_rays lit = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0},
                 glow = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0};
@@ -239,6 +278,9 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         ++surfaces;
         const float3 q = triangle_nearest(p, a, b, c), n = cr / len;
         q_sum += q;
+        const uint hidden =
+            fragment_enclosed(tri_vertices, fragment_tri, begin, end, f, p, n, q, size);
+        open_sides += 0.5f * (float)(((hidden & 1u) == 0u) + ((hidden & 2u) == 0u));
         if (light_count == 0u && emitter_count == 0u)
             continue;
         float3 behind = (float3)(0.0f);
@@ -267,10 +309,12 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         }
         const vct_material_desc m = materials[tri_material[t]];
         const float3 rho = fragment_albedo(&tv, &m, t, a, b, c, p, size);
-        side_cube_add(&sides, n, rho * front);
-        side_cube_add(&sides, -n, rho * behind);
+        if (!(hidden & 1u))
+            side_cube_add(&sides, n, rho * front);
+        if (!(hidden & 2u))
+            side_cube_add(&sides, -n, rho * behind);
     }
-    const float scale = surfaces > 0u ? VCT_INV_PI / (float)surfaces : 0.0f;
+    const float scale = open_sides > 0.0f ? VCT_INV_PI / open_sides : 0.0f;
     /* the plane between the sides: across the way most light leaves, else
      * the normal axis (or none) */
     const float lean = length(sides.lean);

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "mesh_gen.h"
 #include "voxel_ref.h"
 
 #define RES 16
@@ -159,11 +160,12 @@ static void check_point_light(const char *name, inject_case *c, const double lig
  * z = bottom and z = top, each wound up (+z) or down as `winding` bits 0 and
  * 1 say, and the light above it. Voxels holding only the dark face, and the
  * floor in the slab's shadow, get nothing; voxels holding the lit face get
- * the analytic light at their centres, or half of it when they hold both
- * faces (the mean of a lit and a dark surface). That light is one-sided: it
- * leaves upwards only (vct_voxels_read_sides: the difference to the dark
- * side is all of it, the brighter side's normal +z, its plane the lit faces'
- * mean height). Returns the radiance. */
+ * the analytic light at their centres, also when they hold both faces: the
+ * sides the faces turn into the slab are hidden, and the mean is over the
+ * lit face's upper side and the dark face's lower one. That light is
+ * one-sided: it leaves upwards only (vct_voxels_read_sides: the difference
+ * to the dark side is all of it, the brighter side's normal +z, its plane
+ * the faces' mean height). Returns the radiance. */
 static float *thin_slab(const char *name, float bottom, float top, unsigned winding,
                         uint32_t *voxels) {
     const float pos[] = {0, 0, 4.5f,   16, 0, 4.5f,   16, 16, 4.5f,   0, 16, 4.5f,
@@ -187,7 +189,7 @@ static float *thin_slab(const char *name, float bottom, float top, unsigned wind
     case_build(&c);
     inject(&c);
     const uint32_t lit_layer = (uint32_t)top, dark_layer = (uint32_t)bottom;
-    const double share = lit_layer == dark_layer ? 0.5 : 1.0;
+    const int shared = lit_layer == dark_layer;
     int lit = 0, dark = 0, floor_dark = 0, bad = 0;
     for (uint32_t v = 0; v < c.info.voxels; ++v) {
         uint32_t cell[3];
@@ -207,7 +209,7 @@ static float *thin_slab(const char *name, float bottom, float top, unsigned wind
         } else if (inner && cell[2] == lit_layer) {
             const double d[3] = {light[0] - p[0], light[1] - p[1], light[2] - p[2]};
             const double dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            expected = share * 0.8 / CHECK_PI * intensity * (d[2] / dist) / (dist * dist);
+            expected = 0.8 / CHECK_PI * intensity * (d[2] / dist) / (dist * dist);
             ++lit;
         } else if (inner && cell[2] == dark_layer) {
             expected = 0.0;
@@ -219,7 +221,7 @@ static float *thin_slab(const char *name, float bottom, float top, unsigned wind
         const float *side = c.sides + 8 * v;
         if (inner && cell[2] == lit_layer) {
             /* the faces in the voxel: the lit one, and the dark one too when they share it */
-            const double height = share < 1.0 ? 0.5 * (bottom + top) : top;
+            const double height = shared ? 0.5 * (bottom + top) : top;
             const double plane = height / RES - 0.5;
             ok &= fabs(side[0] - expected) < 1e-4 * expected && side[6] > 0.9999f &&
                   fabs(side[7] - plane) < 1e-5;
@@ -233,11 +235,11 @@ static float *thin_slab(const char *name, float bottom, float top, unsigned wind
             CHECK(0, "%s: voxel (%u %u %u) radiance %g, expected %g", name, cell[0], cell[1],
                   cell[2], got, expected);
     }
-    CHECK(bad == 0 && lit >= 100 && floor_dark >= 60 && (share < 1.0 || dark >= 100),
+    CHECK(bad == 0 && lit >= 100 && floor_dark >= 60 && (shared || dark >= 100),
           "%s: %d wrong (%d lit, %d dark, %d floor voxels in shadow)", name, bad, lit, dark,
           floor_dark);
     printf("%-34s %d lit%s, %d dark, %d floor voxels in shadow\n", name, lit,
-           share < 1.0 ? " at half (both faces)" : "", dark, floor_dark);
+           shared ? " (both faces in one voxel)" : "", dark, floor_dark);
     float *out = c.radiance;
     c.radiance = NULL;
     *voxels = c.info.voxels;
@@ -433,9 +435,46 @@ static void trapped_light(void) {
           "a panel three voxels under the plane: %.4f of the light over it", ratio);
 }
 
+/* A sphere's facets lie side by side, nearly parallel, a little apart
+ * along their normals: none hides another's side, as a closed thin object's
+ * faces do. Under a sun straight down of irradiance pi each fragment sends
+ * out albedo cos(theta) <= albedo, so no voxel may send out more than the
+ * albedo, and the voxels over the top come close to it. */
+static void curved_facets(void) {
+    const float centre[3] = {8.0f, 8.0f, 8.0f};
+    test_mesh t = mesh_icosphere(4, 5.0f, centre);
+    uint32_t *mat = calloc(t.nt, sizeof *mat);
+    vct_material white = vct_material_default();
+    vct_error err = {0};
+    inject_case c = {0};
+    c.scene = vct_scene_from_arrays(t.pos, t.nv, t.tri, t.nt, mat, &white, 1, &err);
+    REQUIRE_OK(c.scene ? VCT_OK : err.status, err);
+    free(mat);
+    mesh_free(&t);
+    const vct_light sun = {
+        VCT_LIGHT_DIRECTIONAL, {0}, {0, 0, -1}, {3.14159265f, 3.14159265f, 3.14159265f}, 0, 0, 0};
+    REQUIRE_OK(vct_scene_add_light(c.scene, &sun, &err), err);
+    case_build(&c);
+    inject(&c);
+    const double albedo = white.albedo[0];
+    double brightest = 0.0;
+    int over = 0;
+    for (uint32_t v = 0; v < c.info.voxels; ++v) {
+        brightest = fmax(brightest, c.radiance[4 * v]);
+        over += c.radiance[4 * v] > albedo * (1.0 + 1e-4);
+    }
+    CHECK(over == 0 && brightest > 0.9 * albedo,
+          "sphere's facets: %d of %u voxels send out more than the albedo (brightest %g of %g)",
+          over, c.info.voxels, brightest, albedo);
+    printf("%-34s %u voxels, brightest %.4f of the albedo's %.4f\n", "sphere's facets",
+           c.info.voxels, brightest, albedo);
+    case_free(&c);
+}
+
 int main(void) {
     ctx = check_context();
     trapped_light();
+    curved_facets();
     vct_material white = vct_material_default();
     const double light[3] = {8.3, 7.7, 14.5}, moved[3] = {3.1, 12.6, 13.0};
 
