@@ -175,17 +175,17 @@ inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
  * table top's upper face seen from below, inside the top; a leg's faces
  * seen from within the leg) is hidden: another fragment of the voxel lies
  * parallel to it, in front of that side (more along its normal than across
- * it), less than a voxel away. Such a
- * side sends no light and does not count in the voxel's mean, or a thin
- * closed object's lit faces would be averaged with its hidden inner sides
- * and send out half their light. Bit 0: the side n faces, bit 1: the other.
- * Voxels of more than ENCLOSED_MAX fragments (a dense mesh's) are left
- * open. */
+ * it), more than min_gap (the same plane, to rounding) and less than a
+ * voxel away. Such a side sends no light and does not count in the voxel's
+ * mean, or a thin closed object's lit faces would be averaged with its
+ * hidden inner sides and send out half their light. Bit 0: the side n
+ * faces, bit 1: the other. Voxels of more than ENCLOSED_MAX fragments (a
+ * dense mesh's) are left open. */
 #define ENCLOSED_MAX 24u
 #define ENCLOSED_PARALLEL 0.9f
 inline uint fragment_enclosed(__global const float4 *tri_vertices,
                               __global const uint *fragment_tri, uint begin, uint end, uint f,
-                              float3 p, float3 n, float3 q, float size) {
+                              float3 p, float3 n, float3 q, float size, float min_gap) {
     uint hidden = 0u;
     if (end - begin > ENCLOSED_MAX)
         return 0u;
@@ -204,7 +204,7 @@ inline uint fragment_enclosed(__global const float4 *tri_vertices,
         const float3 to = triangle_nearest(p, a, b, c) - q;
         const float d = dot(to, n);
         const float3 across = to - d * n;
-        if (fabs(d) > 1e-3f * size && fabs(d) < size && dot(across, across) < d * d)
+        if (fabs(d) > min_gap && fabs(d) < size && dot(across, across) < d * d)
             hidden |= d > 0.0f ? 1u : 2u;
     }
     return hidden;
@@ -279,7 +279,8 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         const float3 q = triangle_nearest(p, a, b, c), n = cr / len;
         q_sum += q;
         const uint hidden =
-            fragment_enclosed(tri_vertices, fragment_tri, begin, end, f, p, n, q, size);
+            fragment_enclosed(tri_vertices, fragment_tri, begin, end, f, p, n, q, size,
+                              fmax(1e-3f * size, 8.0f * surface_epsilon(&g, q)));
         open_sides += 0.5f * (float)(((hidden & 1u) == 0u) + ((hidden & 2u) == 0u));
         if (light_count == 0u && emitter_count == 0u)
             continue;
