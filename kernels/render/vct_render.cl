@@ -173,8 +173,10 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
             edge = dot(n.xyz, nq.xyz) < EDGE_NORMAL_COS || fabs(dot(n.xyz, d)) > reach ||
                    fabs(dot(nq.xyz, d)) > reach || fabs(la - lq) > EDGE_ALBEDO_SHARE * fmax(la, lq);
         }
-    /* the centres within two pixels: emitters' and others' */
+    /* the centres within two pixels: emitters' and others'; and the
+     * shading of those within one */
     int glow = 0, dark = 0;
+    float lo = INFINITY, hi = 0.0f;
     for (int dy = -2; dy <= 2; ++dy)
         for (int dx = -2; dx <= 2; ++dx) {
             const int nx = (int)x + dx, ny = (int)y + dy;
@@ -185,17 +187,11 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
                               any(materials[as_uint(gbuf[GBUF_SLOTS * q].w)].emission.xyz > 0.0f);
             glow |= emits;
             dark |= !emits;
-        }
-    /* the shading of the centres one pixel around */
-    float lo = INFINITY, hi = 0.0f;
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = (int)x + dx, ny = (int)y + dy;
-            if (nx < 0 || ny < 0 || nx >= (int)size.x || ny >= (int)size.y)
-                continue;
-            const float shade = gbuf[GBUF_SLOTS * ((uint)ny * size.x + (uint)nx) + 4u].w;
-            lo = fmin(lo, shade);
-            hi = fmax(hi, shade);
+            if (abs(dx) <= 1 && abs(dy) <= 1) {
+                const float shade = gbuf[GBUF_SLOTS * q + 4u].w;
+                lo = fmin(lo, shade);
+                hi = fmax(hi, shade);
+            }
         }
     const int contrast = edge && hi - lo > EDGE_CONTRAST * hi;
     flags[pixel] = (uchar)(glow && dark ? EDGE_EMITTER
