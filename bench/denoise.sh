@@ -59,7 +59,8 @@ stamp=$(bench/stamp.sh bench/denoise.sh "$@")
     echo
     echo "Each suite scene at ${SIZE}x${SIZE}, path traced at 4 and 16 spp (seed 1), then denoised"
     echo "by the engine's filter (\`--denoise\`: albedo demodulation, five à-trous passes guided by"
-    echo "normals, depth and the path tracer's per-pixel variance) and by OIDN's RT filter (HDR,"
+    echo "normals, depth and the path tracer's per-pixel variance, edge pixels fitted on their"
+    echo "neighbours' normals and depths) and by OIDN's RT filter (HDR,"
     echo "the same albedo and normal guides, as clean auxiliaries). NRMSE against the suite's"
     echo "reference; times in ms: our filter's device time, OIDN's filter call on the same"
     echo "CPU (the second call), the guides' device time (both filters use them) and the path"

@@ -5,7 +5,10 @@
  * 2^i pixels apart (after bright outliers are clamped to their
  * neighbourhood), each tap weighted by how alike its normal, depth and
  * luminance are to the centre's, the luminance judged against the centre's
- * standard deviation, and multiplied by the albedo again. Every pass reads
+ * standard deviation (each pass allowing 0.9 of the difference the one
+ * before allowed: the host scales sigma.x), and multiplied by the albedo
+ * again, or replaced by denoise/edge_fit.cl's fit on a geometric edge.
+ * Every pass reads
  * one buffer and writes another, in a fixed order: the result does not
  * depend on scheduling.
  *
@@ -25,14 +28,6 @@
  * nothing to their neighbours. Spread, a ceiling panel's light lit the
  * ceiling around it at 30 to 90 times the image's mean. */
 #include "denoise/denoise.h"
-
-/* Albedo below this is not divided by: the channel is filtered as it is. */
-#define DENOISE_MIN_ALBEDO 0.01f
-
-inline float3 safe_albedo(float3 a) {
-    return (float3)(a.x > DENOISE_MIN_ALBEDO ? a.x : 1.0f, a.y > DENOISE_MIN_ALBEDO ? a.y : 1.0f,
-                    a.z > DENOISE_MIN_ALBEDO ? a.z : 1.0f);
-}
 
 /* Without the estimator's variance: the smallest luminance variance of the
  * four 3x3 windows that hold the pixel in a corner (Kuwahara's choice), so
@@ -88,7 +83,7 @@ __kernel void denoise_demodulate(__global const float4 *color, __global const fl
     const uint i = get_global_id(0);
     if (i >= pixels)
         return;
-    const float3 a = safe_albedo(albedo[i].xyz);
+    const float3 a = denoise_safe_albedo(albedo[i].xyz);
     const float la = denoise_luminance(a);
     signal[i] = (float4)(color[i].xyz / a, variance[i] / (la * la));
 }
@@ -159,12 +154,13 @@ __kernel void denoise_clamp(__global const float4 *in, uint2 size, float k, __gl
     out[y * w + x] = k > 0.0f && l > bound ? (float4)(c.xyz * (bound / l), c.w) : c;
 }
 
-/* The filtered signal times the albedo again; an emitter's pixels keep
- * their colour. */
+/* The filtered signal times the albedo again, or an edge pixel's fit
+ * (denoise/edge_fit.cl, w 1); an emitter's pixels keep their colour. */
 __kernel void denoise_remodulate(__global const float4 *signal, __global const float4 *albedo,
-                                 uint pixels, __global float4 *color) {
+                                 __global const float4 *fit, uint pixels, __global float4 *color) {
     const uint i = get_global_id(0);
     if (i >= pixels || albedo[i].w < 1.0f)
         return;
-    color[i] = (float4)(signal[i].xyz * safe_albedo(albedo[i].xyz), 1.0f);
+    color[i] = fit[i].w > 0.0f ? fit[i]
+                               : (float4)(signal[i].xyz * denoise_safe_albedo(albedo[i].xyz), 1.0f);
 }

@@ -7,6 +7,26 @@
 /* guide.w of a pixel where an emitter is seen (denoise/atrous.cl). */
 #define DENOISE_EMITTER (-1.0f)
 
+/* Albedo below this is not divided by: the channel is filtered as it is. */
+#define DENOISE_MIN_ALBEDO 0.01f
+
+/* A pixel whose rays' mean normal is shorter than this covers surfaces
+ * that face different ways (a crease, a silhouette): denoise/edge_fit.cl
+ * fits its colour. 0.995: rays that spread over 6 degrees. */
+#define DENOISE_EDGE_NORMAL 0.995f
+
+inline float3 denoise_safe_albedo(float3 a) {
+    return (float3)(a.x > DENOISE_MIN_ALBEDO ? a.x : 1.0f, a.y > DENOISE_MIN_ALBEDO ? a.y : 1.0f,
+                    a.z > DENOISE_MIN_ALBEDO ? a.z : 1.0f);
+}
+
+/* On a geometric edge: a surface seen (distance above 0), no emitter, and
+ * the normals of the pixel's rays spread. */
+inline int denoise_is_edge(float4 normal_depth, float albedo_w) {
+    return normal_depth.w > 0.0f && albedo_w >= 1.0f &&
+           dot(normal_depth.xyz, normal_depth.xyz) < DENOISE_EDGE_NORMAL * DENOISE_EDGE_NORMAL;
+}
+
 inline float denoise_luminance(float3 c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }

@@ -1,8 +1,10 @@
 /* The denoiser in plain C, written from its description (vct/denoise.h,
- * kernels/denoise/atrous.cl's comment): demodulation by the albedo, an
- * optional 5x5 variance estimate, à-trous passes of the B3 spline with
- * normal, depth and luminance weights, remodulation. Single precision, as
- * the device computes, so the two agree to rounding. */
+ * kernels/denoise/atrous.cl's and edge_fit.cl's comments): demodulation by
+ * the albedo, an optional 5x5 variance estimate, à-trous passes of the B3
+ * spline with normal, depth and luminance weights (each pass's luminance
+ * sigma 0.9 of the one before), remodulation, and the edge pixels' colour
+ * fitted by least squares on their neighbours' normals and depths. Single
+ * precision, as the device computes, so the two agree to rounding. */
 #ifndef VCT_TEST_DENOISE_REF_H
 #define VCT_TEST_DENOISE_REF_H
 
@@ -138,6 +140,93 @@ static void ref_clamp(const ref_px *in, int w, int h, float k, ref_px *out) {
         }
 }
 
+/* Edge pixels: the rays' mean normal shorter than 0.995, a surface, no
+ * emitter. */
+static int ref_is_edge(ref_px nd, float albedo_w) {
+    return nd.w > 0.0f && albedo_w >= 1.0f &&
+           nd.r * nd.r + nd.g * nd.g + nd.b * nd.b < 0.995f * 0.995f;
+}
+
+/* Solves a x = b for 5 unknowns and 3 right-hand sides by Gaussian
+ * elimination with partial pivoting, in double (another route than the
+ * device's Cholesky factorisation); returns 0 if a is singular. */
+static int ref_solve5(double a[5][5], double b[5][3]) {
+    for (int c = 0; c < 5; ++c) {
+        int pivot = c;
+        for (int r = c + 1; r < 5; ++r)
+            if (fabs(a[r][c]) > fabs(a[pivot][c]))
+                pivot = r;
+        if (a[pivot][c] == 0.0)
+            return 0;
+        for (int k = 0; k < 5; ++k) {
+            const double t = a[c][k];
+            a[c][k] = a[pivot][k];
+            a[pivot][k] = t;
+        }
+        for (int k = 0; k < 3; ++k) {
+            const double t = b[c][k];
+            b[c][k] = b[pivot][k];
+            b[pivot][k] = t;
+        }
+        for (int r = c + 1; r < 5; ++r) {
+            const double f = a[r][c] / a[c][c];
+            for (int k = c; k < 5; ++k)
+                a[r][k] -= f * a[c][k];
+            for (int k = 0; k < 3; ++k)
+                b[r][k] -= f * b[c][k];
+        }
+    }
+    for (int r = 4; r >= 0; --r)
+        for (int k = 0; k < 3; ++k) {
+            double s = b[r][k];
+            for (int j = r + 1; j < 5; ++j)
+                s -= a[r][j] * b[j][k];
+            b[r][k] = s / a[r][r];
+        }
+    return 1;
+}
+
+/* An edge pixel's colour: the weighted least-squares fit over the 5x5
+ * pixels around (weights exp(-d^2 / 4.5), emitters left out) of the
+ * clamped radiance (signal times albedo) as 1, the normal's change and the
+ * depth's relative change, with a ridge of 1e-3 of the weights' sum on the
+ * last four, at the pixel's own guide; negative channels become 0. Returns
+ * 0 where the pixel is no edge. */
+static int ref_edge_fit(const ref_px *signal, const ref_px *albedo, const ref_px *nd, int w, int h,
+                        int x, int y, ref_px *out) {
+    const ref_px c = nd[y * w + x];
+    if (!ref_is_edge(c, albedo[y * w + x].w))
+        return 0;
+    double a[5][5] = {{0}}, b[5][3] = {{0}};
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            if (!ref_inside(w, h, x + dx, y + dy))
+                continue;
+            const int q = (y + dy) * w + x + dx;
+            if (albedo[q].w < 1.0f)
+                continue;
+            const ref_px g = nd[q];
+            const double t[5] = {1.0, g.r - c.r, g.g - c.g, g.b - c.b, (g.w - c.w) / c.w};
+            const double k = exp(-(dx * dx + dy * dy) / 4.5);
+            const double y3[3] = {signal[q].r * ref_safe(albedo[q].r),
+                                  signal[q].g * ref_safe(albedo[q].g),
+                                  signal[q].b * ref_safe(albedo[q].b)};
+            for (int i = 0; i < 5; ++i) {
+                for (int j = 0; j < 5; ++j)
+                    a[i][j] += k * t[i] * t[j];
+                for (int m = 0; m < 3; ++m)
+                    b[i][m] += k * t[i] * y3[m];
+            }
+        }
+    for (int i = 1; i < 5; ++i)
+        a[i][i] += 1e-3 * a[0][0];
+    if (!ref_solve5(a, b))
+        return 0;
+    *out = (ref_px){(float)fmax(b[0][0], 0.0), (float)fmax(b[0][1], 0.0), (float)fmax(b[0][2], 0.0),
+                    1.0f};
+    return 1;
+}
+
 /* The whole filter; variance NULL: the least of the four 3x3 windows'. sigma:
  * luminance, normal, depth, fireflies. */
 static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px *nd,
@@ -178,17 +267,26 @@ static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px 
     ref_px *t0 = a;
     a = b;
     b = t0;
-    for (int it = 0; it < iterations; ++it) {
-        ref_atrous(a, nd, albedo, w, h, 1 << it, sigma, b);
+    ref_px *fit = malloc(n * sizeof *fit);
+    char *fitted = malloc(n);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            fitted[y * w + x] = (char)ref_edge_fit(a, albedo, nd, w, h, x, y, &fit[y * w + x]);
+    float pass_sigma[3] = {sigma[0], sigma[1], sigma[2]};
+    for (int it = 0; it < iterations; ++it, pass_sigma[0] *= 0.9f) {
+        ref_atrous(a, nd, albedo, w, h, 1 << it, pass_sigma, b);
         ref_px *t = a;
         a = b;
         b = t;
     }
     for (size_t i = 0; i < n; ++i) /* an emitter's pixels keep their colour */
-        out[i] = albedo[i].w < 1.0f
-                     ? color[i]
+        out[i] = albedo[i].w < 1.0f ? color[i]
+                 : fitted[i]
+                     ? fit[i]
                      : (ref_px){a[i].r * ref_safe(albedo[i].r), a[i].g * ref_safe(albedo[i].g),
                                 a[i].b * ref_safe(albedo[i].b), 1.0f};
+    free(fit);
+    free(fitted);
     free(a);
     free(b);
 }

@@ -3,8 +3,11 @@
  * spatial filter, on one frame). The image is divided by the albedo before
  * filtering and multiplied by it after, so texture detail is not blurred;
  * edges stop the filter where normals, depths or luminance (against the
- * local standard deviation) differ. Deterministic: the same input gives the
- * same output, bit for bit, on a device. */
+ * local standard deviation) differ. Pixels on a geometric edge, whose rays
+ * met surfaces facing different ways, are fitted instead: their colour as a
+ * linear function of the normal and depth over the 5x5 pixels around.
+ * Deterministic: the same input gives the same output, bit for bit, on a
+ * device. */
 #ifndef VCT_API_DENOISE_H
 #define VCT_API_DENOISE_H
 
@@ -20,10 +23,12 @@ extern "C" {
 #endif
 
 typedef struct vct_denoise_options {
-    uint32_t iterations;   /* passes, taps 1, 2, 4, ... pixels apart (1 to 10) */
-    float sigma_luminance; /* luminance differences allowed, in standard deviations */
-    float sigma_normal;    /* the exponent on the normals' cosine */
-    float sigma_depth;     /* depth differences allowed, in the local slope */
+    uint32_t iterations; /* passes, taps 1, 2, 4, ... pixels apart (1 to 10) */
+    /* luminance differences allowed, in standard deviations, in the first
+     * pass; each later one allows 0.9 of the one before */
+    float sigma_luminance;
+    float sigma_normal; /* the exponent on the normals' cosine */
+    float sigma_depth;  /* depth differences allowed, in the local slope */
     /* Before the passes, a pixel brighter than its 3x3 neighbours' mean by
      * more than this many of their standard deviations is clamped to that
      * (a firefly; 0: none is). Biased: rare bright paths lose energy. */

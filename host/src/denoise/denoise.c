@@ -1,6 +1,7 @@
 /* The denoiser's host side: uploads the image and its guides, runs
- * kernels/denoise/atrous.cl (demodulate, the à-trous passes, remodulate) and
- * reads the result back. */
+ * kernels/denoise/atrous.cl (demodulate, clamp fireflies, the à-trous
+ * passes, remodulate) with kernels/denoise/edge_fit.cl's fit of the edge
+ * pixels between the clamp and the passes, and reads the result back. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -8,6 +9,11 @@
 #include "vct/denoise.h"
 
 #define STAGE "denoise"
+
+/* Each pass allows this share of the luminance difference the one before
+ * allowed: its taps lie twice as far apart, where what differs is more
+ * often the lighting than noise. */
+#define SIGMA_LUMINANCE_DECAY 0.9f
 
 vct_denoise_options vct_denoise_options_default(void) {
     vct_denoise_options o;
@@ -57,8 +63,8 @@ static float *variance_floats(const vct_image *v, size_t pixels) {
 
 typedef struct denoise_run {
     vct_context *ctx;
-    cl_program program;
-    cl_mem color, albedo, normal_depth, variance, signal[2], guide, slope;
+    cl_program program, edge_program;
+    cl_mem color, albedo, normal_depth, variance, signal[2], guide, slope, fit;
     cl_uint size[2];
 } denoise_run;
 
@@ -66,12 +72,13 @@ typedef struct denoise_run {
  * written is returned in *last. */
 static int atrous_passes(denoise_run *r, const vct_denoise_options *o, int first, int *last,
                          vct_error *err) {
-    const cl_float4 sigma = {{o->sigma_luminance, o->sigma_normal, o->sigma_depth, 0.0f}};
+    cl_float4 sigma = {{o->sigma_luminance, o->sigma_normal, o->sigma_depth, 0.0f}};
     cl_kernel k = vct_kernel_create(r->ctx, r->program, "denoise_atrous", err);
     int rc = k ? VCT_OK : (int)err->status;
     const size_t global[2] = {r->size[0], r->size[1]}, local[2] = {8, 8};
     int from = first;
-    for (uint32_t i = 0; rc == VCT_OK && i < o->iterations; ++i, from ^= 1) {
+    for (uint32_t i = 0; rc == VCT_OK && i < o->iterations;
+         ++i, from ^= 1, sigma.s[0] *= SIGMA_LUMINANCE_DECAY) {
         const cl_int step = 1 << i;
         rc = vct_set_args(err, STAGE, k, 0, 7, VCT_ARG(in, r->signal[from]), VCT_ARG_OF(r->guide),
                           VCT_ARG_OF(r->slope), VCT_ARG_OF(r->size), VCT_ARG_OF(step),
@@ -109,6 +116,16 @@ static int pixel_pass(denoise_run *r, const char *name, cl_mem in, cl_mem out, c
                : (int)err->status;
     if (rc == VCT_OK && out2)
         rc = vct_set_args(err, STAGE, k, 3, 2, VCT_ARG(slope, out2), VCT_ARG_OF(r->albedo));
+    return over_pixels(r, k, rc, err);
+}
+
+/* The edge pixels' fit from the clamped signal (signal[1]) into fit. */
+static int fit_edges(denoise_run *r, vct_error *err) {
+    cl_kernel k = vct_kernel_create(r->ctx, r->edge_program, "denoise_edge_fit", err);
+    int rc =
+        k ? vct_set_args(err, STAGE, k, 0, 5, VCT_ARG(signal, r->signal[1]), VCT_ARG_OF(r->albedo),
+                         VCT_ARG_OF(r->normal_depth), VCT_ARG_OF(r->size), VCT_ARG_OF(r->fit))
+          : (int)err->status;
     return over_pixels(r, k, rc, err);
 }
 
@@ -150,7 +167,10 @@ static int upload(denoise_run *r, const vct_image *color, const vct_denoise_guid
     r->slope = r->guide ? vct_buffer_create(r->ctx, STAGE, "depth slope", 8 * pixels,
                                             CL_MEM_READ_WRITE, NULL, err)
                         : NULL;
-    return r->slope ? VCT_OK : (int)err->status;
+    r->fit = r->slope
+                 ? vct_buffer_create(r->ctx, STAGE, "edge fit", bytes, CL_MEM_READ_WRITE, NULL, err)
+                 : NULL;
+    return r->fit ? VCT_OK : (int)err->status;
 }
 
 vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
@@ -169,6 +189,8 @@ vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoi
     vct_stage_begin(ctx, STAGE);
     rc = vct_program_get(ctx, "denoise/atrous.cl", NULL, &r.program, err);
     if (rc == VCT_OK)
+        rc = vct_program_get(ctx, "denoise/edge_fit.cl", NULL, &r.edge_program, err);
+    if (rc == VCT_OK)
         rc = upload(&r, color, g, pixels, err);
     if (rc == VCT_OK && !g->variance)
         rc = pixel_pass(&r, "denoise_estimate_variance", r.color, r.variance, NULL, err);
@@ -182,11 +204,13 @@ vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoi
     if (rc == VCT_OK)
         rc = clamp_fireflies(&r, o->firefly_sigma, err);
     if (rc == VCT_OK)
+        rc = fit_edges(&r, err);
+    if (rc == VCT_OK)
         rc = atrous_passes(&r, o, 1, &last, err);
     if (rc == VCT_OK)
-        rc = vct_run_kernel(ctx, r.program, "denoise_remodulate", STAGE, pixels, err, 4,
+        rc = vct_run_kernel(ctx, r.program, "denoise_remodulate", STAGE, pixels, err, 5,
                             VCT_ARG(signal, r.signal[last]), VCT_ARG_OF(r.albedo),
-                            VCT_ARG(pixels, n), VCT_ARG_OF(r.color));
+                            VCT_ARG_OF(r.fit), VCT_ARG(pixels, n), VCT_ARG_OF(r.color));
     if (rc == VCT_OK) {
         out->rgba = malloc(16 * pixels);
         rc = out->rgba ? vct_buffer_read(ctx, STAGE, r.color, 0, 16 * pixels, out->rgba, err)
@@ -194,8 +218,8 @@ vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoi
         out->width = color->width;
         out->height = color->height;
     }
-    cl_mem all[] = {r.color,     r.albedo,    r.normal_depth, r.variance,
-                    r.signal[0], r.signal[1], r.guide,        r.slope};
+    cl_mem all[] = {r.color,     r.albedo, r.normal_depth, r.variance, r.signal[0],
+                    r.signal[1], r.guide,  r.slope,        r.fit};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         vct_buffer_release(ctx, all[i]);
     vct_stage_end(ctx);
