@@ -12,9 +12,8 @@ SIZE=${1:-128}
 export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
 export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
 PY=$(tools/python.sh --path)
-"$PY" -c "import pyoidn" 2>/dev/null ||
-    "$PY" -m pip install -q --disable-pip-version-check --break-system-packages pyoidn ||
-    echo "denoise: pyoidn cannot be installed: OIDN's columns stay empty" >&2
+# shellcheck source=bench/oidn_env.sh
+. bench/oidn_env.sh
 mkdir -p out/denoise doc/results
 rows=out/denoise/rows.md
 others=out/denoise/others.md

@@ -26,27 +26,37 @@ def nrmse(image, ref):
     return float(np.sqrt(np.mean((image - ref) ** 2)) / np.mean(ref))
 
 
+def oidn_filter(exr):
+    """The noisy layer of a `vct render --method pt --denoise --aov` EXR
+    through OIDN's RT filter (HDR, its albedo and normal layers as clean
+    auxiliaries): (image, the second call's time in ms), or None where
+    pyoidn cannot be had."""
+    try:
+        import pyoidn
+    except ImportError:
+        return None
+    ch = OpenEXR.File(exr, separate_channels=True).channels()
+    noisy, albedo = layer(ch, "noisy", "RGB"), layer(ch, "albedo", "RGB")
+    normal = layer(ch, "normal", "XYZ")
+    lengths = np.linalg.norm(normal, axis=-1, keepdims=True)
+    normal = np.where(lengths > 0, normal / np.maximum(lengths, 1e-12), 0.0).astype(np.float32)
+    args = dict(hdr=True, clean_aux=True)
+    pyoidn.denoise(noisy, albedo, normal, **args)  # the first call builds the filter
+    start = time.perf_counter()
+    out = pyoidn.denoise(noisy, albedo, normal, **args)
+    return np.asarray(out, dtype=np.float64), (time.perf_counter() - start) * 1e3
+
+
 def main():
     exr, reference = sys.argv[1:3]
     ch = OpenEXR.File(exr, separate_channels=True).channels()
     ref = read_pfm(reference)
     ours, noisy = layer(ch, "", "RGB"), layer(ch, "noisy", "RGB")
-    albedo, normal = layer(ch, "albedo", "RGB"), layer(ch, "normal", "XYZ")
-    lengths = np.linalg.norm(normal, axis=-1, keepdims=True)
-    normal = np.where(lengths > 0, normal / np.maximum(lengths, 1e-12), 0.0).astype(np.float32)
     oidn, oidn_ms = "-", "-"
-    try:
-        import pyoidn
-        args = dict(hdr=True, clean_aux=True)
-        pyoidn.denoise(noisy, albedo, normal, **args)
-        start = time.perf_counter()
-        out = pyoidn.denoise(noisy, albedo, normal, **args)
-        oidn_ms = f"{(time.perf_counter() - start) * 1e3:.1f}"
-        oidn = f"{nrmse(np.asarray(out, dtype=np.float64), ref):.4f}"
-    except ImportError:
-        pass
+    filtered = oidn_filter(exr)
+    if filtered is not None:
+        oidn, oidn_ms = f"{nrmse(filtered[0], ref):.4f}", f"{filtered[1]:.1f}"
     print(f"{nrmse(noisy, ref):.4f} {nrmse(ours, ref):.4f} {oidn} {oidn_ms}")
-
 
 if __name__ == "__main__":
     main()

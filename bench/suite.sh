@@ -4,7 +4,8 @@
 # (the ray caster, the path tracer from 1 spp up, cone tracing at its default
 # and with dense diffuse, photon mapping progressive, fixed and with final
 # gathering, each against a 2048-spp reference of another seed,
-# or what suite.txt gives the scene),
+# or what suite.txt gives the scene), and bench/denoised_rows.py on it (the
+# path tracer at 1 to 64 spp denoised by the engine's filter and by OIDN),
 # and gathers one table: out/suite/table.md, and the page doc/results/suite.md
 # with the README's summary of it. References stay under out/suite.
 # usage: bench/suite.sh [SIZE] [REFERENCE_SPP]   (default 128 2048)
@@ -15,6 +16,8 @@ REF_SPP=${2:-2048}
 export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
 export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
 tools/python.sh scenes/suite/make_suite.py >/dev/null
+# shellcheck source=bench/oidn_env.sh
+. bench/oidn_env.sh
 mkdir -p out/suite
 grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
     [ -n "$name" ] || continue
@@ -27,6 +30,11 @@ grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
     ./build/bench/accuracy "scenes/suite/$file" --quick --size "$SIZE" "$SIZE" \
         --reference-spp "$REF_SPP" --max-spp 1024 --pm --out "$out" $ref $extra >/dev/null ||
         echo "suite: $name failed; the table goes on without it" >&2
+    # the path tracer denoised by the engine's filter and by OIDN
+    ambient=$(echo "$extra" | grep -o -- '--ambient [0-9. ]*' || true)
+    # shellcheck disable=SC2086
+    tools/python.sh bench/denoised_rows.py ./build/vct "scenes/suite/$file" "$out/reference.pfm" \
+        "$out" "$SIZE" $ambient || echo "suite: $name's denoised rows failed" >&2
 done
 tools/python.sh bench/suite_table.py out/suite scenes/suite/suite.txt > out/suite/table.md
 tools/python.sh bench/suite_table.py out/suite scenes/suite/suite.txt --summary > out/suite/summary.md
@@ -40,8 +48,10 @@ stamp=$(bench/stamp.sh bench/suite.sh "$@")
     echo "Each scene of \`scenes/suite/suite.txt\` at ${SIZE}x${SIZE}, against a path-traced reference of"
     echo "$REF_SPP samples per pixel (another seed). NRMSE is the RMSE over all pixels and channels over"
     echo "the reference's mean; device ms is the sum of the stages' device time: the acceleration"
-    echo "structure, the voxels and their light, and the image. The last column is the time the path"
-    echo "tracer needs for the same error, read between its sample counts."
+    echo "structure, the voxels and their light, and the image; for a denoised path tracer, the"
+    echo "guides and the filter too (OIDN's: its filter call on the same CPU). The last columns are"
+    echo "the time the path tracer needs for the same error, read between its sample counts (1 to"
+    echo "1024 spp; denoised, 1 to 64 spp): as it is, denoised by the engine's filter, and by OIDN."
     echo
     echo "## Every method at its default, over the suite"
     echo

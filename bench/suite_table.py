@@ -3,7 +3,10 @@
 table: scene x method x setting -> NRMSE, mean ratio, device time (and its
 stages: the acceleration structure, the voxels and their light, the image), the
 path tracer's time to reach each cone-traced or photon-mapped image's
-error. With --summary, one row per method over the whole suite.
+error, as it is and denoised (by the engine's filter and by OIDN). With
+--summary, one row per method over the whole suite, and how many scenes
+cone tracing reaches its error on in less time than the denoised path
+tracer.
 
 usage: suite_table.py OUT_DIR MANIFEST [--summary]"""
 import csv
@@ -12,12 +15,21 @@ import os
 import sys
 
 
-def pt_time_for(rows, error):
-    """The path tracer's time to `error`, log-log between the sample counts
-    around it; None when no run was that accurate."""
+def path_trace_kind(setting):
+    """"": the path tracer as it is; "denoiser" or "OIDN": denoised by it;
+    None: another method."""
+    if not setting.startswith("path trace"):
+        return None
+    return setting.split("+ ")[1] if "+ " in setting else ""
+
+
+def pt_time_for(rows, error, kind=""):
+    """The path tracer's time to `error` (denoised by `kind`, as
+    path_trace_kind names it), log-log between the sample counts around it;
+    None when no run was that accurate."""
     prev = None
     for r in rows:
-        if not r["setting"].startswith("path trace"):
+        if path_trace_kind(r["setting"]) != kind:
             continue
         if float(r["nrmse"]) <= error:
             if prev is None:
@@ -35,6 +47,12 @@ SUMMARY = [("ray cast (direct light only)", lambda s: s == "ray cast (direct onl
            ("cone tracing, default", lambda s: s == VCT_DEFAULT),
            ("path tracing, 16 spp", lambda s: s == "path trace 16 spp"),
            ("path tracing, 256 spp", lambda s: s == "path trace 256 spp"),
+           ("path tracing, 4 spp + the engine's denoiser",
+            lambda s: s == "path trace 4 spp + denoiser"),
+           ("path tracing, 4 spp + OIDN", lambda s: s == "path trace 4 spp + OIDN"),
+           ("path tracing, 16 spp + the engine's denoiser",
+            lambda s: s == "path trace 16 spp + denoiser"),
+           ("path tracing, 16 spp + OIDN", lambda s: s == "path trace 16 spp + OIDN"),
            ("photon mapping, 64 passes",
             lambda s: s == "photon mapping, progressive, 64 passes")]
 
@@ -58,6 +76,33 @@ def summary(root, names):
         worst = max(found)
         print(f"| {label} | {sum(errors) / len(errors):.3f} | {worst[0]:.3f} ({worst[2]}) | "
               f"{times[len(times) // 2]:.0f} |")
+    front(root, names)
+
+
+def front(root, names):
+    """Where cone tracing at its default stands against the denoised path
+    tracer: the scenes where it reaches its error in less time than the
+    path tracer denoised by OIDN (and by the engine's filter) needs."""
+    counts = {"OIDN": [0, 0], "denoiser": [0, 0]}
+    for name in names:
+        path = os.path.join(root, name, "accuracy.csv")
+        if not os.path.exists(path):
+            continue
+        rows = list(csv.DictReader(open(path)))
+        for r in rows:
+            if r["setting"] != VCT_DEFAULT:
+                continue
+            for kind, count in counts.items():
+                t = pt_time_for(rows, float(r["nrmse"]), kind)
+                if t is None and not any(path_trace_kind(o["setting"]) == kind for o in rows):
+                    continue  # no such rows (no pyoidn)
+                count[1] += 1
+                count[0] += t is None or float(r["total_ms"]) < t
+    for kind, label in (("OIDN", "OIDN"), ("denoiser", "the engine's denoiser")):
+        won, of = counts[kind]
+        if of:
+            print(f"\nCone tracing at its default reaches its error in less time than the path "
+                  f"tracer denoised by {label} on {won} of {of} scenes.")
 
 
 def main():
@@ -68,8 +113,8 @@ def main():
         summary(root, names)
         return
     print("| scene | method and setting | NRMSE | mean / reference | device ms | "
-          "accel / build / render ms | path tracer to this error |")
-    print("|---|---|---:|---:|---:|---:|---:|")
+          "accel / build / render ms | path tracer to this error | denoised | with OIDN |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
     for name in names:
         path = os.path.join(root, name, "accuracy.csv")
         if not os.path.exists(path):
@@ -77,20 +122,25 @@ def main():
         rows = list(csv.DictReader(open(path)))
         keep = [r for r in rows if r["setting"].startswith(("ray cast", "vct"))
                 or r["setting"] in ("path trace 16 spp", "path trace 256 spp",
+                                    "path trace 4 spp + denoiser", "path trace 4 spp + OIDN",
+                                    "path trace 16 spp + denoiser", "path trace 16 spp + OIDN",
                                     "photon mapping, progressive, 16 passes",
                                     "photon mapping, progressive, 64 passes",
                                     "photon mapping, fixed radius, 16 passes",
                                     "photon mapping, final gathering, 16 passes")]
         for r in keep:
-            to = ""
+            to = ["", "", ""]
             if r["setting"].startswith(("vct", "photon")):
-                t = pt_time_for(rows, float(r["nrmse"]))
-                to = f"{t:.0f} ms" if t else "not reached by 1024 spp"
+                for i, (kind, most) in enumerate((("", 1024), ("denoiser", 64), ("OIDN", 64))):
+                    if kind and not any(path_trace_kind(o["setting"]) == kind for o in rows):
+                        continue
+                    t = pt_time_for(rows, float(r["nrmse"]), kind)
+                    to[i] = f"{t:.0f} ms" if t else f"not reached by {most} spp"
             stages = (f"{float(r['accel_ms']):.0f} / {float(r['build_ms']):.0f} / "
                       f"{float(r['render_ms']):.0f}")
             print(f"| {name} | {r['setting']} | {float(r['nrmse']):.3f} | "
                   f"{float(r['mean_ratio']):.3f} | {float(r['total_ms']):.0f} | {stages} | "
-                  f"{to} |")
+                  f"{' | '.join(to)} |")
 
 
 if __name__ == "__main__":

@@ -136,7 +136,8 @@ __kernel void pathtrace_resolve(__global const exact_sum *accum, uint pixels,
 }
 
 /* The variance of each pixel's mean luminance, (E[l^2] - E[l]^2) / n, in
- * the first component (0 below two samples). */
+ * the first component; -1 below two samples, where it is unknown (0 would
+ * say the pixel is exact). */
 __kernel void pathtrace_variance(__global const exact_sum *accum, uint pixels,
                                  __global float4 *variance) {
     const uint i = get_global_id(0);
@@ -145,6 +146,6 @@ __kernel void pathtrace_variance(__global const exact_sum *accum, uint pixels,
     __global const exact_sum *sums = accum + PT_SUMS * i;
     const float n = (float)sums[3].x;
     const float mean = pt_luminance(pt_sum_rgb(sums)) / n;
-    const float v = n > 1.0f ? fmax(exact_to_float(sums[4]) / n - mean * mean, 0.0f) / n : 0.0f;
+    const float v = n > 1.0f ? fmax(exact_to_float(sums[4]) / n - mean * mean, 0.0f) / n : -1.0f;
     variance[i] = (float4)(v, 0.0f, 0.0f, 1.0f);
 }

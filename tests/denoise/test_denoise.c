@@ -364,7 +364,8 @@ static void test_refusals(vct_context *ctx) {
 }
 
 /* The path tracer at 4 spp with its variance and the guides, denoised,
- * against 1024 spp of the same scene. */
+ * against 1024 spp of the same scene; then at 1 spp, whose variance is
+ * unknown. */
 static void test_pathtrace(vct_context *ctx) {
     vct_error err = {0};
     const char *src = getenv("VCT_SOURCE_DIR");
@@ -402,6 +403,20 @@ static void test_pathtrace(vct_context *ctx) {
     CHECK(var_mean > 0.0, "the path tracer's variance is all 0");
     CHECK(after < 0.5 * before, "denoised %.4f, noisy %.4f", after, before);
     CHECK(fabs(mean_d / mean_r - 1.0) < 0.03, "the mean moved to %.4f", mean_d / mean_r);
+    /* One sample: the path tracer cannot know its spread (-1), so the
+     * filter estimates it from the image instead of taking the image for
+     * exact. */
+    vct_image_release(&noisy);
+    vct_image_release(&variance);
+    vct_image_release(&denoised);
+    job.pathtrace.spp = 1;
+    REQUIRE_OK(vct_render(ctx, &job, &noisy, NULL, &err), err);
+    CHECK(variance.rgba[0] == -1.0f, "one sample's variance is %g, not -1 (unknown)",
+          variance.rgba[0]);
+    REQUIRE_OK(vct_denoise(ctx, &noisy, &guides, &o, &denoised, &err), err);
+    const double before1 = nrmse(&noisy, &reference), after1 = nrmse(&denoised, &reference);
+    printf("Cornell box %d^2: 1 spp %.4f, denoised %.4f\n", size, before1, after1);
+    CHECK(after1 < 0.4 * before1, "1 spp denoised %.4f, noisy %.4f", after1, before1);
     vct_image *all[] = {&reference, &noisy, &variance, &albedo, &nd, &denoised};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         vct_image_release(all[i]);

@@ -41,7 +41,9 @@ VCT_API vct_denoise_options vct_denoise_options_default(void);
 
 /* What guides the filter: vct_render_guides' images, and the variance of
  * each pixel's mean luminance in r (vct_pathtrace_options.variance); NULL
- * variance: estimated from the image's luminance over 5x5 pixels. Where the
+ * variance, or one with a negative value (a path tracer's single sample
+ * says nothing of its spread): estimated from the image's luminance over
+ * 5x5 pixels. Where the
  * albedo's w is below 1 an emitter is seen: its light is no noise, so those
  * pixels keep their colour and lend nothing to their neighbours (w 1
  * everywhere: no pixel is kept). */

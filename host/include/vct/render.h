@@ -51,7 +51,8 @@ typedef struct vct_pathtrace_options {
      * over. */
     int resume;
     /* Non-NULL: also filled with the variance of each pixel's mean luminance
-     * (in r; the denoiser's guide), from the same sums as the image. */
+     * (in r; the denoiser's guide), from the same sums as the image; -1
+     * where a pixel has fewer than two samples (unknown). */
     vct_image *variance;
 } vct_pathtrace_options;
 

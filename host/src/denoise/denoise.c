@@ -61,6 +61,18 @@ static float *variance_floats(const vct_image *v, size_t pixels) {
     return out;
 }
 
+/* A variance guide to use: none where a pixel's is negative (unknown, as
+ * the path tracer's below two samples), so the image's own is estimated. */
+static const vct_image *known_variance(const vct_image *v) {
+    if (!v)
+        return NULL;
+    const size_t pixels = (size_t)v->width * v->height;
+    for (size_t i = 0; i < pixels; ++i)
+        if (!(v->rgba[4 * i] >= 0.0f))
+            return NULL;
+    return v;
+}
+
 typedef struct denoise_run {
     vct_context *ctx;
     cl_program program, edge_program;
@@ -150,8 +162,9 @@ static int upload(denoise_run *r, const vct_image *color, const vct_denoise_guid
     r->normal_depth = r->albedo ? vct_buffer_create(r->ctx, STAGE, "normal and depth", bytes,
                                                     CL_MEM_READ_ONLY, g->normal_depth->rgba, err)
                                 : NULL;
-    float *v = g->variance ? variance_floats(g->variance, pixels) : NULL;
-    if (g->variance && !v)
+    const vct_image *known = known_variance(g->variance);
+    float *v = known ? variance_floats(known, pixels) : NULL;
+    if (known && !v)
         return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
     r->variance = r->normal_depth ? vct_buffer_create(r->ctx, STAGE, "variance", 4 * pixels,
                                                       CL_MEM_READ_WRITE, v, err)
@@ -192,7 +205,7 @@ vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoi
         rc = vct_program_get(ctx, "denoise/edge_fit.cl", NULL, &r.edge_program, err);
     if (rc == VCT_OK)
         rc = upload(&r, color, g, pixels, err);
-    if (rc == VCT_OK && !g->variance)
+    if (rc == VCT_OK && !known_variance(g->variance))
         rc = pixel_pass(&r, "denoise_estimate_variance", r.color, r.variance, NULL, err);
     if (rc == VCT_OK)
         rc = pixel_pass(&r, "denoise_guides", r.normal_depth, r.guide, r.slope, err);
