@@ -6,8 +6,9 @@
 # gathering, each against a 2048-spp reference of another seed,
 # or what suite.txt gives the scene), and bench/denoised_rows.py on it (the
 # path tracer at 1 to 64 spp denoised by the engine's filter and by OIDN),
-# and gathers one table: out/suite/table.md, and the page doc/results/suite.md
-# with the README's summary of it. References stay under out/suite.
+# and gathers one table: out/suite/table.md, the page doc/results/suite.md
+# with the README's summary of it, and the error-time plot of every scene
+# (bench/suite_plot.py, doc/results/suite_front.png). References stay under out/suite.
 # usage: bench/suite.sh [SIZE] [REFERENCE_SPP]   (default 128 2048)
 set -eu
 cd "$(dirname "$0")/.."
@@ -40,6 +41,9 @@ tools/python.sh bench/suite_table.py out/suite scenes/suite/suite.txt > out/suit
 tools/python.sh bench/suite_table.py out/suite scenes/suite/suite.txt --summary > out/suite/summary.md
 mkdir -p doc/results
 stamp=$(bench/stamp.sh bench/suite.sh "$@")
+tools/python.sh bench/suite_plot.py out/suite scenes/suite/suite.txt doc/results/suite_front.png \
+    "$(echo "$stamp" | tr -d '_`')" ||
+    echo "suite: no plot (gnuplot?)" >&2
 {
     echo "# The scene suite: error and time"
     echo
@@ -52,6 +56,8 @@ stamp=$(bench/stamp.sh bench/suite.sh "$@")
     echo "guides and the filter too (OIDN's: its filter call on the same CPU). The last columns are"
     echo "the time the path tracer needs for the same error, read between its sample counts (1 to"
     echo "1024 spp; denoised, 1 to 64 spp): as it is, denoised by the engine's filter, and by OIDN."
+    echo
+    echo "![Error against time, every scene](suite_front.png)"
     echo
     echo "## Every method at its default, over the suite"
     echo
