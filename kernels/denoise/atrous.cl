@@ -5,7 +5,7 @@
  * 2^i pixels apart (after bright outliers are clamped to their
  * neighbourhood), each tap weighted by how alike its normal, depth and
  * luminance are to the centre's, the luminance judged against the centre's
- * standard deviation (each pass allowing 0.9 of the difference the one
+ * standard deviation (each pass allowing 0.8 of the difference the one
  * before allowed: the host scales sigma.x), and multiplied by the albedo
  * again, or replaced by denoise/edge_fit.cl's fit on a geometric edge.
  * Every pass reads

@@ -66,15 +66,16 @@ inline float denoise_variance_blurred(__global const float4 *signal, uint2 size,
  * without a surface), the centre's depth slope per pixel, their luminances
  * and variances: normals cos^sigma.y, depth (the difference against the
  * slope times the offset, sigma.z, with a thousandth of the distance for
- * flat surfaces), luminance (the difference against sigma.x standard
- * deviations of the two). Pixels without a surface weigh only by luminance,
- * among themselves; an emitter's pixels with none. The three factors are
- * one exp2. */
+ * flat surfaces), luminance (a Gaussian of the difference in sigma.x
+ * standard deviations of the two: differences the noise explains weigh
+ * nearly alike, a shadow's edge nearly nothing). Pixels without a surface
+ * weigh only by luminance, among themselves; an emitter's pixels with none.
+ * The three factors are one exp2. */
 inline float denoise_edge_weight(float4 gc, float2 slope_c, float4 gq, int ox, int oy, float lc,
                                  float lq, float var_c, float var_q, float4 sigma) {
     if (gc.w < 0.0f || gq.w < 0.0f)
         return 0.0f;
-    const float l = fabs(lc - lq) / (sigma.x * sqrt(var_c + var_q) + 1e-6f);
+    const float u = fabs(lc - lq) / (sigma.x * sqrt(var_c + var_q) + 1e-6f), l = 0.5f * u * u;
     const int surface_c = gc.w > 0.0f, surface_q = gq.w > 0.0f;
     if (!surface_c || !surface_q)
         return surface_c == surface_q ? exp2(-l * M_LOG2E_F) : 0.0f;

@@ -2,7 +2,7 @@
  * kernels/denoise/atrous.cl's and edge_fit.cl's comments): demodulation by
  * the albedo, an optional 5x5 variance estimate, à-trous passes of the B3
  * spline with normal, depth and luminance weights (each pass's luminance
- * sigma 0.9 of the one before), remodulation, and the edge pixels' colour
+ * sigma 0.8 of the one before), remodulation, and the edge pixels' colour
  * fitted by least squares on their neighbours' normals and depths. Single
  * precision, as the device computes, so the two agree to rounding. */
 #ifndef VCT_TEST_DENOISE_REF_H
@@ -86,8 +86,10 @@ static void ref_atrous(const ref_px *in, const ref_px *nd, const ref_px *albedo,
                         (albedo[y * w + x].w < 1.0f || albedo[qy * w + qx].w < 1.0f)) {
                         e = 0.0f;
                     } else if (dx || dy) {
-                        const float l = fabsf(lc - ref_lum(q.r, q.g, q.b)) /
-                                        (sigma[0] * sqrtf(var_c + q.w) + 1e-6f);
+                        /* a Gaussian in standard deviations */
+                        const float u = fabsf(lc - ref_lum(q.r, q.g, q.b)) /
+                                        (sigma[0] * sqrtf(var_c + q.w) + 1e-6f),
+                                    l = 0.5f * u * u;
                         const int sc = cnd.w > 0.0f, sq = qnd.w > 0.0f;
                         float nq[3];
                         ref_unit(&qnd, nq);
@@ -273,7 +275,7 @@ static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px 
         for (int x = 0; x < w; ++x)
             fitted[y * w + x] = (char)ref_edge_fit(a, albedo, nd, w, h, x, y, &fit[y * w + x]);
     float pass_sigma[3] = {sigma[0], sigma[1], sigma[2]};
-    for (int it = 0; it < iterations; ++it, pass_sigma[0] *= 0.9f) {
+    for (int it = 0; it < iterations; ++it, pass_sigma[0] *= 0.8f) {
         ref_atrous(a, nd, albedo, w, h, 1 << it, pass_sigma, b);
         ref_px *t = a;
         a = b;

@@ -25,7 +25,7 @@ extern "C" {
 typedef struct vct_denoise_options {
     uint32_t iterations; /* passes, taps 1, 2, 4, ... pixels apart (1 to 10) */
     /* luminance differences allowed, in standard deviations, in the first
-     * pass; each later one allows 0.9 of the one before */
+     * pass; each later one allows 0.8 of the one before */
     float sigma_luminance;
     float sigma_normal; /* the exponent on the normals' cosine */
     float sigma_depth;  /* depth differences allowed, in the local slope */

@@ -13,7 +13,7 @@
 /* Each pass allows this share of the luminance difference the one before
  * allowed: its taps lie twice as far apart, where what differs is more
  * often the lighting than noise. */
-#define SIGMA_LUMINANCE_DECAY 0.9f
+#define SIGMA_LUMINANCE_DECAY 0.8f
 
 vct_denoise_options vct_denoise_options_default(void) {
     vct_denoise_options o;
