@@ -8,9 +8,8 @@
  * standard deviation (each pass allowing 0.8 of the difference the one
  * before allowed: the host scales sigma.x), and multiplied by the albedo
  * again, or replaced by denoise/edge_fit.cl's fit on a geometric edge.
- * Every pass reads
- * one buffer and writes another, in a fixed order: the result does not
- * depend on scheduling.
+ * Every pass reads one buffer and writes another, in a fixed order: the
+ * result does not depend on scheduling.
  *
  * Buffers, one element per pixel, rows top to bottom:
  *   color          float4 linear radiance

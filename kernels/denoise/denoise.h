@@ -68,7 +68,7 @@ inline float denoise_variance_blurred(__global const float4 *signal, uint2 size,
  * slope times the offset, sigma.z, with a thousandth of the distance for
  * flat surfaces), luminance (a Gaussian of the difference in sigma.x
  * standard deviations of the two: differences the noise explains weigh
- * nearly alike, a shadow's edge nearly nothing). Pixels without a surface
+ * nearly alike, larger ones fall off fast). Pixels without a surface
  * weigh only by luminance, among themselves; an emitter's pixels with none.
  * The three factors are one exp2. */
 inline float denoise_edge_weight(float4 gc, float2 slope_c, float4 gq, int ox, int oy, float lc,
