@@ -278,12 +278,12 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         ++surfaces;
         const float3 q = triangle_nearest(p, a, b, c), n = cr / len;
         q_sum += q;
+        if (light_count == 0u && emitter_count == 0u)
+            continue; /* nothing to send out: the sides stay dark */
         const uint hidden =
             fragment_enclosed(tri_vertices, fragment_tri, begin, end, f, p, n, q, size,
                               fmax(1e-3f * size, 8.0f * surface_epsilon(&g, q)));
         open_sides += 0.5f * (float)(((hidden & 1u) == 0u) + ((hidden & 2u) == 0u));
-        if (light_count == 0u && emitter_count == 0u)
-            continue;
         float3 behind = (float3)(0.0f);
         const float plane = SHARED_PLANE * size;
         const int reuse_lit =

@@ -151,8 +151,10 @@ static int clamp_fireflies(denoise_run *r, float sigmas, vct_error *err) {
     return over_pixels(r, k, rc, err);
 }
 
+/* The image and guides to the device; `known`: the variance guide to use
+ * (known_variance), or NULL for one estimated from the image. */
 static int upload(denoise_run *r, const vct_image *color, const vct_denoise_guides *g,
-                  size_t pixels, vct_error *err) {
+                  const vct_image *known, size_t pixels, vct_error *err) {
     const size_t bytes = 16 * pixels;
     r->color =
         vct_buffer_create(r->ctx, STAGE, "image", bytes, CL_MEM_READ_WRITE, color->rgba, err);
@@ -162,7 +164,6 @@ static int upload(denoise_run *r, const vct_image *color, const vct_denoise_guid
     r->normal_depth = r->albedo ? vct_buffer_create(r->ctx, STAGE, "normal and depth", bytes,
                                                     CL_MEM_READ_ONLY, g->normal_depth->rgba, err)
                                 : NULL;
-    const vct_image *known = known_variance(g->variance);
     float *v = known ? variance_floats(known, pixels) : NULL;
     if (known && !v)
         return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory", STAGE);
@@ -203,9 +204,10 @@ vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoi
     rc = vct_program_get(ctx, "denoise/atrous.cl", NULL, &r.program, err);
     if (rc == VCT_OK)
         rc = vct_program_get(ctx, "denoise/edge_fit.cl", NULL, &r.edge_program, err);
+    const vct_image *known = known_variance(g->variance);
     if (rc == VCT_OK)
-        rc = upload(&r, color, g, pixels, err);
-    if (rc == VCT_OK && !known_variance(g->variance))
+        rc = upload(&r, color, g, known, pixels, err);
+    if (rc == VCT_OK && !known)
         rc = pixel_pass(&r, "denoise_estimate_variance", r.color, r.variance, NULL, err);
     if (rc == VCT_OK)
         rc = pixel_pass(&r, "denoise_guides", r.normal_depth, r.guide, r.slope, err);
