@@ -28,6 +28,11 @@ int cli_denoise_image(vct_context *ctx, const vct_denoise_guides *g, const vct_i
     const vct_denoise_options o = vct_denoise_options_default();
     if (!aovs || !aovs->indirect.rgba)
         return vct_denoise(ctx, image, g, &o, out, err);
+    if (g->variance) { /* the path tracer's parts */
+        vct_denoise_guides parts = *g;
+        parts.indirect = &aovs->indirect;
+        return vct_denoise(ctx, image, &parts, &o, out, err);
+    }
     /* Cone tracing: its direct light is exact and its specular cone is not
      * noise; only the indirect term is filtered. */
     vct_image filtered;
@@ -64,7 +69,8 @@ int cli_denoise_outputs(vct_context *ctx, const vct_scene *s, const vct_accel *g
     }
     if (rc != VCT_OK || !opt->denoise)
         return rc;
-    const vct_denoise_guides guides = {albedo, nd, variance && variance->rgba ? variance : NULL};
+    const vct_denoise_guides guides = {albedo, nd, variance && variance->rgba ? variance : NULL,
+                                       NULL};
     vct_image denoised;
     rc = cli_denoise_image(ctx, &guides, image, aovs, &denoised, err);
     if (rc != VCT_OK)

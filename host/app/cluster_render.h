@@ -45,8 +45,9 @@ int cluster_prepare(member *m, vct_error *err);
 /* A sequence, frames dealt to whichever rank asks; rank 0 writes them. */
 int cluster_render_sequence(member *m, const char *pattern);
 /* The path tracer: sample chunks dealt as ranks ask, their exact sums
- * reduced; rank 0's image (and variance) resolved from them. */
-int cluster_render_samples(member *m, vct_image *image, vct_image *variance,
+ * reduced; rank 0's image (and, with --denoise, its variance and indirect
+ * light in parts) resolved from them. */
+int cluster_render_samples(member *m, vct_image *image, vct_image *variance, vct_aovs *parts,
                            vct_render_result *result, vct_error *err);
 /* The other methods: bands of rows (photon mapping's in lockstep); rank
  * 0's image put together. */

@@ -99,7 +99,7 @@ static void render_chunks(chunk_dealer *c) {
 /* Rank 0's image from everyone's sums, resolved. The samples are dealt in
  * chunks as ranks ask; the sums are exact, so the order makes no
  * difference. */
-int cluster_render_samples(member *m, vct_image *image, vct_image *variance,
+int cluster_render_samples(member *m, vct_image *image, vct_image *variance, vct_aovs *parts,
                            vct_render_result *result, vct_error *err) {
     vct_render_job job = cli_render_job(m->opt, m->method, m->scene);
     const uint32_t spp = job.pathtrace.spp;
@@ -141,8 +141,10 @@ int cluster_render_samples(member *m, vct_image *image, vct_image *variance,
     if (m->rank > 0)
         return VCT_OK;
     total.samples = spp;
-    if (m->opt->denoise)
+    if (m->opt->denoise) {
         job.pathtrace.variance = variance;
+        job.pathtrace.indirect = &parts->indirect;
+    }
     rc = m->group ? vct_group_resolve_samples(m->group, &job, &total, image, err)
                   : vct_device_scene_resolve_samples(m->ds, &job, &total, image, err);
     memset(result, 0, sizeof *result);

@@ -92,9 +92,10 @@ static void gather_stats(member *m) {
 static int render_one_frame(member *m, const char *out) {
     vct_error err = {0};
     vct_image image = {0}, variance = {0};
+    vct_aovs parts = {0}; /* the path tracer's indirect light, for --denoise */
     vct_render_result result = {0};
     int rc = m->method == VCT_METHOD_PATHTRACE
-                 ? cluster_render_samples(m, &image, &variance, &result, &err)
+                 ? cluster_render_samples(m, &image, &variance, &parts, &result, &err)
                  : cluster_render_bands(m, &image, &result, &err);
     if (m->rank == 0) {
         cli_layers layers = {0};
@@ -102,11 +103,11 @@ static int render_one_frame(member *m, const char *out) {
             cli_print_result(m->opt, &result);
             rc = m->group
                      ? (m->opt->denoise ? cli_devices_denoise(m->group, m->scene, m->opt, m->method,
-                                                              &image, &variance, &err)
+                                                              &image, &variance, &parts, &err)
                                         : VCT_OK)
                      : cli_denoise_outputs(m->ctx, m->scene, vct_device_scene_accel(m->ds), m->opt,
                                            m->method, &image, variance.rgba ? &variance : NULL,
-                                           NULL, &layers, &err);
+                                           parts.indirect.rgba ? &parts : NULL, &layers, &err);
         }
         if (rc == VCT_OK)
             rc = cli_write_image(m->opt, &image, &layers, out, &err);
@@ -116,6 +117,7 @@ static int render_one_frame(member *m, const char *out) {
     }
     vct_image_release(&image);
     vct_image_release(&variance);
+    vct_aovs_release(&parts);
     return 0;
 }
 

@@ -23,8 +23,10 @@ int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
         /* --denoise filters the indirect AOV */
         job.aovs = opt->aov || opt->denoise ? &f->aovs : NULL;
     }
-    if (opt->denoise && method == VCT_METHOD_PATHTRACE)
+    if (opt->denoise && method == VCT_METHOD_PATHTRACE) {
         job.pathtrace.variance = &f->variance;
+        job.pathtrace.indirect = &f->aovs.indirect; /* filtered apart from the direct light */
+    }
     int rc = vct_device_scene_render(ds, &job, &f->image, &f->result, err);
     if (rc == VCT_OK && method == VCT_METHOD_VCT)
         cli_print_voxels(opt, vct_device_scene_voxels(ds));
@@ -35,9 +37,10 @@ int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
     if (rc == VCT_OK && opt->aov && method == VCT_METHOD_VCT)
         cli_layers_add_aovs(&f->layers, &f->aovs);
     if (rc == VCT_OK)
-        rc = cli_denoise_outputs(ctx, s, vct_device_scene_accel(ds), opt, method, &f->image,
-                                 f->variance.rgba ? &f->variance : NULL,
-                                 method == VCT_METHOD_VCT ? &f->aovs : NULL, &f->layers, err);
+        rc = cli_denoise_outputs(
+            ctx, s, vct_device_scene_accel(ds), opt, method, &f->image,
+            f->variance.rgba ? &f->variance : NULL,
+            method == VCT_METHOD_VCT || f->aovs.indirect.rgba ? &f->aovs : NULL, &f->layers, err);
     if (rc != VCT_OK)
         cli_frame_release(f);
     return rc;

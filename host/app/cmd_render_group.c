@@ -24,7 +24,8 @@ static void print_devices(const vct_group *g, FILE *out) {
 }
 
 int cli_devices_denoise(vct_group *g, const vct_scene *s, const cli_options *opt, vct_method method,
-                        vct_image *image, const vct_image *variance, vct_error *err) {
+                        vct_image *image, const vct_image *variance, const vct_aovs *parts,
+                        vct_error *err) {
     const vct_group_device *d;
     const int n = vct_group_devices(g, &d);
     int first = 0;
@@ -34,8 +35,8 @@ int cli_devices_denoise(vct_group *g, const vct_scene *s, const cli_options *opt
     vct_accel *accel = vct_accel_build(ctx, s, &opt->accel, err);
     cli_layers layers = {0};
     int rc = accel ? cli_denoise_outputs(ctx, s, accel, opt, method, image,
-                                         variance && variance->rgba ? variance : NULL, NULL,
-                                         &layers, err)
+                                         variance && variance->rgba ? variance : NULL,
+                                         parts && parts->indirect.rgba ? parts : NULL, &layers, err)
                    : (int)err->status;
     cli_layers_free(&layers);
     vct_accel_release(accel);
@@ -72,15 +73,17 @@ int cli_devices_frame(vct_group *g, const vct_scene *s, const cli_options *opt, 
     memset(f, 0, sizeof *f);
     vct_render_job job = cli_render_job(opt, method, s);
     job.plan = build->plan;
-    if (opt->denoise && method == VCT_METHOD_PATHTRACE)
+    if (opt->denoise && method == VCT_METHOD_PATHTRACE) {
         job.pathtrace.variance = &f->variance; /* from the summed samples */
+        job.pathtrace.indirect = &f->aovs.indirect;
+    }
     int rc = vct_group_prepare(g, s, build, err);
     if (rc == VCT_OK)
         rc = vct_group_render(g, &job, &f->image, &f->result, err);
     if (rc == VCT_OK)
         cli_print_result(opt, &f->result);
     if (rc == VCT_OK && opt->denoise)
-        rc = cli_devices_denoise(g, s, opt, method, &f->image, &f->variance, err);
+        rc = cli_devices_denoise(g, s, opt, method, &f->image, &f->variance, &f->aovs, err);
     if (rc != VCT_OK)
         cli_frame_release(f);
     return rc;

@@ -14,7 +14,8 @@ void cli_devices_build(const cli_options *opt, vct_method method, const vct_plan
  * guides of its own, so the image does not depend on how the frame was
  * split. */
 int cli_devices_denoise(vct_group *g, const vct_scene *s, const cli_options *opt, vct_method method,
-                        vct_image *image, const vct_image *variance, vct_error *err);
+                        vct_image *image, const vct_image *variance, const vct_aovs *parts,
+                        vct_error *err);
 /* A frame on the group: prepared (the device scenes rebuild what changed),
  * rendered, denoised as asked. */
 int cli_devices_frame(vct_group *g, const vct_scene *s, const cli_options *opt, vct_method method,

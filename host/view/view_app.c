@@ -196,6 +196,7 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     vct_aovs_release(&app->aovs);
     if (view_app_denoising(app)) {
         job.pathtrace.variance = &app->variance;
+        job.pathtrace.indirect = &app->aovs.indirect; /* filtered apart from the direct light */
         job.aovs = app->method == VIEW_VCT ? &app->aovs : NULL;
     }
     job.pathtrace.resume = app->pt_spp > 0;
@@ -240,10 +241,10 @@ static int denoise_frame(view_app *app, vct_image *image, vct_error *err) {
         rc = vct_render_guides(ctx, app->scene, vct_device_scene_accel(app->ds), image->width,
                                image->height, 4, &app->albedo, &app->normal_depth, err);
     const vct_denoise_guides g = {&app->albedo, &app->normal_depth,
-                                  app->variance.rgba ? &app->variance : NULL};
+                                  app->variance.rgba ? &app->variance : NULL, NULL};
     vct_image out;
     if (rc == VCT_OK)
-        rc = cli_denoise_image(ctx, &g, image, app->method == VIEW_VCT ? &app->aovs : NULL, &out,
+        rc = cli_denoise_image(ctx, &g, image, app->aovs.indirect.rgba ? &app->aovs : NULL, &out,
                                err);
     if (rc == VCT_OK) {
         vct_image_release(image);

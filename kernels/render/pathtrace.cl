@@ -3,9 +3,17 @@
  * sampling by the power heuristic), Russian roulette after RR_DEPTH bounces.
  * Each launch adds `samples` samples per pixel to `accum`: per pixel
  * PT_SUMS exact sums (render/exact_sum.h): red, green and blue, the count of
- * samples kept (x), and the squares of the samples' luminance (for the
- * variance the denoiser weighs by); a sample that is not finite is dropped
- * and counted. The
+ * samples kept (x), the squares of the samples' luminance (for the variance
+ * the denoiser weighs by), then the same for the sample's direct part (red,
+ * green, blue, squared luminance: what the first surface emits or receives
+ * from the lights and emitters, or the background a camera ray meets) and the
+ * squared luminance of the rest, the indirect part (the direct part also
+ * takes the emitters the first bounce's BSDF sample meets, with their
+ * multiple-importance weight: the other half of the first surface's light
+ * from emitters). Direct light is sharp
+ * and, from small lights, nearly noiseless; indirect light is smooth and
+ * noisy: the denoiser filters each with its own variance. A sample that is
+ * not finite is dropped and counted. The
  * sums are exact, so the image does not depend on how samples were split
  * into launches, calls or devices.
  *
@@ -20,7 +28,7 @@
 #include "vct_types.h"
 
 #define RR_DEPTH 3
-#define PT_SUMS 5u
+#define PT_SUMS 10u
 
 inline float pt_luminance(float3 c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
@@ -43,19 +51,23 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
     const uint pixel = y * cam.size.x + x;
     __global exact_sum *sums = accum + PT_SUMS * pixel;
     exact_sum sum_r = sums[0], sum_g = sums[1], sum_b = sums[2], sum_l2 = sums[4];
+    exact_sum direct_r = sums[5], direct_g = sums[6], direct_b = sums[7], direct_l2 = sums[8],
+              indirect_l2 = sums[9];
     uint dropped = 0;
     for (uint s = 0; s < samples; ++s) {
         uint rng = rng_start(seed, camera_pixel_id(&cam, x, y), sample_begin + s);
         const float jx = rng_next(&rng), jy = rng_next(&rng);
         float3 org = cam.position.xyz;
         float3 dir = camera_ray_dir(&cam, (float)x + jx, (float)camera_row(&cam, y) + jy);
-        float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f);
+        float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f), direct = (float3)(0.0f);
         float prev_pdf = 0.0f; /* 0: camera ray or delta bounce, emission counts fully */
         float3 prev_p = org;
         for (uint depth = 0; depth < max_depth; ++depth) {
             hit_record h;
             if (!accel_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
                 radiance += throughput * ambient.xyz; /* the environment */
+                if (depth == 0)
+                    direct = radiance;
                 break;
             }
             float3 p, ng, n;
@@ -73,6 +85,8 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                     w = power_heuristic(prev_pdf, pdf_light);
                 }
                 radiance += throughput * m.emission.xyz * w;
+                if (depth == 1 && prev_pdf > 0.0f) /* the first surface's light, BSDF-sampled */
+                    direct += throughput * m.emission.xyz * w;
             }
             /* Next-event estimation (delta lobes cannot be lit this way). */
             if (!bsdf_delta_only(&m)) {
@@ -80,6 +94,8 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                 radiance += throughput *
                             nee_emitters(&g, &em, materials, tri_material, &m, p, n, wo, 1, &rng);
             }
+            if (depth == 0)
+                direct = radiance;
             if (depth + 1 == max_depth)
                 break;
             bsdf_sample bs;
@@ -104,8 +120,14 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
             sum_r = exact_add(sum_r, exact_from_float(radiance.x));
             sum_g = exact_add(sum_g, exact_from_float(radiance.y));
             sum_b = exact_add(sum_b, exact_from_float(radiance.z));
-            const float l = pt_luminance(radiance);
+            const float l = pt_luminance(radiance), ld = pt_luminance(direct),
+                        li = pt_luminance(radiance - direct);
             sum_l2 = exact_add(sum_l2, exact_from_float(l * l));
+            direct_r = exact_add(direct_r, exact_from_float(direct.x));
+            direct_g = exact_add(direct_g, exact_from_float(direct.y));
+            direct_b = exact_add(direct_b, exact_from_float(direct.z));
+            direct_l2 = exact_add(direct_l2, exact_from_float(ld * ld));
+            indirect_l2 = exact_add(indirect_l2, exact_from_float(li * li));
         } else {
             ++dropped;
         }
@@ -115,6 +137,11 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
     sums[2] = sum_b;
     sums[3].x += (ulong)(samples - dropped);
     sums[4] = sum_l2;
+    sums[5] = direct_r;
+    sums[6] = direct_g;
+    sums[7] = direct_b;
+    sums[8] = direct_l2;
+    sums[9] = indirect_l2;
     if (dropped)
         atomic_add(discarded, dropped);
 }
@@ -135,9 +162,34 @@ __kernel void pathtrace_resolve(__global const exact_sum *accum, uint pixels,
     frame[i] = n > 0.0f ? (float4)(pt_sum_rgb(sums) / n, 1.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
 }
 
-/* The variance of each pixel's mean luminance, (E[l^2] - E[l]^2) / n, in
- * the first component; -1 below two samples, where it is unknown (0 would
- * say the pixel is exact). */
+/* The variance of a mean of n samples from the sums of their luminance
+ * (mean) and of its squares; -1 below two samples, where it is unknown (0
+ * would say the pixel is exact). */
+inline float pt_mean_variance(float n, float mean, exact_sum squares) {
+    return n > 1.0f ? fmax(exact_to_float(squares) / n - mean * mean, 0.0f) / n : -1.0f;
+}
+
+/* Each pixel's indirect light: the mean of the samples less their direct
+ * parts, from the exact difference of the sums. */
+__kernel void pathtrace_resolve_indirect(__global const exact_sum *accum, uint pixels,
+                                         __global float4 *indirect) {
+    const uint i = get_global_id(0);
+    if (i >= pixels)
+        return;
+    __global const exact_sum *sums = accum + PT_SUMS * i;
+    const float n = (float)sums[3].x;
+    float3 rest = (float3)(0.0f);
+    if (n > 0.0f)
+        rest = (float3)(exact_to_float(exact_add(sums[0], exact_negate(sums[5]))),
+                        exact_to_float(exact_add(sums[1], exact_negate(sums[6]))),
+                        exact_to_float(exact_add(sums[2], exact_negate(sums[7])))) /
+               n;
+    indirect[i] = (float4)(rest, 1.0f);
+}
+
+/* The variance of each pixel's mean luminance, (E[l^2] - E[l]^2) / n: of
+ * the whole sample in x, of its direct part in y, of its indirect part in
+ * z (each -1 below two samples). */
 __kernel void pathtrace_variance(__global const exact_sum *accum, uint pixels,
                                  __global float4 *variance) {
     const uint i = get_global_id(0);
@@ -145,7 +197,9 @@ __kernel void pathtrace_variance(__global const exact_sum *accum, uint pixels,
         return;
     __global const exact_sum *sums = accum + PT_SUMS * i;
     const float n = (float)sums[3].x;
-    const float mean = pt_luminance(pt_sum_rgb(sums)) / n;
-    const float v = n > 1.0f ? fmax(exact_to_float(sums[4]) / n - mean * mean, 0.0f) / n : -1.0f;
-    variance[i] = (float4)(v, 0.0f, 0.0f, 1.0f);
+    const float mean = pt_luminance(pt_sum_rgb(sums)) / n,
+                mean_direct = pt_luminance(pt_sum_rgb(sums + 5)) / n;
+    variance[i] =
+        (float4)(pt_mean_variance(n, mean, sums[4]), pt_mean_variance(n, mean_direct, sums[8]),
+                 pt_mean_variance(n, mean - mean_direct, sums[9]), 1.0f);
 }

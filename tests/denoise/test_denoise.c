@@ -76,7 +76,8 @@ static void pixel(inputs *in, int i, float a, float e, float k, const float n[3]
 }
 
 static int run(vct_context *ctx, const inputs *in, vct_image *out, vct_error *err) {
-    const vct_denoise_guides g = {&in->albedo, &in->nd, in->with_variance ? &in->variance : NULL};
+    const vct_denoise_guides g = {&in->albedo, &in->nd, in->with_variance ? &in->variance : NULL,
+                                  NULL};
     const vct_denoise_options o = vct_denoise_options_default();
     return vct_denoise(ctx, &in->color, &g, &o, out, err);
 }
@@ -355,7 +356,7 @@ static void test_refusals(vct_context *ctx) {
     checker_plane(&in, 16, 8);
     vct_error err = {0};
     vct_image out, small = image_new(8, 8);
-    vct_denoise_guides g = {&in.albedo, &small, NULL};
+    vct_denoise_guides g = {&in.albedo, &small, NULL, NULL};
     vct_denoise_options o = vct_denoise_options_default();
     CHECK(vct_denoise(ctx, &in.color, &g, &o, &out, &err) == VCT_ERR_INPUT &&
               strstr(err.message, "normal and depth guide is 8x8"),
@@ -367,8 +368,15 @@ static void test_refusals(vct_context *ctx) {
     inputs_free(&in);
 }
 
+/* What filtering the light's parts apart must gain on the Cornell box at
+ * 4 spp, against filtering it whole (measured: see test_pathtrace). */
+#define PARTS_GAIN 0.9
+
 /* The path tracer at 4 spp with its variance and the guides, denoised,
- * against 1024 spp of the same scene; then at 1 spp, whose variance is
+ * against 1024 spp of the same scene: whole, and its direct and indirect
+ * parts apart (the point light's direct light is sharp and nearly
+ * noiseless, the indirect light smooth and noisy: apart, each is filtered
+ * as far as its own variance allows); then at 1 spp, whose variance is
  * unknown. */
 static void test_pathtrace(vct_context *ctx) {
     vct_error err = {0};
@@ -383,18 +391,27 @@ static void test_pathtrace(vct_context *ctx) {
     vct_render_job job = vct_render_job_default(VCT_METHOD_PATHTRACE, size, size);
     job.scene = s;
     job.accel = g;
-    vct_image reference, noisy, variance, albedo, nd, denoised;
+    vct_image reference, noisy, variance, albedo, nd, denoised, indirect, parts;
     job.pathtrace.spp = 1024;
     REQUIRE_OK(vct_render(ctx, &job, &reference, NULL, &err), err);
     job.pathtrace.spp = 4;
     job.pathtrace.seed = 1;
     job.pathtrace.variance = &variance;
+    job.pathtrace.indirect = &indirect;
     REQUIRE_OK(vct_render(ctx, &job, &noisy, NULL, &err), err);
     REQUIRE_OK(vct_render_guides(ctx, s, g, size, size, 4, &albedo, &nd, &err), err);
-    const vct_denoise_guides guides = {&albedo, &nd, &variance};
+    const vct_denoise_guides guides = {&albedo, &nd, &variance, NULL},
+                             apart = {&albedo, &nd, &variance, &indirect};
     const vct_denoise_options o = vct_denoise_options_default();
     REQUIRE_OK(vct_denoise(ctx, &noisy, &guides, &o, &denoised, &err), err);
-    const double before = nrmse(&noisy, &reference), after = nrmse(&denoised, &reference);
+    REQUIRE_OK(vct_denoise(ctx, &noisy, &apart, &o, &parts, &err), err);
+    const double before = nrmse(&noisy, &reference), after = nrmse(&denoised, &reference),
+                 after_parts = nrmse(&parts, &reference);
+    printf("Cornell box %d^2, 4 spp: direct and indirect light denoised apart %.4f, whole %.4f\n",
+           size, after_parts, after);
+    CHECK(after_parts < PARTS_GAIN * after, "apart %.4f, whole %.4f", after_parts, after);
+    vct_image_release(&parts);
+    vct_image_release(&indirect);
     double mean_d = 0, mean_r = 0, var_mean = 0;
     for (int i = 0; i < size * size; ++i) {
         mean_d += denoised.rgba[4 * i];

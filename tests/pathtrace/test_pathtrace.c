@@ -29,7 +29,7 @@ static vct_image trace(vct_context *ctx, const vct_scene *s, int w, int h, uint3
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0, NULL};
+    vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0, NULL, NULL};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, res, &err), err);
     vct_accel_release(g);
@@ -124,6 +124,58 @@ static void direct_matches_raycast(vct_context *ctx) {
            m.relative_rmse, worst, mean_diff);
     vct_image_release(&im);
     vct_image_release(&ref);
+    vct_scene_release(s);
+}
+
+/* The light's direct and indirect parts, in a furnace (a closed cube whose
+ * walls emit 1 and reflect a = 0.5): the direct part is the emission seen
+ * and the light the first surface receives from the walls (next-event
+ * estimation and the first bounce's BSDF sample, weighted against each
+ * other), 1 + a; the indirect part the rest of the series, a^2 / (1 - a).
+ * Paths of one surface have no indirect part, exactly. */
+static void direct_and_indirect(vct_context *ctx) {
+    vct_material m = vct_material_default();
+    for (int c = 0; c < 3; ++c) {
+        m.albedo[c] = 0.5f;
+        m.emission[c] = 1.0f;
+    }
+    vct_scene *s = cube_scene(m);
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const int w = 24, h = 16, n = w * h;
+    vct_image full, one, indirect, indirect_one, var, var_one;
+    vct_pathtrace_options o = {w, h, 16, 0.0, 32, 7, 16, 0, 0, &var, &indirect};
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &full, NULL, &err), err);
+    o.max_depth = 1;
+    o.variance = &var_one;
+    o.indirect = &indirect_one;
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &one, NULL, &err), err);
+    double direct_sum = 0, direct_sq = 0, indirect_sum = 0, indirect_sq = 0;
+    int var_same = 1, one_zero = 1;
+    for (int i = 0; i < n; ++i) {
+        const double d = full.rgba[4 * i] - indirect.rgba[4 * i], r = indirect.rgba[4 * i];
+        direct_sum += d;
+        direct_sq += d * d;
+        indirect_sum += r;
+        indirect_sq += r * r;
+        var_same &= var_one.rgba[4 * i + 1] == var_one.rgba[4 * i] && var.rgba[4 * i + 2] > 0.0f;
+        one_zero &= indirect_one.rgba[4 * i] == 0.0f && var_one.rgba[4 * i + 2] == 0.0f;
+    }
+    const double dm = direct_sum / n, rm = indirect_sum / n;
+    const double dse = sqrt(fmax(direct_sq / n - dm * dm, 0.0) / n),
+                 rse = sqrt(fmax(indirect_sq / n - rm * rm, 0.0) / n);
+    printf("furnace a=0.5: direct part %.4f (+-%.4f, expected 1.5), indirect %.4f (+-%.4f, "
+           "expected 0.5)\n",
+           dm, dse, rm, rse);
+    CHECK(fabs(dm - 1.5) <= 5.0 * dse + 1e-4, "direct part %.4f, expected 1.5", dm);
+    CHECK(fabs(rm - 0.5) <= 5.0 * rse + 1e-4, "indirect part %.4f, expected 0.5", rm);
+    CHECK(var_same, "variances: one surface's direct part is not its whole, or no indirect");
+    CHECK(one_zero, "paths of one surface have indirect light");
+    vct_image *all[] = {&full, &one, &indirect, &indirect_one, &var, &var_one};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
+        vct_image_release(all[i]);
+    vct_accel_release(g);
     vct_scene_release(s);
 }
 
@@ -258,7 +310,7 @@ static void resume_continues(vct_context *ctx) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_pathtrace_options whole = {24, 16, 4, 0.0, 8, 5, 1, 0, 0, NULL};
+    vct_pathtrace_options whole = {24, 16, 4, 0.0, 8, 5, 1, 0, 0, NULL, NULL};
     vct_pathtrace_result r;
     vct_image once, step = {0}, fresh;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &whole, &once, &r, &err), err);
@@ -306,6 +358,7 @@ int main(void) {
     glass_slab(ctx, 0.0f);
     glass_slab(ctx, 45.0f);
     direct_matches_raycast(ctx);
+    direct_and_indirect(ctx);
     open_scene_energy(ctx);
     convergence_and_determinism(ctx);
     adversarial(ctx);

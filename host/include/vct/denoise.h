@@ -51,6 +51,14 @@ typedef struct vct_denoise_guides {
     const vct_image *albedo;
     const vct_image *normal_depth;
     const vct_image *variance;
+    /* Non-NULL: the image's indirect light (vct_pathtrace_options.indirect).
+     * Its direct part (the image less this) and this are filtered apart,
+     * each with its own variance (the variance's g and b), and added: direct
+     * light from small lights has sharp shadows and little noise, indirect
+     * light is smooth and noisy, and one filter for both blurs the one or
+     * leaves the other blotchy. The direct part takes at most 3 passes.
+     * NULL: the image is filtered whole. */
+    const vct_image *indirect;
 } vct_denoise_guides;
 
 /* Filters `color` into `out` (allocated here; free with vct_image_release).

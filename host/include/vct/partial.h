@@ -42,12 +42,14 @@ typedef struct vct_sample_sums {
     int width, height;
     uint32_t samples;   /* samples per pixel summed (of every range added) */
     uint32_t discarded; /* samples dropped because they were not finite */
-    /* VCT_SAMPLE_SUM_BYTES per pixel, rows top to bottom: 5 values (red,
-     * green, blue, samples kept, squared luminance), each a 128-bit two's
-     * complement integer as two uint64 words, high word first. */
+    /* VCT_SAMPLE_SUM_BYTES per pixel, rows top to bottom: 10 values (red,
+     * green, blue, samples kept, squared luminance; the direct part's red,
+     * green, blue and squared luminance; the indirect part's squared
+     * luminance), each a 128-bit two's complement integer as two uint64
+     * words, high word first. */
     uint64_t *data;
 } vct_sample_sums;
-#define VCT_SAMPLE_SUM_BYTES 80
+#define VCT_SAMPLE_SUM_BYTES 160
 
 /* data's size in bytes for a width x height image. */
 VCT_API size_t vct_sample_sums_bytes(int width, int height);

@@ -51,9 +51,15 @@ typedef struct vct_pathtrace_options {
      * over. */
     int resume;
     /* Non-NULL: also filled with the variance of each pixel's mean luminance
-     * (in r; the denoiser's guide), from the same sums as the image; -1
-     * where a pixel has fewer than two samples (unknown). */
+     * (in r; the denoiser's guide), from the same sums as the image, and of
+     * its direct and indirect parts' (in g and b); -1 where a pixel has
+     * fewer than two samples (unknown). */
     vct_image *variance;
+    /* Non-NULL: also filled with each pixel's indirect light: the image
+     * less its direct part (what the first surface emits or receives from
+     * the lights and emitters by next-event estimation, or the background a
+     * camera ray meets). The denoiser filters the two parts apart. */
+    vct_image *indirect;
 } vct_pathtrace_options;
 
 /* 64 samples per pixel, depth 16, one sample per pass, seed 0. */

@@ -43,7 +43,7 @@ vct_status vct_device_scene_render_samples(vct_device_scene *ds, const vct_rende
     memset(sums, 0, sizeof *sums);
     vct_pathtrace_options opt;
     int rc = parts_options(job, &opt, err);
-    opt.variance = NULL;
+    opt.variance = opt.indirect = NULL;
     if (rc == VCT_OK)
         rc = vct_device_scene_prepare(ds, job, err);
     if (rc != VCT_OK)

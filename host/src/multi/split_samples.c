@@ -231,7 +231,7 @@ vct_status vct_group_render_samples(vct_group *g, const vct_render_job *job, uin
         return vct_fail(err, VCT_ERR_INPUT, "%s: the job's method must be the path tracer", STAGE);
     vct_render_job own = *job;
     own.pathtrace.resume = 0; /* each device's sums hold this range alone */
-    own.pathtrace.variance = NULL;
+    own.pathtrace.variance = own.pathtrace.indirect = NULL;
     sample_run *s = run_make(g, &own, first, count, 0.0);
     if (!s)
         return vct_fail(err, VCT_ERR_MEMORY, "devices: out of host memory");

@@ -169,6 +169,33 @@ static int pathtrace_variance(vct_context *ctx, cl_program program, cl_mem sums,
     return rc;
 }
 
+/* Each pixel's indirect light from `sums`, into a host image. */
+static int pathtrace_indirect(vct_context *ctx, cl_program program, cl_mem sums,
+                              const vct_pathtrace_options *opt, vct_image *indirect,
+                              vct_error *err) {
+    const size_t pixels = (size_t)opt->width * opt->height;
+    const cl_uint pixel_count = (cl_uint)pixels;
+    memset(indirect, 0, sizeof *indirect);
+    indirect->rgba = malloc(16 * pixels);
+    if (!indirect->rgba)
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory for the indirect light",
+                        STAGE);
+    indirect->width = opt->width;
+    indirect->height = opt->height;
+    cl_mem rest =
+        vct_buffer_create(ctx, STAGE, "indirect light", 16 * pixels, CL_MEM_WRITE_ONLY, NULL, err);
+    int rc = rest ? vct_run_kernel(ctx, program, "pathtrace_resolve_indirect", STAGE, pixels, err,
+                                   3, VCT_ARG(accum, sums), VCT_ARG(pixels, pixel_count),
+                                   VCT_ARG(indirect, rest))
+                  : (int)err->status;
+    if (rc == VCT_OK)
+        rc = vct_buffer_read(ctx, STAGE, rest, 0, 16 * pixels, indirect->rgba, err);
+    vct_buffer_release(ctx, rest);
+    if (rc != VCT_OK)
+        vct_image_release(indirect);
+    return rc;
+}
+
 int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
                vct_pathtrace_result *result, vct_error *err) {
     vct_context *ctx = pt->ctx;
@@ -186,6 +213,8 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
                             VCT_ARG(accum, sums), VCT_ARG(pixels, pixel_count), VCT_ARG_OF(frame));
     if (rc == VCT_OK && image && opt->variance) /* the call that delivers the frame */
         rc = pathtrace_variance(ctx, pt->program, sums, opt, opt->variance, err);
+    if (rc == VCT_OK && image && opt->indirect)
+        rc = pathtrace_indirect(ctx, pt->program, sums, opt, opt->indirect, err);
     cl_uint dropped = 0;
     if (rc == VCT_OK && result)
         rc = vct_buffer_read(ctx, STAGE, pt->acc->pt_discarded, 0, 4, &dropped, err);

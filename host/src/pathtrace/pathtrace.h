@@ -10,7 +10,9 @@
 #include "vct/partial.h"
 
 /* Per pixel: exact sums of red, green, blue, the count of samples kept and
- * the squares of their luminance (kernels/render/exact_sum.h), 16 bytes each. */
+ * the squares of their luminance, then of the direct part's (red, green,
+ * blue, squared luminance) and the indirect part's squared luminance
+ * (kernels/render/pathtrace.cl, exact_sum.h), 16 bytes each. */
 #define VCT_PT_ACCUM_BYTES VCT_SAMPLE_SUM_BYTES
 
 typedef struct vct_pt_session {
