@@ -36,6 +36,8 @@ int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
         cli_print_result(opt, &f->result);
     if (rc == VCT_OK && opt->aov && method == VCT_METHOD_VCT)
         cli_layers_add_aovs(&f->layers, &f->aovs);
+    if (rc == VCT_OK && opt->aov && f->aovs.indirect.rgba && method == VCT_METHOD_PATHTRACE)
+        cli_layers_add(&f->layers, "indirect", &f->aovs.indirect, "RGB");
     if (rc == VCT_OK)
         rc = cli_denoise_outputs(
             ctx, s, vct_device_scene_accel(ds), opt, method, &f->image,

@@ -56,7 +56,9 @@ typedef struct vct_denoise_guides {
      * each with its own variance (the variance's g and b), and added: direct
      * light from small lights has sharp shadows and little noise, indirect
      * light is smooth and noisy, and one filter for both blurs the one or
-     * leaves the other blotchy. The direct part takes at most 3 passes.
+     * leaves the other blotchy. The direct part takes at most 3 passes; the
+     * indirect part allows 1.5 times the luminance difference and clamps
+     * fireflies at 10/6 times the bound (smooth light, long-tailed noise).
      * NULL: the image is filtered whole. */
     const vct_image *indirect;
 } vct_denoise_guides;
