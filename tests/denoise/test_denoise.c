@@ -284,6 +284,55 @@ static void test_crease(vct_context *ctx) {
     inputs_free(&in);
 }
 
+/* Direct light that is exact but where a shadow's edge crosses: the crease
+ * of test_crease, sunlit above row 20 (radiance 1) and in shadow below (0),
+ * row 20 half lit (0.5, with the spread of 16 samples that met light or
+ * not), no indirect light. Filtered as the path tracer's parts, every pixel
+ * whose 3x3 pixels are exact keeps its value bit for bit, and none moves
+ * from the truth by more than row 20's own noise: the crease's fit over
+ * 5x5 pixels would blend the lit rows with the shadowed ones. */
+static void test_exact_direct(vct_context *ctx) {
+    const int w = 48, h = 40, edge_row = 20;
+    const float spread = 0.5f / 4.0f; /* one standard deviation of 16 samples */
+    vct_image color = image_new(w, h), albedo = image_new(w, h), nd = image_new(w, h),
+              variance = image_new(w, h), indirect = image_new(w, h), out;
+    uint32_t seed = 17;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float f = fminf(fmaxf(x - 14.0f - 0.45f * y + 0.5f, 0.0f), 1.0f);
+            const float n[3] = {f * sideways[0], 0.0f, (1.0f - f) * facing[2]};
+            const float truth = y < edge_row ? 1.0f : y == edge_row ? 0.5f : 0.0f;
+            const float v = y == edge_row ? truth + spread * noise(&seed) : truth;
+            const float var = y == edge_row ? spread * spread : 0.0f;
+            const int i = y * w + x;
+            set4(&color, i, v, v, v, 1.0f);
+            set4(&albedo, i, 0.6f, 0.6f, 0.6f, 1.0f);
+            set4(&nd, i, n[0], n[1], n[2], 4.0f);
+            set4(&variance, i, var, var, 0.0f, 1.0f);
+            set4(&indirect, i, 0.0f, 0.0f, 0.0f, 1.0f);
+        }
+    const vct_denoise_guides g = {&albedo, &nd, &variance, &indirect};
+    const vct_denoise_options o = vct_denoise_options_default();
+    vct_error err = {0};
+    REQUIRE_OK(vct_denoise(ctx, &color, &g, &o, &out, &err), err);
+    int moved = 0;
+    double worst = 0.0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int i = y * w + x;
+            const float truth = y < edge_row ? 1.0f : y == edge_row ? 0.5f : 0.0f;
+            worst = fmax(worst, fabs(out.rgba[4 * i] - truth));
+            if (abs(y - edge_row) > 1)
+                moved += memcmp(&out.rgba[4 * i], &color.rgba[4 * i], 12) != 0;
+        }
+    printf("exact direct light: %d exact pixels moved, worst %.3f from the truth\n", moved, worst);
+    CHECK(moved == 0, "%d exact pixels moved", moved);
+    CHECK(worst < 3.0 * spread, "a pixel moved %.3f from the truth", worst);
+    vct_image *all[] = {&color, &albedo, &nd, &variance, &indirect, &out};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
+        vct_image_release(all[i]);
+}
+
 /* Zero variance, black albedo, normals that cancel, pixels without a surface. */
 static void test_degenerate(vct_context *ctx) {
     inputs in;
@@ -511,6 +560,7 @@ int main(void) {
     test_checker(ctx);
     test_edge(ctx);
     test_crease(ctx);
+    test_exact_direct(ctx);
     test_emitter(ctx);
     test_degenerate(ctx);
     test_firefly(ctx);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "denoise/denoise_parts.h"
 #include "runtime/runtime.h"
 #include "vct/denoise.h"
 
@@ -25,8 +26,8 @@ vct_denoise_options vct_denoise_options_default(void) {
     return o;
 }
 
-static int check_inputs(const vct_image *color, const vct_denoise_guides *g,
-                        const vct_denoise_options *o, vct_error *err) {
+int vct_denoise_check(const vct_image *color, const vct_denoise_guides *g,
+                      const vct_denoise_options *o, vct_error *err) {
     if (!color || !color->rgba || color->width < 1 || color->height < 1)
         return vct_fail(err, VCT_ERR_INPUT, "%s: no image to filter", STAGE);
     if (!g || !g->albedo || !g->normal_depth)
@@ -187,9 +188,8 @@ static int upload(denoise_run *r, const vct_image *color, const vct_denoise_guid
     return r->fit ? VCT_OK : (int)err->status;
 }
 
-/* The whole image through the passes, with g's variance (in r). */
-static int denoise_whole(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
-                         const vct_denoise_options *o, vct_image *out, vct_error *err) {
+int vct_denoise_whole(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
+                      const vct_denoise_options *o, vct_image *out, vct_error *err) {
     memset(out, 0, sizeof *out);
     int rc = VCT_OK;
     const size_t pixels = (size_t)color->width * color->height;
@@ -240,89 +240,4 @@ static int denoise_whole(vct_context *ctx, const vct_image *color, const vct_den
     if (rc != VCT_OK)
         vct_image_release(out);
     return rc;
-}
-
-/* A copy of the variance with channel c of each pixel in r, where the
- * passes read it (NULL stays NULL: estimated from the image). */
-static int variance_channel(const vct_image *v, int c, vct_image *out, vct_error *err) {
-    memset(out, 0, sizeof *out);
-    if (!v)
-        return VCT_OK;
-    const size_t pixels = (size_t)v->width * v->height;
-    out->rgba = malloc(16 * pixels);
-    if (!out->rgba)
-        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory for a variance", STAGE);
-    out->width = v->width;
-    out->height = v->height;
-    for (size_t i = 0; i < pixels; ++i) {
-        out->rgba[4 * i] = v->rgba[4 * i + c];
-        out->rgba[4 * i + 1] = out->rgba[4 * i + 2] = 0.0f;
-        out->rgba[4 * i + 3] = 1.0f;
-    }
-    return VCT_OK;
-}
-
-/* Passes for the direct part at most: it is far less noisy than the
- * indirect part, and over the scene suite 3 passes do as well as 5. */
-#define DIRECT_PASSES 3u
-/* The indirect part's luminance and firefly bounds, as multiples of the
- * options': it has no sharp shadows to keep, so wider luminance differences
- * may be averaged; and its noise has long tails (paths that meet a small
- * lamp after a bounce), so clamping at the image's bound took 9 % of a lamp
- * room's indirect light at 4 spp. Over the scene suite at 128 and 256
- * pixels square these cut the error at 4 spp by up to a tenth. */
-#define INDIRECT_SIGMA_SCALE 1.5f
-#define INDIRECT_FIREFLY_SCALE (10.0f / 6.0f)
-
-/* The direct part (color less g->indirect) and the indirect part filtered
- * apart, each with its own variance (g and b), and added again. */
-static int denoise_parts(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
-                         const vct_denoise_options *o, vct_image *out, vct_error *err) {
-    memset(out, 0, sizeof *out);
-    const size_t values = 4 * (size_t)color->width * color->height;
-    vct_image direct = {color->width, color->height, malloc(4 * values)}, var_direct, var_indirect,
-              filtered = {0};
-    int rc = direct.rgba ? VCT_OK
-                         : vct_fail(err, VCT_ERR_MEMORY,
-                                    "%s: out of host memory for the direct "
-                                    "light",
-                                    STAGE);
-    if (rc == VCT_OK)
-        rc = variance_channel(g->variance, 1, &var_direct, err);
-    if (rc == VCT_OK)
-        rc = variance_channel(g->variance, 2, &var_indirect, err);
-    for (size_t i = 0; rc == VCT_OK && i < values; ++i)
-        direct.rgba[i] = i % 4 == 3 ? 1.0f : color->rgba[i] - g->indirect->rgba[i];
-    vct_denoise_guides part = *g;
-    part.variance = g->variance ? &var_direct : NULL;
-    vct_denoise_options direct_options = *o;
-    if (direct_options.iterations > DIRECT_PASSES)
-        direct_options.iterations = DIRECT_PASSES;
-    if (rc == VCT_OK)
-        rc = denoise_whole(ctx, &direct, &part, &direct_options, out, err);
-    part.variance = g->variance ? &var_indirect : NULL;
-    vct_denoise_options indirect_options = *o;
-    indirect_options.sigma_luminance *= INDIRECT_SIGMA_SCALE;
-    indirect_options.firefly_sigma *= INDIRECT_FIREFLY_SCALE;
-    if (rc == VCT_OK)
-        rc = denoise_whole(ctx, g->indirect, &part, &indirect_options, &filtered, err);
-    for (size_t i = 0; rc == VCT_OK && i < values; ++i)
-        if (i % 4 != 3)
-            out->rgba[i] += filtered.rgba[i];
-    if (rc != VCT_OK)
-        vct_image_release(out);
-    vct_image *all[] = {&filtered, &direct, &var_direct, &var_indirect};
-    for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
-        vct_image_release(all[i]);
-    return rc;
-}
-
-vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
-                       const vct_denoise_options *o, vct_image *out, vct_error *err) {
-    memset(out, 0, sizeof *out);
-    int rc = check_inputs(color, g, o, err);
-    if (rc)
-        return rc;
-    return g->indirect ? denoise_parts(ctx, color, g, o, out, err)
-                       : denoise_whole(ctx, color, g, o, out, err);
 }
