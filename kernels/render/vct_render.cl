@@ -70,6 +70,11 @@
  * by more than this share of the brighter's: through the N x N rays of
  * other edges, its pixels' error reaches 1/N^2 of that difference. */
 #define EDGE_CONTRAST 0.75f
+/* The 3x3 centres' shading spanning more than this share of the
+ * brightest's is an edge too, on one surface: a curved mesh's flat faces,
+ * each lit at its own angle, which a pixel's centre alone shows as steps
+ * (a faceted ball under a spot light: 30 % of its image's squared error). */
+#define SHADING_STEP 0.15f
 
 #define PRIMARY_ARGS                                                                               \
     ACCEL_ARGS, vct_camera_desc cam, __global const vct_material_desc *materials,                  \
@@ -138,7 +143,8 @@ __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
  * emitter's border, which its own key may not tell (centres that miss a
  * small emitter see the same ceiling). EDGE_CONTRAST on an edge whose 3x3
  * centres' shading spans more than EDGE_CONTRAST of the brightest's: a
- * hard shadow's, a lit wall's against a dark sky. */
+ * hard shadow's, a lit wall's against a dark sky. EDGE too where, on one
+ * surface, the 3x3 centres' shading spans more than SHADING_STEP. */
 #define EDGE 1u
 #define EDGE_EMITTER 2u
 #define EDGE_CONTRAST_FLAG 3u
@@ -194,10 +200,11 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
             }
         }
     const int contrast = edge && hi - lo > EDGE_CONTRAST * hi;
-    flags[pixel] = (uchar)(glow && dark ? EDGE_EMITTER
-                           : contrast   ? EDGE_CONTRAST_FLAG
-                           : edge       ? EDGE
-                                        : 0u);
+    const int shading = hi - lo > SHADING_STEP * hi;
+    flags[pixel] = (uchar)(glow && dark      ? EDGE_EMITTER
+                           : contrast        ? EDGE_CONTRAST_FLAG
+                           : edge || shading ? EDGE
+                                             : 0u);
 }
 
 /* A pixel on a sharp edge: its mean radiance over an m x m grid of camera
