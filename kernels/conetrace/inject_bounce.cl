@@ -17,6 +17,7 @@
  * what their gathering neighbours on the same surface received
  * (inject_bounce_fill). A bounce's light varies slowly along a surface. */
 #include "scene/bsdf.h"
+#include "conetrace/cone_frame.h"
 #include "conetrace/cone_trace.h"
 #include "conetrace/cone_near.h"
 #include "conetrace/cone_sky.h"
@@ -25,12 +26,14 @@
 #include "voxel/voxel_side.h"
 #include "vct_types.h"
 
-/* The cosine-weighted radiance arriving at `centre` from the side n faces. */
+/* The cosine-weighted radiance arriving at `centre` (voxel `key`) from the
+ * side n faces. */
 inline float3 gather_side(const accel_view *acc, CONE_POOLS, __global const uint *child,
                           const vct_cone_desc *cd, __global const vct_cone_dir *cones,
-                          uint cone_count, float3 centre, float3 n, int near_rays, float3 surface) {
+                          uint cone_count, uint key, float3 centre, float3 n, int near_rays,
+                          float3 surface) {
     float3 t, b;
-    basis_of(n, &t, &b);
+    cone_frame(n, key, &t, &b);
     const float3 origin = cone_origin(cd, centre, n);
     float3 gathered = (float3)(0.0f);
     for (uint i = 0; i < cone_count; ++i) {
@@ -72,10 +75,10 @@ inline void gather_voxel(const accel_view *acc, CONE_POOLS, __global const uint 
     const float3 c_unit = (centre - cd->volume.xyz) * cd->ambient.w - 0.5f;
     const float3 surface =
         cd->volume.xyz + (c_unit - (dot(n, c_unit) - plane.w) * n + 0.5f) * cd->volume.w;
-    *front = gather_side(acc, CONE_POOLS_PASS, child, cd, cones, cone_count, centre, n, has_normal,
-                         surface);
-    *back = gather_side(acc, CONE_POOLS_PASS, child, cd, cones, cone_count, centre, -n, has_normal,
-                        surface);
+    *front = gather_side(acc, CONE_POOLS_PASS, child, cd, cones, cone_count, key, centre, n,
+                         has_normal, surface);
+    *back = gather_side(acc, CONE_POOLS_PASS, child, cd, cones, cone_count, key, centre, -n,
+                        has_normal, surface);
 }
 
 /* Voxel v's radiance and sides from what its sides receive; keep_sides 1:

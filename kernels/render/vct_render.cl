@@ -41,6 +41,7 @@
  * where there is none. */
 #include "scene/bsdf.h"
 #include "scene/camera.h"
+#include "conetrace/cone_frame.h"
 #include "conetrace/cone_trace.h"
 #include "light/direct_light.h"
 #include "light/emitters.h"
@@ -411,7 +412,7 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
                                    uint cone_count, const gbuffer_surface *g) {
     const float3 n = g->n;
     float3 t, b;
-    basis_of(n, &t, &b);
+    cone_frame(n, cone_point_seed(cd->volume.xyz, cd->volume.w, cd->res.x, g->p), &t, &b);
 #ifdef VCT_INDIRECT
     const float reach = INFINITY;
 #else

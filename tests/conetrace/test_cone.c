@@ -616,14 +616,35 @@ static int ref_near(const brick_case *c, const ref_pyramid *p, const vct_cone_se
 /* The preset's weighted cones from voxel `cell`'s centre on the side of
  * unit n, through pyramid p; near rays from the point of the voxel's plane
  * (normal n or -n, offset h) nearest its centre, when it has a normal. */
+static uint32_t lowbias32(uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
 static void gather_side(const brick_case *c, const ref_pyramid *p, const vct_cone_settings *s,
-                        const uint32_t cell[3], const double n[3], int has_normal, double h,
-                        const float *dirs, const float *tan_half, double gathered[3]) {
+                        uint32_t key, const uint32_t cell[3], const double n[3], int has_normal,
+                        double h, const float *dirs, const float *tan_half, double gathered[3]) {
     const double side = c->info.side, voxel = side / c->info.resolution, none[3] = {0, 0, 0};
-    /* the frame of bsdf.h's basis_of (Duff et al. 2017) */
-    const double sg = n[2] >= 0 ? 1.0 : -1.0, a = -1.0 / (sg + n[2]), bb = n[0] * n[1] * a;
-    const double t[3] = {1.0 + sg * n[0] * n[0] * a, sg * bb, -sg * n[0]};
-    const double b[3] = {bb, sg + n[1] * n[1] * a, -n[1]};
+    /* the frame of bsdf.h's basis_of (Duff et al. 2017) about the normal's
+     * axis (its largest component made positive), turned about it by the
+     * angle 2 pi hash(key) / 2^32 (cone_frame.h) */
+    const double ax = fabs(n[0]), ay = fabs(n[1]), az = fabs(n[2]);
+    const double major = ax >= ay && ax >= az ? n[0] : (ay >= az ? n[1] : n[2]);
+    const double m[3] = {major < 0 ? -n[0] : n[0], major < 0 ? -n[1] : n[1],
+                         major < 0 ? -n[2] : n[2]};
+    const double sg = m[2] >= 0 ? 1.0 : -1.0, a = -1.0 / (sg + m[2]), bb = m[0] * m[1] * a;
+    const double t0[3] = {1.0 + sg * m[0] * m[0] * a, sg * bb, -sg * m[0]};
+    const double b0[3] = {bb, sg + m[1] * m[1] * a, -m[1]};
+    const double angle = 6.283185307179586 * (double)(lowbias32(key) >> 8) / 16777216.0;
+    double t[3], b[3];
+    for (int k = 0; k < 3; ++k) {
+        t[k] = cos(angle) * t0[k] + sin(angle) * b0[k];
+        b[k] = cos(angle) * b0[k] - sin(angle) * t0[k];
+    }
     double origin[3], unit[3], from[3], along = 0.0;
     for (int k = 0; k < 3; ++k) {
         const double centre = c->info.origin[k] + (cell[k] + 0.5) * voxel;
@@ -687,11 +708,11 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
         double n[3] = {has_normal ? plane[0] : 0.0, has_normal ? plane[1] : 0.0,
                        has_normal ? plane[2] : 1.0};
         double front[3], back[3], toward[3], away[3];
-        gather_side(c, p, &s, cell, n, has_normal, plane[3], dirs, tan_half, front);
+        gather_side(c, p, &s, keys[v], cell, n, has_normal, plane[3], dirs, tan_half, front);
         for (int k = 0; k < 3; ++k)
             n[k] = -n[k];
         /* the same plane seen from its other side: normal -n, offset -h */
-        gather_side(c, p, &s, cell, n, has_normal, -plane[3], dirs, tan_half, back);
+        gather_side(c, p, &s, keys[v], cell, n, has_normal, -plane[3], dirs, tan_half, back);
         const int front_more = luminance(front) >= luminance(back);
         for (int k = 0; k < 3; ++k) {
             const double lit = direct[4 * v + k], rho = c->albedo[4 * v + k];

@@ -1,0 +1,38 @@
+/* The frame a set of diffuse cones is laid out in about a surface's normal,
+ * turned about it by an angle hashed from a seed of the point the cones
+ * leave (a voxel's key; a camera hit's position). With one frame for every
+ * point of a plane, all of them look along the same few directions: a small
+ * bright patch (a spot light's pool on a floor) falls into a cone at some
+ * points and between cones at others, and the gathered light comes out in
+ * blotches the size of the patch's distance. Turned per point, neighbouring
+ * pixels and voxels look along different directions, and the patch is met
+ * as fine-grained variation that the sparse passes' fill averages. The
+ * frame depends on the normal's axis, not its sign, so that a surface
+ * wound the other way gathers along the same directions. */
+#ifndef VCT_CONE_FRAME_H
+#define VCT_CONE_FRAME_H
+
+#include "scene/bsdf.h" /* basis_of */
+#include "scene/rng.h"
+#include "scene/turn.h"
+
+/* A camera hit's seed: the cell of a grid 16 times finer than the voxels
+ * that holds it, so that the rounding of the hit's position (a triangle
+ * wound the other way, a band of rows on another device) does not change
+ * it but at a cell's border. */
+inline uint cone_point_seed(float3 origin, float side, uint res, float3 p) {
+    const int3 c = convert_int3_rtn((p - origin) * ((float)(16u * res) / side));
+    return (uint)c.x ^ rng_hash((uint)c.y ^ rng_hash((uint)c.z));
+}
+
+inline void cone_frame(float3 n, uint seed, float3 *t, float3 *b) {
+    const float3 a = fabs(n);
+    const float major = a.x >= a.y && a.x >= a.z ? n.x : (a.y >= a.z ? n.y : n.z);
+    float3 t0, b0;
+    basis_of(major < 0.0f ? -n : n, &t0, &b0);
+    const float2 cs = turn_cos_sin((float)(rng_hash(seed) >> 8) * (1.0f / 16777216.0f));
+    *t = cs.x * t0 + cs.y * b0;
+    *b = cs.x * b0 - cs.y * t0;
+}
+
+#endif
