@@ -72,6 +72,18 @@ static vct_image render_vct(const vct_scene *s, const vct_plan *plan, int w, int
     return im;
 }
 
+/* The reference: the ray caster at N^2 times the width and height. */
+static vct_image fine_reference(const vct_scene *s) {
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const vct_render_options ro = {N * N * W, N * N * H, 0, 0, 0.0f};
+    vct_image fine;
+    REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
+    vct_accel_release(g);
+    return fine;
+}
+
 /* The fine pixels pixel (x, y)'s rays go through, channel k. */
 static void block_stats(const vct_image *fine, int x, int y, int k, double *mean, double *spread) {
     double sum = 0.0, lo = INFINITY, hi = -INFINITY;
@@ -129,12 +141,7 @@ static void direct_edges(void) {
     vct_plan plan;
     vct_case_direct_plan(s, &plan);
 
-    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
-    REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_render_options ro = {N * N * W, N * N * H, 0, 0, 0.0f};
-    vct_image fine;
-    REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
-    vct_accel_release(g);
+    vct_image fine = fine_reference(s);
 
     for (uint32_t n = 1; n <= N; n += N - 1) {
         vct_image im = render_vct(s, &plan, W, H, n, NULL);
@@ -493,12 +500,7 @@ static void facets(void) {
     REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
     vct_plan plan;
     vct_case_direct_plan(s, &plan);
-    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
-    REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_render_options ro = {N * N * W, N * N * H, 0, 0, 0.0f};
-    vct_image fine;
-    REQUIRE_OK(vct_render_raycast(ctx, s, g, &ro, &fine, &err), err);
-    vct_accel_release(g);
+    vct_image fine = fine_reference(s);
     double light = 0.0;
     for (size_t i = 0; i < (size_t)fine.width * fine.height; ++i)
         light = fmax(light, fine.rgba[4 * i]);

@@ -143,56 +143,29 @@ int vct_pt_run(vct_pt_session *pt, uint32_t first, uint32_t count, int wait, vct
     return rc;
 }
 
-/* Each pixel's luminance variance from `sums`, into a host image. */
-static int pathtrace_variance(vct_context *ctx, cl_program program, cl_mem sums,
-                              const vct_pathtrace_options *opt, vct_image *variance,
-                              vct_error *err) {
+/* A float4 per pixel from `sums` by `kernel` (accum, pixels, then its
+ * parameter `param`), into a host image; `what` names it in errors. */
+static int pixels_from_sums(vct_context *ctx, cl_program program, const char *kernel,
+                            const char *param, const char *what, cl_mem sums,
+                            const vct_pathtrace_options *opt, vct_image *image, vct_error *err) {
     const size_t pixels = (size_t)opt->width * opt->height;
     const cl_uint pixel_count = (cl_uint)pixels;
-    memset(variance, 0, sizeof *variance);
-    variance->rgba = malloc(16 * pixels);
-    if (!variance->rgba)
-        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory for the variance", STAGE);
-    variance->width = opt->width;
-    variance->height = opt->height;
-    cl_mem out =
-        vct_buffer_create(ctx, STAGE, "variance", 16 * pixels, CL_MEM_WRITE_ONLY, NULL, err);
-    int rc = out ? vct_run_kernel(ctx, program, "pathtrace_variance", STAGE, pixels, err, 3,
-                                  VCT_ARG(accum, sums), VCT_ARG(pixels, pixel_count),
-                                  VCT_ARG(variance, out))
-                 : (int)err->status;
+    memset(image, 0, sizeof *image);
+    image->rgba = malloc(16 * pixels);
+    if (!image->rgba)
+        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory for the %s", STAGE, what);
+    image->width = opt->width;
+    image->height = opt->height;
+    cl_mem out = vct_buffer_create(ctx, STAGE, what, 16 * pixels, CL_MEM_WRITE_ONLY, NULL, err);
+    int rc =
+        out ? vct_run_kernel(ctx, program, kernel, STAGE, pixels, err, 3, VCT_ARG(accum, sums),
+                             VCT_ARG(pixels, pixel_count), sizeof out, (const void *)&out, param)
+            : (int)err->status;
     if (rc == VCT_OK)
-        rc = vct_buffer_read(ctx, STAGE, out, 0, 16 * pixels, variance->rgba, err);
+        rc = vct_buffer_read(ctx, STAGE, out, 0, 16 * pixels, image->rgba, err);
     vct_buffer_release(ctx, out);
     if (rc != VCT_OK)
-        vct_image_release(variance);
-    return rc;
-}
-
-/* Each pixel's indirect light from `sums`, into a host image. */
-static int pathtrace_indirect(vct_context *ctx, cl_program program, cl_mem sums,
-                              const vct_pathtrace_options *opt, vct_image *indirect,
-                              vct_error *err) {
-    const size_t pixels = (size_t)opt->width * opt->height;
-    const cl_uint pixel_count = (cl_uint)pixels;
-    memset(indirect, 0, sizeof *indirect);
-    indirect->rgba = malloc(16 * pixels);
-    if (!indirect->rgba)
-        return vct_fail(err, VCT_ERR_MEMORY, "%s: out of host memory for the indirect light",
-                        STAGE);
-    indirect->width = opt->width;
-    indirect->height = opt->height;
-    cl_mem rest =
-        vct_buffer_create(ctx, STAGE, "indirect light", 16 * pixels, CL_MEM_WRITE_ONLY, NULL, err);
-    int rc = rest ? vct_run_kernel(ctx, program, "pathtrace_resolve_indirect", STAGE, pixels, err,
-                                   3, VCT_ARG(accum, sums), VCT_ARG(pixels, pixel_count),
-                                   VCT_ARG(indirect, rest))
-                  : (int)err->status;
-    if (rc == VCT_OK)
-        rc = vct_buffer_read(ctx, STAGE, rest, 0, 16 * pixels, indirect->rgba, err);
-    vct_buffer_release(ctx, rest);
-    if (rc != VCT_OK)
-        vct_image_release(indirect);
+        vct_image_release(image);
     return rc;
 }
 
@@ -212,9 +185,11 @@ int vct_pt_end(vct_pt_session *pt, int rc, cl_mem sums, vct_image *image,
         rc = vct_run_kernel(ctx, pt->program, "pathtrace_resolve", STAGE, pixels, err, 3,
                             VCT_ARG(accum, sums), VCT_ARG(pixels, pixel_count), VCT_ARG_OF(frame));
     if (rc == VCT_OK && image && opt->variance) /* the call that delivers the frame */
-        rc = pathtrace_variance(ctx, pt->program, sums, opt, opt->variance, err);
+        rc = pixels_from_sums(ctx, pt->program, "pathtrace_variance", "variance", "variance", sums,
+                              opt, opt->variance, err);
     if (rc == VCT_OK && image && opt->indirect)
-        rc = pathtrace_indirect(ctx, pt->program, sums, opt, opt->indirect, err);
+        rc = pixels_from_sums(ctx, pt->program, "pathtrace_resolve_indirect", "indirect",
+                              "indirect light", sums, opt, opt->indirect, err);
     cl_uint dropped = 0;
     if (rc == VCT_OK && result)
         rc = vct_buffer_read(ctx, STAGE, pt->acc->pt_discarded, 0, 4, &dropped, err);
