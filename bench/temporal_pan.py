@@ -15,12 +15,21 @@ usage: temporal_pan.py PAN.gltf DEG SECONDS FPS PATTERN POSITIONS N
   PATTERN, POSITIONS: printf patterns of the frames and of their position AOVs"""
 import json
 import math
+import os
 import sys
 
 import numpy as np
 
-from make_pan import yaw
 from pfm import read_pfm
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenes",
+                                "suite"))
+from gltf_scene import quaternion_product, yaw_quaternion  # noqa: E402
+
+
+def yaw(deg, q):
+    """The world-space turn about +y by deg, then q (x y z w)."""
+    return quaternion_product(yaw_quaternion(deg), q)
 
 
 def basis(q):

@@ -1,14 +1,16 @@
 /* The frame a set of diffuse cones is laid out in about a surface's normal,
  * turned about it by an angle hashed from a seed of the point the cones
- * leave (a voxel's key; a camera hit's position). With one frame for every
- * point of a plane, all of them look along the same few directions: a small
- * bright patch (a spot light's pool on a floor) falls into a cone at some
- * points and between cones at others, and the gathered light comes out in
- * blotches the size of the patch's distance. Turned per point, neighbouring
- * pixels and voxels look along different directions, and the patch is met
- * as fine-grained variation that the sparse passes' fill averages. The
- * frame depends on the normal's axis, not its sign, so that a surface
- * wound the other way gathers along the same directions. */
+ * leave (a voxel's key; the voxel cell a camera hit lies in). With one
+ * frame for every point of a plane, all of them look along the same few
+ * directions: a small bright patch (a spot light's pool on a floor) falls
+ * into a cone at some points and between cones at others, and the gathered
+ * light comes out in blotches the size of the patch's distance. Turned per
+ * voxel, neighbouring voxels and pixels look along different directions,
+ * and the patch is met as fine-grained variation that the sparse passes'
+ * fill averages. The price: a moving camera's indirect light changes a
+ * little more from frame to frame (bench/flicker.sh). The frame depends on
+ * the normal's axis, not its sign, so that a surface wound the other way
+ * gathers along the same directions. */
 #ifndef VCT_CONE_FRAME_H
 #define VCT_CONE_FRAME_H
 
@@ -16,12 +18,13 @@
 #include "scene/rng.h"
 #include "scene/turn.h"
 
-/* A camera hit's seed: the cell of a grid 16 times finer than the voxels
- * that holds it, so that the rounding of the hit's position (a triangle
- * wound the other way, a band of rows on another device) does not change
- * it but at a cell's border. */
+/* A camera hit's seed: the voxel cell that holds it. The rounding of the
+ * hit's position (a triangle wound the other way, a band of rows on another
+ * device) does not change it but at a cell's border; a moving camera's
+ * pixels keep their turn while their hits stay in a cell (finer cells, or
+ * turns interpolated between cells, flickered more: bench/flicker.sh). */
 inline uint cone_point_seed(float3 origin, float side, uint res, float3 p) {
-    const int3 c = convert_int3_rtn((p - origin) * ((float)(16u * res) / side));
+    const int3 c = convert_int3_rtn((p - origin) * ((float)res / side));
     return (uint)c.x ^ rng_hash((uint)c.y ^ rng_hash((uint)c.z));
 }
 
