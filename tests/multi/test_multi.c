@@ -107,8 +107,8 @@ static vct_group *group_for(const vct_scene *s) {
     return g;
 }
 
-/* The path tracer's per-pixel variance (the denoiser's guide) from the
- * devices' summed samples: one device's, bit for bit. */
+/* The path tracer's per-pixel variance and indirect light (the denoiser's
+ * guides) from the devices' summed samples: one device's, bit for bit. */
 static void check_variance(const vct_scene *s) {
     const method_case *c = &cases[6]; /* pt */
     vct_error err = {0};
@@ -117,20 +117,26 @@ static void check_variance(const vct_scene *s) {
     vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
     vct_render_job job = job_of(c, s);
-    vct_image one, one_var, both, both_var;
+    vct_image one, one_var, one_ind, both, both_var, both_ind;
     job.accel = a;
     job.pathtrace.variance = &one_var;
+    job.pathtrace.indirect = &one_ind;
     REQUIRE_OK(vct_render(ctx, &job, &one, NULL, &err), err);
     vct_group *g = group_for(s);
     job.accel = NULL;
     job.pathtrace.variance = &both_var;
+    job.pathtrace.indirect = &both_ind;
     REQUIRE_OK(vct_group_render(g, &job, &both, NULL, &err), err);
     const size_t diff = check_differing(&one_var, &both_var);
     CHECK(diff == 0 && mean(&one_var) > 0.0,
           "pt variance on two devices: %zu values differ from one device's (mean %g)", diff,
           mean(&one_var));
-    vct_image *all[] = {&one, &one_var, &both, &both_var};
-    for (int i = 0; i < 4; ++i)
+    const size_t diff_ind = check_differing(&one_ind, &both_ind);
+    CHECK(diff_ind == 0 && mean(&one_ind) > 0.0,
+          "pt indirect light on two devices: %zu values differ from one device's (mean %g)",
+          diff_ind, mean(&one_ind));
+    vct_image *all[] = {&one, &one_var, &one_ind, &both, &both_var, &both_ind};
+    for (int i = 0; i < 6; ++i)
         vct_image_release(all[i]);
     vct_group_release(g);
     vct_accel_release(a);
