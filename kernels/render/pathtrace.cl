@@ -5,17 +5,15 @@
  * PT_SUMS exact sums (render/exact_sum.h): red, green and blue, the count of
  * samples kept (x), the squares of the samples' luminance (for the variance
  * the denoiser weighs by), then the same for the sample's direct part (red,
- * green, blue, squared luminance: what the first surface emits or receives
- * from the lights and emitters, or the background a camera ray meets) and the
- * squared luminance of the rest, the indirect part (the direct part also
- * takes the emitters the first bounce's BSDF sample meets, with their
- * multiple-importance weight: the other half of the first surface's light
- * from emitters). Direct light is sharp
- * and, from small lights, nearly noiseless; indirect light is smooth and
- * noisy: the denoiser filters each with its own variance. A sample that is
- * not finite is dropped and counted. The
- * sums are exact, so the image does not depend on how samples were split
- * into launches, calls or devices.
+ * green, blue, squared luminance) and the squared luminance of the rest,
+ * the indirect part. The direct part is what the first surface emits or
+ * receives from the lights and emitters (next-event estimation, and the
+ * emitter its BSDF sample meets, by its multiple-importance weight), or the
+ * background a camera ray meets. Direct light is sharp and, from small
+ * lights, nearly noiseless; indirect light is smooth and noisy: the
+ * denoiser filters each with its own variance. A sample that is not finite
+ * is dropped and counted. The sums are exact, so the image does not depend
+ * on how samples were split into launches, calls or devices.
  *
  * max_depth: surface interactions per path (1 = direct light only). */
 #include "scene/bsdf.h"
