@@ -149,14 +149,21 @@ inline float3 pt_sum_rgb(__global const exact_sum *sums) {
     return (float3)(exact_to_float(sums[0]), exact_to_float(sums[1]), exact_to_float(sums[2]));
 }
 
+/* Pixel i's sums, and in *n the count of its samples kept. */
+inline __global const exact_sum *pt_pixel_sums(__global const exact_sum *accum, uint i, float *n) {
+    __global const exact_sum *sums = accum + PT_SUMS * i;
+    *n = (float)sums[3].x;
+    return sums;
+}
+
 /* The frame: each pixel's mean sample (black where every sample was dropped). */
 __kernel void pathtrace_resolve(__global const exact_sum *accum, uint pixels,
                                 __global float4 *frame) {
     const uint i = get_global_id(0);
     if (i >= pixels)
         return;
-    __global const exact_sum *sums = accum + PT_SUMS * i;
-    const float n = (float)sums[3].x;
+    float n;
+    __global const exact_sum *sums = pt_pixel_sums(accum, i, &n);
     frame[i] = n > 0.0f ? (float4)(pt_sum_rgb(sums) / n, 1.0f) : (float4)(0.0f, 0.0f, 0.0f, 1.0f);
 }
 
@@ -174,8 +181,8 @@ __kernel void pathtrace_resolve_indirect(__global const exact_sum *accum, uint p
     const uint i = get_global_id(0);
     if (i >= pixels)
         return;
-    __global const exact_sum *sums = accum + PT_SUMS * i;
-    const float n = (float)sums[3].x;
+    float n;
+    __global const exact_sum *sums = pt_pixel_sums(accum, i, &n);
     float3 rest = (float3)(0.0f);
     if (n > 0.0f)
         rest = (float3)(exact_to_float(exact_add(sums[0], exact_negate(sums[5]))),
@@ -193,8 +200,8 @@ __kernel void pathtrace_variance(__global const exact_sum *accum, uint pixels,
     const uint i = get_global_id(0);
     if (i >= pixels)
         return;
-    __global const exact_sum *sums = accum + PT_SUMS * i;
-    const float n = (float)sums[3].x;
+    float n;
+    __global const exact_sum *sums = pt_pixel_sums(accum, i, &n);
     const float mean = pt_luminance(pt_sum_rgb(sums)) / n,
                 mean_direct = pt_luminance(pt_sum_rgb(sums + 5)) / n;
     variance[i] =
