@@ -16,6 +16,7 @@
 #include "accel/hit.h"
 #include "accel/ray_tri.h"
 #include "accel/ray_tri4.h"
+#include "scene/tri_normal.h"
 #include "vct_types.h"
 
 #if defined(VCT_ACCEL_BVH2)
@@ -33,7 +34,7 @@ inline int surface_hit(const accel_view *g, const hit_record *h, float3 dir, flo
                        float3 *n, int *front) {
     const float3 a = g->tri_vertices[3 * h->tri].xyz, b = g->tri_vertices[3 * h->tri + 1].xyz,
                  c = g->tri_vertices[3 * h->tri + 2].xyz;
-    const float3 cr = cross(b - a, c - a);
+    const float3 cr = tri_normal(a, b, c);
     const float len = length(cr);
     if (!(len > 0.0f))
         return 0;

@@ -31,28 +31,39 @@
 /* Without the estimator's variance: the smallest luminance variance of the
  * four 3x3 windows that hold the pixel in a corner (Kuwahara's choice), so
  * that an edge beside a pixel does not pass for noise: one window lies on
- * the pixel's side of it. */
+ * the pixel's side of it. Each window's variance is the mean squared
+ * deviation from its mean, not the mean square less the squared mean, whose
+ * cancellation leaves rounding noise where the window is nearly flat. */
 __kernel void denoise_estimate_variance(__global const float4 *color, uint2 size,
                                         __global float *variance) {
     const int x = (int)get_global_id(0), y = (int)get_global_id(1);
     if (x >= (int)size.x || y >= (int)size.y)
         return;
+    float l[5][5]; /* luminance around the pixel; -infinity: outside the image */
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int qx = x + dx, qy = y + dy;
+            const int inside = qx >= 0 && qy >= 0 && qx < (int)size.x && qy < (int)size.y;
+            l[dy + 2][dx + 2] =
+                inside ? denoise_luminance(color[qy * (int)size.x + qx].xyz) : -INFINITY;
+        }
     float least = INFINITY;
-    for (int wy = -2; wy <= 0; wy += 2)
-        for (int wx = -2; wx <= 0; wx += 2) {
-            float sum = 0.0f, sum2 = 0.0f, count = 0.0f;
+    for (int wy = 0; wy <= 2; wy += 2)
+        for (int wx = 0; wx <= 2; wx += 2) {
+            float sum = 0.0f, count = 0.0f;
             for (int dy = wy; dy <= wy + 2; ++dy)
-                for (int dx = wx; dx <= wx + 2; ++dx) {
-                    const int qx = x + dx, qy = y + dy;
-                    if (qx < 0 || qy < 0 || qx >= (int)size.x || qy >= (int)size.y)
-                        continue;
-                    const float l = denoise_luminance(color[qy * (int)size.x + qx].xyz);
-                    sum += l;
-                    sum2 += l * l;
-                    count += 1.0f;
-                }
+                for (int dx = wx; dx <= wx + 2; ++dx)
+                    if (l[dy][dx] > -INFINITY) {
+                        sum += l[dy][dx];
+                        count += 1.0f;
+                    }
             const float mean = sum / count; /* the pixel itself is in every window */
-            least = fmin(least, fmax(sum2 / count - mean * mean, 0.0f));
+            float squares = 0.0f;
+            for (int dy = wy; dy <= wy + 2; ++dy)
+                for (int dx = wx; dx <= wx + 2; ++dx)
+                    if (l[dy][dx] > -INFINITY)
+                        squares += (l[dy][dx] - mean) * (l[dy][dx] - mean);
+            least = fmin(least, squares / count);
         }
     variance[y * (int)size.x + x] = least;
 }
@@ -135,21 +146,26 @@ __kernel void denoise_clamp(__global const float4 *in, uint2 size, float k, __gl
     if (x >= (int)size.x || y >= (int)size.y)
         return;
     const int w = (int)size.x;
-    float s = 0.0f, s2 = 0.0f, n = 0.0f;
+    float around[8]; /* the neighbours' luminance */
+    int n = 0;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             const int qx = x + dx, qy = y + dy;
             if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= w || qy >= (int)size.y)
                 continue;
-            const float l = denoise_luminance(in[qy * w + qx].xyz);
-            s += l;
-            s2 += l * l;
-            n += 1.0f;
+            around[n++] = denoise_luminance(in[qy * w + qx].xyz);
         }
     const float4 c = in[y * w + x];
     const float l = denoise_luminance(c.xyz);
-    const float mean = n > 0.0f ? s / n : l;
-    const float bound = mean + k * sqrt(fmax(n > 0.0f ? s2 / n - mean * mean : 0.0f, 0.0f));
+    float sum = 0.0f, squares = 0.0f;
+    for (int i = 0; i < n; ++i)
+        sum += around[i];
+    const float mean = n > 0 ? sum / (float)n : l;
+    /* squared deviations from the mean: no cancellation where the
+     * neighbours are nearly alike */
+    for (int i = 0; i < n; ++i)
+        squares += (around[i] - mean) * (around[i] - mean);
+    const float bound = mean + k * sqrt(n > 0 ? squares / (float)n : 0.0f);
     out[y * w + x] = k > 0.0f && l > bound ? (float4)(c.xyz * (bound / l), c.w) : c;
 }
 

@@ -56,16 +56,20 @@ __kernel void photon_reorder(__global const float4 *records, __global const uint
     sorted[3u * j + 2u] = records[3u * i + 2u];
 }
 
-/* ranges zeroed before. */
-__kernel void photon_ranges(__global const uint *keys, uint count, __global uint2 *ranges) {
+/* ranges (a key's [first, end) as two uints) zeroed before. A key's first
+ * and end are written by different work-items, so each writes its own
+ * uint: a store to one component of a uint2 may be compiled as a load and a
+ * store of the whole pair (NVIDIA's OpenCL does), which loses the other's
+ * write. */
+__kernel void photon_ranges(__global const uint *keys, uint count, __global uint *ranges) {
     const uint i = get_global_id(0);
     if (i >= count)
         return;
     const uint key = keys[i];
     if (i == 0u || keys[i - 1u] != key)
-        ranges[key].x = i;
+        ranges[2u * key] = i;
     if (i == count - 1u || keys[i + 1u] != key)
-        ranges[key].y = i + 1u;
+        ranges[2u * key + 1u] = i + 1u;
 }
 
 /* For checks: the photons within radius of each query point, as the

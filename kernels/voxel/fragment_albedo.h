@@ -12,6 +12,7 @@
 #include "accel/tri_nearest.h"
 #include "scene/bsdf.h"
 #include "scene/texture.h"
+#include "scene/tri_normal.h"
 #include "vct_types.h"
 
 #define FRAGMENT_ALBEDO_SIDE 8
@@ -30,7 +31,7 @@ inline float3 fragment_albedo_sum(const texture_view *tv, const vct_material_des
                                   float3 a, float3 b, float3 c, float3 centre, float voxel,
                                   uint *inside, float *coverage) {
     *inside = 0u;
-    const float3 cr = cross(b - a, c - a);
+    const float3 cr = tri_normal(a, b, c);
     const float len = length(cr);
     const uint texture = (uint)m->extra.y;
     if (texture == 0u || !(len > 0.0f)) {

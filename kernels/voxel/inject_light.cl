@@ -28,6 +28,7 @@
 #include "light/light_bins.h"
 #include "voxel/octree.h"
 #include "voxel/voxel_carry.h"
+#include "scene/tri_normal.h"
 #include "voxel/voxel_side.h"
 #include "vct_types.h"
 
@@ -195,7 +196,7 @@ inline uint fragment_enclosed(__global const float4 *tri_vertices,
         const uint t = fragment_tri[k];
         const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
                      c = tri_vertices[3u * t + 2u].xyz;
-        const float3 cr = cross(b - a, c - a);
+        const float3 cr = tri_normal(a, b, c);
         const float len = length(cr);
         if (!(len > 0.0f) || fabs(dot(cr / len, n)) < ENCLOSED_PARALLEL)
             continue;
@@ -271,7 +272,7 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         const uint t = fragment_tri[f];
         const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
                      c = tri_vertices[3u * t + 2u].xyz;
-        const float3 cr = cross(b - a, c - a);
+        const float3 cr = tri_normal(a, b, c);
         const float len = length(cr);
         if (!(len > 0.0f))
             continue; /* zero area: never hit, never lit */

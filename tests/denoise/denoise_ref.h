@@ -122,7 +122,7 @@ static void ref_atrous(const ref_px *in, const ref_px *nd, const ref_px *albedo,
 static void ref_clamp(const ref_px *in, int w, int h, float k, ref_px *out) {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            float s = 0, s2 = 0, n = 0;
+            double s = 0, s2 = 0, n = 0; /* in double: no cancellation below */
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     if ((!dx && !dy) || !ref_inside(w, h, x + dx, y + dy))
@@ -135,8 +135,8 @@ static void ref_clamp(const ref_px *in, int w, int h, float k, ref_px *out) {
                 }
             const ref_px c = in[y * w + x];
             const float l = ref_lum(c.r, c.g, c.b);
-            const float mean = n > 0 ? s / n : l;
-            const float bound = mean + k * sqrtf(fmaxf(n > 0 ? s2 / n - mean * mean : 0.0f, 0.0f));
+            const double mean = n > 0 ? s / n : l;
+            const float bound = (float)(mean + k * sqrt(fmax(n > 0 ? s2 / n - mean * mean : 0, 0)));
             const float f = k > 0 && l > bound ? bound / l : 1.0f;
             out[y * w + x] = f < 1.0f ? (ref_px){c.r * f, c.g * f, c.b * f, c.w} : c;
         }
@@ -246,7 +246,7 @@ static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px 
                 v = INFINITY;
                 for (int wy = -2; wy <= 0; wy += 2)
                     for (int wx = -2; wx <= 0; wx += 2) {
-                        float s = 0, s2 = 0, cnt = 0;
+                        double s = 0, s2 = 0, cnt = 0; /* in double: no cancellation */
                         for (int dy = wy; dy <= wy + 2; ++dy)
                             for (int dx = wx; dx <= wx + 2; ++dx) {
                                 if (!ref_inside(w, h, x + dx, y + dy))
@@ -257,8 +257,8 @@ static void ref_denoise(const ref_px *color, const ref_px *albedo, const ref_px 
                                 s2 += l * l;
                                 cnt += 1.0f;
                             }
-                        const float mean = s / cnt;
-                        v = fminf(v, fmaxf(s2 / cnt - mean * mean, 0.0f));
+                        const double mean = s / cnt;
+                        v = fminf(v, (float)fmax(s2 / cnt - mean * mean, 0.0));
                     }
             }
             const float ar = ref_safe(albedo[i].r), ag = ref_safe(albedo[i].g),

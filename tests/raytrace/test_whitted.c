@@ -365,7 +365,10 @@ static void check_subsampling(void) {
             }
         }
     const uint64_t lattice = (uint64_t)((W - 1 + N - 1) / N + 1) * ((H - 1 + N - 1) / N + 1);
-    CHECK(worst < 1e-6 && traced == lattice,
+    /* 1e-5: a few float roundings, which devices that fuse a * b + c (and
+     * NVIDIA's does) place differently; a wrong corner or weight is off by
+     * the light's change across a square: up to 5 times its value here. */
+    CHECK(worst < 1e-5 && traced == lattice,
           "subsampled plane: %.3g from the bilinear interpolation, %llu pixels traced (%llu "
           "corners)",
           worst, (unsigned long long)traced, (unsigned long long)lattice);

@@ -74,8 +74,54 @@ static void check_argument_names(void) {
     vct_context_release(ctx);
 }
 
+/* The 1-based line of text's first line holding `probe` (0: none). */
+static int line_of(const char *text, const char *probe) {
+    const char *at = strstr(text, probe);
+    if (!at)
+        return 0;
+    int line = 1;
+    for (const char *p = text; p < at; ++p)
+        line += *p == '\n';
+    return line;
+}
+
+/* A compiler that ignores #line (NVIDIA's) counts the lines of the expanded
+ * source: "<kernel>:LINE:" in its log must come out as the kernel file and
+ * its own line, for a line of the program's file and one of a header it
+ * includes; other text is left as it is. */
+static void check_log_locations(void) {
+    vct_error err = {0};
+    char *expanded = vct_kernel_source_expand("render/raycast.cl", &err);
+    REQUIRE_OK(expanded ? VCT_OK : err.status, err);
+    const char *probes[][2] = {{"render/raycast.cl", "__kernel void trace_rays("},
+                               {"accel/accel.h", "inline int surface_hit("}};
+    for (int i = 0; i < 2; ++i) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/kernels/%s", getenv("VCT_SOURCE_DIR"), probes[i][0]);
+        char *original = vct_read_file(path, NULL);
+        const int at = line_of(expanded, probes[i][1]);
+        const int want = original ? line_of(original, probes[i][1]) : 0;
+        if (!(at > 0 && want > 0)) {
+            CHECK(0, "%s: not found in %s or in the expanded source", probes[i][1], path);
+            free(original);
+            continue;
+        }
+        char log[256], expect[256];
+        snprintf(log, sizeof log, "<kernel>:%d:7: error: x\n<a> <kernel>:y: z", at);
+        snprintf(expect, sizeof expect, "%s:%d:7: error: x\n<a> <kernel>:y: z", probes[i][0], want);
+        char *located = vct_kernel_log_locate(log, expanded);
+        CHECK(located && strcmp(located, expect) == 0,
+              "log \"%s\" located as \"%s\", expected \"%s\"", log, located ? located : "(null)",
+              expect);
+        free(located);
+        free(original);
+    }
+    free(expanded);
+}
+
 int main(void) {
     check_status_names();
+    check_log_locations();
     char cache[] = "/tmp/vct-cache-test-XXXXXX";
     if (!mkdtemp(cache))
         return 1;

@@ -209,3 +209,55 @@ char *vct_kernel_source_expand(const char *file, vct_error *err) {
     }
     return out.data;
 }
+
+/* The file and line of an expanded source's line `line` (1-based): the last
+ * #line marker before it, counted on from there ("?" without one). */
+static void expanded_origin(const char *source, long line, char *file, size_t cap, long *origin) {
+    snprintf(file, cap, "?");
+    *origin = 0;
+    long at = 1;
+    for (const char *p = source; *p && at <= line; ++at) {
+        long n;
+        char name[256];
+        if (sscanf(p, "#line %ld \"%255[^\"]\"", &n, name) == 2) {
+            snprintf(file, cap, "%s", name);
+            *origin = n - 1; /* the marker's next line is n */
+        } else {
+            ++*origin;
+        }
+        const char *eol = strchr(p, '\n');
+        if (!eol)
+            break;
+        p = eol + 1;
+    }
+}
+
+char *vct_kernel_log_locate(const char *log, const char *source) {
+    text out = {0};
+    int ok = 1;
+    for (const char *p = log; ok && *p;) {
+        /* "<name>:LINE:" names a line of the expanded source */
+        const char *close = *p == '<' ? strchr(p, '>') : NULL;
+        char *end = NULL;
+        const long line = close && close[1] == ':' && close[2] >= '0' && close[2] <= '9' &&
+                                  !memchr(p, '\n', (size_t)(close - p))
+                              ? strtol(close + 2, &end, 10)
+                              : 0;
+        if (line > 0 && *end == ':') {
+            char file[256], located[320];
+            long origin;
+            expanded_origin(source, line, file, sizeof file, &origin);
+            snprintf(located, sizeof located, "%s:%ld", file, origin);
+            ok = text_append(&out, located, strlen(located));
+            p = end;
+        } else {
+            ok = text_append(&out, p, 1);
+            ++p;
+        }
+    }
+    if (!ok || !out.data) {
+        free(out.data);
+        return NULL;
+    }
+    return out.data;
+}

@@ -153,6 +153,12 @@ static int build_from_source(vct_context *ctx, const char *file, const char *sou
         if (log) {
             clGetProgramBuildInfo(p, ctx->device, CL_PROGRAM_BUILD_LOG, log_size, log, NULL);
             log[log_size] = '\0';
+            char *located = vct_kernel_log_locate(log, source);
+            if (located) {
+                free(log);
+                log = located;
+                log_size = strlen(log);
+            }
         }
         if (log && ctx->log) {
             char *message = malloc(log_size + 256 + strlen(options));
