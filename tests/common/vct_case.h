@@ -37,6 +37,28 @@ static inline vct_image vct_case_render_bricks(vct_context *ctx, const vct_scene
     return image;
 }
 
+/* Cone tracing as `vct render` does it by default (bounces, edge samples,
+ * sparse diffuse cones, isotropic bricks) at `res` voxels: what the
+ * accuracy goals are stated for. */
+static inline vct_image vct_case_render_default(vct_context *ctx, const vct_scene *s,
+                                                const vct_plan *plan, uint32_t res, int w, int h) {
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_voxel_options vo = {0};
+    vo.resolution = res;
+    const vct_brick_options bo = {VCT_BRICKS_AUTO, 0, 0};
+    vct_vct_options o = vct_vct_options_default(w, h);
+    vct_voxels *v = NULL;
+    REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, VCT_DEFAULT_BOUNCES, &o.cones, &v, &err),
+               err);
+    vct_image image;
+    REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &image, NULL, &err), err);
+    vct_voxels_release(v);
+    vct_accel_release(g);
+    return image;
+}
+
 /* The same with directional bricks. */
 static inline vct_image vct_case_render(vct_context *ctx, const vct_scene *s, const vct_plan *plan,
                                         uint32_t res, int w, int h, uint32_t bounces,
