@@ -1,6 +1,6 @@
 /* The frame a set of diffuse cones is laid out in about a surface's normal,
  * turned about it by an angle hashed from a seed of the point the cones
- * leave (a voxel's key; the voxel cell a camera hit lies in). With one
+ * leave (a voxel's key; the cell of 2x2x2 voxels a camera hit lies in). With one
  * frame for every point of a plane, all of them look along the same few
  * directions: a small bright patch (a spot light's pool on a floor) falls
  * into a cone at some points and between cones at others, and the gathered
