@@ -236,8 +236,12 @@ char *vct_kernel_log_locate(const char *log, const char *source) {
     text out = {0};
     int ok = 1;
     for (const char *p = log; ok && *p;) {
-        /* "<name>:LINE:" names a line of the expanded source */
-        const char *close = *p == '<' ? strchr(p, '>') : NULL;
+        /* "<name>:LINE:" names a line of the expanded source, but for the
+         * compiler's own pseudo-files ("<built-in>", "<command line>") */
+        const int pseudo = strncmp(p, "<built-in>", 10) == 0 ||
+                           strncmp(p, "<command line>", 14) == 0 ||
+                           strncmp(p, "<scratch space>", 15) == 0;
+        const char *close = *p == '<' && !pseudo ? strchr(p, '>') : NULL;
         char *end = NULL;
         const long line = close && close[1] == ':' && close[2] >= '0' && close[2] <= '9' &&
                                   !memchr(p, '\n', (size_t)(close - p))

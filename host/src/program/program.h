@@ -15,7 +15,8 @@ cl_kernel vct_kernel_create(vct_context *ctx, cl_program program, const char *na
 char *vct_kernel_source_expand(const char *file, vct_error *err);
 /* A build log whose "<name>:LINE:" locations (compilers that ignore #line,
  * as NVIDIA's does, count lines of the expanded source) name the kernel file
- * and its line instead; NULL if out of memory. */
+ * and its line instead (not the compiler's "<built-in>" and the like); NULL
+ * if out of memory. */
 char *vct_kernel_log_locate(const char *log, const char *source);
 /* Path of the kernel-binary cache directory (created on demand). */
 const char *vct_cache_dir(void);
