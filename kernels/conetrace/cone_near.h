@@ -66,7 +66,7 @@ inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint 
     int front;
     if (side_at_hit && surface_hit(g, &h, d, &hit_p, &hit_ng, &hit_n, &front))
         seen_from = hit_p + hit_n * fmax(2.0f * h.t * tan_half, 2.0f * voxel);
-    *light = cone_hit_light(CONE_POOLS_PASS, child, c, from, d, h.t, tan_half, seen_from);
+    *light = cone_hit_light(CONE_POOLS_PASS, child, c, from, d, h.t, tan_half, 1.0f, seen_from);
     *dist = h.t;
     return 1;
 }

@@ -79,6 +79,18 @@ typedef struct cone_result {
 #define SIDE_COHERENT_MIN 0.3f
 #define SIDE_COHERENT_FULL 0.7f
 
+/* A sample whose plane passes the cone's origin at the distance the cone
+ * was lifted off its surface (cone_lift), on the side the cone leaves, is
+ * that surface, which a sample beside the cone takes in edge-on: it
+ * neither lights nor hides what the cone looks for. It counts less the
+ * nearer its plane lies to that distance (none from SIDE_OWN_REACH sample
+ * spacings away), as far as its planes agree (side_coherence). Without
+ * this, the outer cones of a wall read the wall itself as a dark occluder
+ * at coarse levels (the scene suite's NRMSE 0.0996 -> 0.0988 at 128^2,
+ * 0.1101 -> 0.1093 at 256^2). A plane through the origin (a cone started
+ * inside a wall) or ahead of the cone (a wall it heads for) still stops it. */
+#define SIDE_OWN_REACH 1.0f
+
 /* How far along to the darker side a sample is seen from `dist` (volume
  * units) before its plane: 0 (before it) .. 1 (behind it); spacing: the
  * level's sample spacing in volume units. */
@@ -92,6 +104,17 @@ inline float side_facing(float facing) {
     return clamp(1.0f - SIDE_FACING_FADE * facing, 0.0f, 1.0f);
 }
 
+/* How much a sample whose plane passes `dist` (volume units) from a cone's
+ * origin lifted `lift` off its surface is that surface: 1 at the lift, 0
+ * from SIDE_OWN_REACH sample spacings away from it; 0 for lift < 0 and for
+ * a plane the cone heads for (`facing`: the cone's direction along the
+ * plane's normal, of the other sign than dist). */
+inline float side_own(float dist, float facing, float lift, float spacing) {
+    return lift < 0.0f || dist * facing < 0.0f
+               ? 0.0f
+               : clamp(1.0f - fabs(fabs(dist) - lift) / (SIDE_OWN_REACH * spacing), 0.0f, 1.0f);
+}
+
 /* How much a sample of plane pl and shade sh is one surface's: planes
  * whose normals disagree count less (both weigh each voxel by its opacity
  * times how one-sided it is, voxel_side.h). */
@@ -102,11 +125,12 @@ inline float side_coherence(float4 sh, float4 pl) {
 }
 
 /* Brick b's trilinear sample at `at` ([0, 2]^3 texel units) of a level-`level`
- * node, seen by a cone travelling along d from o (volume units less 0.5);
- * spacing: the level's sample spacing in volume units. *coherence drops to
- * side_coherence where a one-sided surface's planes disagree. */
+ * node, seen by a cone travelling along d from from.xyz (volume units less
+ * 0.5), lifted from.w (volume units; < 0: a ray's hit, no lift) off its
+ * surface; spacing: the level's sample spacing in volume units. *coherence
+ * drops to side_coherence where a one-sided surface's planes disagree. */
 VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, uint level,
-                                    uint levels, float3 d, float3 o, float spacing,
+                                    uint levels, float3 d, float4 from, float spacing,
                                     float *coherence) {
 #ifdef VCT_BRICK_IMAGE
 #define CONE_POOL_READ(p) brick_sample(p, pool, b, at)
@@ -137,7 +161,7 @@ VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, u
     const float len = length(pl.xyz);
     if (!(len > 1e-6f))
         return s; /* no one-sided surface */
-    const float dist = (dot(pl.xyz, o) - pl.w) / len;
+    const float dist = (dot(pl.xyz, from.xyz) - pl.w) / len;
     const float4 shade = CONE_POOL_READ(shade_pool);
     const float coherent = side_coherence(shade, pl);
     *coherence = fmin(*coherence, coherent);
@@ -146,8 +170,9 @@ VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, u
                 back = mix(1.0f, side_facing(-facing), coherent);
     const float turn =
         dist < SIDE_TOLERANCE * spacing ? side_behind(dist, spacing) * coherent : 0.0f;
+    const float keep = 1.0f - coherent * side_own(dist, facing, from.w, spacing);
     if (!(turn > 0.0f))
-        return (float4)(s.xyz * front, s.w);        /* before the plane */
+        return keep * (float4)(s.xyz * front, s.w); /* before the plane */
     float4 dark = (float4)(s.xyz - shade.xyz, s.w); /* isotropic: itself less the shade */
 #ifdef VCT_ANISOTROPIC
     if (directional) {
@@ -157,7 +182,7 @@ VCT_INLINE float4 cone_brick_sample(CONE_POOLS, uint2 pool, uint b, float3 at, u
         dark = (w.x * dx + w.y * dy + w.z * dz) / (w.x + w.y + w.z);
     }
 #endif
-    return (float4)(mix(s.xyz * front, dark.xyz * back, turn), mix(s.w, dark.w, turn));
+    return keep * (float4)(mix(s.xyz * front, dark.xyz * back, turn), mix(s.w, dark.w, turn));
 #undef CONE_POOL_READ
 }
 
@@ -183,7 +208,7 @@ inline cone_path cone_path_root(void) {
  * one descent reads both neighbouring levels. Empty nodes read 0.
  * *coherence: the least of the levels' (cone_brick_sample), 1 to start. */
 VCT_INLINE float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child, uint levels,
-                              float3 at, float level, float3 d, float3 o, cone_path *path,
+                              float3 at, float level, float3 d, float4 from, cone_path *path,
                               float *coherence) {
     const uint coarse = (uint)level, finest = levels - 1u;
     const float f = level - (float)coarse;
@@ -210,8 +235,9 @@ VCT_INLINE float4 cone_sample(CONE_POOLS, uint2 pool, __global const uint *child
             if (b == BRICK_NULL)
                 break;
             const float3 in_cell = at * (float)(1u << l) - convert_float3(cell >> (finest - l));
-            value[l - coarse] = cone_brick_sample(CONE_POOLS_PASS, pool, b, 2.0f * in_cell, l,
-                                                  levels, d, o, 0.5f / (float)(1u << l), coherence);
+            value[l - coarse] =
+                cone_brick_sample(CONE_POOLS_PASS, pool, b, 2.0f * in_cell, l, levels, d, from,
+                                  0.5f / (float)(1u << l), coherence);
         }
     }
     path->cell = cell;
@@ -286,8 +312,9 @@ VCT_INLINE cone_result cone_trace(CONE_POOLS, __global const uint *child, const 
     const float exit = cone_volume_exit(c, origin, d);
     float t = voxel, last = 0.0f; /* last: the boundary sample's thickness */
     cone_path path = cone_path_root();
-    /* the origin as the bricks' planes measure it */
-    const float3 o = (origin - c->volume.xyz) * c->ambient.w - 0.5f;
+    /* the origin as the bricks' planes measure it, and its lift */
+    const float4 from =
+        (float4)((origin - c->volume.xyz) * c->ambient.w - 0.5f, c->march.y / (float)c->res.x);
     for (uint i = 0; i < CONE_MAX_STEPS && t <= max_t; ++i) {
         const float3 at = (origin + t * d - c->volume.xyz) * c->ambient.w;
         if (any(at < 0.0f) || any(at >= 1.0f)) {
@@ -305,7 +332,7 @@ VCT_INLINE cone_result cone_trace(CONE_POOLS, __global const uint *child, const 
         const int follows = level > 0.0f;
 #endif
         float coherence = 1.0f; /* the march decides by its origin alone */
-        const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, o,
+        const float4 s = cone_sample(CONE_POOLS_PASS, c->res.zw, child, levels, at, level, d, from,
                                      &path, &coherence);
         const float step = c->march.x * diameter;
         /* Where the level follows the diameter, the samples are D / 2 apart

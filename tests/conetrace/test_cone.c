@@ -72,17 +72,20 @@ static void pyramid_free(ref_pyramid *p) {
 }
 
 /* How far a sample of level `level` at lattice point lp is seen from its
- * darker side by a cone from o (volume units less 0.5) along d, its shade,
- * and how much of its brighter (*front) and darker (*back) side the cone
- * sees by the way it heads: cone_trace.h's rule, written out. */
-static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3], const double o[3],
+ * darker side by a cone from o (volume units less 0.5; o[3] how far it was
+ * lifted off its surface, < 0 for none) along d, its shade, how much of its
+ * brighter (*front) and darker (*back) side the cone sees by the way it
+ * heads, and how much of it counts (*keep: less where its plane lies within
+ * a sample spacing of the lift, the cone's own surface): cone_trace.h's
+ * rule, written out. */
+static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3], const double o[4],
                        const double d[3], double shade[4], double *front, double *back,
-                       double *coherence) {
+                       double *coherence, double *keep) {
     double pl[4];
     ref_trilinear(&p->plane[level], lp, pl);
     for (int k = 0; k < 4; ++k)
         shade[k] = 0.0;
-    *front = *back = 1.0;
+    *front = *back = *keep = 1.0;
     *coherence = 1.0;
     const double len = sqrt(pl[0] * pl[0] + pl[1] * pl[1] + pl[2] * pl[2]);
     if (!(len > 1e-6))
@@ -96,16 +99,18 @@ static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3],
     const double facing = (pl[0] * d[0] + pl[1] * d[1] + pl[2] * d[2]) / len;
     *front = 1.0 + coherent * (fmin(fmax(1.0 - 2.0 * facing, 0.0), 1.0) - 1.0);
     *back = 1.0 + coherent * (fmin(fmax(1.0 + 2.0 * facing, 0.0), 1.0) - 1.0);
+    if (o[3] >= 0.0 && dist * facing >= 0.0) /* not a plane it heads for */
+        *keep = 1.0 - coherent * fmin(fmax(1.0 - fabs(fabs(dist) - o[3]) / spacing, 0.0), 1.0);
     const double behind = fmin(fmax(0.5 - dist / (2.0 * tolerance * spacing), 0.0), 1.0);
     return dist < tolerance * spacing ? behind * coherent : 0.0;
 }
 
 /* A level's value at volume point at ([0,1)^3) seen along d from o (volume
- * units less 0.5), 0 in nodes without a brick; *coherence (when given): its
+ * units less 0.5, and its lift: ref_turn), 0 in nodes without a brick; *coherence (when given): its
  * one-sided planes' agreement, 1 where it has none. */
 static void ref_level_sample_coherence(const brick_case *c, const ref_pyramid *p, int directional,
                                        uint32_t level, const double at[3], const double d[3],
-                                       const double o[3], double out[4], double *coherence) {
+                                       const double o[4], double out[4], double *coherence) {
     double unused;
     if (!coherence)
         coherence = &unused;
@@ -122,15 +127,16 @@ static void ref_level_sample_coherence(const brick_case *c, const ref_pyramid *p
     const uint32_t node = node_at(c, cell, level);
     if (node == VCT_NODE_NULL || c->child[node] == VCT_NODE_NULL)
         return;
-    double shade[4], front, back, coherent;
-    const double turn = ref_turn(p, level, lp, o, d, shade, &front, &back, &coherent);
+    double shade[4], front, back, coherent, keep;
+    const double turn = ref_turn(p, level, lp, o, d, shade, &front, &back, &coherent, &keep);
     if (!directional || level + 1 >= p->levels) {
         ref_trilinear(&p->iso[level], lp, out);
         if (!(out[3] > 0.0))
             return; /* empty: no side to see */
         *coherence = coherent;
         for (int k = 0; k < 3; ++k)
-            out[k] = (1.0 - turn) * front * out[k] + turn * back * (out[k] - shade[k]);
+            out[k] = keep * ((1.0 - turn) * front * out[k] + turn * back * (out[k] - shade[k]));
+        out[3] *= keep;
         return;
     }
     const double w[3] = {d[0] * d[0], d[1] * d[1], d[2] * d[2]};
@@ -147,13 +153,15 @@ static void ref_level_sample_coherence(const brick_case *c, const ref_pyramid *p
                       (w[0] + w[1] + w[2]);
         opacity += w[axis] * s[3] / (w[0] + w[1] + w[2]);
     }
+    for (int k = 0; k < 4; ++k)
+        out[k] *= keep;
     if (opacity > 0.0)
         *coherence = coherent;
 }
 
 static void ref_level_sample(const brick_case *c, const ref_pyramid *p, int directional,
                              uint32_t level, const double at[3], const double d[3],
-                             const double o[3], double out[4]) {
+                             const double o[4], double out[4]) {
     ref_level_sample_coherence(c, p, directional, level, at, d, o, out, NULL);
 }
 
@@ -179,9 +187,10 @@ static ref_cone ref_march(const brick_case *c, const ref_pyramid *p, int directi
             exit = fmin(exit, (lo - o[k]) / d[k]);
     }
     double t = voxel, last = 0.0; /* last: the final sample's thickness */
-    double from[3];               /* the origin as the bricks' planes measure it */
+    double from[4];               /* the origin as the bricks' planes measure it, and its lift */
     for (int k = 0; k < 3; ++k)
         from[k] = (o[k] - c->info.origin[k]) / side - 0.5;
+    from[3] = s->offset / c->info.resolution;
     for (int i = 0; i < 4096 && t <= reach; ++i) {
         double at[3];
         int outside = 0;
@@ -593,7 +602,7 @@ static int ref_near(const brick_case *c, const ref_pyramid *p, const vct_cone_se
     const double finest = c->info.levels - 1.0, min_d = 2.0 * voxel;
     const double level =
         fmin(fmax(finest - log2(fmax(2.0 * t * tan_half, min_d) / min_d), 0.0), finest);
-    double at[3], o[3];
+    double at[3], o[4] = {0, 0, 0, -1.0}; /* a ray's hit: no lift */
     for (int k = 0; k < 3; ++k) {
         at[k] = fmin(fmax((from[k] + t * d[k] - c->info.origin[k]) / side, 0.0), 0.99999);
         o[k] = (from[k] - c->info.origin[k]) / side - 0.5;
