@@ -3,17 +3,18 @@
 # (scenes/suite/make_suite.py), then runs bench/accuracy --quick on each scene
 # (the ray caster, the path tracer from 1 spp up, cone tracing at its default
 # and with dense diffuse, photon mapping progressive, fixed and with final
-# gathering, each against a 2048-spp reference of another seed,
-# or what suite.txt gives the scene), and bench/denoised_rows.py on it (the
+# gathering, each against an 8192-spp reference of another seed,
+# or what suite.txt gives the scene; at 2048 spp the noisiest references
+# held 6 % NRMSE of their own, which every method's error took in), and bench/denoised_rows.py on it (the
 # path tracer at 1 to 64 spp denoised by the engine's filter and by OIDN),
 # and gathers one table: out/suite/table.md, the page doc/results/suite.md
 # with the README's summary of it, and the error-time plot of every scene
 # (bench/suite_plot.py, doc/results/suite_front.png). References stay under out/suite.
-# usage: bench/suite.sh [SIZE] [REFERENCE_SPP]   (default 128 2048)
+# usage: bench/suite.sh [SIZE] [REFERENCE_SPP]   (default 128 8192)
 set -eu
 cd "$(dirname "$0")/.."
 SIZE=${1:-128}
-REF_SPP=${2:-2048}
+REF_SPP=${2:-8192}
 export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
 export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
 tools/python.sh scenes/suite/make_suite.py >/dev/null
@@ -24,13 +25,21 @@ grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
     [ -n "$name" ] || continue
     out=out/suite/$name
     mkdir -p "$out"
+    # a reference is kept while it has the samples asked for (reference.spp)
+    spp=$(echo "$extra" | grep -o -- '--reference-spp [0-9]*' | awk '{ print $2 }')
+    spp=${spp:-$REF_SPP}
     ref=""
-    [ -f "$out/reference.pfm" ] && ref="--reference $out/reference.pfm"
+    if [ -f "$out/reference.pfm" ] && [ "$(cat "$out/reference.spp" 2>/dev/null)" = "$spp" ]; then
+        ref="--reference $out/reference.pfm"
+    else
+        rm -f "$out/reference.pfm" "$out/reference.spp"
+    fi
     echo "== $name" >&2
     # shellcheck disable=SC2086
     ./build/bench/accuracy "scenes/suite/$file" --quick --size "$SIZE" "$SIZE" \
         --reference-spp "$REF_SPP" --max-spp 1024 --pm --out "$out" $ref $extra >/dev/null ||
         echo "suite: $name failed; the table goes on without it" >&2
+    [ -n "$ref" ] || [ ! -f "$out/reference.pfm" ] || echo "$spp" >"$out/reference.spp"
     # the path tracer denoised by the engine's filter and by OIDN
     ambient=$(echo "$extra" | grep -o -- '--ambient [0-9. ]*' || true)
     # shellcheck disable=SC2086
@@ -50,7 +59,7 @@ tools/python.sh bench/suite_plot.py out/suite scenes/suite/suite.txt doc/results
     echo "$stamp"
     echo
     echo "Each scene of \`scenes/suite/suite.txt\` at ${SIZE}x${SIZE}, against a path-traced reference of"
-    echo "$REF_SPP samples per pixel (another seed). NRMSE is the RMSE over all pixels and channels over"
+    echo "$REF_SPP samples per pixel (another seed; fewer where suite.txt says so). NRMSE is the RMSE over all pixels and channels over"
     echo "the reference's mean; device ms is the sum of the stages' device time: the acceleration"
     echo "structure, the voxels and their light, and the image; for a denoised path tracer, the"
     echo "guides and the filter too (OIDN's: its filter call on the same CPU). The last columns are"
