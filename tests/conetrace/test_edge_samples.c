@@ -530,6 +530,72 @@ static void facets(void) {
     vct_scene_release(s);
 }
 
+/* Bars thinner than a pixel against the empty sky, like a blind's slats in
+ * a window, lit head-on: in every group of five pixel rows a bar 0.3 rows
+ * thick covers the first row's centre, and four more cross the other rows
+ * between their centres. Rows two away from the one whose centres meet a
+ * bar have no centre on a bar within the 3 x 3 pixels around, and were
+ * shown as pure sky (off by 0.3 of the bars' light): a surface against a
+ * miss within two pixels is an edge. Each pixel a bar crosses must show
+ * the bars' light times the share of it they cover, within a tenth of the
+ * light (the rays of an edge of high contrast step by 1/8 of a row). */
+static void thin_bars(void) {
+    enum { GROUPS = 6, PER = 5, BARS = GROUPS * PER + 1 }; /* and a first bar below them */
+    const float pixel = 2.0f * 5.0f * tanf(20.0f * 3.14159265f / 180.0f) / H;
+    /* each bar's top in rows from a group's first row, 0.3 rows thick */
+    const float top[PER] = {0.35f, 1.05f, 2.6f, 3.1f, 4.6f};
+    float quads[12 * BARS];
+    uint32_t quad_material[BARS] = {0};
+    for (int k = 0; k < BARS; ++k) {
+        const float row = 1.0f + (float)(PER * (k / PER)) + top[k % PER]; /* from the top */
+        const float y1 = (0.5f * H - row) * pixel, y0 = y1 - 0.3f * pixel;
+        const float q[12] = {-3, y0, 0, 3, y0, 0, 3, y1, 0, -3, y1, 0};
+        memcpy(quads + 12 * k, q, sizeof q);
+    }
+    vct_material m = vct_material_default();
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.8f;
+    vct_scene *s = scene_of(quads, BARS, quad_material, &m, 1);
+    s->camera = (vct_camera){{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40.0f};
+    const vct_light sun = {
+        VCT_LIGHT_DIRECTIONAL, {0}, {0, 0, -1}, {3.14159265f, 3.14159265f, 3.14159265f}, 0, 0, 0};
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
+    vct_plan plan;
+    vct_case_direct_plan(s, &plan);
+    int crossed[2] = {0, 0}, off[2] = {0, 0};
+    double worst[2] = {0.0, 0.0};
+    for (uint32_t n = 1; n <= N; n += N - 1) {
+        vct_image im = render_vct(s, &plan, W, H, n, NULL);
+        const int i = n == N;
+        for (int y = 0; y < H; ++y) {
+            /* the share of row y the bars cover (a plane facing a pinhole
+             * camera maps to the image affinely) */
+            double share = 0.0;
+            for (int k = 0; k < BARS; ++k) {
+                const double r0 = 1.0 + PER * (k / PER) + top[k % PER];
+                share += fmax(0.0, fmin(y + 1.0, r0 + 0.3) - fmax((double)y, r0));
+            }
+            if (share <= 0.0)
+                continue;
+            for (int x = 0; x < W; ++x) {
+                const double e = fabs(im.rgba[4 * (y * W + x) + 1] - 0.8 * share) / 0.8;
+                ++crossed[i];
+                off[i] += e > 0.1;
+                worst[i] = fmax(worst[i], e);
+            }
+        }
+        vct_image_release(&im);
+    }
+    CHECK(crossed[1] == 31 * W && off[1] == 0 && off[0] > crossed[0] / 2,
+          "thin bars against the sky: %d of %d pixels a bar crosses off its share of the light "
+          "by more than a tenth of it (worst %.3f); with one ray per pixel %d of %d",
+          off[1], crossed[1], worst[1], off[0], crossed[0]);
+    printf("thin bars against the sky: %d pixels crossed, worst off by %.4f of the light (one "
+           "ray per pixel: %d off, worst %.4f)\n",
+           crossed[1], worst[1], off[0], worst[0]);
+    vct_scene_release(s);
+}
+
 int main(void) {
     ctx = check_context();
     too_many_rays();
@@ -539,6 +605,7 @@ int main(void) {
     emitter_border();
     shadow_edge();
     facets();
+    thin_bars();
     vct_context_release(ctx);
     return check_exit("test_edge_samples");
 }
