@@ -7,7 +7,7 @@
  * and below it: the finer of the two writes it last. A band therefore also
  * renders the square above it and the corner row below it. Sparse cone
  * tracing fills odd rows from the even row below. Cone tracing finds edges
- * by comparing a pixel with the rows above and below it. */
+ * by comparing a pixel with the two rows above and below it. */
 void vct_band_shape(const vct_render_job *job, int *align, int *above, int *below) {
     uint32_t subsample = 0;
     if (job->method == VCT_METHOD_WHITTED)
@@ -20,7 +20,9 @@ void vct_band_shape(const vct_render_job *job, int *align, int *above, int *belo
     else if (job->method == VCT_METHOD_VCT && job->vct.sparse_diffuse)
         *align = 2, *below = 2;
     if (job->method == VCT_METHOD_VCT && job->vct.edge_samples != 1) {
-        *above = *above > *align ? *above : *align; /* keeps the sparse rows' parity */
-        *below = *below > 1 ? *below : 1;
+        /* the edge search reads the centres within two rows (a multiple of
+         * the alignment, which keeps the sparse rows' parity) */
+        *above = *above > 2 ? *above : 2;
+        *below = *below > 2 ? *below : 2;
     }
 }
