@@ -5,8 +5,9 @@
 # and with dense diffuse, photon mapping progressive, fixed and with final
 # gathering, each against an 8192-spp reference of another seed,
 # or what suite.txt gives the scene; at 2048 spp the noisiest references
-# held 6 % NRMSE of their own, which every method's error took in), and bench/denoised_rows.py on it (the
-# path tracer at 1 to 64 spp denoised by the engine's filter and by OIDN),
+# held 6 % NRMSE of their own, which every method's error took in), and
+# bench/denoised_rows.py on it (the path tracer at 1 to 64 spp denoised by
+# the engine's filter and by OIDN),
 # and gathers one table: out/suite/table.md, the page doc/results/suite.md
 # with the README's summary of it, and the error-time plot of every scene
 # (bench/suite_plot.py, doc/results/suite_front.png). References stay under out/suite.
@@ -59,10 +60,11 @@ tools/python.sh bench/suite_plot.py out/suite scenes/suite/suite.txt doc/results
     echo "$stamp"
     echo
     echo "Each scene of \`scenes/suite/suite.txt\` at ${SIZE}x${SIZE}, against a path-traced reference of"
-    echo "$REF_SPP samples per pixel (another seed; fewer where suite.txt says so). NRMSE is the RMSE over all pixels and channels over"
-    echo "the reference's mean; device ms is the sum of the stages' device time: the acceleration"
-    echo "structure, the voxels and their light, and the image; for a denoised path tracer, the"
-    echo "guides and the filter too (OIDN's: its filter call on the same CPU). The last columns are"
+    echo "$REF_SPP samples per pixel (another seed; fewer where suite.txt says so). NRMSE is the RMSE"
+    echo "over all pixels and channels over the reference's mean; device ms is the sum of the"
+    echo "stages' device time: the acceleration structure, the voxels and their light, and the"
+    echo "image; for a denoised path tracer, the guides and the filter too (OIDN's: its filter"
+    echo "call on the same CPU). The last columns are"
     echo "the time the path tracer needs for the same error, read between its sample counts (1 to"
     echo "1024 spp; denoised, 1 to 64 spp): as it is, denoised by the engine's filter, and by OIDN."
     echo

@@ -68,9 +68,9 @@ inline float2 cone_rest_offset(uint k) {
 /* The voxels' light where a ray from `from` along unit d met the scene at
  * distance t: the sample there at `footprint` times the diameter a cone of
  * aperture tan_half has at that distance (1: the level cone_trace would
- * read), seen from
- * `seen_from` (the side of its plane that point lies on, voxel_side.h),
- * un-premultiplied where the half floats still hold it (0 elsewhere).
+ * read), seen from `seen_from` (the side of its plane that point lies on,
+ * voxel_side.h), un-premultiplied where the half floats still hold it (0
+ * elsewhere).
  * A coarse sample takes in surfaces far from the hit: in a closed room,
  * walls on both sides of its cell, whose one-sided planes then disagree, so
  * that it cannot tell the side the ray comes from and shows the brighter

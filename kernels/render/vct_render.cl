@@ -194,12 +194,13 @@ __kernel void vct_edge_flags(__global const float4 *gbuf, __global const uint *k
             if (nx < 0 || ny < 0 || nx >= (int)size.x || ny >= (int)size.y)
                 continue;
             const uint q = (uint)ny * size.x + (uint)nx;
-            const int emits = gbuf[GBUF_SLOTS * q + 1u].w != 0.0f &&
-                              any(materials[as_uint(gbuf[GBUF_SLOTS * q].w)].emission.xyz > 0.0f);
+            const int surface = gbuf[GBUF_SLOTS * q + 1u].w != 0.0f;
+            const int emits =
+                surface && any(materials[as_uint(gbuf[GBUF_SLOTS * q].w)].emission.xyz > 0.0f);
             glow |= emits;
             dark |= !emits;
             /* a surface and a miss: sub-pixel geometry against the sky */
-            sky_edge |= keys[q] != key && (n.w == 0.0f || gbuf[GBUF_SLOTS * q + 1u].w == 0.0f);
+            sky_edge |= keys[q] != key && (n.w == 0.0f || !surface);
             if (abs(dx) <= 1 && abs(dy) <= 1) {
                 const float shade = gbuf[GBUF_SLOTS * q + 4u].w;
                 lo = fmin(lo, shade);

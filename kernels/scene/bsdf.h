@@ -57,8 +57,13 @@ inline int is_dielectric(const vct_material_desc *m) {
     return m->specular.w > 0.0f;
 }
 
+/* A glossy lobe of probability pg that is an ideal mirror. */
+inline int mirror_lobe(const vct_material_desc *m, float pg) {
+    return pg > 0.0f && m->emission.w < VCT_MIRROR_ROUGHNESS;
+}
+
 inline int is_mirror(const vct_material_desc *m) {
-    return glossy_probability(m) > 0.0f && m->emission.w < VCT_MIRROR_ROUGHNESS;
+    return mirror_lobe(m, glossy_probability(m));
 }
 
 /* Only delta lobes (glass, a pure mirror): nothing for next-event
@@ -82,7 +87,7 @@ inline float3 bsdf_eval(const vct_material_desc *m, float3 n, float3 wo, float3 
     const float pg = glossy_probability(m);
     float3 f = diffuse_color(m) * (cos_i / BSDF_PI);
     float pdf_d = cos_i / BSDF_PI, pdf_g = 0.0f;
-    if (pg > 0.0f && !is_mirror(m)) {
+    if (pg > 0.0f && !mirror_lobe(m, pg)) {
         const float e = phong_exponent(m->emission.w);
         const float ca = fmax(dot(reflect_dir(wo, n), wi), 0.0f);
         const float lobe = pow_unit(ca, e) * (e + 1.0f) / (2.0f * BSDF_PI);
@@ -126,7 +131,7 @@ inline int bsdf_sample_dir(const vct_material_desc *m, float3 n, float3 wo, int 
         return 1;
     }
     const float pg = glossy_probability(m);
-    const int mirror = pg > 0.0f && m->emission.w < VCT_MIRROR_ROUGHNESS;
+    const int mirror = mirror_lobe(m, pg);
     if (mirror) {
         /* A mirror may still have a diffuse part: choose the lobe. */
         if (u0 < pg) {

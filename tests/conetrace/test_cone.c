@@ -106,8 +106,9 @@ static double ref_turn(const ref_pyramid *p, uint32_t level, const double lp[3],
 }
 
 /* A level's value at volume point at ([0,1)^3) seen along d from o (volume
- * units less 0.5, and its lift: ref_turn), 0 in nodes without a brick; *coherence (when given): its
- * one-sided planes' agreement, 1 where it has none. */
+ * units less 0.5, and its lift: ref_turn), 0 in nodes without a brick;
+ * *coherence (when given): its one-sided planes' agreement, 1 where it has
+ * none. */
 static void ref_level_sample_coherence(const brick_case *c, const ref_pyramid *p, int directional,
                                        uint32_t level, const double at[3], const double d[3],
                                        const double o[4], double out[4], double *coherence) {
