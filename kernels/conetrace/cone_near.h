@@ -32,6 +32,9 @@
 /* The least normal component of a cone's axis the shift assumes (the
  * presets' cones have 0.5 or more). */
 #define CONE_ORIGIN_MIN_UP 0.25f
+/* How far (voxels) along its side's normal a voxel's near rays tell the
+ * side they see from. */
+#define NEAR_SIDE_LIFT 0.1f
 
 inline float3 cone_camera_origin(const vct_cone_desc *c, float3 p, float3 n, float3 d) {
     const float3 on_axis = p + d * (cone_lift(c) / fmax(dot(d, n), CONE_ORIGIN_MIN_UP));
@@ -61,7 +64,10 @@ inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint 
     hit_record h;
     if (!accel_trace(g, from, d, 0.0f, reach, 0, &h))
         return 0;
-    float3 seen_from = from;
+    /* a voxel's plane point lies inside a slab one voxel thick (a roof lit
+     * on top), on its own plane: seen from there, its far face sent half
+     * its light to the near side's rays */
+    float3 seen_from = from + n * NEAR_SIDE_LIFT * voxel;
     float3 hit_p, hit_ng, hit_n;
     int front;
     if (side_at_hit && surface_hit(g, &h, d, &hit_p, &hit_ng, &hit_n, &front))

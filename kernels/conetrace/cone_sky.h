@@ -102,9 +102,10 @@ inline float3 cone_hit_light(CONE_POOLS, __global const uint *child, const vct_c
 }
 
 /* r's radiance, its ambient share dropped where the ray from origin along d
- * meets geometry; with isotropic bricks, that share instead the mean of
- * what `rays` rays across the cone (1 to 9; tan_half its aperture) meet:
- * the light there, or the ambient light where they leave the scene. */
+ * meets geometry; with isotropic bricks, that share split by what `rays`
+ * rays across the cone (1 to 9; tan_half its aperture) meet: the ambient
+ * light for the share of them that leave the scene (at most that share),
+ * the mean light where the others meet it for the remainder. */
 inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const uint *child,
                                 const vct_cone_desc *c, float3 origin, float3 d, float tan_half,
                                 cone_result r, uint rays) {
@@ -121,19 +122,28 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
         return r.radiance;
     float3 t1, t2;
     basis_of(d, &t1, &t2);
-    float3 rest = (float3)(0.0f);
+    float3 met = (float3)(0.0f);
+    uint open = 0u;
     for (uint k = 0; k < rays; ++k) {
         const float2 off = cone_rest_offset(k);
         const float3 dk = normalize(d + tan_half * (off.x * t1 + off.y * t2));
         hit_record h;
         if (!accel_trace(g, origin, dk, 0.0f, INFINITY, 0, &h)) {
-            rest += c->ambient.xyz;
+            ++open;
             continue;
         }
-        rest += cone_hit_light(CONE_POOLS_PASS, child, c, origin, dk, h.t, tan_half,
-                               CONE_REST_FOOTPRINT, origin);
+        met += cone_hit_light(CONE_POOLS_PASS, child, c, origin, dk, h.t, tan_half,
+                              CONE_REST_FOOTPRINT, origin);
     }
-    return r.radiance + (1.0f - r.alpha) * (rest / (float)rays - c->ambient.xyz);
+    /* The rays' open share is the cone's view of the sky through the real
+     * geometry; the cone's own opacity already took in the occluders the
+     * rays passed, so the open share is not scaled by it a second time
+     * (a 0.8 m roof slit seen by wide cones: its sky light squared). What
+     * the rest leaves beyond the open share is what the other rays met. */
+    const float rest = 1.0f - r.alpha;
+    const float sky = fmin((float)open / (float)rays, rest);
+    const float3 beyond = open < rays ? met / (float)(rays - open) : (float3)(0.0f);
+    return r.radiance + (sky - rest) * c->ambient.xyz + (rest - sky) * beyond;
 #endif
 }
 
