@@ -144,6 +144,24 @@ __kernel void inject_bounce(ACCEL_ARGS, CONE_POOLS, __global const uint *child, 
 #define FILL_FACING 0.95f
 #define FILL_OFFSET 0.1f
 
+/* The voxel k (0 .. 11: one step +x +y +z -x -y -z, then two) away from
+ * the one at leaf node `leaf`, at cell q: through the octree's neighbour
+ * links (octree.h), two loads a step; by the sorted keys where a two-step
+ * link passes a node that does not exist. VCT_NO_VOXEL where there is none. */
+inline uint fill_neighbour(__global const uint *child, __global const uint *neighbours,
+                           __global const uint *keys, uint voxels, uint leaf, uint k, uint3 q) {
+    const uint dir = k % 6u;
+    uint node = neighbours[6u * leaf + dir];
+    if (k >= 6u) {
+        if (node == OCT_NULL) /* no node one step away: the second may still be there */
+            return carry_find(keys, voxels, morton_encode(q));
+        node = neighbours[6u * node + dir];
+    }
+    /* no node: no geometry in its parent's cell */
+    const uint u = node == OCT_NULL ? OCT_NULL : child[node];
+    return u == OCT_NULL ? VCT_NO_VOXEL : u;
+}
+
 /* sparse gathers, second pass: each voxel that did not gather takes the
  * mean of what the gathering voxels one and two steps away along the axes,
  * on its own surface, received (inject_bounce), and gathers itself where
@@ -154,7 +172,8 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
                                  __global const float4 *albedo, __global const float4 *direct,
                                  __global const float4 *direct_side,
                                  __global float4 *voxel_radiance, __global float4 *side,
-                                 uint keep_sides, __global const float4 *received) {
+                                 uint keep_sides, __global const float4 *received,
+                                 __global const uint *neighbours) {
     const accel_view acc = ACCEL_VIEW();
     const uint v = get_global_id(0);
     if (v >= voxels || !bounce_skips(keys[v]))
@@ -162,6 +181,8 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
     const float4 plane = direct_side[VCT_VOXEL_SIDE_FLOAT4S * v + 1];
     const int has_normal = any(plane.xyz != 0.0f);
     const uint3 c = morton_decode(keys[v]);
+    uint depth;
+    const uint leaf = octree_descend(child, c, cd.res.y, &depth); /* depth: res.y, a voxel's */
     const float offset = FILL_OFFSET / (float)cd.res.x;
     float3 front = (float3)(0.0f), back = (float3)(0.0f);
     uint found = 0u;
@@ -173,7 +194,7 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
         q.z += axis == 2 ? step : 0;
         if (any(q < 0) || any(q >= (int)cd.res.x))
             continue;
-        const uint u = carry_find(keys, voxels, morton_encode(convert_uint3(q)));
+        const uint u = fill_neighbour(child, neighbours, keys, voxels, leaf, k, convert_uint3(q));
         if (u == VCT_NO_VOXEL || bounce_skips(keys[u]))
             continue;
         const float4 pu = direct_side[VCT_VOXEL_SIDE_FLOAT4S * u + 1];

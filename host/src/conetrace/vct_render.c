@@ -161,7 +161,8 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
         rc = bounce_shared_args(fill, g, light, &desc, cones, diffuse_cones, v, (cl_uint)keep_sides,
                                 &at, err);
         if (rc == VCT_OK)
-            rc = vct_set_args(err, BOUNCE_STAGE, fill, at, 1, VCT_ARG_OF(received));
+            rc = vct_set_args(err, BOUNCE_STAGE, fill, at, 2, VCT_ARG_OF(received),
+                              VCT_ARG(neighbours, v->neighbours));
         if (rc == VCT_OK)
             rc = vct_launch(ctx, fill, n, 64, err);
         clReleaseKernel(fill);
