@@ -48,9 +48,9 @@ inline float3 cone_camera_origin(const vct_cone_desc *c, float3 p, float3 n, flo
  * diameter out (the camera's rays, from exact surface points: the ray's
  * origin, beside a surface that meets the one hit at an angle or off a
  * curved one, can lie on the other side of the hit voxels' plane; window
- * room 0.101 -> 0.096, dense hall 0.095 -> 0.087); 0: from the ray's
- * origin (the voxels' rays, from their planes' points: told at the hit,
- * the blinds' walls came out 1.2x too bright). */
+ * room 0.101 -> 0.096, dense hall 0.095 -> 0.087); 0: from NEAR_SIDE_LIFT
+ * voxels off the ray's origin along n (the voxels' rays, from their planes'
+ * points: told at the hit, the blinds' walls came out 1.2x too bright). */
 inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint *child,
                            const vct_cone_desc *c, float3 p, float3 n, float3 d, float tan_half,
                            int side_at_hit, float3 *light, float *dist) {
@@ -64,9 +64,10 @@ inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint 
     hit_record h;
     if (!accel_trace(g, from, d, 0.0f, reach, 0, &h))
         return 0;
-    /* a voxel's plane point lies inside a slab one voxel thick (a roof lit
-     * on top), on its own plane: seen from there, its far face sent half
-     * its light to the near side's rays */
+    /* off the origin's own plane: a voxel's plane point lies inside a slab
+     * one voxel thick (a roof lit on top), where the ray meets the near
+     * face of a voxel whose plane it sits on, which would show half the far
+     * face's light */
     float3 seen_from = from + n * NEAR_SIDE_LIFT * voxel;
     float3 hit_p, hit_ng, hit_n;
     int front;

@@ -182,7 +182,8 @@ __kernel void inject_bounce_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
     const int has_normal = any(plane.xyz != 0.0f);
     const uint3 c = morton_decode(keys[v]);
     uint depth;
-    const uint leaf = octree_descend(child, c, cd.res.y, &depth); /* depth: res.y, a voxel's */
+    /* its own leaf: the descent reaches the voxel's depth, res.y */
+    const uint leaf = octree_descend(child, c, cd.res.y, &depth);
     const float offset = FILL_OFFSET / (float)cd.res.x;
     float3 front = (float3)(0.0f), back = (float3)(0.0f);
     uint found = 0u;
