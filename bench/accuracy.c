@@ -64,8 +64,9 @@ typedef struct vct_setting {
 static const char *const build_stages[] = {
     "voxelize",        "octree build",       "brick creation", "brick filtering",
     "light injection", "radiance filtering", "light bounce",   "light bounce rest"};
-static const char *const trace_stages[] = {"vct primary", "vct soft shadows", "vct diffuse cones",
-                                           "vct specular cone", "vct glass reflection"};
+static const char *const trace_stages[] = {
+    "vct primary", "vct soft shadows",  "vct diffuse cones",   "guides",
+    "denoise",     "vct specular cone", "vct glass reflection"};
 
 static double stages_ms(const vct_context *ctx, const char *const *names, size_t n) {
     double ms = 0.0;

@@ -239,6 +239,7 @@ vct_render_job cli_render_job(const cli_options *opt, vct_method method, const v
     vo->cones = opt->cones;
     vo->sparse_diffuse = opt->sparse_diffuse;
     vo->edge_samples = (uint32_t)opt->edge_samples;
+    vo->indirect_passes = opt->denoise ? VCT_INDIRECT_PASSES_MAX : (uint32_t)opt->indirect_passes;
     vo->aovs = opt->aov;
     /* what a device scene builds for it; 128^3 voxels by default (the scene
      * suite's page shows what it costs) */

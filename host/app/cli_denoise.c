@@ -26,25 +26,11 @@ static void depth_image(const vct_image *nd, vct_image *depth) {
 int cli_denoise_image(vct_context *ctx, const vct_denoise_guides *g, const vct_image *image,
                       const vct_aovs *aovs, vct_image *out, vct_error *err) {
     const vct_denoise_options o = vct_denoise_options_default();
-    if (!aovs || !aovs->indirect.rgba)
+    if (!aovs || !aovs->indirect.rgba || !g->variance)
         return vct_denoise(ctx, image, g, &o, out, err);
-    if (g->variance) { /* the path tracer's parts */
-        vct_denoise_guides parts = *g;
-        parts.indirect = &aovs->indirect;
-        return vct_denoise(ctx, image, &parts, &o, out, err);
-    }
-    /* Cone tracing: its direct light is exact and its specular cone is not
-     * noise; only the indirect term is filtered. */
-    vct_image filtered;
-    int rc = vct_denoise(ctx, &aovs->indirect, g, &o, &filtered, err);
-    if (rc != VCT_OK)
-        return rc;
-    const size_t values = 4 * (size_t)image->width * image->height;
-    for (size_t i = 0; i < values; ++i)
-        if (i % 4 != 3)
-            filtered.rgba[i] = image->rgba[i] + (filtered.rgba[i] - aovs->indirect.rgba[i]);
-    *out = filtered;
-    return VCT_OK;
+    vct_denoise_guides parts = *g; /* the path tracer's direct and indirect parts */
+    parts.indirect = &aovs->indirect;
+    return vct_denoise(ctx, image, &parts, &o, out, err);
 }
 
 int cli_denoise_outputs(vct_context *ctx, const vct_scene *s, const vct_accel *g,
@@ -52,7 +38,9 @@ int cli_denoise_outputs(vct_context *ctx, const vct_scene *s, const vct_accel *g
                         const vct_image *variance, const vct_aovs *aovs, cli_layers *layers,
                         vct_error *err) {
     const int guide_layers = opt->aov && method != VCT_METHOD_VCT;
-    if (!opt->denoise && !guide_layers)
+    /* cone tracing's render filtered its own indirect light */
+    const int filter = opt->denoise && method != VCT_METHOD_VCT;
+    if (!filter && !guide_layers)
         return VCT_OK;
     vct_image *albedo = cli_layers_own(layers), *nd = cli_layers_own(layers);
     int rc = vct_render_guides(ctx, s, g, image->width, image->height, GUIDE_RAYS_PER_AXIS, albedo,
@@ -67,10 +55,10 @@ int cli_denoise_outputs(vct_context *ctx, const vct_scene *s, const vct_accel *g
         if (variance && variance->rgba)
             cli_layers_add(layers, "variance", variance, "Y");
     }
-    if (rc != VCT_OK || !opt->denoise)
+    if (rc != VCT_OK || !filter)
         return rc;
     const vct_denoise_guides guides = {albedo, nd, variance && variance->rgba ? variance : NULL,
-                                       NULL};
+                                       NULL, 0};
     vct_image denoised;
     rc = cli_denoise_image(ctx, &guides, image, aovs, &denoised, err);
     if (rc != VCT_OK)

@@ -43,9 +43,6 @@ static int refused(const cli_options *opt, vct_method method) {
     const char *why = NULL;
     if (opt->aov)
         why = "--aov comes from one process: render it without mpirun";
-    else if (opt->denoise && method == VCT_METHOD_VCT)
-        why = "--denoise with cone tracing filters the indirect AOV, which comes from one "
-              "process: render it without mpirun";
     else if (method == VCT_METHOD_PATHTRACE && opt->time_limit > 0.0f && opt->frames[1] < 0)
         why = "the path tracer is split by samples under MPI: give --spp, not --time";
     if (!why && method == VCT_METHOD_PM && opt->frames[1] < 0 && opt->height < cli_cluster_size())
@@ -102,9 +99,10 @@ static int render_one_frame(member *m, const char *out) {
         if (rc == VCT_OK) {
             cli_print_result(m->opt, &result);
             rc = m->group
-                     ? (m->opt->denoise ? cli_devices_denoise(m->group, m->scene, m->opt, m->method,
-                                                              &image, &variance, &parts, &err)
-                                        : VCT_OK)
+                     ? (m->opt->denoise && m->method != VCT_METHOD_VCT
+                            ? cli_devices_denoise(m->group, m->scene, m->opt, m->method, &image,
+                                                  &variance, &parts, &err)
+                            : VCT_OK)
                      : cli_denoise_outputs(m->ctx, m->scene, vct_device_scene_accel(m->ds), m->opt,
                                            m->method, &image, variance.rgba ? &variance : NULL,
                                            parts.indirect.rgba ? &parts : NULL, &layers, &err);

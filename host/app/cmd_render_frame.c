@@ -20,8 +20,7 @@ int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
     if (method == VCT_METHOD_VCT) {
         cli_vct_plan(opt, s, &plan);
         job.plan = &plan;
-        /* --denoise filters the indirect AOV */
-        job.aovs = opt->aov || opt->denoise ? &f->aovs : NULL;
+        job.aovs = opt->aov ? &f->aovs : NULL;
     }
     if (opt->denoise && method == VCT_METHOD_PATHTRACE) {
         job.pathtrace.variance = &f->variance;
@@ -39,10 +38,11 @@ int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
     if (rc == VCT_OK && opt->aov && f->aovs.indirect.rgba && method == VCT_METHOD_PATHTRACE)
         cli_layers_add(&f->layers, "indirect", &f->aovs.indirect, "RGB");
     if (rc == VCT_OK)
-        rc = cli_denoise_outputs(
-            ctx, s, vct_device_scene_accel(ds), opt, method, &f->image,
-            f->variance.rgba ? &f->variance : NULL,
-            method == VCT_METHOD_VCT || f->aovs.indirect.rgba ? &f->aovs : NULL, &f->layers, err);
+        rc = cli_denoise_outputs(ctx, s, vct_device_scene_accel(ds), opt, method, &f->image,
+                                 f->variance.rgba ? &f->variance : NULL,
+                                 f->aovs.indirect.rgba && method == VCT_METHOD_PATHTRACE ? &f->aovs
+                                                                                         : NULL,
+                                 &f->layers, err);
     if (rc != VCT_OK)
         cli_frame_release(f);
     return rc;

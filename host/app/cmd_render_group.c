@@ -82,7 +82,7 @@ int cli_devices_frame(vct_group *g, const vct_scene *s, const cli_options *opt, 
         rc = vct_group_render(g, &job, &f->image, &f->result, err);
     if (rc == VCT_OK)
         cli_print_result(opt, &f->result);
-    if (rc == VCT_OK && opt->denoise)
+    if (rc == VCT_OK && opt->denoise && method != VCT_METHOD_VCT) /* vct's render filtered */
         rc = cli_devices_denoise(g, s, opt, method, &f->image, &f->variance, &f->aovs, err);
     if (rc != VCT_OK)
         cli_frame_release(f);
@@ -106,9 +106,8 @@ static int group_frame(void *user, cli_frame *frame, vct_error *err) {
 
 int cli_render_group(const cli_options *opt, vct_scene *s, vct_method method, const char *out) {
     vct_error err = {0};
-    if (opt->aov || (opt->denoise && method == VCT_METHOD_VCT)) {
-        fprintf(stderr, "vct render: --aov, and --denoise with cone tracing (it filters the "
-                        "indirect AOV), come from one device: give --device one device\n");
+    if (opt->aov) {
+        fprintf(stderr, "vct render: --aov comes from one device: give --device one device\n");
         return 1;
     }
     vct_group *g = cli_devices_open(opt, &err);

@@ -24,10 +24,10 @@ GROUP(cli_group_output, "output", output_rows);
 static const cli_option denoise_rows[] = {
     {"denoise", 0, OPT_DENOISE, 0, NULL,
      "filter the image with the engine's denoiser, guided by the first hit's albedo, normal and "
-     "depth and (pt) each pixel's variance (vct: its indirect term alone); with --aov the noisy "
-     "image and the guides are "
-     "layers too; with several devices it runs on the first, after they have summed the frame "
-     "(the viewer: one device, N toggles it)"},
+     "depth and (pt) each pixel's variance; with --aov the noisy image and the guides are layers "
+     "too; with several devices it runs on the first, after they have summed the frame (the "
+     "viewer: one device, N toggles it). vct: its indirect light through all 5 passes "
+     "(--indirect-filter)"},
 };
 GROUP(cli_group_denoise, "denoising (pt, pm, vct)", denoise_rows);
 
@@ -134,6 +134,9 @@ static const cli_option vct_rows[] = {
     {"dense-diffuse", 0, OPT_DENSE_DIFFUSE, 0, NULL,
      "diffuse cones at every pixel (by default at every other pixel per axis, the rest filled in "
      "from traced neighbours on the same surface)"},
+    {"indirect-filter", 0, OPT_INDIRECT_FILTER, 1, "N",
+     "the indirect diffuse light through N passes of the denoiser, guided by the first hit's "
+     "albedo, normal and depth (default 2; 0: none; --denoise: 5)"},
     {"edge-samples", 0, OPT_EDGE_SAMPLES, 1, "N",
      "N x N camera rays at pixels on an edge (surface, material, hard shadow), shown as their "
      "mean; 2N x 2N where the shading on its two sides is four times apart, 4N x 4N on an "

@@ -45,6 +45,7 @@ typedef enum cli_option_id {
     OPT_CONE_LEVELS,
     OPT_DENSE_DIFFUSE,
     OPT_EDGE_SAMPLES,
+    OPT_INDIRECT_FILTER,
     OPT_AO_DISTANCE,
     OPT_BOUNCES,
     OPT_LIGHT_CARRY,

@@ -194,6 +194,8 @@ static int apply_vct(const parse_state *ps, cli_option_id id, char **w, cli_opti
     case OPT_DENSE_DIFFUSE:
         opt->sparse_diffuse = 0;
         return 0;
+    case OPT_INDIRECT_FILTER:
+        return to_int(ps, w[0], 0, (int)VCT_INDIRECT_PASSES_MAX, &opt->indirect_passes);
     case OPT_EDGE_SAMPLES:
         return to_int(ps, w[0], 1, (int)VCT_EDGE_SAMPLES_MAX, &opt->edge_samples);
     case OPT_AO_DISTANCE:
@@ -411,6 +413,7 @@ static void defaults(cli_options *opt) {
     opt->diffuse_cones = 9;
     opt->sparse_diffuse = 1;
     opt->edge_samples = (int)VCT_EDGE_SAMPLES_DEFAULT;
+    opt->indirect_passes = (int)VCT_INDIRECT_PASSES_DEFAULT;
     opt->bounces = (int)VCT_DEFAULT_BOUNCES;
     opt->frame = -1;
     opt->frames[0] = opt->frames[1] = -1;

@@ -58,6 +58,7 @@ struct cli_options {
     int print_plan;
     vct_effect_force force[VCT_EFFECTS];
     int diffuse_cones, bounces, sparse_diffuse, edge_samples;
+    int indirect_passes;   /* --indirect-filter N */
     int copy_voxels;       /* several devices: one builds the voxels, the others copy them */
     int emitters_by_cones; /* --emitters cones */
     vct_cone_settings cones;

@@ -182,6 +182,10 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     job.vct.diffuse_cones = (uint32_t)app->opt.diffuse_cones;
     job.vct.cones = app->opt.cones;
     job.vct.sparse_diffuse = app->opt.sparse_diffuse;
+    /* N: the indirect light through every pass of the filter */
+    job.vct.indirect_passes = app->denoise && app->method == VIEW_VCT
+                                  ? VCT_INDIRECT_PASSES_MAX
+                                  : (uint32_t)app->opt.indirect_passes;
     /* The path tracer adds one sample per frame to the previous ones. */
     job.pathtrace.spp = 1;
     job.pathtrace.max_depth = (uint32_t)(app->opt.max_depth ? app->opt.max_depth : 16);
@@ -197,7 +201,6 @@ static int render_method(view_app *app, vct_image *image, vct_error *err) {
     if (view_app_denoising(app)) {
         job.pathtrace.variance = &app->variance;
         job.pathtrace.indirect = &app->aovs.indirect; /* filtered apart from the direct light */
-        job.aovs = app->method == VIEW_VCT ? &app->aovs : NULL;
     }
     job.pathtrace.resume = app->pt_spp > 0;
     job.voxel_view.level = app->voxel_level;
@@ -223,8 +226,7 @@ int view_app_wants_frame(const view_app *app) {
 
 int view_app_denoising(const view_app *app) {
     /* one device: several hold their structures apart from the host's */
-    return app->denoise && !app->group &&
-           (app->method == VIEW_PATHTRACE || app->method == VIEW_PM || app->method == VIEW_VCT);
+    return app->denoise && !app->group && (app->method == VIEW_PATHTRACE || app->method == VIEW_PM);
 }
 
 void view_app_toggle_denoise(view_app *app) {
@@ -241,7 +243,7 @@ static int denoise_frame(view_app *app, vct_image *image, vct_error *err) {
         rc = vct_render_guides(ctx, app->scene, vct_device_scene_accel(app->ds), image->width,
                                image->height, 4, &app->albedo, &app->normal_depth, err);
     const vct_denoise_guides g = {&app->albedo, &app->normal_depth,
-                                  app->variance.rgba ? &app->variance : NULL, NULL};
+                                  app->variance.rgba ? &app->variance : NULL, NULL, 0};
     vct_image out;
     if (rc == VCT_OK)
         rc = cli_denoise_image(ctx, &g, image, app->aovs.indirect.rgba ? &app->aovs : NULL, &out,
@@ -367,7 +369,9 @@ void view_app_status(const view_app *app, const char *display_path, char *out, s
         snprintf(anim, sizeof anim, " | frame %d (%.2f s)%s", app->anim_frame,
                  app->anim_frame / app->opt.fps, app->playing ? " playing" : "");
     snprintf(out, size, "vct-view | %s%s%s%s | %dx%d %.0f ms (%s) | plan: %s | %s",
-             view_method_name(app->method), extra, view_app_denoising(app) ? ", denoised" : "",
+             view_method_name(app->method), extra,
+             view_app_denoising(app) || (app->denoise && app->method == VIEW_VCT) ? ", denoised"
+                                                                                  : "",
              anim, app->width, app->height, app->frame_ms, app->stages, plan[0] ? plan : "nothing",
              display_path);
 }

@@ -27,6 +27,7 @@ static inline vct_image vct_case_render_bricks(vct_context *ctx, const vct_scene
      * look; test_edge_samples tests edges, test_vct sparse diffuse. */
     o.edge_samples = 1;
     o.sparse_diffuse = 0;
+    o.indirect_passes = 0; /* each pixel's own cones, unfiltered */
     vct_voxels *v = NULL;
     REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, bounces, &o.cones, &v, &err), err);
     vct_image image;
@@ -38,10 +39,12 @@ static inline vct_image vct_case_render_bricks(vct_context *ctx, const vct_scene
 }
 
 /* Cone tracing as `vct render` does it by default (bounces, edge samples,
- * sparse diffuse cones, isotropic bricks) at `res` voxels: what the
- * accuracy goals are stated for. */
-static inline vct_image vct_case_render_default(vct_context *ctx, const vct_scene *s,
-                                                const vct_plan *plan, uint32_t res, int w, int h) {
+ * sparse diffuse cones, isotropic bricks, the indirect light filtered) at
+ * `res` voxels: what the accuracy goals are stated for; with
+ * indirect_passes filter passes, and AOVs when aovs is not NULL. */
+static inline vct_image vct_case_render_filtered(vct_context *ctx, const vct_scene *s,
+                                                 const vct_plan *plan, uint32_t res, int w, int h,
+                                                 uint32_t indirect_passes, vct_aovs *aovs) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
@@ -49,14 +52,20 @@ static inline vct_image vct_case_render_default(vct_context *ctx, const vct_scen
     vo.resolution = res;
     const vct_brick_options bo = {VCT_BRICKS_AUTO, 0, 0};
     vct_vct_options o = vct_vct_options_default(w, h);
+    o.indirect_passes = indirect_passes;
     vct_voxels *v = NULL;
     REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, &bo, VCT_DEFAULT_BOUNCES, &o.cones, &v, &err),
                err);
     vct_image image;
-    REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &image, NULL, &err), err);
+    REQUIRE_OK(vct_render_vct(ctx, s, g, v, plan, &o, &image, aovs, &err), err);
     vct_voxels_release(v);
     vct_accel_release(g);
     return image;
+}
+
+static inline vct_image vct_case_render_default(vct_context *ctx, const vct_scene *s,
+                                                const vct_plan *plan, uint32_t res, int w, int h) {
+    return vct_case_render_filtered(ctx, s, plan, res, w, h, VCT_INDIRECT_PASSES_DEFAULT, NULL);
 }
 
 /* The same with directional bricks. */

@@ -62,6 +62,7 @@ static vct_image render_vct(const vct_scene *s, const vct_plan *plan, int w, int
     o.height = h;
     o.edge_samples = edge_samples;
     o.aovs = aovs != NULL;
+    o.indirect_passes = 0; /* the edges' own indirect light, unfiltered */
     vct_voxels *v = NULL;
     REQUIRE_OK(vct_vct_prepare(ctx, s, g, plan, &vo, NULL, 1, &o.cones, &v, &err), err);
     vct_image im;
@@ -364,6 +365,11 @@ static void too_many_rays(void) {
     const int rc = vct_render_vct(ctx, s, g, NULL, &plan, &o, &im, NULL, &err);
     CHECK(rc == VCT_ERR_INPUT && strstr(err.message, "rays per axis") && im.rgba == NULL,
           "%u rays per axis: rc %d, '%s'", o.edge_samples, rc, err.message);
+    o.edge_samples = VCT_EDGE_SAMPLES_DEFAULT;
+    o.indirect_passes = VCT_INDIRECT_PASSES_MAX + 1;
+    const int passes_rc = vct_render_vct(ctx, s, g, NULL, &plan, &o, &im, NULL, &err);
+    CHECK(passes_rc == VCT_ERR_INPUT && strstr(err.message, "filter passes") && im.rgba == NULL,
+          "%u filter passes: rc %d, '%s'", o.indirect_passes, passes_rc, err.message);
     vct_accel_release(g);
     vct_scene_release(s);
 }

@@ -88,7 +88,7 @@ static vct_denoise_options test_options(void) {
 
 static int run(vct_context *ctx, const inputs *in, vct_image *out, vct_error *err) {
     const vct_denoise_guides g = {&in->albedo, &in->nd, in->with_variance ? &in->variance : NULL,
-                                  NULL};
+                                  NULL, 0};
     const vct_denoise_options o = test_options();
     return vct_denoise(ctx, &in->color, &g, &o, out, err);
 }
@@ -311,7 +311,7 @@ static void test_exact_direct(vct_context *ctx) {
             set4(&variance, i, var, var, 0.0f, 1.0f);
             set4(&indirect, i, 0.0f, 0.0f, 0.0f, 1.0f);
         }
-    const vct_denoise_guides g = {&albedo, &nd, &variance, &indirect};
+    const vct_denoise_guides g = {&albedo, &nd, &variance, &indirect, 0};
     const vct_denoise_options o = vct_denoise_options_default();
     vct_error err = {0};
     REQUIRE_OK(vct_denoise(ctx, &color, &g, &o, &out, &err), err);
@@ -331,6 +331,49 @@ static void test_exact_direct(vct_context *ctx) {
     vct_image *all[] = {&color, &albedo, &nd, &variance, &indirect, &out};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         vct_image_release(all[i]);
+}
+
+/* Cone tracing's image: the checker plane's noisy light as its indirect
+ * part, beside a rest (direct light, a specular cone) of sharp bars that no
+ * filter must touch. With indirect_alone the image is the rest plus the
+ * indirect part as the reference filters it alone (its variance estimated
+ * from it); filtered whole, the bars would be blurred. */
+static void test_indirect_alone(vct_context *ctx) {
+    inputs in;
+    checker_plane(&in, 48, 40);
+    const int n = in.w * in.h;
+    vct_image rest = image_new(in.w, in.h), total = image_new(in.w, in.h), out;
+    for (int i = 0; i < n; ++i) {
+        const float bar = (i % in.w) % 6 < 2 ? 3.0f : 0.0f;
+        set4(&rest, i, bar, 0.5f * bar, 0.25f * bar, 1.0f);
+        for (int c = 0; c < 3; ++c)
+            total.rgba[4 * i + c] = rest.rgba[4 * i + c] + in.color.rgba[4 * i + c];
+        total.rgba[4 * i + 3] = 1.0f;
+    }
+    const vct_denoise_guides g = {&in.albedo, &in.nd, NULL, &in.color, 1};
+    const vct_denoise_options o = test_options();
+    vct_error err = {0};
+    REQUIRE_OK(vct_denoise(ctx, &total, &g, &o, &out, &err), err);
+    in.with_variance = 0;
+    ref_px *ref = malloc((size_t)n * sizeof *ref);
+    reference(&in, ref);
+    double worst = 0.0, largest = 1e-30;
+    for (int i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const float r = (&ref[i].r)[c];
+            const float expected = rest.rgba[4 * i + c] + r;
+            worst = fmax(worst, fabs(out.rgba[4 * i + c] - expected));
+            largest = fmax(largest, fabs(expected));
+        }
+    printf("indirect light alone: device against reference %.2g of the largest value\n",
+           worst / largest);
+    CHECK(worst / largest < REF_TOL, "indirect alone: %.3g of the largest value from the reference",
+          worst / largest);
+    free(ref);
+    vct_image *all[] = {&rest, &total, &out};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
+        vct_image_release(all[i]);
+    inputs_free(&in);
 }
 
 /* Zero variance, black albedo, normals that cancel, pixels without a surface. */
@@ -419,7 +462,7 @@ static void test_refusals(vct_context *ctx) {
     checker_plane(&in, 16, 8);
     vct_error err = {0};
     vct_image out, small = image_new(8, 8);
-    vct_denoise_guides g = {&in.albedo, &small, NULL, NULL};
+    vct_denoise_guides g = {&in.albedo, &small, NULL, NULL, 0};
     vct_denoise_options o = vct_denoise_options_default();
     CHECK(vct_denoise(ctx, &in.color, &g, &o, &out, &err) == VCT_ERR_INPUT &&
               strstr(err.message, "normal and depth guide is 8x8"),
@@ -463,8 +506,8 @@ static void test_pathtrace(vct_context *ctx) {
     job.pathtrace.indirect = &indirect;
     REQUIRE_OK(vct_render(ctx, &job, &noisy, NULL, &err), err);
     REQUIRE_OK(vct_render_guides(ctx, s, g, size, size, 4, &albedo, &nd, &err), err);
-    const vct_denoise_guides guides = {&albedo, &nd, &variance, NULL},
-                             apart = {&albedo, &nd, &variance, &indirect};
+    const vct_denoise_guides guides = {&albedo, &nd, &variance, NULL, 0},
+                             apart = {&albedo, &nd, &variance, &indirect, 0};
     const vct_denoise_options o = vct_denoise_options_default();
     REQUIRE_OK(vct_denoise(ctx, &noisy, &guides, &o, &denoised, &err), err);
     REQUIRE_OK(vct_denoise(ctx, &noisy, &apart, &o, &parts, &err), err);
@@ -561,6 +604,7 @@ int main(void) {
     test_edge(ctx);
     test_crease(ctx);
     test_exact_direct(ctx);
+    test_indirect_alone(ctx);
     test_emitter(ctx);
     test_degenerate(ctx);
     test_firefly(ctx);

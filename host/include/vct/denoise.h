@@ -61,6 +61,10 @@ typedef struct vct_denoise_guides {
      * fireflies at 10/6 times the bound (smooth light, long-tailed noise).
      * NULL: the image is filtered whole. */
     const vct_image *indirect;
+    /* 1, with `indirect`: only the indirect light is filtered, and the rest
+     * of the image is kept as it is (cone tracing's direct light is exact
+     * and its specular cone no noise). */
+    int indirect_alone;
 } vct_denoise_guides;
 
 /* Filters `color` into `out` (allocated here; free with vct_image_release).

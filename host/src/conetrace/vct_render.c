@@ -8,6 +8,7 @@
 #include "light/emitters.h"
 #include "frame/frame.h"
 #include "conetrace/vct_caustics.h"
+#include "conetrace/vct_indirect_filter.h"
 #include "conetrace/vct_relight.h"
 #include "voxel/bounce_rest.h"
 #include "voxel/cones.h"
@@ -32,6 +33,7 @@ vct_vct_options vct_vct_options_default(int width, int height) {
     o.sparse_diffuse = 1;
     o.cones = vct_cone_settings_default();
     o.edge_samples = VCT_EDGE_SAMPLES_DEFAULT;
+    o.indirect_passes = VCT_INDIRECT_PASSES_DEFAULT;
     return o;
 }
 
@@ -545,6 +547,10 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
                       "vct: %u rays per axis at edges is more than %u: give 1 to %u (1: pixel "
                       "centres only)",
                       opt->edge_samples, VCT_EDGE_SAMPLES_MAX, VCT_EDGE_SAMPLES_MAX);
+    if (rc == VCT_OK && opt->indirect_passes > VCT_INDIRECT_PASSES_MAX)
+        rc = vct_fail(err, VCT_ERR_INPUT,
+                      "vct: %u filter passes over the indirect light: give 0 (none) to %u",
+                      opt->indirect_passes, VCT_INDIRECT_PASSES_MAX);
     vct_camera_desc cam;
     if (rc == VCT_OK)
         rc = vct_frame_camera(ctx, &s->camera, opt->width, opt->height, &cam, err);
@@ -572,7 +578,8 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
                           : NULL;
     f.image = f.gbuf ? vct_frame_get(ctx, PRIMARY_STAGE, opt->width, opt->height, err) : NULL;
     rc = f.image ? VCT_OK : (int)err->status;
-    if (rc == VCT_OK && aovs) {
+    const int filter = opt->indirect_passes > 0 && plan->on[VCT_EFFECT_INDIRECT];
+    if (rc == VCT_OK && (aovs || filter)) {
         f.aov = vct_buffer_create(ctx, PRIMARY_STAGE, "AOVs", 16 * AOV_SLOTS * pixels,
                                   CL_MEM_READ_WRITE, NULL, err);
         rc = f.aov ? vct_buffer_fill_u32(ctx, PRIMARY_STAGE, f.aov, 0, 4 * AOV_SLOTS * pixels, err)
@@ -622,10 +629,20 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
         rc = cone_pass(&f, GLASS_STAGE, "vct_glass_reflection", f.reflection, 3, err);
         vct_stage_end(ctx);
     }
+    vct_image filtered = {0};
+    if (rc == VCT_OK && filter)
+        rc = vct_indirect_filter(ctx, s, g, f.aov, AOV_SLOTS, opt->width, opt->height,
+                                 opt->indirect_passes, &filtered, err);
     if (rc == VCT_OK)
         rc = vct_frame_deliver(ctx, "vct image", image, err);
     if (rc == VCT_OK && aovs)
         rc = read_aovs(&f, aovs, err);
+    if (rc == VCT_OK && aovs && filter) { /* the indirect light the image holds */
+        vct_image_release(&aovs->indirect);
+        aovs->indirect = filtered;
+        filtered.rgba = NULL;
+    }
+    vct_image_release(&filtered);
     vct_scene_buffers_release(ctx, &f.scene);
     vct_emitters_release(ctx, &f.emitters);
     vct_buffer_release(ctx, f.aov);

@@ -1,7 +1,8 @@
 /* vct_denoise: an image through the passes whole (denoise.c), or the path
  * tracer's as two parts: its direct light (the image less its indirect
  * light) and its indirect light, each through the passes with its own
- * variance (the variance image's g and b) and options, then added. */
+ * variance (the variance image's g and b) and options, then added; or cone
+ * tracing's indirect light alone, added to the rest of its image. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -127,12 +128,26 @@ int vct_denoise_parts(vct_context *ctx, const vct_image *color, const vct_denois
     return rc;
 }
 
+/* g->indirect alone through the passes; the rest of the image kept. */
+static int denoise_indirect_alone(vct_context *ctx, const vct_image *color,
+                                  const vct_denoise_guides *g, const vct_denoise_options *o,
+                                  vct_image *out, vct_error *err) {
+    const int rc = vct_denoise_whole(ctx, g->indirect, g, o, out, err);
+    const size_t values = 4 * (size_t)color->width * color->height;
+    for (size_t i = 0; rc == VCT_OK && i < values; ++i)
+        out->rgba[i] =
+            i % 4 == 3 ? color->rgba[i] : color->rgba[i] + (out->rgba[i] - g->indirect->rgba[i]);
+    return rc;
+}
+
 vct_status vct_denoise(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
                        const vct_denoise_options *o, vct_image *out, vct_error *err) {
     memset(out, 0, sizeof *out);
     int rc = vct_denoise_check(color, g, o, err);
     if (rc)
         return rc;
+    if (g->indirect && g->indirect_alone)
+        return denoise_indirect_alone(ctx, color, g, o, out, err);
     return g->indirect ? vct_denoise_parts(ctx, color, g, o, out, err)
                        : vct_denoise_whole(ctx, color, g, o, out, err);
 }

@@ -2,6 +2,8 @@
  * rows so that they equal the whole image's. */
 #include "vct/partial.h"
 
+#include "conetrace/vct_indirect_filter.h"
+
 /* Subsampling refines squares of N rows whose corners lie on the next
  * square's first row, and a row of corners is an edge of the squares above
  * and below it: the finer of the two writes it last. A band therefore also
@@ -24,5 +26,12 @@ void vct_band_shape(const vct_render_job *job, int *align, int *above, int *belo
          * the alignment, which keeps the sparse rows' parity) */
         *above = *above > 2 ? *above : 2;
         *below = *below > 2 ? *below : 2;
+    }
+    if (job->method == VCT_METHOD_VCT && job->vct.indirect_passes) {
+        /* the indirect light's filter reads rows that must themselves be
+         * whole: beyond those the rows above need, rounded to keep parity */
+        const int whole = *above > *below ? *above : *below;
+        const int reach = whole + vct_indirect_filter_reach(job->vct.indirect_passes);
+        *above = *below = (reach + 1) / 2 * 2;
     }
 }

@@ -1,0 +1,25 @@
+/* Cone tracing's indirect diffuse light through the denoiser (vct/denoise.h):
+ * nine cones per traced pixel, and the near rays among them, leave a
+ * pixel-scale grain that a few edge-avoiding passes remove. */
+#ifndef VCT_VCT_INDIRECT_FILTER_H
+#define VCT_VCT_INDIRECT_FILTER_H
+
+#include "accel/accel.h"
+#include "runtime/runtime.h"
+
+/* Camera rays per pixel side for the filter's guides (vct_render_guides). */
+#define VCT_INDIRECT_GUIDE_RAYS 4u
+
+/* Rows beyond a band's own that `passes` filter passes read (vct_band_shape):
+ * the variance estimate's 2, the firefly clamp's 1, each pass's 2 step,
+ * and the depth slope's 1 at the outermost taps. */
+int vct_indirect_filter_reach(uint32_t passes);
+
+/* Filters the indirect slot of `aov` (AOV_SLOTS float4 per pixel, slot 1)
+ * and puts the change into the frame (ctx's, width x height, or the band
+ * of it ctx renders). *indirect: the filtered indirect light. */
+int vct_indirect_filter(vct_context *ctx, const vct_scene *s, const vct_accel *g, cl_mem aov,
+                        int aov_slots, int width, int height, uint32_t passes, vct_image *indirect,
+                        vct_error *err);
+
+#endif
