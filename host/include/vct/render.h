@@ -37,12 +37,16 @@ VCT_API vct_status vct_render_raycast(vct_context *ctx, const vct_scene *scene,
 
 typedef struct vct_pathtrace_options {
     int width, height;
-    uint32_t spp;              /* samples per pixel; 0: run for time_limit_s */
-    double time_limit_s;       /* used when spp is 0 */
-    uint32_t max_depth;        /* surface interactions per path; 1 = direct light only */
-    uint32_t seed;             /* same seed and spp: same image, bit for bit */
-    uint32_t samples_per_pass; /* samples per launch (0: 1) */
-    int progress;              /* progress bar on a terminal's stderr */
+    uint32_t spp;        /* samples per pixel; 0: run for time_limit_s */
+    double time_limit_s; /* used when spp is 0 */
+    uint32_t max_depth;  /* surface interactions per path; 1 = direct light only */
+    uint32_t seed;       /* same seed and spp: same image, bit for bit */
+    /* Samples per launch (0: 1; default 8): fewer launches, and each
+     * pixel's sums read and written once per launch (8: the Cornell box 6 %
+     * faster on PoCL than 1, the image the same bits). A time limit
+     * launches one sample at a time, to stop on time. */
+    uint32_t samples_per_pass;
+    int progress; /* progress bar on a terminal's stderr */
     /* 1: add to the running sums of the previous call of this scene on this
      * context (same size), continuing its sample sequence: n calls of k
      * samples give the image of one call of n * k. Through a device scene a

@@ -231,7 +231,7 @@ vct_status vct_render_pathtrace(vct_context *ctx, const vct_scene *s, const vct_
         const double elapsed = (vct_now_ms() - t0) * 1e-3;
         if (opt->spp ? done >= opt->spp : elapsed >= opt->time_limit_s)
             break;
-        cl_uint n = per_pass;
+        cl_uint n = opt->spp ? per_pass : 1u;
         if (opt->spp && done + n > opt->spp)
             n = opt->spp - done;
         /* Waiting per pass only serves the clock and the progress bar; a fixed
