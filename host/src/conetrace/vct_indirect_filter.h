@@ -15,11 +15,10 @@
  * and the depth slope's 1 at the outermost taps. */
 int vct_indirect_filter_reach(uint32_t passes);
 
-/* Filters the indirect slot of `aov` (AOV_SLOTS float4 per pixel, slot 1)
- * and puts the change into the frame (ctx's, width x height, or the band
- * of it ctx renders). *indirect: the filtered indirect light. */
-int vct_indirect_filter(vct_context *ctx, const vct_scene *s, const vct_accel *g, cl_mem aov,
-                        int aov_slots, int width, int height, uint32_t passes, vct_image *indirect,
-                        vct_error *err);
+/* Filters `indirect` (the frame's indirect light, width x height: ctx's
+ * frame, or the band of it ctx renders) in place and puts what the filter
+ * changed into the frame. */
+int vct_indirect_filter(vct_context *ctx, const vct_scene *s, const vct_accel *g, int width,
+                        int height, uint32_t passes, vct_image *indirect, vct_error *err);
 
 #endif

@@ -629,20 +629,16 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
         rc = cone_pass(&f, GLASS_STAGE, "vct_glass_reflection", f.reflection, 3, err);
         vct_stage_end(ctx);
     }
-    vct_image filtered = {0};
+    /* the filter reads the indirect AOV and leaves it as the image holds it */
+    vct_aovs for_filter = {0};
+    if (rc == VCT_OK && (aovs || filter))
+        rc = read_aovs(&f, aovs ? aovs : &for_filter, err);
     if (rc == VCT_OK && filter)
-        rc = vct_indirect_filter(ctx, s, g, f.aov, AOV_SLOTS, opt->width, opt->height,
-                                 opt->indirect_passes, &filtered, err);
+        rc = vct_indirect_filter(ctx, s, g, opt->width, opt->height, opt->indirect_passes,
+                                 aovs ? &aovs->indirect : &for_filter.indirect, err);
+    vct_aovs_release(&for_filter);
     if (rc == VCT_OK)
         rc = vct_frame_deliver(ctx, "vct image", image, err);
-    if (rc == VCT_OK && aovs)
-        rc = read_aovs(&f, aovs, err);
-    if (rc == VCT_OK && aovs && filter) { /* the indirect light the image holds */
-        vct_image_release(&aovs->indirect);
-        aovs->indirect = filtered;
-        filtered.rgba = NULL;
-    }
-    vct_image_release(&filtered);
     vct_scene_buffers_release(ctx, &f.scene);
     vct_emitters_release(ctx, &f.emitters);
     vct_buffer_release(ctx, f.aov);
