@@ -25,15 +25,15 @@
  * a window's slats started among the slats: 2x the light there); on the
  * axis, cones started past the surfaces near their start that lit them
  * (lamp room 0.096 -> 0.109, Cornell box 0.088 -> 0.091). Half way: blinds
- * 0.159 -> 0.138, the suite's mean 0.0955 -> 0.0937 (README). The voxels'
- * bounce cones stay lifted along n (half way there too: lamp room 0.102,
- * textured room 0.089, the mean the same). */
+ * 0.159 -> 0.138, the suite's mean 0.0955 -> 0.0937 (README). */
 #define CONE_ORIGIN_TOWARDS_AXIS 0.5f
 /* The least normal component of a cone's axis the shift assumes (the
  * presets' cones have 0.5 or more). */
 #define CONE_ORIGIN_MIN_UP 0.25f
-/* How far (voxels) along its side's normal a voxel's near rays tell the
- * side they see from. */
+/* How far (voxels) along its side's normal a ray from a surface tells the
+ * side it sees a hit voxel's plane from: a voxel's plane point lies inside
+ * a slab one voxel thick (a roof lit on top), where a ray meets the near
+ * face of a voxel whose plane it sits on. */
 #define NEAR_SIDE_LIFT 0.1f
 
 inline float3 cone_camera_origin(const vct_cone_desc *c, float3 p, float3 n, float3 d) {
@@ -43,17 +43,15 @@ inline float3 cone_camera_origin(const vct_cone_desc *c, float3 p, float3 n, flo
 
 /* 1, the light in *light and the distance in *dist where the ray from
  * surface point p (unit normal n) along d meets geometry before the cone's
- * march begins. side_at_hit 1: the side of the voxels' plane the ray sees
- * is told from a point off the hit surface on the ray's side, a cone's
- * diameter out (the camera's rays, from exact surface points: the ray's
- * origin, beside a surface that meets the one hit at an angle or off a
- * curved one, can lie on the other side of the hit voxels' plane; window
- * room 0.101 -> 0.096, dense hall 0.095 -> 0.087); 0: from NEAR_SIDE_LIFT
- * voxels off the ray's origin along n (the voxels' rays, from their planes'
- * points: told at the hit, the blinds' walls came out 1.2x too bright). */
+ * march begins. The side of the voxels' plane the ray sees is told from a
+ * point off the hit surface on the ray's side, a cone's diameter out: the
+ * ray's origin, beside a surface that meets the one hit at an angle or off
+ * a curved one, can lie on the other side of the hit voxels' plane (window
+ * room 0.101 -> 0.096, dense hall 0.095 -> 0.087). Where the hit has no
+ * surface frame, from NEAR_SIDE_LIFT voxels off the origin along n. */
 inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint *child,
                            const vct_cone_desc *c, float3 p, float3 n, float3 d, float tan_half,
-                           int side_at_hit, float3 *light, float *dist) {
+                           float3 *light, float *dist) {
     const float voxel = c->volume.w / (float)c->res.x;
     const float lift = cone_lift(c), up = dot(d, n);
     if (!(up > 0.0f))
@@ -64,14 +62,10 @@ inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint 
     hit_record h;
     if (!accel_trace(g, from, d, 0.0f, reach, 0, &h))
         return 0;
-    /* off the origin's own plane: a voxel's plane point lies inside a slab
-     * one voxel thick (a roof lit on top), where the ray meets the near
-     * face of a voxel whose plane it sits on, which would show half the far
-     * face's light */
     float3 seen_from = from + n * NEAR_SIDE_LIFT * voxel;
     float3 hit_p, hit_ng, hit_n;
     int front;
-    if (side_at_hit && surface_hit(g, &h, d, &hit_p, &hit_ng, &hit_n, &front))
+    if (surface_hit(g, &h, d, &hit_p, &hit_ng, &hit_n, &front))
         seen_from = hit_p + hit_n * fmax(2.0f * h.t * tan_half, 2.0f * voxel);
     *light = cone_hit_light(CONE_POOLS_PASS, child, c, from, d, h.t, tan_half, 1.0f, seen_from);
     *dist = h.t;

@@ -13,8 +13,7 @@
  * off between neighbouring pixels, whose cones' axes meet a wall or leave
  * through an opening: polygons of light on the walls. The camera's cones
  * send CONE_REST_RAYS_CAMERA (the Cornell box 0.146 with one, 0.100 with
- * nine, as with sixteen); the voxels' bounce cones one, which changed no
- * scene's error by 0.003 and keeps the bounces' time. Directional bricks
+ * nine, as with sixteen). Directional bricks
  * keep a wall's opacity along its normal; with the same rest the box gained
  * light (0.543), so they keep the sky check alone. */
 #ifndef VCT_CONE_SKY_H
@@ -25,7 +24,6 @@
 #include "conetrace/cone_trace.h"
 
 #define CONE_REST_RAYS_CAMERA 9u
-#define CONE_REST_RAYS_VOXELS 1u
 /* The rest's rays read the light where they meet the scene over 0.7 of the
  * cone's diameter there. A cell of the whole diameter takes in what lies
  * around the hit in depth (a wall's corner, the far side of a slab) that

@@ -438,7 +438,7 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
         float3 near;
         float near_t;
         const int blocked = cone_near_light(acc, CONE_POOLS_PASS, child, cd, g->p, n, d,
-                                            c.aperture.x, 1, &near, &near_t);
+                                            c.aperture.x, &near, &near_t);
 #ifdef VCT_INDIRECT
         l.radiance +=
             c.dir.w * (blocked ? near

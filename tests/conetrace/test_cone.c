@@ -596,49 +596,28 @@ static void hard_cases(void) {
     (void)err;
 }
 
-/* The light where the ray from surface point `from` along d meets the
- * scene before the cone's march starts (kernels/conetrace/cone_near.h): the
- * pyramid's sample there at the cone's diameter, seen from `from`,
- * un-premultiplied; 0 where the ray meets nothing that near. */
-static int ref_near(const brick_case *c, const ref_pyramid *p, const vct_cone_settings *s,
-                    const double from[3], const double n[3], const double d[3], double tan_half,
-                    double light[3]) {
+/* The light where the ray from `from` along d meets the scene
+ * (kernels/conetrace/inject_bounce.cl): the finest level's sample there,
+ * seen from a tenth of a voxel off `from` along n, un-premultiplied; none
+ * where the ray meets nothing. */
+static void ref_ray_light(const brick_case *c, const ref_pyramid *p, const double from[3],
+                          const double n[3], const double d[3], double light[3]) {
     const double side = c->info.side, voxel = side / c->info.resolution;
-    const double up = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-    if (!(up > 0.0))
-        return 0;
     double border;
-    const double t = ref_closest(c->scene, from, d, s->offset * voxel / up + voxel, &border);
+    light[0] = light[1] = light[2] = 0.0;
+    const double t = ref_closest(c->scene, from, d, INFINITY, &border);
     if (t < 0.0)
-        return 0;
-    const double finest = c->info.levels - 1.0, min_d = 2.0 * voxel;
-    const double level =
-        fmin(fmax(finest - log2(fmax(2.0 * t * tan_half, min_d) / min_d), 0.0), finest);
-    /* a ray's hit: no lift; its side told from a tenth of a voxel off the
-     * plane on the gathering side (cone_near.h) */
-    double at[3], o[4] = {0, 0, 0, -1.0};
+        return;
+    double at[3], o[4] = {0, 0, 0, -1.0}, v[4], coherence;
     for (int k = 0; k < 3; ++k) {
         at[k] = fmin(fmax((from[k] + t * d[k] - c->info.origin[k]) / side, 0.0), 0.99999);
         o[k] = (from[k] + 0.1 * voxel * n[k] - c->info.origin[k]) / side - 0.5;
     }
-    const uint32_t coarse = (uint32_t)level, fine = coarse + 1 < p->levels ? coarse + 1 : coarse;
-    double a[4], b[4], v[4], ca = 1.0, cb = 1.0;
-    ref_level_sample_coherence(c, p, 1, coarse, at, d, o, a, &ca);
-    ref_level_sample_coherence(c, p, 1, fine, at, d, o, b, &cb);
-    for (int k = 0; k < 4; ++k)
-        v[k] = a[k] + (level - coarse) * (b[k] - a[k]);
-    /* finer whole levels while the planes disagree (cone_sky.h) */
-    double coherence = level > coarse ? fmin(ca, cb) : ca;
-    for (uint32_t finer = coarse + 1; coherence < 1.0 && finer < p->levels; ++finer)
-        ref_level_sample_coherence(c, p, 1, finer, at, d, o, v, &coherence);
+    ref_level_sample_coherence(c, p, 1, p->levels - 1, at, d, o, v, &coherence);
     for (int k = 0; k < 3; ++k)
         light[k] = v[3] > 1e-3 ? v[k] / v[3] : 0.0;
-    return 1;
 }
 
-/* The preset's weighted cones from voxel `cell`'s centre on the side of
- * unit n, through pyramid p; near rays from the point of the voxel's plane
- * (normal n or -n, offset h) nearest its centre, when it has a normal. */
 static uint32_t lowbias32(uint32_t x) {
     x ^= x >> 16;
     x *= 0x7feb352du;
@@ -648,10 +627,18 @@ static uint32_t lowbias32(uint32_t x) {
     return x;
 }
 
+enum { RAYS_SIDE = 3 };
+
+/* The mean light of the bounce's rays from voxel `cell` on the side of
+ * unit n: a 3 x 3 grid over the unit square at an offset hashed from the
+ * key and the side, mapped onto the cosine-weighted hemisphere (Malley) in
+ * the voxel's turned frame; from the point of the voxel's plane (normal n,
+ * offset h) nearest its centre, just off it, or from its centre lifted the
+ * cone offset where it has no normal. The scene has no ambient light. */
 static void gather_side(const brick_case *c, const ref_pyramid *p, const vct_cone_settings *s,
                         uint32_t key, const uint32_t cell[3], const double n[3], int has_normal,
-                        double h, const float *dirs, const float *tan_half, double gathered[3]) {
-    const double side = c->info.side, voxel = side / c->info.resolution, none[3] = {0, 0, 0};
+                        double h, double gathered[3]) {
+    const double side = c->info.side, voxel = side / c->info.resolution;
     /* the frame of bsdf.h's basis_of (Duff et al. 2017) about the normal's
      * axis (its largest component made positive), turned about it by the
      * angle 2 pi hash(key) / 2^32 (cone_frame.h) */
@@ -668,33 +655,35 @@ static void gather_side(const brick_case *c, const ref_pyramid *p, const vct_con
         t[k] = cos(angle) * t0[k] + sin(angle) * b0[k];
         b[k] = cos(angle) * b0[k] - sin(angle) * t0[k];
     }
-    double origin[3], unit[3], from[3], along = 0.0;
+    double from[3], unit[3], along = 0.0;
     for (int k = 0; k < 3; ++k) {
         const double centre = c->info.origin[k] + (cell[k] + 0.5) * voxel;
-        origin[k] = centre + n[k] * s->offset * voxel;
         unit[k] = (centre - c->info.origin[k]) / side - 0.5;
         along += n[k] * unit[k];
+        from[k] = centre + n[k] * s->offset * voxel;
         gathered[k] = 0.0;
     }
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3 && has_normal; ++k)
         from[k] =
             c->info.origin[k] + (unit[k] - (along - h) * n[k] + 0.5) * side + n[k] * 1e-5 * side;
-    for (int i = 0; i < 6; ++i) {
-        double d[3], dl = 0.0, near[3];
+    const uint32_t hashed =
+        lowbias32(key ^ (n[0] + 2.0 * n[1] + 4.0 * n[2] > 0.0 ? 0x9e3779b9u : 0u));
+    const double jitter[2] = {(double)(hashed >> 8) / 16777216.0,
+                              (double)(lowbias32(hashed) >> 8) / 16777216.0};
+    for (int i = 0; i < RAYS_SIDE * RAYS_SIDE; ++i) {
+        const double u = (i % RAYS_SIDE + jitter[0]) / RAYS_SIDE;
+        const double w = (i / RAYS_SIDE + jitter[1]) / RAYS_SIDE;
+        const double r = sqrt(u), phi = 6.283185307179586 * w, up = sqrt(fmax(1.0 - u, 0.0));
+        double d[3], dl = 0.0, light[3];
         for (int k = 0; k < 3; ++k) {
-            d[k] = dirs[4 * i] * t[k] + dirs[4 * i + 1] * b[k] + dirs[4 * i + 2] * n[k];
+            d[k] = r * cos(phi) * t[k] + r * sin(phi) * b[k] + up * n[k];
             dl += d[k] * d[k];
         }
         for (int k = 0; k < 3; ++k)
             d[k] /= sqrt(dl);
-        if (has_normal && ref_near(c, p, s, from, n, d, tan_half[i], near)) {
-            for (int k = 0; k < 3; ++k)
-                gathered[k] += dirs[4 * i + 3] * near[k];
-            continue;
-        }
-        const ref_cone r = ref_march(c, p, 1, s, none, origin, d, tan_half[i], INFINITY);
+        ref_ray_light(c, p, from, n, d, light);
         for (int k = 0; k < 3; ++k)
-            gathered[k] += dirs[4 * i + 3] * r.radiance[k];
+            gathered[k] += light[k] / (RAYS_SIDE * RAYS_SIDE);
     }
 }
 
@@ -703,9 +692,9 @@ static double luminance(const double c[3]) {
 }
 
 /* Checks one bounce: each side of every checked voxel (vct_voxels_read_sides)
- * must be its direct light plus albedo times the preset's weighted cones,
- * marched from its centre on that side of its plane through pyramid p (the
- * light the bounce read); the brighter side becomes its radiance `after`,
+ * must be its direct light plus albedo times the mean light its rays meet
+ * on that side of its plane, read from pyramid p (the light the bounce
+ * read); the brighter side becomes its radiance `after`,
  * the difference its shade in `after_sides`. With `kept` (the sides before a
  * bounce after the first), the side `kept`'s plane faces does instead, the
  * plane stays and k is the larger of kept's and the difference's luminance.
@@ -717,11 +706,9 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
                          const float *after, const float *after_sides) {
     const uint32_t nv = c->info.voxels;
     uint32_t *keys = malloc(4ull * nv);
-    float dirs[64], tan_half[16];
     vct_error err = {0};
     const vct_cone_settings s = vct_cone_settings_default();
     REQUIRE_OK(vct_voxels_read(ctx, c->voxels, keys, NULL, NULL, NULL, &err), err);
-    REQUIRE_OK(vct_cone_preset(6, dirs, tan_half, &err), err);
     uint32_t off = 0, checked = 0, brighter = 0, two_sided = 0;
     for (uint32_t v = 0; v < nv; v += 7, ++checked) {
         uint32_t cell[3];
@@ -731,11 +718,11 @@ static void check_bounce(const char *what, const brick_case *c, const ref_pyrami
         double n[3] = {has_normal ? plane[0] : 0.0, has_normal ? plane[1] : 0.0,
                        has_normal ? plane[2] : 1.0};
         double front[3], back[3], toward[3], away[3];
-        gather_side(c, p, &s, keys[v], cell, n, has_normal, plane[3], dirs, tan_half, front);
+        gather_side(c, p, &s, keys[v], cell, n, has_normal, plane[3], front);
         for (int k = 0; k < 3; ++k)
             n[k] = -n[k];
         /* the same plane seen from its other side: normal -n, offset -h */
-        gather_side(c, p, &s, keys[v], cell, n, has_normal, -plane[3], dirs, tan_half, back);
+        gather_side(c, p, &s, keys[v], cell, n, has_normal, -plane[3], back);
         const int front_more = luminance(front) >= luminance(back);
         for (int k = 0; k < 3; ++k) {
             const double lit = direct[4 * v + k], rho = c->albedo[4 * v + k];
@@ -790,7 +777,7 @@ static void bounce_against_reference(const char *what, brick_case *c, const vct_
     if (kept)
         memcpy(kept, reads_sides, 32ull * c->info.voxels);
     ref_pyramid p = pyramid_of(c, 1);
-    REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c->accel, c->voxels, s, 6, &err), err);
+    REQUIRE_OK(vct_voxels_inject_bounce(ctx, scene, c->accel, c->voxels, s, &err), err);
     REQUIRE_OK(vct_voxels_read_radiance(ctx, c->voxels, after, &err), err);
     REQUIRE_OK(vct_voxels_read_sides(ctx, c->voxels, after_sides, &err), err);
     check_bounce(what, c, &p, direct, direct_sides, kept, after, after_sides);

@@ -127,7 +127,7 @@ static vct_voxels *lit_voxels(vct_scene *s, vct_accel *g, int exact) {
 static void bounce(vct_scene *s, vct_accel *g, vct_voxels *v) {
     vct_error err = {0};
     const vct_cone_settings cs = vct_cone_settings_default();
-    REQUIRE_OK(vct_voxels_inject_bounce(ctx, s, g, v, &cs, 6, &err), err);
+    REQUIRE_OK(vct_voxels_inject_bounce(ctx, s, g, v, &cs, &err), err);
 }
 
 static void against_reference(void) {

@@ -227,19 +227,19 @@ VCT_API vct_status vct_cone_trace(vct_context *ctx, const vct_voxels *voxels,
                                   const vct_cone_settings *settings, const float *ambient,
                                   const float *cones, uint32_t n, float *out, vct_error *err);
 
-/* Adds one diffuse bounce to the voxels' light: cones from every voxel
- * gather the filtered radiance, the voxel's radiance becomes its injected
- * direct radiance plus albedo times that, and the radiance bricks are
- * filtered again. After k calls the voxels hold paths of up to k + 1
- * bounces, each counted once; vct_voxels_inject_light starts over. The
- * first call after it decides which of each voxel's two sides faces where;
- * later calls keep that and only add light (vct_voxels_bounce_rest, where it
- * adds the rest of the series, decides again). A cone that leaves the volume sees the scene's
- * ambient light only where a ray along its axis through `accel` meets nothing. */
+/* Adds one diffuse bounce to the voxels' light: cosine-distributed rays
+ * from every voxel through `accel` read the radiance where they meet the
+ * scene (the finest bricks; the scene's ambient light where they meet
+ * nothing), the voxel's radiance becomes its injected direct radiance plus
+ * albedo times that, and the radiance bricks are filtered again. After k
+ * calls the voxels hold paths of up to k + 1 bounces, each counted once;
+ * vct_voxels_inject_light starts over. The first call after it decides
+ * which of each voxel's two sides faces where; later calls keep that and
+ * only add light (vct_voxels_bounce_rest, where it adds the rest of the
+ * series, decides again). */
 VCT_API vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *scene,
                                             const vct_accel *accel, vct_voxels *voxels,
-                                            const vct_cone_settings *settings,
-                                            uint32_t diffuse_cones, vct_error *err);
+                                            const vct_cone_settings *settings, vct_error *err);
 
 /* After the last bounce: adds the bounces still to come, as each bounce
  * adds what the one before it added times a ratio r, to each voxel its

@@ -76,32 +76,31 @@ static int keep_direct(vct_context *ctx, vct_voxels *v, vct_error *err) {
  * acceleration structure, the cone pools of the light gathered, the cones
  * and the voxels; *next: the first argument after them. */
 static int bounce_shared_args(cl_kernel k, const vct_accel *g, const vct_voxels *light,
-                              const vct_cone_desc *desc, cl_mem cones, cl_uint cone_count,
-                              vct_voxels *v, cl_uint keep_sides, int *next, vct_error *err) {
+                              const vct_cone_desc *desc, vct_voxels *v, cl_uint keep_sides,
+                              int *next, vct_error *err) {
     const cl_uint voxels = v->info.voxels;
     *next = 5; /* after ACCEL_ARGS */
     int rc = vct_accel_set_args(k, g, BOUNCE_STAGE, err);
     if (rc == VCT_OK)
         rc = vct_cone_set_args(k, light, desc, BOUNCE_STAGE, next, err);
     if (rc == VCT_OK)
-        rc = vct_set_args(err, BOUNCE_STAGE, k, *next, 10, VCT_ARG_OF(cones),
-                          VCT_ARG_OF(cone_count), VCT_ARG_OF(v->keys), VCT_ARG_OF(voxels),
+        rc = vct_set_args(err, BOUNCE_STAGE, k, *next, 8, VCT_ARG_OF(v->keys), VCT_ARG_OF(voxels),
                           VCT_ARG_OF(v->albedo), VCT_ARG(direct, v->direct_radiance),
                           VCT_ARG_OF(v->direct_side), VCT_ARG(voxel_radiance, v->radiance),
                           VCT_ARG_OF(v->side), VCT_ARG_OF(keep_sides));
-    *next += 10;
+    *next += 8;
     return rc;
 }
 
-/* One bounce into v's voxels, gathered by cones through `light`'s bricks:
+/* One bounce into v's voxels, gathered by rays from `light`'s bricks:
  * v's own, or (carry) the voxels before, whose light a moved scene carries
  * over; then a carried voxel keeps its light before until its turn to
  * gather comes (carry->every). `refresh` 0 leaves the bricks' radiance to
  * the rest of the bounces that follows (v->radiance_stale), which filters
  * it once. keep_sides 1: each voxel's sides keep their plane (voxel_side.h). */
 static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
-                         const vct_voxel_carry *carry, const vct_cone_settings *cs,
-                         uint32_t diffuse_cones, int refresh, int keep_sides, vct_error *err) {
+                         const vct_voxel_carry *carry, const vct_cone_settings *cs, int refresh,
+                         int keep_sides, vct_error *err) {
     const vct_voxels *light = carry ? carry->before : v;
     if (!v->radiance || !v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT,
@@ -123,13 +122,11 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
              vct_accel_program_options(g));
     if (rc == VCT_OK)
         rc = vct_program_get(ctx, "conetrace/inject_bounce.cl", options, &p, err);
-    cl_mem cones = rc == VCT_OK ? cone_buffer(ctx, diffuse_cones, BOUNCE_STAGE, err) : NULL;
-    cl_kernel k = cones ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
+    cl_kernel k = rc == VCT_OK ? vct_kernel_create(ctx, p, "inject_bounce", err) : NULL;
     vct_cone_desc desc;
     vct_cone_desc_make(light, cs, s->ambient, &desc);
     int next = 0;
-    rc = k ? bounce_shared_args(k, g, light, &desc, cones, diffuse_cones, v, (cl_uint)keep_sides,
-                                &next, err)
+    rc = k ? bounce_shared_args(k, g, light, &desc, v, (cl_uint)keep_sides, &next, err)
            : (int)err->status;
     /* without carried light carry_every is 0 and the buffers never read */
     cl_mem carried_from = carry ? carry->carried_from : v->radiance;
@@ -160,8 +157,7 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
         rc = (int)err->status;
     if (fill) {
         int at = 0;
-        rc = bounce_shared_args(fill, g, light, &desc, cones, diffuse_cones, v, (cl_uint)keep_sides,
-                                &at, err);
+        rc = bounce_shared_args(fill, g, light, &desc, v, (cl_uint)keep_sides, &at, err);
         if (rc == VCT_OK)
             rc = vct_set_args(err, BOUNCE_STAGE, fill, at, 2, VCT_ARG_OF(received),
                               VCT_ARG(neighbours, v->neighbours));
@@ -178,7 +174,6 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
         ++v->bounces;
     if (k)
         clReleaseKernel(k);
-    vct_buffer_release(ctx, cones);
     vct_stage_end(ctx);
     if (rc != VCT_OK)
         return rc;
@@ -187,9 +182,8 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
 }
 
 vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
-                                    vct_voxels *v, const vct_cone_settings *cs,
-                                    uint32_t diffuse_cones, vct_error *err) {
-    return inject_bounce(ctx, s, g, v, NULL, cs, diffuse_cones, 1, v->bounces >= 1, err);
+                                    vct_voxels *v, const vct_cone_settings *cs, vct_error *err) {
+    return inject_bounce(ctx, s, g, v, NULL, cs, 1, v->bounces >= 1, err);
 }
 
 /* The bounces after direct light: the last bounce's radiance is filtered
@@ -199,7 +193,7 @@ static int light_bounces(vct_context *ctx, const vct_scene *s, const vct_accel *
                          const vct_cone_settings *cs, uint32_t bounces, vct_error *err) {
     int rc = VCT_OK;
     for (uint32_t b = 1; rc == VCT_OK && b < bounces; ++b)
-        rc = inject_bounce(ctx, s, g, v, NULL, cs, 6, b + 1 < bounces || !v->bounce_rest,
+        rc = inject_bounce(ctx, s, g, v, NULL, cs, b + 1 < bounces || !v->bounce_rest,
                            b > 1 && b + 1 < bounces, err);
     return rc == VCT_OK ? vct_voxels_bounce_rest(ctx, v, err) : (vct_status)rc;
 }
@@ -264,7 +258,7 @@ static vct_status prepare(vct_context *ctx, const vct_scene *s, const vct_accel 
         /* the light carried holds the higher bounces: no rest of the series */
         const int rest = v->bounce_rest;
         v->bounce_rest = 0;
-        rc = inject_bounce(ctx, s, g, v, carry, cs, 6, 1, 0, err);
+        rc = inject_bounce(ctx, s, g, v, carry, cs, 1, 0, err);
         v->bounce_rest = rest;
         *carried = 1;
     } else if (rc == VCT_OK && lit) {
@@ -316,7 +310,7 @@ int vct_vct_relight_carry(vct_context *ctx, const vct_scene *s, const vct_accel 
         rc = vct_voxels_inject_light_kept(ctx, s, g, v, err);
     /* each render's bounce is the last so far: it decides the sides */
     if (rc == VCT_OK)
-        rc = inject_bounce(ctx, s, g, v, NULL, cs, 6, 1, 0, err);
+        rc = inject_bounce(ctx, s, g, v, NULL, cs, 1, 0, err);
     v->bounce_rest = rest;
     return rc;
 }
