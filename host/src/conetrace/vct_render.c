@@ -92,15 +92,20 @@ static int bounce_shared_args(cl_kernel k, const vct_accel *g, const vct_voxels 
     return rc;
 }
 
+/* What a bounce leaves of the radiance bricks: every level made again; the
+ * leaf level alone, which is all the next bounce's rays read, the coarser
+ * levels waiting for a later refresh (v->radiance_stale); or nothing, for
+ * the rest of the series that follows, which filters them once. */
+typedef enum { REFRESH_NONE, REFRESH_LEAVES, REFRESH_ALL } bounce_refresh;
+
 /* One bounce into v's voxels, gathered by rays from `light`'s bricks:
  * v's own, or (carry) the voxels before, whose light a moved scene carries
  * over; then a carried voxel keeps its light before until its turn to
- * gather comes (carry->every). `refresh` 0 leaves the bricks' radiance to
- * the rest of the bounces that follows (v->radiance_stale), which filters
- * it once. keep_sides 1: each voxel's sides keep their plane (voxel_side.h). */
+ * gather comes (carry->every). keep_sides 1: each voxel's sides keep their
+ * plane (voxel_side.h). */
 static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
-                         const vct_voxel_carry *carry, const vct_cone_settings *cs, int refresh,
-                         int keep_sides, vct_error *err) {
+                         const vct_voxel_carry *carry, const vct_cone_settings *cs,
+                         bounce_refresh refresh, int keep_sides, vct_error *err) {
     const vct_voxels *light = carry ? carry->before : v;
     if (!v->radiance || !v->has_bricks)
         return vct_fail(err, VCT_ERR_INPUT,
@@ -177,13 +182,15 @@ static int inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *
     vct_stage_end(ctx);
     if (rc != VCT_OK)
         return rc;
-    v->radiance_stale = !refresh;
-    return refresh ? vct_bricks_refresh_radiance(ctx, v, err) : VCT_OK;
+    v->radiance_stale = refresh != REFRESH_ALL;
+    if (refresh == REFRESH_LEAVES)
+        return vct_bricks_refresh_leaves(ctx, v, err);
+    return refresh == REFRESH_ALL ? vct_bricks_refresh_radiance(ctx, v, err) : VCT_OK;
 }
 
 vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const vct_accel *g,
                                     vct_voxels *v, const vct_cone_settings *cs, vct_error *err) {
-    return inject_bounce(ctx, s, g, v, NULL, cs, 1, v->bounces >= 1, err);
+    return inject_bounce(ctx, s, g, v, NULL, cs, REFRESH_ALL, v->bounces >= 1, err);
 }
 
 /* The bounces after direct light: the last bounce's radiance is filtered
@@ -192,9 +199,12 @@ vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s, const 
 static int light_bounces(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_voxels *v,
                          const vct_cone_settings *cs, uint32_t bounces, vct_error *err) {
     int rc = VCT_OK;
-    for (uint32_t b = 1; rc == VCT_OK && b < bounces; ++b)
-        rc = inject_bounce(ctx, s, g, v, NULL, cs, b + 1 < bounces || !v->bounce_rest,
-                           b > 1 && b + 1 < bounces, err);
+    for (uint32_t b = 1; rc == VCT_OK && b < bounces; ++b) {
+        const bounce_refresh refresh = b + 1 < bounces  ? REFRESH_LEAVES
+                                       : v->bounce_rest ? REFRESH_NONE
+                                                        : REFRESH_ALL;
+        rc = inject_bounce(ctx, s, g, v, NULL, cs, refresh, b > 1 && b + 1 < bounces, err);
+    }
     return rc == VCT_OK ? vct_voxels_bounce_rest(ctx, v, err) : (vct_status)rc;
 }
 
@@ -258,7 +268,7 @@ static vct_status prepare(vct_context *ctx, const vct_scene *s, const vct_accel 
         /* the light carried holds the higher bounces: no rest of the series */
         const int rest = v->bounce_rest;
         v->bounce_rest = 0;
-        rc = inject_bounce(ctx, s, g, v, carry, cs, 1, 0, err);
+        rc = inject_bounce(ctx, s, g, v, carry, cs, REFRESH_ALL, 0, err);
         v->bounce_rest = rest;
         *carried = 1;
     } else if (rc == VCT_OK && lit) {
@@ -310,7 +320,7 @@ int vct_vct_relight_carry(vct_context *ctx, const vct_scene *s, const vct_accel 
         rc = vct_voxels_inject_light_kept(ctx, s, g, v, err);
     /* each render's bounce is the last so far: it decides the sides */
     if (rc == VCT_OK)
-        rc = inject_bounce(ctx, s, g, v, NULL, cs, 1, 0, err);
+        rc = inject_bounce(ctx, s, g, v, NULL, cs, REFRESH_ALL, 0, err);
     v->bounce_rest = rest;
     return rc;
 }

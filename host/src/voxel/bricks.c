@@ -419,7 +419,9 @@ int vct_bricks_radiance_check(const vct_voxels *v, const char *stage, vct_error 
     return VCT_OK;
 }
 
-int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err) {
+/* The radiance bricks again from the voxels' radiance: the leaf level's,
+ * then (filter) every coarser level's. */
+static int refresh_radiance(vct_context *ctx, vct_voxels *v, int filter, vct_error *err) {
     if (!v->has_bricks)
         return VCT_OK;
     if (v->brick_info.bricks == 0) {
@@ -432,7 +434,7 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
     const int channels = channel_count(&v->brick_info);
     if (rc == VCT_OK) /* r.window_ready: the windows found by the build */
         rc = run_leaf(&r, 0, 1, err);
-    if (rc == VCT_OK)
+    if (rc == VCT_OK && filter)
         rc = run_filters(&r, 0, 1, err);
     if (rc == VCT_OK)
         rc = copy_to_images(&r, VCT_BRICK_RADIANCE, channels, err);
@@ -442,6 +444,14 @@ int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err)
     if (rc == VCT_OK)
         v->radiance_ready = 1;
     return rc;
+}
+
+int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *v, vct_error *err) {
+    return refresh_radiance(ctx, v, 1, err);
+}
+
+int vct_bricks_refresh_leaves(vct_context *ctx, vct_voxels *v, vct_error *err) {
+    return refresh_radiance(ctx, v, 0, err);
 }
 
 int vct_bricks_info_get(const vct_voxels *v, vct_brick_info *info) {

@@ -126,6 +126,10 @@ int vct_bricks_radiance_check(const vct_voxels *voxels, const char *stage, vct_e
 /* Re-creates the radiance bricks from the voxels' radiance and filters
  * them up (after light injection); nothing when no bricks are built. */
 int vct_bricks_refresh_radiance(vct_context *ctx, vct_voxels *voxels, vct_error *err);
+/* The leaf level's radiance bricks alone, for readers of the finest level
+ * (a bounce's rays); the coarser levels keep their light before until
+ * vct_bricks_refresh_radiance. */
+int vct_bricks_refresh_leaves(vct_context *ctx, vct_voxels *voxels, vct_error *err);
 void vct_bricks_release(vct_voxels *voxels);
 
 #endif
