@@ -11,11 +11,10 @@
  * meet the scene, at the cone's footprint there, seen from the cone's side
  * (the box keeps 0.504). One ray on the axis switches the whole rest on or
  * off between neighbouring pixels, whose cones' axes meet a wall or leave
- * through an opening: polygons of light on the walls. The camera's cones
- * send CONE_REST_RAYS_CAMERA (the Cornell box 0.146 with one, 0.100 with
- * nine, as with sixteen). Directional bricks
- * keep a wall's opacity along its normal; with the same rest the box gained
- * light (0.543), so they keep the sky check alone. */
+ * through an opening: polygons of light on the walls. A cone sends
+ * CONE_REST_RAYS (the Cornell box 0.146 with one, 0.100 with nine, as with
+ * sixteen). Directional bricks keep a wall's opacity along its normal; with the same rest the box
+ * gained light (0.543), so they keep the sky check alone. */
 #ifndef VCT_CONE_SKY_H
 #define VCT_CONE_SKY_H
 
@@ -23,7 +22,7 @@
 #include "scene/bsdf.h" /* basis_of */
 #include "conetrace/cone_trace.h"
 
-#define CONE_REST_RAYS_CAMERA 9u
+#define CONE_REST_RAYS 9u
 /* The rest's rays read the light where they meet the scene over 0.7 of the
  * cone's diameter there. A cell of the whole diameter takes in what lies
  * around the hit in depth (a wall's corner, the far side of a slab) that
@@ -100,15 +99,14 @@ inline float3 cone_hit_light(CONE_POOLS, __global const uint *child, const vct_c
 }
 
 /* r's radiance, its ambient share dropped where the ray from origin along d
- * meets geometry; with isotropic bricks, that share split by what `rays`
- * rays across the cone (1 to 9; tan_half its aperture) meet: the ambient
+ * meets geometry; with isotropic bricks, that share split by what
+ * CONE_REST_RAYS rays across the cone (tan_half its aperture) meet: the ambient
  * light for the share of them that leave the scene (at most that share),
  * the mean light where the others meet it for the remainder. */
 inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const uint *child,
                                 const vct_cone_desc *c, float3 origin, float3 d, float tan_half,
-                                cone_result r, uint rays) {
+                                cone_result r) {
 #ifdef VCT_ANISOTROPIC
-    (void)rays;
     if (!r.left || all(c->ambient.xyz == 0.0f) || r.alpha >= 1.0f)
         return r.radiance;
     hit_record h;
@@ -122,7 +120,7 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
     basis_of(d, &t1, &t2);
     float3 met = (float3)(0.0f);
     uint open = 0u;
-    for (uint k = 0; k < rays; ++k) {
+    for (uint k = 0; k < CONE_REST_RAYS; ++k) {
         const float2 off = cone_rest_offset(k);
         const float3 dk = normalize(d + tan_half * (off.x * t1 + off.y * t2));
         hit_record h;
@@ -139,8 +137,9 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
      * (a 0.8 m roof slit seen by wide cones: its sky light squared). What
      * the rest leaves beyond the open share is what the other rays met. */
     const float rest = 1.0f - r.alpha;
-    const float sky = fmin((float)open / (float)rays, rest);
-    const float3 beyond = open < rays ? met / (float)(rays - open) : (float3)(0.0f);
+    const float sky = fmin((float)open / (float)CONE_REST_RAYS, rest);
+    const float3 beyond =
+        open < CONE_REST_RAYS ? met / (float)(CONE_REST_RAYS - open) : (float3)(0.0f);
     return r.radiance + (sky - rest) * c->ambient.xyz + (rest - sky) * beyond;
 #endif
 }

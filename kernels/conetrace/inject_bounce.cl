@@ -34,7 +34,7 @@
 #include "conetrace/cone_sky.h"  /* cone_hit_light */
 #include "conetrace/cone_trace.h"
 #include "light/direct_light.h" /* surface_epsilon */
-#include "scene/turn.h"
+#include "scene/bsdf.h"         /* cosine_dir */
 #include "voxel/octree.h"
 #include "voxel/voxel_carry.h"
 #include "voxel/voxel_side.h"
@@ -45,14 +45,11 @@
 #define BOUNCE_RAYS_SIDE 3u
 
 /* Ray i of the stratified grid, cell (i % side, i / side) at `jitter`
- * within it, about unit n with tangents t, b: cosine-weighted (Malley's
- * method, the unit disc's area mapped up onto the hemisphere). */
+ * within it, about unit n with tangents t, b: cosine-weighted. */
 inline float3 bounce_ray_dir(float3 n, float3 t, float3 b, uint i, float2 jitter) {
     const float u = ((float)(i % BOUNCE_RAYS_SIDE) + jitter.x) / (float)BOUNCE_RAYS_SIDE;
     const float v = ((float)(i / BOUNCE_RAYS_SIDE) + jitter.y) / (float)BOUNCE_RAYS_SIDE;
-    const float r = sqrt(u);
-    const float2 cs = turn_cos_sin(v);
-    return normalize(r * cs.x * t + r * cs.y * b + sqrt(fmax(1.0f - u, 0.0f)) * n);
+    return normalize(cosine_dir(n, t, b, u, v));
 }
 
 /* The cosine-weighted radiance arriving at `from` (voxel `key`, on the

@@ -108,6 +108,15 @@ inline float fresnel_dielectric(float cos_i, float eta) {
     return 0.5f * (rs * rs + rp * rp);
 }
 
+/* Cosine-weighted direction (u1, u2) about unit n in the frame (t, b):
+ * the unit disc's point at radius sqrt(u1) and turn u2 lifted onto the
+ * hemisphere (Malley's method). Unit already in an orthonormal frame. */
+inline float3 cosine_dir(float3 n, float3 t, float3 b, float u1, float u2) {
+    const float r = sqrt(u1), cos_i = sqrt(fmax(0.0f, 1.0f - u1));
+    const float2 cs = turn_cos_sin(u2);
+    return r * cs.x * t + r * cs.y * b + cos_i * n;
+}
+
 /* front: the ray arrived on the side the geometric normal points to. */
 inline int bsdf_sample_dir(const vct_material_desc *m, float3 n, float3 wo, int front, float u0,
                            float u1, float u2, bsdf_sample *s) {
@@ -153,11 +162,10 @@ inline int bsdf_sample_dir(const vct_material_desc *m, float3 n, float3 wo, int 
         s->wi = normalize(st * cs.x * t + st * cs.y * b + ct * r);
     } else {
         basis_of(n, &t, &b);
-        const float r = sqrt(u1), cos_i = sqrt(fmax(0.0f, 1.0f - u1));
-        const float2 cs = turn_cos_sin(u2);
-        /* unit already (an orthonormal frame, r^2 + cos_i^2 = 1): no
-         * normalize, which cost the path tracer about 3 % on PoCL */
-        s->wi = r * cs.x * t + r * cs.y * b + cos_i * n;
+        const float cos_i = sqrt(fmax(0.0f, 1.0f - u1));
+        /* unit already: no normalize, which cost the path tracer about 3 %
+         * on PoCL */
+        s->wi = cosine_dir(n, t, b, u1, u2);
         if (!(pg > 0.0f)) { /* Lambert alone: f cos / pdf is the albedo */
             s->pdf = cos_i / BSDF_PI;
             s->weight = diffuse_color(m);
