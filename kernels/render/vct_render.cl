@@ -53,7 +53,7 @@
 #include "photon/photon.h"
 #include "vct_types.h"
 
-#define AOV_SLOTS 6u
+#define AOV_SLOTS 8u
 #define GBUF_SLOTS 5u
 /* Shadow cones step an eighth as far as the setting says, 1/8 of the
  * diameter at the default step: a thin occluder then falls between samples
@@ -112,6 +112,37 @@ inline void reflection_write(__global float4 *reflection, uint pixel, float4 rpo
     reflection[3u * pixel + 2u] = rdir;
 }
 
+/* The denoiser's guides, as render/guides.cl makes them, from the camera
+ * samples the pixel took (AOV slots 6 and 7): the mean albedo (1 where a
+ * sample found nothing) and w the share of samples on no emitter; the mean
+ * normal facing the viewer (shorter at an edge) and the mean distance of
+ * the samples that found a surface, 0 where none did. */
+typedef struct guide_sum {
+    float3 albedo, normal;
+    float depth;
+    uint hits, glowing;
+} guide_sum;
+
+inline void guide_add(guide_sum *g, const primary_sample *t,
+                      __global const vct_material_desc *materials, float3 eye) {
+    if (!t->found) {
+        g->albedo += 1.0f;
+        return;
+    }
+    g->albedo += t->galbedo.xyz;
+    g->glowing += any(materials[as_uint(t->gpos.w)].emission.xyz > 0.0f);
+    g->normal += t->gnormal.xyz;
+    g->depth += distance(eye, t->gpos.xyz);
+    ++g->hits;
+}
+
+inline void guide_write(__global float4 *aov, uint pixel, const guide_sum *g, uint samples) {
+    const float inv = 1.0f / (float)samples;
+    aov[AOV_SLOTS * pixel + 6u] = (float4)(g->albedo * inv, (float)(samples - g->glowing) * inv);
+    aov[AOV_SLOTS * pixel + 7u] =
+        (float4)(g->normal * inv, g->hits ? g->depth / (float)g->hits : 0.0f);
+}
+
 /* The camera ray through each pixel's centre. keys: what vct_edge_flags
  * compares between neighbours. */
 __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
@@ -134,6 +165,11 @@ __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
     }
     if (reflection)
         reflection_write(reflection, pixel, s.rpos, s.rnormal, s.rdir);
+    if (aov) {
+        guide_sum g = {(float3)(0.0f), (float3)(0.0f), 0.0f, 0u, 0u};
+        guide_add(&g, &s, materials, cam.position.xyz);
+        guide_write(aov, pixel, &g, 1u);
+    }
 }
 
 /* EDGE where a pixel's 3x3 neighbourhood holds an edge: a neighbour with
@@ -271,6 +307,7 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     uint material = found ? as_uint(gbuf[GBUF_SLOTS * pixel].w) : 0u;
     /* the samples' own contrast: an edge of high contrast between the centres */
     float lo = INFINITY, hi = 0.0f;
+    guide_sum guide = {(float3)(0.0f), (float3)(0.0f), 0.0f, 0u, 0u};
     for (uint s = 0; s < n * n; ++s) {
         /* Cell (i, j) of the n x n grid, and within it the sub-cell (j, i)
          * of an n x n grid of its own: every ray on its own column and row
@@ -280,6 +317,7 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
         const float px = (float)x + ((float)(i * n + j) + 0.5f) / (float)(n * n);
         const float py = (float)row + ((float)(j * n + i) + 0.5f) / (float)(n * n);
         const primary_sample t = primary_trace(&ps, &cam, px, py, id, s, n * n);
+        guide_add(&guide, &t, materials, cam.position.xyz);
         radiance += t.radiance;
         rweight += (float3)(t.rpos.w, t.rnormal.w, t.rdir.w);
         const float shade = sample_shade(&t);
@@ -307,6 +345,8 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
         }
     }
     const float inv = 1.0f / (float)(n * n);
+    if (aov)
+        guide_write(aov, pixel, &guide, n * n);
     gbuf[GBUF_SLOTS * pixel + 3u] = (float4)(cover * inv, 0.0f);
     const uint scale = flags[pixel] == EDGE_EMITTER ? EMITTER_EDGE_SCALE
                        : flags[pixel] == EDGE_CONTRAST_FLAG || hi - lo > EDGE_CONTRAST * hi

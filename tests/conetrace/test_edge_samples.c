@@ -191,6 +191,111 @@ static void direct_edges(void) {
     vct_scene_release(s);
 }
 
+/* The denoiser's guides among the AOVs (vct_aovs.albedo, .normal_depth)
+ * come from the pixel's own camera samples: with one ray per pixel they are
+ * render_guides' with one ray; with N x N they are, at every pixel an edge
+ * crosses, the mean of render_guides' at the N x N fine pixels its rays go
+ * through (the albedo, the share on no emitter, the normal, the distance
+ * of the rays that found a surface), and elsewhere the centre's, within
+ * what a flat surface varies across a pixel. The scene: the floor of two
+ * materials, the plate over it, the sky beyond, and a small emitter. */
+static void guides_from_samples(void) {
+    const float quads[] = {-2.2f, 0,    -2.2f, 0.7f,  0,     -2.2f, 0.7f,  0,     2.2f, -2.2f,
+                           0,     2.2f, 0.7f,  0,     -2.2f, 2.2f,  0,     -2.2f, 2.2f, 0,
+                           2.2f,  0.7f, 0,     2.2f,  -1.9f, 1.1f,  -1.3f, -0.2f, 1.1f, -1.3f,
+                           -0.2f, 1.1f, 0.9f,  -1.9f, 1.1f,  0.9f,  0.9f,  0.4f,  0.3f, 1.3f,
+                           0.4f,  0.3f, 1.3f,  0.4f,  0.6f,  0.9f,  0.4f,  0.6f};
+    const uint32_t quad_material[4] = {0, 1, 0, 2};
+    vct_material m[3] = {vct_material_default(), vct_material_default(), vct_material_default()};
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.8f;
+    m[1].albedo[0] = 0.3f, m[1].albedo[1] = 0.6f, m[1].albedo[2] = 0.2f;
+    m[2].albedo[0] = m[2].albedo[1] = m[2].albedo[2] = 0.5f;
+    m[2].emission[0] = m[2].emission[1] = m[2].emission[2] = 4.0f;
+    vct_scene *s = scene_of(quads, 4, quad_material, m, 3);
+    vct_plan plan;
+    vct_case_direct_plan(s, &plan);
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_image centre_a, centre_nd, fine_a, fine_nd;
+    REQUIRE_OK(vct_render_guides(ctx, s, g, W, H, 1, &centre_a, &centre_nd, &err), err);
+    REQUIRE_OK(vct_render_guides(ctx, s, g, N * N * W, N * N * H, 1, &fine_a, &fine_nd, &err), err);
+    vct_accel_release(g);
+    for (uint32_t n = 1; n <= N; n += N - 1) {
+        vct_aovs a;
+        vct_image im = render_vct(s, &plan, W, H, n, &a);
+        int edges = 0, off = 0, glowing = 0;
+        double worst = 0.0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const size_t p = (size_t)y * W + x;
+                const float *ga = a.albedo.rgba + 4 * p, *gn = a.normal_depth.rgba + 4 * p;
+                double want[8] = {0}, hits = 0.0;
+                int edge = 0;
+                if (n == 1) {
+                    for (int k = 0; k < 4; ++k) {
+                        want[k] = centre_a.rgba[4 * p + k];
+                        want[4 + k] = centre_nd.rgba[4 * p + k];
+                    }
+                } else {
+                    const float *first = NULL, *first_n = NULL;
+                    for (int j = 0; j < N; ++j)
+                        for (int i = 0; i < N; ++i) {
+                            const size_t fx = (size_t)N * N * x + N * i + j,
+                                         fy = (size_t)N * N * y + N * j + i;
+                            const size_t f = fy * fine_a.width + fx;
+                            const float *fa = fine_a.rgba + 4 * f, *fn = fine_nd.rgba + 4 * f;
+                            for (int k = 0; k < 4; ++k)
+                                want[k] += fa[k] / (N * N);
+                            for (int k = 0; k < 3; ++k)
+                                want[4 + k] += fn[k] / (N * N);
+                            want[7] += fn[3];
+                            hits += fn[3] > 0.0f;
+                            edge |= first &&
+                                    (memcmp(first, fa, 16) != 0 || memcmp(first_n, fn, 12) != 0);
+                            first_n = first ? first_n : fn;
+                            first = first ? first : fa;
+                        }
+                    want[7] = hits > 0.0 ? want[7] / hits : 0.0;
+                }
+                double e = 0.0;
+                for (int k = 0; k < 7; ++k)
+                    e = fmax(e, fabs((k < 4 ? ga[k] : gn[k - 4]) - want[k]));
+                /* the distance: relative, and across a flat pixel's rays */
+                e = fmax(e, fabs(gn[3] - want[7]) / (want[7] + 1.0) * (n == 1 ? 10.0 : 1.0));
+                edges += edge;
+                glowing += ga[3] < 1.0f;
+                worst = fmax(worst, e);
+                if (!(e <= (n == 1 ? 1e-5 : 2e-3)) && off++ < 3)
+                    fprintf(stderr,
+                            "guides, %u rays per axis: pixel (%d, %d) off by %g: albedo %g %g "
+                            "%g %g, normal and distance %g %g %g %g; want %g %g %g %g, %g %g %g "
+                            "%g\n",
+                            n, x, y, e, ga[0], ga[1], ga[2], ga[3], gn[0], gn[1], gn[2], gn[3],
+                            want[0], want[1], want[2], want[3], want[4], want[5], want[6], want[7]);
+            }
+        if (n == 1)
+            CHECK(off == 0 && glowing > 0,
+                  "one ray per pixel: %d pixels' guides differ from render_guides' (worst %g), "
+                  "%d on the emitter",
+                  off, worst, glowing);
+        else
+            CHECK(off <= 2 && edges > 50,
+                  "%u rays per axis: %d pixels' guides (%d on an edge) differ from the mean of "
+                  "the fine pixels their rays go through (worst %g)",
+                  n, off, edges, worst);
+        printf("guides from the camera samples, %u rays per axis: %d on an edge, %d off, worst "
+               "%.3g\n",
+               n, edges, off, worst);
+        vct_image_release(&im);
+        vct_aovs_release(&a);
+    }
+    vct_image *all[] = {&centre_a, &centre_nd, &fine_a, &fine_nd};
+    for (int i = 0; i < 4; ++i)
+        vct_image_release(all[i]);
+    vct_scene_release(s);
+}
+
 static void indirect_share(void) {
     const float plate[] = {-1.2f, 0.5f, -0.9f, 1.1f,  0.5f, -0.9f,
                            1.1f,  0.5f, 1.0f,  -1.2f, 0.5f, 1.0f};
@@ -606,6 +711,7 @@ int main(void) {
     ctx = check_context();
     too_many_rays();
     direct_edges();
+    guides_from_samples();
     indirect_share();
     texture_detail();
     emitter_border();

@@ -15,7 +15,7 @@ import numpy as np
 import OpenEXR
 
 LAYERS = {"direct": "RGB", "indirect": "RGB", "specular": "RGB", "ao": "Y", "level": "Y",
-          "position": "XYZ", "normal": "XYZ"}
+          "position": "XYZ", "normal": "XYZ", "albedo": "RGB"}
 failures = 0
 
 

@@ -184,6 +184,13 @@ typedef struct vct_aovs {
     vct_image level;    /* mean octree level the diffuse cones sampled */
     vct_image position; /* the surface the camera ray found, w 1 (all 0 where none) */
     vct_image normal;   /* its shading normal, facing the viewer, w 1 (all 0 where none) */
+    /* The denoiser's guides (vct_denoise_guides) from the pixel's camera
+     * samples, its centre's or, on an edge, the n x n of the edge samples:
+     * their mean albedo, 1 where one found nothing, w the share on no
+     * emitter; their mean normal facing the viewer (shorter at an edge), w
+     * the mean distance of those that found a surface (0 where none did). */
+    vct_image albedo;
+    vct_image normal_depth;
 } vct_aovs;
 VCT_API void vct_aovs_release(vct_aovs *aovs);
 

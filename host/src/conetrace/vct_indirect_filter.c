@@ -1,6 +1,6 @@
 /* Cone tracing's indirect light filtered through the denoiser's host
- * interface: the frame read back, the guides traced for the same rows,
- * vct_denoise with the indirect light alone, and the result written into
+ * interface: the frame read back, vct_denoise with the indirect light alone
+ * and the guides of the surfaces it was gathered at, and the result written into
  * the frame again (a frame kept on the device, as the viewer's, shows it
  * too). */
 #include "conetrace/vct_indirect_filter.h"
@@ -14,16 +14,14 @@ int vct_indirect_filter_reach(uint32_t passes) {
     return passes ? (2 << passes) + 1 : 0;
 }
 
-int vct_indirect_filter(vct_context *ctx, const vct_scene *s, const vct_accel *g, int width,
-                        int height, uint32_t passes, vct_image *indirect, vct_error *err) {
-    vct_image frame = {0}, albedo = {0}, normal_depth = {0}, filtered = {0};
+int vct_indirect_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
+                        uint32_t passes, vct_image *indirect, vct_error *err) {
+    const int width = indirect->width, height = indirect->height;
+    vct_image frame = {0}, filtered = {0};
     int rc = vct_image_read_device(ctx, STAGE, ctx->frame, width, height, &frame, err);
-    if (rc == VCT_OK)
-        rc = vct_render_guides(ctx, s, g, width, height, VCT_INDIRECT_GUIDE_RAYS, &albedo,
-                               &normal_depth, err);
     vct_denoise_options o = vct_denoise_options_default();
     o.iterations = passes;
-    const vct_denoise_guides guides = {&albedo, &normal_depth, NULL, indirect, 1};
+    const vct_denoise_guides guides = {albedo, normal_depth, NULL, indirect, 1};
     if (rc == VCT_OK)
         rc = vct_denoise(ctx, &frame, &guides, &o, &filtered, err);
     const size_t values = 4 * (size_t)width * height;
@@ -33,7 +31,7 @@ int vct_indirect_filter(vct_context *ctx, const vct_scene *s, const vct_accel *g
     for (size_t i = 0; rc == VCT_OK && i < values; ++i)
         if (i % 4 != 3)
             indirect->rgba[i] += filtered.rgba[i] - frame.rgba[i];
-    vct_image *all[] = {&frame, &albedo, &normal_depth, &filtered};
+    vct_image *all[] = {&frame, &filtered};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         vct_image_release(all[i]);
     return rc;

@@ -4,21 +4,19 @@
 #ifndef VCT_VCT_INDIRECT_FILTER_H
 #define VCT_VCT_INDIRECT_FILTER_H
 
-#include "accel/accel.h"
+#include "frame/frame.h"
 #include "runtime/runtime.h"
-
-/* Camera rays per pixel side for the filter's guides (vct_render_guides). */
-#define VCT_INDIRECT_GUIDE_RAYS 4u
 
 /* Rows beyond a band's own that `passes` filter passes read (vct_band_shape):
  * the variance estimate's 2, the firefly clamp's 1, each pass's 2 step,
  * and the depth slope's 1 at the outermost taps. */
 int vct_indirect_filter_reach(uint32_t passes);
 
-/* Filters `indirect` (the frame's indirect light, width x height: ctx's
- * frame, or the band of it ctx renders) in place and puts what the filter
- * changed into the frame. */
-int vct_indirect_filter(vct_context *ctx, const vct_scene *s, const vct_accel *g, int width,
-                        int height, uint32_t passes, vct_image *indirect, vct_error *err);
+/* Filters `indirect` (the frame's indirect light: ctx's frame, or the band
+ * of it ctx renders) in place, guided by the albedo and normal-depth images
+ * of the surfaces it was gathered at (vct/denoise.h), and puts what the
+ * filter changed into the frame. */
+int vct_indirect_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
+                        uint32_t passes, vct_image *indirect, vct_error *err);
 
 #endif

@@ -45,6 +45,8 @@ void vct_aovs_release(vct_aovs *a) {
     vct_image_release(&a->level);
     vct_image_release(&a->position);
     vct_image_release(&a->normal);
+    vct_image_release(&a->albedo);
+    vct_image_release(&a->normal_depth);
 }
 
 /* The preset on the device: vct_cone_dir per cone. */
@@ -502,13 +504,14 @@ static int diffuse_pass(frame *f, cl_mem cones, cl_uint count, int sparse, vct_e
 
 /* The AOV buffer (AOV_SLOTS float4 per pixel, kernels/render/vct_render.cl) split
  * into images: a slot's float4 as it is, or one of its components as grey. */
-#define AOV_SLOTS 6
+#define AOV_SLOTS 8
 static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
     const struct {
         vct_image *image;
         int slot, component; /* component -1: the whole float4 */
-    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1}, {&a->specular, 2, -1}, {&a->ao, 3, 0},
-                {&a->level, 3, 1},   {&a->position, 4, -1}, {&a->normal, 5, -1}};
+    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1}, {&a->specular, 2, -1},
+                {&a->ao, 3, 0},      {&a->level, 3, 1},     {&a->position, 4, -1},
+                {&a->normal, 5, -1}, {&a->albedo, 6, -1},   {&a->normal_depth, 7, -1}};
     const size_t pixels = (size_t)f->size[0] * f->size[1], bytes = 16 * AOV_SLOTS * pixels;
     float *raw = malloc(bytes);
     int rc = raw ? vct_buffer_read(f->ctx, "vct AOVs", f->aov, 0, bytes, raw, err)
@@ -637,9 +640,10 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
     vct_aovs for_filter = {0};
     if (rc == VCT_OK && (aovs || filter))
         rc = read_aovs(&f, aovs ? aovs : &for_filter, err);
+    vct_aovs *kept = aovs ? aovs : &for_filter;
     if (rc == VCT_OK && filter)
-        rc = vct_indirect_filter(ctx, s, g, opt->width, opt->height, opt->indirect_passes,
-                                 aovs ? &aovs->indirect : &for_filter.indirect, err);
+        rc = vct_indirect_filter(ctx, &kept->albedo, &kept->normal_depth, opt->indirect_passes,
+                                 &kept->indirect, err);
     vct_aovs_release(&for_filter);
     if (rc == VCT_OK)
         rc = vct_frame_deliver(ctx, "vct image", image, err);
