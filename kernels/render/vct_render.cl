@@ -35,7 +35,8 @@
  * until the edges are refined the centre's shading (sample_shade). AOVs, AOV_SLOTS
  * float4 per pixel when given: direct, indirect diffuse, specular, (open
  * fraction, mean level sampled, 0, 1), position and normal (w 1 where a
- * surface was found, else the slot stays 0). Glass reflections, 3 float4
+ * surface was found, else the slot stays 0), and the denoiser's albedo and
+ * normal-depth guides (guide_write). Glass reflections, 3 float4
  * per pixel, when refraction and specular are both planned: (point,
  * weight.x), (normal, weight.y), (mirror direction, weight.z), the weight 0
  * where there is none. */
