@@ -121,18 +121,27 @@ static void block_all(const vct_image *fine, int x, int y, int k, double *mean, 
     *spread = hi - lo;
 }
 
-static void direct_edges(void) {
-    /* A floor of two materials (x < 0.7 and beyond), 2.2 wide each way, and
-     * a plate of the first material over it; a point light above. */
-    const float quads[] = {-2.2f, 0,    -2.2f, 0.7f,  0,    -2.2f, 0.7f,  0,    2.2f,
-                           -2.2f, 0,    2.2f,  0.7f,  0,    -2.2f, 2.2f,  0,    -2.2f,
-                           2.2f,  0,    2.2f,  0.7f,  0,    2.2f,  -1.9f, 1.1f, -1.3f,
-                           -0.2f, 1.1f, -1.3f, -0.2f, 1.1f, 0.9f,  -1.9f, 1.1f, 0.9f};
-    const uint32_t quad_material[3] = {0, 1, 0};
-    vct_material m[2] = {vct_material_default(), vct_material_default()};
+/* A floor of two materials (x < 0.7 and beyond), 2.2 wide each way, and a
+ * plate of the first material over it; with `emitter`, a small emitting
+ * quad above the floor too. */
+static vct_scene *floor_and_plate(int emitter) {
+    const float quads[] = {-2.2f, 0,    -2.2f, 0.7f,  0,     -2.2f, 0.7f,  0,     2.2f, -2.2f,
+                           0,     2.2f, 0.7f,  0,     -2.2f, 2.2f,  0,     -2.2f, 2.2f, 0,
+                           2.2f,  0.7f, 0,     2.2f,  -1.9f, 1.1f,  -1.3f, -0.2f, 1.1f, -1.3f,
+                           -0.2f, 1.1f, 0.9f,  -1.9f, 1.1f,  0.9f,  0.9f,  0.4f,  0.3f, 1.3f,
+                           0.4f,  0.3f, 1.3f,  0.4f,  0.6f,  0.9f,  0.4f,  0.6f};
+    const uint32_t quad_material[4] = {0, 1, 0, 2};
+    vct_material m[3] = {vct_material_default(), vct_material_default(), vct_material_default()};
     m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.8f;
     m[1].albedo[0] = 0.3f, m[1].albedo[1] = 0.6f, m[1].albedo[2] = 0.2f;
-    vct_scene *s = scene_of(quads, 3, quad_material, m, 2);
+    m[2].albedo[0] = m[2].albedo[1] = m[2].albedo[2] = 0.5f;
+    m[2].emission[0] = m[2].emission[1] = m[2].emission[2] = 4.0f;
+    return scene_of(quads, emitter ? 4 : 3, quad_material, m, emitter ? 3 : 2);
+}
+
+static void direct_edges(void) {
+    /* the floor and the plate; a point light above */
+    vct_scene *s = floor_and_plate(0);
     vct_light light = {0};
     light.type = VCT_LIGHT_POINT;
     light.position[0] = -1.5f, light.position[1] = 3.4f, light.position[2] = -0.35f;
@@ -200,18 +209,7 @@ static void direct_edges(void) {
  * what a flat surface varies across a pixel. The scene: the floor of two
  * materials, the plate over it, the sky beyond, and a small emitter. */
 static void guides_from_samples(void) {
-    const float quads[] = {-2.2f, 0,    -2.2f, 0.7f,  0,     -2.2f, 0.7f,  0,     2.2f, -2.2f,
-                           0,     2.2f, 0.7f,  0,     -2.2f, 2.2f,  0,     -2.2f, 2.2f, 0,
-                           2.2f,  0.7f, 0,     2.2f,  -1.9f, 1.1f,  -1.3f, -0.2f, 1.1f, -1.3f,
-                           -0.2f, 1.1f, 0.9f,  -1.9f, 1.1f,  0.9f,  0.9f,  0.4f,  0.3f, 1.3f,
-                           0.4f,  0.3f, 1.3f,  0.4f,  0.6f,  0.9f,  0.4f,  0.6f};
-    const uint32_t quad_material[4] = {0, 1, 0, 2};
-    vct_material m[3] = {vct_material_default(), vct_material_default(), vct_material_default()};
-    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.8f;
-    m[1].albedo[0] = 0.3f, m[1].albedo[1] = 0.6f, m[1].albedo[2] = 0.2f;
-    m[2].albedo[0] = m[2].albedo[1] = m[2].albedo[2] = 0.5f;
-    m[2].emission[0] = m[2].emission[1] = m[2].emission[2] = 4.0f;
-    vct_scene *s = scene_of(quads, 4, quad_material, m, 3);
+    vct_scene *s = floor_and_plate(1);
     vct_plan plan;
     vct_case_direct_plan(s, &plan);
     vct_error err = {0};

@@ -1,12 +1,11 @@
 /* Cone tracing's indirect light filtered through the denoiser's host
  * interface: the frame read back, vct_denoise with the indirect light alone
- * and the guides of the surfaces it was gathered at, and the result written into
- * the frame again (a frame kept on the device, as the viewer's, shows it
- * too). */
+ * and the guides of the surfaces it was gathered at, and the result written
+ * into the frame again (a frame kept on the device, as the viewer's, shows
+ * it too). */
 #include "conetrace/vct_indirect_filter.h"
 #include "frame/frame.h"
 #include "vct/denoise.h"
-#include "vct/render.h"
 
 #define STAGE "vct indirect filter"
 
