@@ -19,6 +19,9 @@
 #define TEX 6       /* texels per side: their edges fall inside voxels */
 #define QUAD_Y 4.0f /* the masked quad's height over the floor */
 #define CUTOFF 0.5f
+/* fragment_albedo.h's FRAGMENT_ALBEDO_SIDE: the points per side a voxel's
+ * albedo and mask coverage are read at */
+#define POINTS 4
 
 static vct_context *ctx;
 static const float light[3] = {8.3f, 20.0f, 7.7f}, intensity = 400.0f;
@@ -264,7 +267,7 @@ static void voxels_see_through(void) {
     printf("%-40s %d floor voxels: %d lit through the mask, %d in its shadow\n",
            "voxels under the mask", checked, lit_through, shadowed);
     /* The quad's voxels (the layers on both sides of y = 4): opacity is the
-     * share of fragment_albedo.h's 8 x 8 points over the voxel that the mask
+     * share of fragment_albedo.h's POINTS x POINTS points over the voxel that the mask
      * keeps (the quad's diagonal, where both triangles meet, left out). */
     float *albedo = malloc(16ull * info.voxels);
     REQUIRE_OK(vct_voxels_read(ctx, v, keys, albedo, NULL, NULL, &err), err);
@@ -278,14 +281,14 @@ static void voxels_see_through(void) {
             cell[0] < 4 || cell[0] > 11 || cell[2] < 4 || cell[2] > 11)
             continue;
         int kept = 0;
-        for (int j = 0; j < 8; ++j)
-            for (int k = 0; k < 8; ++k) {
-                const double x = cell[0] + (k + 0.5) / 8.0, z = cell[2] + (j + 0.5) / 8.0;
+        for (int j = 0; j < POINTS; ++j)
+            for (int k = 0; k < POINTS; ++k) {
+                const double x = cell[0] + (k + 0.5) / POINTS, z = cell[2] + (j + 0.5) / POINTS;
                 kept += quad_alpha(&mc, (x - 4.0) / 8.0, (z - 4.0) / 8.0) >= CUTOFF;
             }
-        const double want = kept / 64.0, got = albedo[4 * i + 3];
+        const double want = kept / (double)(POINTS * POINTS), got = albedo[4 * i + 3];
         ++quad_voxels;
-        partial += kept > 0 && kept < 64;
+        partial += kept > 0 && kept < POINTS * POINTS;
         if (!(fabs(got - want) < 1e-5) && off++ < 3)
             CHECK(0, "quad voxel (%u %u %u): opacity %g, expected %g", cell[0], cell[1], cell[2],
                   got, want);
