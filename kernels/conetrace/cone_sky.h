@@ -23,16 +23,19 @@
 #include "conetrace/cone_trace.h"
 
 #define CONE_REST_RAYS 9u
-/* The rest's rays read the light where they meet the scene over 0.7 of the
- * cone's diameter there. A cell of the whole diameter takes in what lies
- * around the hit in depth (a wall's corner, the far side of a slab) that
- * the cone never sees: a room lit from within by two small ceiling panels
- * lost light with every bounce (its second 0.84 of the path tracer's, 0.90
- * read at the finest level). Finer cells see more of a texture's or a hot
- * spot's detail through nine rays: blotches. Over the scene suite (NRMSE,
- * 128^2 / 256^2): 1.0 0.0988 / 0.1093, 0.7 0.0973 / 0.1090, 0.5 0.0969 /
- * 0.1104 (the textured room 0.079 / 0.091 at 0.7, 0.086 / 0.098 at 0.5). */
-#define CONE_REST_FOOTPRINT 0.7f
+/* The rest's rays read the light where they meet the scene over a third of
+ * the cone's diameter there: each of the nine stands for a ninth of the
+ * cone's solid angle, a cone a third as wide. A wider cell takes in what
+ * lies around the hit in depth (a wall's corner, the far side of a slab, a
+ * block beside a floor) that the ray never sees, and darkened every bounce
+ * (the Cornell box's first bounce at the camera 0.94 of the path tracer's
+ * at 0.7 of the diameter, 0.97 at a third, 0.99 at the finest level).
+ * Finer cells see more of a texture's or a hot spot's detail through nine
+ * rays: blotches. Over the scene suite at 128^2 (mean NRMSE, against
+ * 4096-spp references): 0.7 0.0802, a third 0.0794 (Cornell box 0.061 ->
+ * 0.053, its mean 0.972 -> 0.982; panel room 0.128 -> 0.122; lamp room
+ * 0.063 -> 0.067, textured room 0.056 -> 0.062), the finest 0.0799. */
+#define CONE_REST_FOOTPRINT (1.0f / 3.0f)
 /* Below this a sample's colour over its opacity is half-float noise. */
 #define CONE_REST_MIN_OPACITY 1e-3f
 

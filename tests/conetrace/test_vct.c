@@ -697,12 +697,14 @@ static void sparse_diffuse(void) {
     vct_scene *box = check_cornell_box();
     vct_voxel_options vo = {0};
     vo.resolution = 128; /* a pixel is about 2 voxels: the cells lie 4 voxels apart */
-    /* Measured: 0.0283 (0.0202 when cells had to lie within the cone offset,
+    /* Measured: 0.0324 (0.0283 while the cones' rest read the light at 0.7 of
+     * their diameter, cone_sky.h: finer reads vary more between the pixels a
+     * cell stands for; 0.0202 when cells had to lie within the cone offset,
      * where about 1450 pixels traced their own cones; the default's NRMSE against
      * the path tracer, 0.0772 -> 0.0778, is the same). Only the box's
      * creases and the blocks' edges trace their own (14). A fill that takes
      * the wrong neighbours fails the AO and level checks. */
-    sparse_diffuse_case("Cornell box", box, &vo, 64, 64, (const int[]){900, 2500, 10, 0}, 0.03);
+    sparse_diffuse_case("Cornell box", box, &vo, 64, 64, (const int[]){900, 2500, 10, 0}, 0.035);
     vct_scene_release(box);
     /* A sky-lit floor with a raised square 1.6 voxels above it: same normal,
      * a pixel away, but off the tangent plane, so edge pixels must not take
