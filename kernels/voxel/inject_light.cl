@@ -139,6 +139,112 @@ inline int emitter_traps(float3 a, float3 b, float3 c, float3 q, float3 n, float
            length(triangle_nearest(q, a, b, c) - q) < gap;
 }
 
+/* The light trapped in such a gap leaves through its rim: the surface over
+ * the emitter, lit by it, reflects into the slit between them, and what
+ * heads out far enough before dropping the gap's height g leaves it. Per
+ * unit length of a straight rim, the cosine-weighted share of a point x in
+ * from it that gets out, (1 / 2 pi) \int g^2 cos^2 phi / (x^2 + g^2 cos^2 phi)
+ * dphi over the half turn facing out, sums over x to g / 2; weighted by the
+ * irradiance there (the half plane's, pi L (1 / 2 + x / 2 sqrt(x^2 + g^2)))
+ * it is GAP_ESCAPE_SHARE g times pi L. So the surface sends out pi rho L g
+ * GAP_ESCAPE_SHARE per unit of rim, into the room: a ceiling panel hung 1 cm
+ * under a white ceiling lights the room 3.6 % more for it in the path
+ * tracer (panel_room against the same room with each panel capped). The
+ * voxel the rim crosses sends that out on the emitter's side, as radiance
+ * over its face. The rim: the trapping triangles' edges that no other
+ * trapping triangle shares (a quad's diagonal is no rim), within the voxel's
+ * square on the fragment's plane. */
+#define GAP_ESCAPE_SHARE 0.40f
+
+/* Length of segment (a, b) (2D) inside the square [-h, h]^2, a segment on
+ * the square's +h sides left to the neighbouring square (Liang-Barsky). */
+inline float segment_in_square(float2 a, float2 b, float h) {
+    const float2 d = b - a;
+    float t0 = 0.0f, t1 = 1.0f;
+    const float p[4] = {-d.x, d.x, -d.y, d.y}, q[4] = {a.x + h, h - a.x, a.y + h, h - a.y};
+    for (int k = 0; k < 4; ++k) {
+        if (p[k] == 0.0f) {
+            if (q[k] < 0.0f)
+                return 0.0f;
+        } else {
+            const float r = q[k] / p[k];
+            if (p[k] < 0.0f)
+                t0 = fmax(t0, r);
+            else
+                t1 = fmin(t1, r);
+        }
+    }
+    if (!(t1 > t0))
+        return 0.0f;
+    const float2 mid = a + 0.5f * (t0 + t1) * d;
+    return mid.x < h && mid.y < h ? (t1 - t0) * length(d) : 0.0f;
+}
+
+/* Whether trapping triangle k of traps[0 .. count) shares its edge (u, v). */
+inline int rim_shared(const accel_view *g, const emitter_view *e, const uint *traps, uint count,
+                      uint k, float3 u, float3 v) {
+    for (uint j = 0u; j < count; ++j) {
+        if (j == k)
+            continue;
+        float3 x[3];
+        emitter_vertices(g, e->tris[traps[j]], &x[0], &x[1], &x[2]);
+        int has_u = 0, has_v = 0;
+        for (int i = 0; i < 3; ++i) {
+            has_u |= all(x[i] == u);
+            has_v |= all(x[i] == v);
+        }
+        if (has_u && has_v)
+            return 1;
+    }
+    return 0;
+}
+
+/* What a fragment at q (unit normal n) of voxel centre p and size `size`
+ * sends out through the rims of the emitters that trap their light beside
+ * it, per unit albedo, as radiance over the voxel's face; *toward: the
+ * side it leaves on (n or -n, towards the emitter). 0 where no rim
+ * crosses the voxel or the scene has more than EMITTER_EXACT_MAX emitter
+ * triangles. */
+inline float3 gap_escape(const accel_view *g, const emitter_view *e,
+                         __global const vct_material_desc *materials,
+                         __global const uint *tri_material, float3 p, float3 q, float3 n,
+                         float size, float3 *toward) {
+    uint traps[EMITTER_EXACT_MAX];
+    uint count = 0u;
+    for (uint i = 0u; i < e->count && e->count <= EMITTER_EXACT_MAX; ++i) {
+        float3 a, b, c;
+        emitter_vertices(g, e->tris[i], &a, &b, &c);
+        if (emitter_traps(a, b, c, q, n, size))
+            traps[count++] = i;
+    }
+    if (count == 0u)
+        return (float3)(0.0f);
+    float3 t1, t2;
+    basis_of(n, &t1, &t2);
+    const float3 centre = p - n * dot(p - q, n);
+    float3 rim = (float3)(0.0f); /* the sum of L g times the rim's length */
+    for (uint k = 0u; k < count; ++k) {
+        float3 x[3];
+        const uint tri = e->tris[traps[k]];
+        emitter_vertices(g, tri, &x[0], &x[1], &x[2]);
+        const float gap = fabs(dot(q - x[0], normalize(cross(x[1] - x[0], x[2] - x[0]))));
+        float length_in = 0.0f;
+        for (int i = 0; i < 3; ++i) {
+            const float3 u = x[i], v = x[i == 2 ? 0 : i + 1];
+            if (rim_shared(g, e, traps, count, k, u, v))
+                continue;
+            length_in +=
+                segment_in_square((float2)(dot(u - centre, t1), dot(u - centre, t2)),
+                                  (float2)(dot(v - centre, t1), dot(v - centre, t2)), 0.5f * size);
+        }
+        rim += materials[tri_material[tri]].emission.xyz * (gap * length_in);
+    }
+    float3 a, b, c;
+    emitter_vertices(g, e->tris[traps[0]], &a, &b, &c);
+    *toward = dot(a - q, n) >= 0.0f ? n : -n;
+    return rim * (GAP_ESCAPE_SHARE / (size * size));
+}
+
 /* Irradiance at centre p onto one fragment (triangle normal n, nearest
  * point q) from the emitters, split by side as fragment_irradiance does,
  * with the estimator the camera's hits use (direct_emitters_part): each
@@ -327,7 +433,10 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
     float open_sides = 0.0f; /* the fragments' sides not hidden, in halves */
     /* lights and emitters keep apart: each has its own shared rays */
     shared_rays lit = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0},
-                glow = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0};
+                glow = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0},
+                rim = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0};
+    /* what leaves gaps under emitters (gap_escape), and the side it leaves on */
+    float3 escape = (float3)(0.0f), escape_side = (float3)(0.0f);
     for (uint f = begin; f < end; ++f) {
         const uint t = fragment_tri[f];
         const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
@@ -356,6 +465,8 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
             lit.q = q;
             lit.valid = light_count <= SHARED_LIGHTS;
         }
+        const vct_material_desc m = materials[tri_material[t]];
+        const float3 rho = fragment_albedo(&tv, &m, t, a, b, c, p, size);
         if (emitter_count > 0u) {
             /* the first fragment's stream: shared samples are the same samples */
             const int reuse_glow =
@@ -368,9 +479,21 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                 glow.seed = f;
                 glow.valid = ev.samples <= SHARED_LIGHTS;
             }
+            /* once per plane: the fragments of one surface share its rim */
+            const int same_rim =
+                rim.valid && dot(n, rim.n) > SHARED_FACING && fabs(dot(q - rim.q, n)) < plane;
+            float3 out_side;
+            const float3 out =
+                same_rim ? (float3)(0.0f)
+                         : gap_escape(&g, &ev, materials, tri_material, p, q, n, size, &out_side);
+            if (any(out != 0.0f)) {
+                escape += rho * out;
+                escape_side = out_side;
+                rim.n = n;
+                rim.q = q;
+                rim.valid = 1;
+            }
         }
-        const vct_material_desc m = materials[tri_material[t]];
-        const float3 rho = fragment_albedo(&tv, &m, t, a, b, c, p, size);
         if (!(hidden & 1u))
             side_cube_add(&sides, n, rho * front);
         if (!(hidden & 2u))
@@ -390,6 +513,8 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
     const float3 centre =
         ((surfaces > 0u ? q_sum / (float)surfaces : p) - vol.origin.xyz) / vol.origin.w - 0.5f;
     /* w: the opacity, so that re-filtering reads one array */
-    voxel_side_store(toward * scale + glows, away * scale + glows, n, centre, albedo[v].w, radiance,
-                     side, v);
+    const int escape_toward = dot(escape_side, n) >= 0.0f;
+    voxel_side_store(toward * scale + glows + (escape_toward ? escape : (float3)(0.0f)),
+                     away * scale + glows + (escape_toward ? (float3)(0.0f) : escape), n, centre,
+                     albedo[v].w, radiance, side, v);
 }

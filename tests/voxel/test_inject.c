@@ -385,9 +385,11 @@ static double square_irradiance(double x, double y, double h, double L) {
 /* An emissive square (radiance L, over [4, 12]^2) parallel to the plane,
  * `below` units under it. Returns the ratio of the plane's radiance over the
  * square's central 8 x 8 voxels to albedo / pi times the irradiance there;
- * *worst: the largest radiance over the square and within a voxel of it;
- * *beside: the same ratio over the plane's voxels further out. */
-static double panel_under_plane(double below, double L, double albedo, double *worst,
+ * *worst: the largest radiance over the square's inner 6 x 6 voxels;
+ * *rim: the sum of the radiance of the voxels over its edge and the ring
+ * around it (up to a voxel from the edge); *beside: the same ratio as
+ * returned over the plane's voxels further out. */
+static double panel_under_plane(double below, double L, double albedo, double *worst, double *rim,
                                 double *beside) {
     const float z = (float)(PLANE_Z - below);
     const float pos[] = {0, 0, PLANE_Z, 16, 0, PLANE_Z, 16, 16, PLANE_Z, 0, 16, PLANE_Z,
@@ -404,7 +406,7 @@ static double panel_under_plane(double below, double L, double albedo, double *w
     case_build(&c);
     inject(&c);
     double got = 0.0, expected = 0.0, got_beside = 0.0, expected_beside = 0.0;
-    *worst = 0.0;
+    *worst = *rim = 0.0;
     for (uint32_t v = 0; v < c.info.voxels; ++v) {
         uint32_t cell[3];
         decode(c.keys[v], cell);
@@ -416,9 +418,11 @@ static double panel_under_plane(double below, double L, double albedo, double *w
             got += c.radiance[4 * v];
             expected += want;
         }
-        if (cell[0] >= 3 && cell[0] < 13 && cell[1] >= 3 && cell[1] < 13) {
+        if (cell[0] >= 5 && cell[0] < 11 && cell[1] >= 5 && cell[1] < 11)
             *worst = fmax(*worst, c.radiance[4 * v]);
-        } else {
+        else if (cell[0] >= 3 && cell[0] < 13 && cell[1] >= 3 && cell[1] < 13)
+            *rim += c.radiance[4 * v];
+        else {
             got_beside += c.radiance[4 * v];
             expected_beside += want;
         }
@@ -430,27 +434,38 @@ static double panel_under_plane(double below, double L, double albedo, double *w
 
 /* A panel hung a third of a voxel under the plane lights the plane over it
  * only in the gap between them, and shares the plane's voxels there: none
- * of that light may show (it would glow on the panel's face). Beyond a
- * voxel from its edge, the plane sees the panel's upper face edge-on and
- * gets albedo / pi times that irradiance: a ceiling's share of a panel hung
- * under it. Three voxels under it, its light on the plane is albedo / pi
- * times the irradiance of the square. The emitter's light is exact where
- * nothing occludes it (Lambert's formula for a scene of few emitter
- * triangles): within 1 % of the reference's numerical integral. */
+ * of that light may show (it would glow on the panel's face) but what
+ * leaves through the gap's rim: per unit of rim, pi albedo L g 0.40 (the
+ * share of a half plane's light that gets out of a slit g high,
+ * inject_light.cl's gap_escape), sent out by the voxels the rim crosses
+ * over their face: their radiance sums to albedo L g 0.40 times the
+ * perimeter (32 voxels). Beyond a voxel from its edge, the plane sees the
+ * panel's upper face edge-on and gets albedo / pi times that irradiance: a
+ * ceiling's share of a panel hung under it. Three voxels under it, its
+ * light on the plane is albedo / pi times the irradiance of the square.
+ * The emitter's light is exact where nothing occludes it (Lambert's formula
+ * for a scene of few emitter triangles): within 1 % of the reference's
+ * numerical integral. */
 static void trapped_light(void) {
-    const double L = 2.0, albedo = 0.8;
-    double worst, beside;
-    panel_under_plane(1.0 / 3.0, L, albedo, &worst, &beside);
+    const double L = 2.0, albedo = 0.8, gap = 1.0 / 3.0;
+    double worst, rim, beside;
+    panel_under_plane(gap, L, albedo, &worst, &rim, &beside);
     CHECK(worst < 0.01 * albedo * L,
           "a panel a third of a voxel under the plane: voxels over it up to %.4g (unhidden, up "
           "to about %.3g)",
           worst, albedo * L);
+    const double escape = albedo * L * gap * 0.40 * 32.0;
+    CHECK(fabs(rim / escape - 1.0) < 0.01,
+          "a panel a third of a voxel under the plane: its rim's voxels send out %.4g, expected "
+          "%.4g",
+          rim, escape);
     CHECK(fabs(beside - 1.0) < 0.01,
           "a panel a third of a voxel under the plane: %.4f of the light beside it", beside);
-    printf("%-34s over it at most %.2g, beside it %.4f of the light there\n",
-           "panel a third of a voxel under", worst, beside);
-    double unused;
-    const double ratio = panel_under_plane(3.0, L, albedo, &worst, &unused);
+    printf("%-34s over it at most %.2g, its rim %.4f of the escape, beside it %.4f of the light "
+           "there\n",
+           "panel a third of a voxel under", worst, rim / escape, beside);
+    double unused, unused_rim;
+    const double ratio = panel_under_plane(3.0, L, albedo, &worst, &unused_rim, &unused);
     CHECK(fabs(ratio - 1.0) < 0.01,
           "a panel three voxels under the plane: %.4f of the light over it", ratio);
     printf("%-34s %.4f of the light over it\n", "panel three voxels under", ratio);
