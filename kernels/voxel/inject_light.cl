@@ -82,6 +82,12 @@ typedef struct shared_rays {
     int valid;
 } shared_rays;
 
+/* Whether a fragment of unit normal n at q lies on the plane of the one
+ * that traced s (within `plane` of it). */
+inline int shared_plane(const shared_rays *s, float3 n, float3 q, float plane) {
+    return s->valid && dot(n, s->n) > SHARED_FACING && fabs(dot(q - s->q, n)) < plane;
+}
+
 /* Irradiance at centre p from every light onto one fragment: triangle t,
  * unit normal n (either sign), seen from its point q nearest p, or with the
  * visibility `shared` holds when `reuse`; else what it traces is kept there.
@@ -209,9 +215,11 @@ inline float3 gap_escape(const accel_view *g, const emitter_view *e,
                          __global const vct_material_desc *materials,
                          __global const uint *tri_material, float3 p, float3 q, float3 n,
                          float size, float3 *toward) {
+    if (e->count > EMITTER_EXACT_MAX)
+        return (float3)(0.0f);
     uint traps[EMITTER_EXACT_MAX];
     uint count = 0u;
-    for (uint i = 0u; i < e->count && e->count <= EMITTER_EXACT_MAX; ++i) {
+    for (uint i = 0u; i < e->count; ++i) {
         float3 a, b, c;
         emitter_vertices(g, e->tris[i], &a, &b, &c);
         if (emitter_traps(a, b, c, q, n, size))
@@ -456,8 +464,7 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         open_sides += 0.5f * (float)(((hidden & 1u) == 0u) + ((hidden & 2u) == 0u));
         float3 behind = (float3)(0.0f);
         const float plane = SHARED_PLANE * size;
-        const int reuse_lit =
-            lit.valid && dot(n, lit.n) > SHARED_FACING && fabs(dot(q - lit.q, n)) < plane;
+        const int reuse_lit = shared_plane(&lit, n, q, plane);
         float3 front =
             fragment_irradiance(&g, &bins, lights, light_count, p, q, n, &behind, &lit, reuse_lit);
         if (!reuse_lit) {
@@ -469,8 +476,7 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         const float3 rho = fragment_albedo(&tv, &m, t, a, b, c, p, size);
         if (emitter_count > 0u) {
             /* the first fragment's stream: shared samples are the same samples */
-            const int reuse_glow =
-                glow.valid && dot(n, glow.n) > SHARED_FACING && fabs(dot(q - glow.q, n)) < plane;
+            const int reuse_glow = shared_plane(&glow, n, q, plane);
             front += fragment_emitters(&g, &ev, materials, tri_material, p, q, n, size, &behind,
                                        reuse_glow ? glow.seed : f, &glow, reuse_glow);
             if (!reuse_glow) {
@@ -480,8 +486,7 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                 glow.valid = ev.samples <= SHARED_LIGHTS;
             }
             /* once per plane: the fragments of one surface share its rim */
-            const int same_rim =
-                rim.valid && dot(n, rim.n) > SHARED_FACING && fabs(dot(q - rim.q, n)) < plane;
+            const int same_rim = shared_plane(&rim, n, q, plane);
             float3 out_side;
             const float3 out =
                 same_rim ? (float3)(0.0f)
