@@ -371,14 +371,16 @@ static void random_volumes(void) {
 }
 
 /* Each preset weight against the cosine-weighted share of the hemisphere
- * nearest its direction, estimated by Monte Carlo with uniform directions. */
+ * nearest its direction, and each aperture against the cone whose solid
+ * angle is that of its cell (at most the presets' 20 degrees), both
+ * estimated by Monte Carlo with uniform directions. */
 static void presets(void) {
     const uint32_t counts[] = {1, 5, 6, 9, 16};
     for (size_t p = 0; p < 5; ++p) {
         float dirs[64], tan_half[16];
         vct_error err = {0};
         REQUIRE_OK(vct_cone_preset(counts[p], dirs, tan_half, &err), err);
-        double share[16] = {0}, total = 0.0, sum = 0.0;
+        double share[16] = {0}, cell[16] = {0}, total = 0.0, sum = 0.0;
         uint64_t seed = 5;
         const int samples = 400000;
         for (int i = 0; i < samples; ++i) {
@@ -394,27 +396,35 @@ static void presets(void) {
                     best_dot = dot, best = k;
             }
             share[best] += z;
+            cell[best] += 1.0;
             total += z;
         }
-        double worst = 0.0;
+        double worst = 0.0, worst_aperture = 0.0;
         int bad_dir = 0;
         for (uint32_t k = 0; k < counts[p]; ++k) {
             worst = fmax(worst, fabs(share[k] / total - dirs[4 * k + 3]));
             sum += dirs[4 * k + 3];
             const double len = sqrt(dirs[4 * k] * dirs[4 * k] + dirs[4 * k + 1] * dirs[4 * k + 1] +
                                     dirs[4 * k + 2] * dirs[4 * k + 2]);
-            bad_dir |= fabs(len - 1.0) > 1e-5 || dirs[4 * k + 2] <= 0.0f ||
-                       !(tan_half[k] > 0.0f && tan_half[k] <= 0.364f);
+            bad_dir |= fabs(len - 1.0) > 1e-5 || dirs[4 * k + 2] <= 0.0f;
+            /* the cell's solid angle over the hemisphere's 2 pi is its share
+             * of the uniform samples; a cone of solid angle W has half
+             * angle acos(1 - W / 2 pi) */
+            const double cell_half = acos(1.0 - cell[k] / samples),
+                         half = fmin(cell_half, 20.0 * CHECK_PI / 180.0);
+            worst_aperture = fmax(worst_aperture, fabs(atan(tan_half[k]) - half));
         }
         CHECK(fabs(sum - 1.0) < 1e-6, "preset %u: weights sum to %.9f", counts[p], sum);
         CHECK(worst < 0.005, "preset %u: a weight is %.4f off its cosine-weighted share", counts[p],
               worst);
-        CHECK(!bad_dir,
-              "preset %u: a direction is not a unit vector above the surface, or an "
-              "aperture is out of (0, 20] degrees",
-              counts[p]);
-        printf("preset %2u cones: weights sum to 1 within %.1g, worst share error %.4f\n",
-               counts[p], fabs(sum - 1.0), worst);
+        CHECK(!bad_dir, "preset %u: a direction is not a unit vector above the surface", counts[p]);
+        /* the preset integrates its cells on a grid: half a degree */
+        CHECK(worst_aperture < 0.5 * CHECK_PI / 180.0,
+              "preset %u: an aperture is %.2f degrees off its cell's (capped at 20)", counts[p],
+              worst_aperture * 180.0 / CHECK_PI);
+        printf("preset %2u cones: weights sum to 1 within %.1g, worst share error %.4f, worst "
+               "aperture %.3f degrees off\n",
+               counts[p], fabs(sum - 1.0), worst, worst_aperture * 180.0 / CHECK_PI);
     }
     float dirs[64], tan_half[16];
     vct_error err = {0};

@@ -50,10 +50,16 @@ static const preset_rings presets[] = {
     {1, {1, 0, 0}}, {5, {1, 4, 0}}, {6, {1, 5, 0}}, {9, {3, 6, 0}}, {16, {1, 5, 10}}};
 
 #define PI 3.14159265358979323846
-/* Wider cones read levels coarse enough to hold the surface they start
- * from and light themselves (measured on the Cornell box: 60 degrees gave
- * twice the error of 20); a cone narrower than its cell still stands for
- * the whole cell through its weight. */
+/* A cone is as wide as its cell up to this half angle; a cone narrower
+ * than its cell still stands for the whole cell through its weight. Nine
+ * cones' cells are 21.6 (inner ring) and 29 to 30 degrees (outer). Wider
+ * cones read coarser levels: at 27.5 the scene suite's mean NRMSE at
+ * 128^2 is 0.0762 against 0.0783 and a turning camera's indirect light
+ * changes 30 to 40 % less from frame to frame, but the sky seen through a
+ * slit comes out 8 % too bright and a closed room under a sky lets in
+ * 1.3 % of the outside's light (test_vct), the atrium's shaded column
+ * faces take in the sunlit ones beside them (0.061 -> 0.066), and 60
+ * degrees gave the Cornell box twice the error. */
 #define MAX_HALF_ANGLE (20.0 * PI / 180.0)
 
 vct_status vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err) {
