@@ -117,7 +117,7 @@ typedef struct vct_cone_desc {
  * and its weight; tan of its half-angle. */
 typedef struct vct_cone_dir {
     vct_f4 dir;      /* xyz; w = weight (the preset's weights sum to 1) */
-    vct_f4 aperture; /* x = tan(half-angle) */
+    vct_f4 aperture; /* x = tan(half-angle); y = tan of its cell's (vct_cone_preset) */
 } vct_cone_dir;
 
 /* Every struct above with its size, and every field with its offset, in

@@ -13,8 +13,10 @@
  * off between neighbouring pixels, whose cones' axes meet a wall or leave
  * through an opening: polygons of light on the walls. A cone sends
  * CONE_REST_RAYS (the Cornell box 0.146 with one, 0.100 with nine, as with
- * sixteen). Directional bricks keep a wall's opacity along its normal; with the same rest the box
- * gained light (0.543), so they keep the sky check alone. */
+ * sixteen) over its cell (the directions it stands for, wider than the cone
+ * where the aperture is capped: host/src/voxel/cones.c). Directional bricks keep a wall's opacity
+ * along its normal; with the same rest the box gained light (0.543), so they keep the sky check
+ * alone. */
 #ifndef VCT_CONE_SKY_H
 #define VCT_CONE_SKY_H
 
@@ -39,10 +41,12 @@
 /* Below this a sample's colour over its opacity is half-float noise. */
 #define CONE_REST_MIN_OPACITY 1e-3f
 
-/* Ray k of the rest's nine, across the cone in units of its aperture: the
- * axis, four at 0.45, four at 0.9 between them. */
+/* Ray k of the rest's nine, across a disc of radius 1 (the cell's
+ * aperture): the axis, four at 0.565, four at 0.879 between them, the
+ * centroids of nine parts of equal area (a centre of radius 1/3, rings to
+ * sqrt(5) / 3 and to 1). */
 inline float2 cone_rest_offset(uint k) {
-    const float a = 0.45f, b = 0.9f * 0.70710678f;
+    const float a = 0.565f, b = 0.879f * 0.70710678f;
     switch (k) {
     case 1:
         return (float2)(a, 0.0f);
@@ -103,12 +107,13 @@ inline float3 cone_hit_light(CONE_POOLS, __global const uint *child, const vct_c
 
 /* r's radiance, its ambient share dropped where the ray from origin along d
  * meets geometry; with isotropic bricks, that share split by what
- * CONE_REST_RAYS rays across the cone (tan_half its aperture) meet: the ambient
- * light for the share of them that leave the scene (at most that share),
- * the mean light where the others meet it for the remainder. */
+ * CONE_REST_RAYS rays across the cone's cell (tan_half the cone's aperture,
+ * spread the cell's) meet: the ambient light for the share of them that
+ * leave the scene (at most that share), the mean light where the others
+ * meet it for the remainder. */
 inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const uint *child,
                                 const vct_cone_desc *c, float3 origin, float3 d, float tan_half,
-                                cone_result r) {
+                                float spread, cone_result r) {
 #ifdef VCT_ANISOTROPIC
     if (!r.left || all(c->ambient.xyz == 0.0f) || r.alpha >= 1.0f)
         return r.radiance;
@@ -125,7 +130,7 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
     uint open = 0u;
     for (uint k = 0; k < CONE_REST_RAYS; ++k) {
         const float2 off = cone_rest_offset(k);
-        const float3 dk = normalize(d + tan_half * (off.x * t1 + off.y * t2));
+        const float3 dk = normalize(d + spread * (off.x * t1 + off.y * t2));
         hit_record h;
         if (!accel_trace(g, origin, dk, 0.0f, INFINITY, 0, &h)) {
             ++open;

@@ -481,9 +481,10 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
         const int blocked = cone_near_light(acc, CONE_POOLS_PASS, child, cd, g->p, n, d,
                                             c.aperture.x, &near, &near_t);
 #ifdef VCT_INDIRECT
-        l.radiance += c.dir.w * (blocked ? near
-                                         : cone_open_checked(acc, CONE_POOLS_PASS, child, cd,
-                                                             origin, d, c.aperture.x, r));
+        l.radiance +=
+            c.dir.w * (blocked ? near
+                               : cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
+                                                   c.aperture.x, c.aperture.y, r));
 #endif
         /* what the near ray met within the AO distance closes the cone */
         l.open += c.dir.w * (blocked && near_t <= cd->march.z ? 0.0f : 1.0f - r.ao_alpha);

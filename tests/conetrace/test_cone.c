@@ -372,14 +372,15 @@ static void random_volumes(void) {
 
 /* Each preset weight against the cosine-weighted share of the hemisphere
  * nearest its direction, and each aperture against the cone whose solid
- * angle is that of its cell (at most the presets' 20 degrees), both
- * estimated by Monte Carlo with uniform directions. */
+ * angle is that of its cell (at most the presets' 20 degrees; the cell's
+ * own, the open rest's spread, up to 45), both estimated by Monte Carlo
+ * with uniform directions. */
 static void presets(void) {
     const uint32_t counts[] = {1, 5, 6, 9, 16};
     for (size_t p = 0; p < 5; ++p) {
-        float dirs[64], tan_half[16];
+        float dirs[64], tan_half[16], cell_tan[16];
         vct_error err = {0};
-        REQUIRE_OK(vct_cone_preset(counts[p], dirs, tan_half, &err), err);
+        REQUIRE_OK(vct_cone_preset(counts[p], dirs, tan_half, cell_tan, &err), err);
         double share[16] = {0}, cell[16] = {0}, total = 0.0, sum = 0.0;
         uint64_t seed = 5;
         const int samples = 400000;
@@ -399,7 +400,7 @@ static void presets(void) {
             cell[best] += 1.0;
             total += z;
         }
-        double worst = 0.0, worst_aperture = 0.0;
+        double worst = 0.0, worst_aperture = 0.0, worst_cell = 0.0;
         int bad_dir = 0;
         for (uint32_t k = 0; k < counts[p]; ++k) {
             worst = fmax(worst, fabs(share[k] / total - dirs[4 * k + 3]));
@@ -413,6 +414,8 @@ static void presets(void) {
             const double cell_half = acos(1.0 - cell[k] / samples),
                          half = fmin(cell_half, 20.0 * CHECK_PI / 180.0);
             worst_aperture = fmax(worst_aperture, fabs(atan(tan_half[k]) - half));
+            worst_cell = fmax(worst_cell,
+                              fabs(atan(cell_tan[k]) - fmin(cell_half, 45.0 * CHECK_PI / 180.0)));
         }
         CHECK(fabs(sum - 1.0) < 1e-6, "preset %u: weights sum to %.9f", counts[p], sum);
         CHECK(worst < 0.005, "preset %u: a weight is %.4f off its cosine-weighted share", counts[p],
@@ -422,13 +425,18 @@ static void presets(void) {
         CHECK(worst_aperture < 0.5 * CHECK_PI / 180.0,
               "preset %u: an aperture is %.2f degrees off its cell's (capped at 20)", counts[p],
               worst_aperture * 180.0 / CHECK_PI);
+        CHECK(worst_cell < 0.5 * CHECK_PI / 180.0,
+              "preset %u: a cell's half-angle is %.2f degrees off (capped at 45)", counts[p],
+              worst_cell * 180.0 / CHECK_PI);
         printf("preset %2u cones: weights sum to 1 within %.1g, worst share error %.4f, worst "
-               "aperture %.3f degrees off\n",
-               counts[p], fabs(sum - 1.0), worst, worst_aperture * 180.0 / CHECK_PI);
+               "aperture %.3f degrees off, worst cell %.3f\n",
+               counts[p], fabs(sum - 1.0), worst, worst_aperture * 180.0 / CHECK_PI,
+               worst_cell * 180.0 / CHECK_PI);
     }
     float dirs[64], tan_half[16];
     vct_error err = {0};
-    CHECK(vct_cone_preset(7, dirs, tan_half, &err) == VCT_ERR_INPUT && strstr(err.message, "16"),
+    CHECK(vct_cone_preset(7, dirs, tan_half, NULL, &err) == VCT_ERR_INPUT &&
+              strstr(err.message, "16"),
           "an unknown preset is refused with the list: %s", err.message);
 }
 

@@ -212,10 +212,13 @@ VCT_API vct_cone_settings vct_cone_settings_default(void);
 /* Diffuse cone preset of `count` cones (1, 5, 6, 9 or 16): directions in a
  * frame whose z axis is the normal (4 floats each: xyz and the weight) and
  * tan(half-angle) each. Each weight is the cosine-weighted share of the
- * hemisphere closest to its cone, so the weights sum to 1 and a constant
- * environment L is integrated exactly: sum w_i L = L. A cone's half-angle
- * matches its share's solid angle, at most 20 degrees. */
-VCT_API vct_status vct_cone_preset(uint32_t count, float *dirs, float *tan_half, vct_error *err);
+ * hemisphere closest to its cone (its cell), so the weights sum to 1 and a
+ * constant environment L is integrated exactly: sum w_i L = L. A cone's
+ * half-angle matches its cell's solid angle, at most 20 degrees; cell_tan
+ * (NULL: not wanted) gets tan of that half-angle up to 45 degrees, over
+ * which the rays that look past the cone spread. */
+VCT_API vct_status vct_cone_preset(uint32_t count, float *dirs, float *tan_half, float *cell_tan,
+                                   vct_error *err);
 
 /* Marches n cones through the radiance bricks: 8 floats in each (origin xyz,
  * tan(half-angle); unit direction xyz, reach), 8 floats out each (radiance

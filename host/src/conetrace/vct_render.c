@@ -51,14 +51,15 @@ void vct_aovs_release(vct_aovs *a) {
 
 /* The preset on the device: vct_cone_dir per cone. */
 static cl_mem cone_buffer(vct_context *ctx, uint32_t count, const char *stage, vct_error *err) {
-    float dirs[64], tan_half[16];
-    if (vct_cone_preset(count, dirs, tan_half, err))
+    float dirs[64], tan_half[16], cell_tan[16];
+    if (vct_cone_preset(count, dirs, tan_half, cell_tan, err))
         return NULL;
     vct_cone_dir cones[16];
     memset(cones, 0, sizeof cones);
     for (uint32_t i = 0; i < count; ++i) {
         memcpy(cones[i].dir.s, &dirs[4 * i], 16);
         cones[i].aperture.s[0] = tan_half[i];
+        cones[i].aperture.s[1] = cell_tan[i];
     }
     return vct_buffer_create(ctx, stage, "cone preset", sizeof cones[0] * count, CL_MEM_READ_ONLY,
                              cones, err);
