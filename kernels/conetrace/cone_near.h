@@ -3,11 +3,11 @@
  * normal, so that it does not see its own voxels, and the march starts a
  * voxel further: a surface in
  * that slab (a slat in front of a wall, the wall beside a floor's edge) was
- * stepped over, and the cone saw what lies behind it. A ray along the
- * cone's axis from the surface point through the slab decides: where it
- * meets geometry, the cone takes the voxels' light there, seen from the
- * ray's side, at the cone's footprint there, instead of its march. A voxel
- * without a normal (fragments facing every way) sends none. */
+ * stepped over, and the cone saw what lies behind it. Rays from the
+ * surface point through the slab across the cone's cell decide: the share
+ * of them that meets geometry takes the voxels' light there, seen from the
+ * ray's side, at the cone's footprint there, instead of the cone's march.
+ * A voxel without a normal (fragments facing every way) sends none. */
 #ifndef VCT_CONE_NEAR_H
 #define VCT_CONE_NEAR_H
 
@@ -70,6 +70,44 @@ inline int cone_near_light(const accel_view *g, CONE_POOLS, __global const uint 
     *light = cone_hit_light(CONE_POOLS_PASS, child, c, from, d, h.t, tan_half, 1.0f, seen_from);
     *dist = h.t;
     return 1;
+}
+
+/* Near rays a camera cone sends: along its axis and the inner ring of its
+ * open rest's rays (cone_sky.h), across its cell. One ray along the axis
+ * decided for the whole cell: a wall strip above a window's sunlit slats,
+ * whose cones' cells take them in only in part, got 0.71 of the path
+ * tracer's indirect light, and the blinds scene 0.121 NRMSE at 128^2; with
+ * five 0.115 (the long hall 0.151 -> 0.147, the suite's mean 0.0759 ->
+ * 0.0753, the atrium 0.0625 -> 0.0643 the most worse), for 5 to 10 % more
+ * device time. */
+#define CONE_NEAR_RAYS 5u
+
+/* The share of CONE_NEAR_RAYS rays across the cell of the cone along d
+ * (aperture tan_half, its cell's spread) that meet geometry before the
+ * march begins, the mean light where they do in *light and the nearest
+ * distance in *dist (INFINITY where none does). */
+inline float cone_near_cell(const accel_view *g, CONE_POOLS, __global const uint *child,
+                            const vct_cone_desc *c, float3 p, float3 n, float3 d, float tan_half,
+                            float spread, float3 *light, float *dist) {
+    float3 t1, t2;
+    basis_of(d, &t1, &t2);
+    *light = (float3)(0.0f);
+    *dist = INFINITY;
+    uint hits = 0u;
+    for (uint k = 0; k < CONE_NEAR_RAYS; ++k) {
+        const float2 off = cone_rest_offset(k);
+        const float3 dk = normalize(d + spread * (off.x * t1 + off.y * t2));
+        float3 l;
+        float t;
+        if (cone_near_light(g, CONE_POOLS_PASS, child, c, p, n, dk, tan_half, &l, &t)) {
+            *light += l;
+            *dist = fmin(*dist, t);
+            ++hits;
+        }
+    }
+    if (hits)
+        *light /= (float)hits;
+    return (float)hits / (float)CONE_NEAR_RAYS;
 }
 
 #endif

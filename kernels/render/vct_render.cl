@@ -478,16 +478,17 @@ inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global c
             cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
         float3 near;
         float near_t;
-        const int blocked = cone_near_light(acc, CONE_POOLS_PASS, child, cd, g->p, n, d,
-                                            c.aperture.x, &near, &near_t);
+        const float blocked = cone_near_cell(acc, CONE_POOLS_PASS, child, cd, g->p, n, d,
+                                             c.aperture.x, c.aperture.y, &near, &near_t);
 #ifdef VCT_INDIRECT
-        l.radiance +=
-            c.dir.w * (blocked ? near
-                               : cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
-                                                   c.aperture.x, c.aperture.y, r));
+        const float3 marched = blocked < 1.0f
+                                   ? cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
+                                                       c.aperture.x, c.aperture.y, r)
+                                   : (float3)(0.0f);
+        l.radiance += c.dir.w * mix(marched, near, blocked);
 #endif
-        /* what the near ray met within the AO distance closes the cone */
-        l.open += c.dir.w * (blocked && near_t <= cd->march.z ? 0.0f : 1.0f - r.ao_alpha);
+        /* what the near rays met within the AO distance closes their share */
+        l.open += c.dir.w * (near_t <= cd->march.z ? 1.0f - blocked : 1.0f) * (1.0f - r.ao_alpha);
         level_sum += r.level_sum;
         samples += r.samples;
     }
