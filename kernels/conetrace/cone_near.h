@@ -95,11 +95,10 @@ inline float cone_near_cell(const accel_view *g, CONE_POOLS, __global const uint
     *dist = INFINITY;
     uint hits = 0u;
     for (uint k = 0; k < CONE_NEAR_RAYS; ++k) {
-        const float2 off = cone_rest_offset(k);
-        const float3 dk = normalize(d + spread * (off.x * t1 + off.y * t2));
         float3 l;
         float t;
-        if (cone_near_light(g, CONE_POOLS_PASS, child, c, p, n, dk, tan_half, &l, &t)) {
+        if (cone_near_light(g, CONE_POOLS_PASS, child, c, p, n, cone_rest_dir(d, t1, t2, spread, k),
+                            tan_half, &l, &t)) {
             *light += l;
             *dist = fmin(*dist, t);
             ++hits;

@@ -69,6 +69,13 @@ inline float2 cone_rest_offset(uint k) {
     }
 }
 
+/* The unit direction of ray k across the cell of the cone along unit d
+ * (t1, t2: basis_of(d)), spread: tan of the cell's half-angle. */
+inline float3 cone_rest_dir(float3 d, float3 t1, float3 t2, float spread, uint k) {
+    const float2 off = cone_rest_offset(k);
+    return normalize(d + spread * (off.x * t1 + off.y * t2));
+}
+
 /* The voxels' light where a ray from `from` along unit d met the scene at
  * distance t: the sample there at `footprint` times the diameter a cone of
  * aperture tan_half has at that distance (1: the level cone_trace would
@@ -129,8 +136,7 @@ inline float3 cone_open_checked(const accel_view *g, CONE_POOLS, __global const 
     float3 met = (float3)(0.0f);
     uint open = 0u;
     for (uint k = 0; k < CONE_REST_RAYS; ++k) {
-        const float2 off = cone_rest_offset(k);
-        const float3 dk = normalize(d + spread * (off.x * t1 + off.y * t2));
+        const float3 dk = cone_rest_dir(d, t1, t2, spread, k);
         hit_record h;
         if (!accel_trace(g, origin, dk, 0.0f, INFINITY, 0, &h)) {
             ++open;

@@ -65,7 +65,7 @@ static const preset_rings presets[] = {
  * rest, kernels/conetrace/cone_sky.h) spread over a cone of its cell's
  * solid angle, uncapped: the sky and the walls between 20 degrees and a
  * cell's edge are its own, and rays kept within the cone's aperture missed
- * them (the suite's mean NRMSE at 128^2 0.0783 -> 0.0758: the Cornell box
+ * them (the suite's mean NRMSE at 128^2 0.0783 -> 0.0759: the Cornell box
  * 0.052 -> 0.049, the spot gallery 0.091 -> 0.082; the march's levels, and
  * with them its leaks, stay as they were). One cone's cell is the whole
  * hemisphere: its rays stop at 45 degrees, well above the surface. */
