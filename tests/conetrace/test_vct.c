@@ -3,7 +3,8 @@
  * it on leaves the image bit-identical; a constant environment is
  * integrated exactly by the diffuse cones; the Cornell box against the path
  * tracer with a stated tolerance; determinism; no NaN on an empty volume;
- * sparse diffuse against every pixel's cones and a plain-C fill. */
+ * sparse diffuse against every pixel's cones and a plain-C fill; near rays
+ * across each cone's cell beside a plate's edge. */
 #include <math.h>
 #include <string.h>
 
@@ -1041,6 +1042,60 @@ static void gap_under_a_plate(void) {
     vct_scene_release(s);
 }
 
+/* The floor beside a plate's edge: the plate hung 0.1 above half of it (3
+ * voxels at 64^3: nearer than the cones' offset), its top lit by the sun,
+ * both under a sky. Floor cones towards the plate are lifted past it; rays
+ * across each cone's cell find it first (cone_near.h), and the share that
+ * meets it takes the plate's light there. One ray along each cone's axis
+ * decided all or nothing for its whole cell: a band of floor 0.1 to 0.2
+ * from the edge, whose cones' cells take the plate in part, rendered as if
+ * the plate were not there (1.135 of the sky's light where the path tracer
+ * has 1.10 to 1.12), NRMSE over the floor 0.018; five rays across the cell
+ * 0.0085 (the path tracer's own noise about 0.004). */
+static void floor_beside_a_plate(void) {
+    const float quads[] = {-1, 0,    -1, -1, 0,    1,  1, 0,    1, 1,  0,    -1,
+                           -1, 0.1f, -1, 0,  0.1f, -1, 0, 0.1f, 1, -1, 0.1f, 1};
+    vct_material m = vct_material_default();
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.6f;
+    vct_scene *s = one_material_scene(quads, 2, m);
+    const vct_light sun = {
+        VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1.0f, 0.2f}, {3, 3, 3}, 0, 0, 0};
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 1.0f;
+    s->camera = (vct_camera){{0.2f, 0.6f, 0.0f}, {0.1f, 0.0f, 0.0f}, {0, 1, 0}, 40.0f};
+    s->has_camera = 1;
+    const int w = 48, h = 48;
+    vct_image ref = path_traced(s, w, h, 1024, 3);
+    vct_plan p;
+    vct_plan_make(s, NULL, &p);
+    vct_aovs aovs;
+    vct_image im = vct_case_render_bricks(ctx, s, &p, 64, w, h, 3, 0, &aovs);
+    /* the floor past the plate's edge (its shadow line left out) */
+    double squared = 0.0, sum = 0.0;
+    int count = 0;
+    for (int px = 0; px < w * h; ++px) {
+        const float *at = aovs.position.rgba + 4 * px;
+        if (!(at[3] > 0.0f && at[1] < 0.01f && at[0] > 0.02f))
+            continue;
+        for (int c = 0; c < 3; ++c) {
+            const double d = im.rgba[4 * px + c] - ref.rgba[4 * px + c];
+            squared += d * d;
+            sum += ref.rgba[4 * px + c];
+        }
+        ++count;
+    }
+    const double nrmse = count ? sqrt(squared / (3.0 * count)) / (sum / (3.0 * count)) : 1.0;
+    CHECK(count > w * h / 2 && nrmse < 0.013,
+          "floor beside a plate: NRMSE %.4f over %d floor pixels against the path tracer", nrmse,
+          count);
+    printf("floor beside a plate %dx%d: NRMSE %.4f over %d floor pixels\n", w, h, nrmse, count);
+    vct_image_release(&im);
+    vct_aovs_release(&aovs);
+    vct_image_release(&ref);
+    vct_scene_release(s);
+}
+
 int main(void) {
     ctx = check_context();
     plans();
@@ -1054,6 +1109,7 @@ int main(void) {
     closed_room_under_a_lit_slab();
     closed_room_against_path_tracer();
     gap_under_a_plate();
+    floor_beside_a_plate();
     sky_through_a_slit();
     cornell_against_path_tracer();
     glossy_cornell_against_path_tracer();
