@@ -986,6 +986,23 @@ static void sky_through_a_slit(void) {
     vct_scene_release(s);
 }
 
+/* A floor [-1, 1]^2 of albedo 0.6 and a plate 0.1 above it from x = -1 to
+ * plate_end, under a sky of 1 and a sun of irradiance 3 travelling along
+ * (sun_x, -1, 0.2). */
+static vct_scene *plate_over_floor(float plate_end, float sun_x) {
+    const float quads[] = {-1, 0,    -1, -1,        0,    1,  1,         0,    1, 1,  0,    -1,
+                           -1, 0.1f, -1, plate_end, 0.1f, -1, plate_end, 0.1f, 1, -1, 0.1f, 1};
+    vct_material m = vct_material_default();
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.6f;
+    vct_scene *s = one_material_scene(quads, 2, m);
+    const vct_light sun = {
+        VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {sun_x, -1.0f, 0.2f}, {3, 3, 3}, 0, 0, 0};
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 1.0f;
+    return s;
+}
+
 /* A floor under a wide plate hung 0.1 above it (3 voxels at 64^3: nearer
  * than the cones' offset), the plate's top lit by the sun and both under a
  * sky, seen from inside the gap: the path tracer finds little light there,
@@ -996,16 +1013,7 @@ static void sky_through_a_slit(void) {
  * sky) against the path tracer's 0.13. Now 0.07 and 0.08; the gap's mean
  * must be within 0.1 of the open floor's light of the path tracer's. */
 static void gap_under_a_plate(void) {
-    const float quads[] = {-1, 0,    -1, -1, 0,    1,  1, 0,    1, 1,  0,    -1,
-                           -1, 0.1f, -1, 1,  0.1f, -1, 1, 0.1f, 1, -1, 0.1f, 1};
-    vct_material m = vct_material_default();
-    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.6f;
-    vct_scene *s = one_material_scene(quads, 2, m);
-    const vct_light sun = {
-        VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {0.3f, -1.0f, 0.2f}, {3, 3, 3}, 0, 0, 0};
-    vct_error err = {0};
-    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
-    s->ambient[0] = s->ambient[1] = s->ambient[2] = 1.0f;
+    vct_scene *s = plate_over_floor(1.0f, 0.3f);
     s->camera = (vct_camera){{0.0f, 0.05f, 0.5f}, {0.0f, 0.0f, -0.4f}, {0, 1, 0}, 60.0f};
     s->has_camera = 1;
     const int w = 32, h = 32;
@@ -1052,16 +1060,7 @@ static void gap_under_a_plate(void) {
  * not there (a radiance of 1.135 where the path tracer has 1.10 to 1.12),
  * NRMSE over the floor 0.018; five rays across the cell 0.0085. */
 static void floor_beside_a_plate(void) {
-    const float quads[] = {-1, 0,    -1, -1, 0,    1,  1, 0,    1, 1,  0,    -1,
-                           -1, 0.1f, -1, 0,  0.1f, -1, 0, 0.1f, 1, -1, 0.1f, 1};
-    vct_material m = vct_material_default();
-    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.6f;
-    vct_scene *s = one_material_scene(quads, 2, m);
-    const vct_light sun = {
-        VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1.0f, 0.2f}, {3, 3, 3}, 0, 0, 0};
-    vct_error err = {0};
-    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
-    s->ambient[0] = s->ambient[1] = s->ambient[2] = 1.0f;
+    vct_scene *s = plate_over_floor(0.0f, -0.3f);
     s->camera = (vct_camera){{0.2f, 0.6f, 0.0f}, {0.1f, 0.0f, 0.0f}, {0, 1, 0}, 40.0f};
     s->has_camera = 1;
     const int w = 48, h = 48;
