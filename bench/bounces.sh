@@ -18,14 +18,8 @@ rows=$work/rows.md
 mean_ratio() { # image, reference -> the image's mean over the reference's
     ./build/vct compare "$1" "$2" | sed -n 's/^mean_ratio //p'
 }
-grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
-    [ -n "$name" ] || continue
+suite_with_references bounces | while read -r name file ambient; do
     ref=out/suite/$name/reference.pfm
-    if [ ! -f "$ref" ]; then
-        echo "bounces: $name has no reference ($ref): run bench/suite.sh" >&2
-        continue
-    fi
-    ambient=$(echo "$extra" | grep -o -- '--ambient [0-9. ]*' || true)
     vct="" pt=""
     for k in 1 2 3 4; do
         # shellcheck disable=SC2086

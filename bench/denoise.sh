@@ -9,8 +9,8 @@
 set -eu
 cd "$(dirname "$0")/.."
 SIZE=${1:-128}
-export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
-export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
+# shellcheck source=bench/suite_env.sh
+. bench/suite_env.sh
 PY=$(tools/python.sh --path)
 # shellcheck source=bench/oidn_env.sh
 . bench/oidn_env.sh
@@ -22,11 +22,8 @@ others=out/denoise/others.md
 stage_ms() { # stats file, stage -> device ms
     awk -v s="$2" '$0 ~ "^"s" " { print $(NF - 3); exit }' "$1"
 }
-grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
-    [ -n "$name" ] || continue
+suite_with_references denoise | while read -r name file ambient; do
     ref=out/suite/$name/reference.pfm
-    [ -f "$ref" ] || { echo "denoise: $name has no reference ($ref): run bench/suite.sh" >&2; continue; }
-    ambient=$(echo "$extra" | grep -o -- '--ambient [0-9. ]*' || true)
     for spp in 4 16; do
         out=out/denoise/${name}_$spp
         # shellcheck disable=SC2086

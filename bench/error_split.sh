@@ -15,14 +15,8 @@ cd "$(dirname "$0")/.."
 SIZE=${1:-128}
 rows=$work/rows.md
 : >"$rows"
-grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
-    [ -n "$name" ] || continue
+suite_with_references error_split | while read -r name file ambient; do
     ref=out/suite/$name/reference.pfm
-    if [ ! -f "$ref" ]; then
-        echo "error_split: $name has no reference ($ref): run bench/suite.sh" >&2
-        continue
-    fi
-    ambient=$(echo "$extra" | grep -o -- '--ambient [0-9. ]*' || true)
     # shellcheck disable=SC2086
     ./build/vct render "scenes/suite/$file" $ambient --size "$SIZE" "$SIZE" --aov \
         -o "$work/vct.pfm" >/dev/null 2>&1
