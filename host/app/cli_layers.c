@@ -15,7 +15,6 @@ void cli_layers_add_aovs(cli_layers *l, const vct_aovs *a) {
     cli_layers_add(l, "indirect", &a->indirect, "RGB");
     cli_layers_add(l, "specular", &a->specular, "RGB");
     cli_layers_add(l, "ao", &a->ao, "Y");
-    cli_layers_add(l, "level", &a->level, "Y");
     cli_layers_add(l, "position", &a->position, "XYZ");
     cli_layers_add(l, "normal", &a->normal, "XYZ");
     cli_layers_add(l, "albedo", &a->albedo, "RGB");

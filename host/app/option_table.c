@@ -12,7 +12,7 @@ static const cli_option output_rows[] = {
      "the image: .exr (linear, half floats, OpenEXR), .pfm (linear, 32-bit floats) or .png "
      "(exposure, tone curve and sRGB); render defaults to render.png"},
     {"aov", 0, OPT_AOV, 0, NULL,
-     "also write arbitrary output values: cone tracing's direct, indirect, specular, ao, level, "
+     "also write arbitrary output values: cone tracing's direct, indirect, specular, ao, "
      "position, normal and albedo; the other methods' albedo, normal, depth (and pt's variance "
      "with --denoise): layers of the same file for .exr, else FILE_albedo.pfm and so on beside "
      "it"},

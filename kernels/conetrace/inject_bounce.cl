@@ -37,8 +37,7 @@
  * what their gathering neighbours on the same surface received
  * (inject_bounce_fill). A bounce's light varies slowly along a surface. */
 #include "conetrace/cone_frame.h"
-#include "conetrace/cone_near.h" /* NEAR_SIDE_LIFT */
-#include "conetrace/cone_sky.h"  /* cone_hit_light */
+#include "conetrace/cone_sky.h" /* cone_hit_light */
 #include "conetrace/cone_trace.h"
 #include "light/direct_light.h" /* surface_epsilon */
 #include "scene/bsdf.h"         /* cosine_dir */
@@ -46,6 +45,12 @@
 #include "voxel/voxel_carry.h"
 #include "voxel/voxel_side.h"
 #include "vct_types.h"
+
+/* How far (voxels) along its side's normal a ray from a surface tells the
+ * side it sees a hit voxel's plane from: a voxel's plane point lies inside
+ * a slab one voxel thick (a roof lit on top), where a ray meets the near
+ * face of a voxel whose plane it sits on. */
+#define NEAR_SIDE_LIFT 0.1f
 
 /* rays per side: the square of this, one per cell of a grid over the
  * cosine-weighted hemisphere */

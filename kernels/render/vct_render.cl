@@ -12,7 +12,10 @@
  *                      centre's value
  *   vct_soft_shadows   direct light of the lights with a radius, through one
  *                      cone per light as wide as the light
- *   vct_diffuse_cones  indirect diffuse light and ambient occlusion
+ *   vct_diffuse_cones  indirect diffuse light and ambient occlusion: rays
+ *                      across each cone's cell of the hemisphere, their hits
+ *                      shaded exactly and by the voxels' bounced light
+ *                      (render/diffuse_rays.h)
  *   vct_diffuse_sparse, vct_diffuse_fill  the same, traced at every other
  *                      pixel per axis (over (w + 1) / 2 x (h + 1) / 2
  *                      work-items) and filled in at every pixel
@@ -34,7 +37,7 @@
  * albedo there, the material's times its texture (scene/texture.h), and
  * until the edges are refined the centre's shading (sample_shade). AOVs, AOV_SLOTS
  * float4 per pixel when given: direct, indirect diffuse, specular, (open
- * fraction, mean level sampled, 0, 1), position and normal (w 1 where a
+ * fraction, 0, 0, 1), position and normal (w 1 where a
  * surface was found, else the slot stays 0), and the denoiser's albedo and
  * normal-depth guides (guide_write). Glass reflections, 3 float4
  * per pixel, when refraction and specular are both planned: (point,
@@ -48,8 +51,8 @@
 #include "light/emitters.h"
 #include "scene/texture.h"
 #include "accel/accel.h"
-#include "conetrace/cone_near.h"
 #include "conetrace/cone_sky.h"
+#include "render/diffuse_rays.h"
 #include "render/primary_sample.h"
 #include "photon/photon.h"
 #include "vct_types.h"
@@ -83,6 +86,17 @@
         __global const uint *tri_material, TEXTURE_ARGS, __global const vct_light_desc *lights,    \
         uint light_count, EMITTER_ARGS, float4 ambient, __global float4 *gbuf,                     \
         __global float4 *image, __global float4 *aov, __global float4 *reflection
+
+/* What the diffuse gather's rays shade their hits with (render/diffuse_rays.h),
+ * after each diffuse kernel's own arguments: the scene's shading inputs
+ * and the voxels' light, all of it and the direct part alone. */
+#define GATHER_ARGS                                                                                \
+    __global const uint *tri_material, TEXTURE_ARGS, __global const vct_light_desc *lights,        \
+        uint light_count, EMITTER_ARGS, __global const float4 *voxel_total,                        \
+        __global const float4 *voxel_total_side, __global const float4 *voxel_direct,              \
+        __global const float4 *voxel_direct_side
+#define GATHER_VOXELS()                                                                            \
+    ((gather_voxels){voxel_total, voxel_total_side, voxel_direct, voxel_direct_side})
 
 inline float albedo_luminance(float3 a) {
     return dot(a, (float3)(0.2126f, 0.7152f, 0.0722f));
@@ -448,55 +462,37 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
 }
 #endif
 
-/* What a pixel's diffuse cones gathered: the cosine-weighted radiance
- * (which only indirect light uses), the open fraction within the AO
- * distance, and the mean level sampled. */
+/* What a pixel's diffuse gather found: the cosine-weighted radiance
+ * (which only indirect light uses) and the open fraction within the AO
+ * distance. */
 typedef struct diffuse_light {
     float3 radiance;
-    float open, level;
+    float open;
 } diffuse_light;
 
-inline diffuse_light diffuse_trace(const accel_view *acc, CONE_POOLS, __global const uint *child,
-                                   const vct_cone_desc *cd, __global const vct_cone_dir *cones,
-                                   uint cone_count, const gbuffer_surface *g) {
+inline diffuse_light diffuse_trace(const shading_scene *ps, CONE_POOLS, __global const uint *child,
+                                   const vct_cone_desc *cd, const gather_voxels *gv,
+                                   __global const vct_cone_dir *cones, uint cone_count,
+                                   const gbuffer_surface *g) {
     const float3 n = g->n;
     float3 t, b;
-    cone_frame(n, cone_point_seed(cd->volume.xyz, cd->volume.w, cd->res.x, g->p), &t, &b);
-#ifdef VCT_INDIRECT
-    const float reach = INFINITY;
-#else
-    const float reach = cd->march.z; /* occlusion only: no further than the AO distance */
-#endif
-    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
-    float level_sum = 0.0f;
-    uint samples = 0;
+    const uint seed = cone_point_seed(cd->volume.xyz, cd->volume.w, cd->res.x, g->p);
+    cone_frame(n, seed, &t, &b);
+    diffuse_light l = {(float3)(0.0f), 0.0f};
     for (uint i = 0; i < cone_count; ++i) {
         const vct_cone_dir c = cones[i];
         const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
-        const float3 origin = cone_camera_origin(cd, g->p, n, d);
-        const cone_result r =
-            cone_trace(CONE_POOLS_PASS, child, cd, origin, d, c.aperture.x, reach);
-        float3 near;
-        float near_t;
-        const float blocked = cone_near_cell(acc, CONE_POOLS_PASS, child, cd, g->p, n, d,
-                                             c.aperture.x, c.aperture.y, &near, &near_t);
-#ifdef VCT_INDIRECT
-        const float3 marched = blocked < 1.0f
-                                   ? cone_open_checked(acc, CONE_POOLS_PASS, child, cd, origin, d,
-                                                       c.aperture.x, c.aperture.y, r)
-                                   : (float3)(0.0f);
-        l.radiance += c.dir.w * mix(marched, near, blocked);
-#endif
-        /* what the near rays met within the AO distance closes their share */
-        l.open += c.dir.w * (near_t <= cd->march.z ? 1.0f - blocked : 1.0f) * (1.0f - r.ao_alpha);
-        level_sum += r.level_sum;
-        samples += r.samples;
+        float open;
+        const float3 light =
+            gather_cell(ps, CONE_POOLS_PASS, child, cd, gv, g->p, n, d, c.aperture.x, c.aperture.y,
+                        rng_hash(seed ^ (i << 4)), cd->march.z, &open);
+        l.radiance += c.dir.w * light;
+        l.open += c.dir.w * open;
     }
-    l.level = samples ? level_sum / (float)samples : 0.0f;
     return l;
 }
 
-/* Adds what the diffuse cones gathered, reflected by the pixel's surface. */
+/* Adds what the diffuse gather found, reflected by the pixel's surface. */
 inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pixel,
                           const gbuffer_surface *g, diffuse_light l, float3 ambient) {
     float3 add = (float3)(0.0f);
@@ -507,7 +503,7 @@ inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pix
 #endif
     pixel_add(image, aov, pixel, 1u, add);
     if (aov)
-        aov[AOV_SLOTS * pixel + 3u] = (float4)(l.open, l.level, 0.0f, 1.0f);
+        aov[AOV_SLOTS * pixel + 3u] = (float4)(l.open, 0.0f, 0.0f, 1.0f);
 }
 
 #if (defined(VCT_INDIRECT) || defined(VCT_AO)) && !defined(VCT_SPARSE_DIFFUSE)
@@ -515,20 +511,23 @@ __kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *chi
                                 vct_cone_desc cd, __global const vct_cone_dir *cones,
                                 uint cone_count, __global const float4 *gbuf,
                                 __global const vct_material_desc *materials, uint2 size,
-                                __global float4 *image, __global float4 *aov) {
-    const accel_view acc = ACCEL_VIEW();
+                                __global float4 *image, __global float4 *aov, GATHER_ARGS) {
+    const float4 ambient = cd.ambient;
+    const shading_scene ps = SHADING_SCENE();
+    const gather_voxels gv = GATHER_VOXELS();
     uint pixel;
     gbuffer_surface g;
     if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
         return;
-    const diffuse_light l = diffuse_trace(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+    const diffuse_light l =
+        diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cones, cone_count, &g);
     diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }
 #endif
 
 /* Diffuse light traced sparsely: vct_diffuse_sparse traces the cones of
  * every other pixel per axis, pixel (2i, 2j) into cell (i, j) of `sparse`
- * (2 float4 each: radiance and open fraction, mean level), and
+ * (a float4 each: radiance and open fraction), and
  * vct_diffuse_fill gives every pixel the mean of the cells around it (itself
  * at (2i, 2j), else the 2 or 4 nearest) whose surface agrees with its own:
  * normals within SPARSE_NORMAL_COS and the cell's point within
@@ -551,20 +550,21 @@ __kernel void vct_diffuse_sparse(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
                                  uint cone_count, __global const float4 *gbuf,
                                  __global const vct_material_desc *materials, uint2 size,
                                  __global float4 *image, __global float4 *aov,
-                                 __global float4 *sparse) {
-    const accel_view acc = ACCEL_VIEW();
+                                 __global float4 *sparse, GATHER_ARGS) {
+    const float4 ambient = cd.ambient;
+    const shading_scene ps = SHADING_SCENE();
+    const gather_voxels gv = GATHER_VOXELS();
     const uint i = get_global_id(0), j = get_global_id(1);
     const uint2 cells = (size + 1u) / 2u;
     if (i >= cells.x || j >= cells.y)
         return;
     uint pixel;
     gbuffer_surface g;
-    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
+    diffuse_light l = {(float3)(0.0f), 0.0f};
     if (gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &pixel, &g))
-        l = diffuse_trace(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+        l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cones, cone_count, &g);
     const uint cell = j * cells.x + i;
-    sparse[2u * cell] = (float4)(l.radiance, l.open);
-    sparse[2u * cell + 1u] = (float4)(l.level, 0.0f, 0.0f, 0.0f);
+    sparse[cell] = (float4)(l.radiance, l.open);
 }
 #endif
 
@@ -581,14 +581,16 @@ __kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *chil
                                __global const float4 *gbuf,
                                __global const vct_material_desc *materials, uint2 size,
                                __global float4 *image, __global float4 *aov,
-                               __global const float4 *sparse) {
-    const accel_view acc = ACCEL_VIEW();
+                               __global const float4 *sparse, GATHER_ARGS) {
+    const float4 ambient = cd.ambient;
+    const shading_scene ps = SHADING_SCENE();
+    const gather_voxels gv = GATHER_VOXELS();
     uint pixel;
     gbuffer_surface g;
     if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
         return;
     const uint x = get_global_id(0), y = get_global_id(1), columns = (size.x + 1u) / 2u;
-    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
+    diffuse_light l = {(float3)(0.0f), 0.0f};
     float agree = 0.0f;
     for (uint dy = 0; dy <= (y & 1u); ++dy)
         for (uint dx = 0; dx <= (x & 1u); ++dx) {
@@ -598,18 +600,16 @@ __kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *chil
             if (!gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &at, &q) ||
                 !sparse_agrees(&cd, &g, &q))
                 continue;
-            const float4 a = sparse[2u * (j * columns + i)];
+            const float4 a = sparse[j * columns + i];
             l.radiance += a.xyz;
             l.open += a.w;
-            l.level += sparse[2u * (j * columns + i) + 1u].x;
             agree += 1.0f;
         }
     if (agree > 0.0f) {
         l.radiance /= agree;
         l.open /= agree;
-        l.level /= agree;
     } else {
-        l = diffuse_trace(&acc, CONE_POOLS_PASS, child, &cd, cones, cone_count, &g);
+        l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cones, cone_count, &g);
     }
     diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }

@@ -88,4 +88,11 @@ inline uint octree_descend(__global const uint *child, uint3 cell, uint levels, 
     return octree_descend_to(child, cell, levels, levels, level);
 }
 
+/* The voxel at leaf cell `cell`, or OCT_NULL where it holds no geometry. */
+inline uint octree_leaf_voxel(__global const uint *child, uint3 cell, uint levels) {
+    uint level;
+    const uint node = octree_descend(child, cell, levels, &level);
+    return level == levels ? child[node] : OCT_NULL;
+}
+
 #endif

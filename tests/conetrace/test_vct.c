@@ -315,8 +315,7 @@ static void cornell_against_path_tracer(void) {
      * light alone is 0.345 off. */
     CHECK(mv.relative_rmse < 0.13, "Cornell box: relative RMSE %.4f against the path tracer",
           mv.relative_rmse);
-    CHECK(mv.nonfinite == 0 && nonfinite(&r.aovs.ao) == 0 && nonfinite(&r.aovs.level) == 0,
-          "NaN in the image or its AOVs");
+    CHECK(mv.nonfinite == 0 && nonfinite(&r.aovs.ao) == 0, "NaN in the image or its AOVs");
     /* The AOVs add up: direct + indirect (+ specular, here 0) is the image. */
     double worst = 0.0;
     for (int i = 0; i < 4 * w * h; ++i)
@@ -588,12 +587,11 @@ static int sparse_agrees_ref(const vct_aovs *a, int p, int c, double voxel) {
 }
 
 /* What the reference expects at pixel (x, y) of the sparse render, from the
- * full render's AO and level AOVs (both are what the cones gathered, before
- * any material): *ao and *level. */
+ * full render's AO AOV (what the gather found, before any material): *ao. */
 static sparse_kind sparse_expect(const vct_aovs *full, int w, int h, int x, int y, double voxel,
-                                 double *ao, double *level) {
+                                 double *ao) {
     const int p = y * w + x;
-    double sum_ao = 0.0, sum_level = 0.0;
+    double sum_ao = 0.0;
     int agree = 0;
     for (int j = y / 2; j <= y / 2 + (y & 1); ++j)
         for (int i = x / 2; i <= x / 2 + (x & 1); ++i) {
@@ -605,17 +603,14 @@ static sparse_kind sparse_expect(const vct_aovs *full, int w, int h, int x, int 
                 return SPARSE_BORDERLINE;
             if (a) {
                 sum_ao += full->ao.rgba[4 * c];
-                sum_level += full->level.rgba[4 * c];
                 ++agree;
             }
         }
     if (agree == 0) {
         *ao = full->ao.rgba[4 * p];
-        *level = full->level.rgba[4 * p];
         return SPARSE_OWN;
     }
     *ao = sum_ao / agree;
-    *level = sum_level / agree;
     return x % 2 == 0 && y % 2 == 0 ? SPARSE_TRACED : SPARSE_FILLED;
 }
 
@@ -653,8 +648,8 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
             if (fa.normal.rgba[4 * px + 3] != 1.0f)
                 continue;
             ++surfaces;
-            double ao, level;
-            const sparse_kind k = sparse_expect(&fa, w, h, x, y, voxel, &ao, &level);
+            double ao;
+            const sparse_kind k = sparse_expect(&fa, w, h, x, y, voxel, &ao);
             ++counts[k];
             if (k == SPARSE_TRACED)
                 traced_differ +=
@@ -662,15 +657,14 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
                     memcmp(&sparse.rgba[4 * px], &full.rgba[4 * px], 12) != 0;
             if (k == SPARSE_BORDERLINE)
                 continue;
-            const double e =
-                fmax(fabs(sa.ao.rgba[4 * px] - ao), fabs(sa.level.rgba[4 * px] - level));
+            const double e = fabs(sa.ao.rgba[4 * px] - ao);
             worst = fmax(worst, e);
             wrong += e > 1e-5;
         }
     CHECK(traced_differ == 0, "sparse diffuse, %s: %d traced pixels differ from the full render",
           name, traced_differ);
     CHECK(wrong == 0,
-          "sparse diffuse, %s: %d pixels' AO or level differ from the reference's fill (worst by "
+          "sparse diffuse, %s: %d pixels' AO differ from the reference's fill (worst by "
           "%g)",
           name, wrong, worst);
     CHECK(counts[SPARSE_TRACED] >= min_counts[SPARSE_TRACED] &&

@@ -181,7 +181,6 @@ typedef struct vct_aovs {
     vct_image indirect; /* indirect diffuse (or ambient light times AO) */
     vct_image specular; /* the specular cone */
     vct_image ao;       /* fraction of the hemisphere open within the AO distance */
-    vct_image level;    /* mean octree level the diffuse cones sampled */
     vct_image position; /* the surface the camera ray found, w 1 (all 0 where none) */
     vct_image normal;   /* its shading normal, facing the viewer, w 1 (all 0 where none) */
     /* The denoiser's guides (vct_denoise_guides) from the pixel's camera

@@ -42,7 +42,6 @@ void vct_aovs_release(vct_aovs *a) {
     vct_image_release(&a->indirect);
     vct_image_release(&a->specular);
     vct_image_release(&a->ao);
-    vct_image_release(&a->level);
     vct_image_release(&a->position);
     vct_image_release(&a->normal);
     vct_image_release(&a->albedo);
@@ -370,6 +369,31 @@ static int launch_frame_kernel(frame *f, cl_kernel k, cl_uint every, vct_error *
     return vct_launch_2d(f->ctx, k, global, local, err);
 }
 
+/* The diffuse gather's arguments from `first` on (GATHER_ARGS in
+ * kernels/render/vct_render.cl): the scene's shading inputs, one emitter
+ * sample per ray, and the voxels' light with its direct part (the light
+ * itself before any bounce: none bounced). */
+static int gather_args(frame *f, cl_kernel k, const char *stage, int first, vct_error *err) {
+    const vct_scene_buffers sb = f->scene;
+    const vct_voxels *v = f->v;
+    const int bounced = v->bounces > 0 && v->direct_radiance;
+    const cl_mem direct = bounced ? v->direct_radiance : v->radiance;
+    const cl_mem direct_side = bounced ? v->direct_side : v->side;
+    int rc = vct_set_args(err, stage, k, first, 1, VCT_ARG_OF(sb.tri_material));
+    if (rc == VCT_OK)
+        rc = vct_scene_texture_args(k, first + 1, &sb, stage, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, first + 4, 2, VCT_ARG_OF(sb.lights),
+                          VCT_ARG_OF(sb.light_count));
+    if (rc == VCT_OK)
+        rc = vct_emitters_set_args(k, first + 6, &f->emitters, 1, stage, err);
+    if (rc == VCT_OK)
+        rc = vct_set_args(err, stage, k, first + 11, 4, VCT_ARG(voxel_total, v->radiance),
+                          VCT_ARG(voxel_total_side, v->side), VCT_ARG(voxel_direct, direct),
+                          VCT_ARG(voxel_direct_side, direct_side));
+    return rc;
+}
+
 /* vct_primary's arguments, which vct_primary_refine shares. */
 static int primary_args(frame *f, cl_kernel k, const vct_scene *s, const vct_accel *g,
                         const vct_camera_desc *cam, vct_error *err) {
@@ -472,6 +496,8 @@ static int cone_pass_with(frame *f, const char *stage, const char *name, int ray
                           VCT_ARG_OF(f->aov));
     if (rc == VCT_OK && sparse)
         rc = vct_set_args(err, stage, k, next + 5, 1, VCT_ARG_OF(sparse));
+    if (rc == VCT_OK && strstr(name, "diffuse"))
+        rc = gather_args(f, k, stage, next + 5 + (sparse ? 1 : 0), err);
     if (rc == VCT_OK)
         rc = launch_frame_kernel(f, k, over_cells ? 2 : 1, err);
     if (rc == VCT_OK)
@@ -492,7 +518,7 @@ static int diffuse_pass(frame *f, cl_mem cones, cl_uint count, int sparse, vct_e
     if (!sparse)
         return cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_cones", 1, cones, count, NULL, 0, err);
     const size_t cells = (size_t)((f->size[0] + 1) / 2) * ((f->size[1] + 1) / 2);
-    cl_mem buffer = vct_buffer_create(f->ctx, DIFFUSE_STAGE, "sparse diffuse cells", 32 * cells,
+    cl_mem buffer = vct_buffer_create(f->ctx, DIFFUSE_STAGE, "sparse diffuse cells", 16 * cells,
                                       CL_MEM_READ_WRITE, NULL, err);
     int rc = buffer ? cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_sparse", 1, cones, count,
                                      buffer, 1, err)
@@ -510,9 +536,9 @@ static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
     const struct {
         vct_image *image;
         int slot, component; /* component -1: the whole float4 */
-    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1}, {&a->specular, 2, -1},
-                {&a->ao, 3, 0},      {&a->level, 3, 1},     {&a->position, 4, -1},
-                {&a->normal, 5, -1}, {&a->albedo, 6, -1},   {&a->normal_depth, 7, -1}};
+    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1},    {&a->specular, 2, -1},
+                {&a->ao, 3, 0},      {&a->position, 4, -1},    {&a->normal, 5, -1},
+                {&a->albedo, 6, -1}, {&a->normal_depth, 7, -1}};
     const size_t pixels = (size_t)f->size[0] * f->size[1], bytes = 16 * AOV_SLOTS * pixels;
     float *raw = malloc(bytes);
     int rc = raw ? vct_buffer_read(f->ctx, "vct AOVs", f->aov, 0, bytes, raw, err)
