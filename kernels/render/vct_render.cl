@@ -472,23 +472,13 @@ typedef struct diffuse_light {
 
 inline diffuse_light diffuse_trace(const shading_scene *ps, CONE_POOLS, __global const uint *child,
                                    const vct_cone_desc *cd, const gather_voxels *gv,
-                                   __global const vct_cone_dir *cones, uint cone_count,
-                                   const gbuffer_surface *g) {
-    const float3 n = g->n;
+                                   uint cone_count, const gbuffer_surface *g) {
     float3 t, b;
     const uint seed = cone_point_seed(cd->volume.xyz, cd->volume.w, cd->res.x, g->p);
-    cone_frame(n, seed, &t, &b);
-    diffuse_light l = {(float3)(0.0f), 0.0f};
-    for (uint i = 0; i < cone_count; ++i) {
-        const vct_cone_dir c = cones[i];
-        const float3 d = normalize(c.dir.x * t + c.dir.y * b + c.dir.z * n);
-        float open;
-        const float3 light =
-            gather_cell(ps, CONE_POOLS_PASS, child, cd, gv, g->p, n, d, c.aperture.x, c.aperture.y,
-                        rng_hash(seed ^ (i << 4)), cd->march.z, &open);
-        l.radiance += c.dir.w * light;
-        l.open += c.dir.w * open;
-    }
+    cone_frame(g->n, seed, &t, &b);
+    diffuse_light l;
+    l.radiance = gather_rays(ps, CONE_POOLS_PASS, child, cd, gv, g->p, g->n, t, b,
+                             cone_count * GATHER_RAYS_PER_CONE, seed, cd->march.z, &l.open);
     return l;
 }
 
@@ -519,8 +509,7 @@ __kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *chi
     gbuffer_surface g;
     if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
         return;
-    const diffuse_light l =
-        diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cones, cone_count, &g);
+    const diffuse_light l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cone_count, &g);
     diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }
 #endif
@@ -562,7 +551,7 @@ __kernel void vct_diffuse_sparse(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
     gbuffer_surface g;
     diffuse_light l = {(float3)(0.0f), 0.0f};
     if (gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &pixel, &g))
-        l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cones, cone_count, &g);
+        l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cone_count, &g);
     const uint cell = j * cells.x + i;
     sparse[cell] = (float4)(l.radiance, l.open);
 }
@@ -609,7 +598,7 @@ __kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *chil
         l.radiance /= agree;
         l.open /= agree;
     } else {
-        l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cones, cone_count, &g);
+        l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cone_count, &g);
     }
     diffuse_write(image, aov, pixel, &g, l, cd.ambient.xyz);
 }

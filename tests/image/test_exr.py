@@ -14,7 +14,7 @@ import sys
 import numpy as np
 import OpenEXR
 
-LAYERS = {"direct": "RGB", "indirect": "RGB", "specular": "RGB", "ao": "Y", "level": "Y",
+LAYERS = {"direct": "RGB", "indirect": "RGB", "specular": "RGB", "ao": "Y",
           "position": "XYZ", "normal": "XYZ", "albedo": "RGB"}
 failures = 0
 
