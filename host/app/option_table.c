@@ -125,7 +125,7 @@ static const cli_option vct_rows[] = {
     {"effect", 0, OPT_EFFECT, 1, "NAME=on|off",
      "force an effect on or off against the plan: direct, shadows, indirect, specular, "
      "refraction, emission, ao, soft_shadows (repeatable)"},
-    {"cones", 0, OPT_CONES, 1, "N", "diffuse cones at the camera's hits: 1 to 16 (default 9)"},
+    {"cones", 0, OPT_CONES, 1, "N", "the diffuse gather at the camera's hits: 9 N rays, N 1 to 16 (default 9)"},
     {"cone-step", 0, OPT_CONE_STEP, 1, "F",
      "cone march step as a fraction of the cone's diameter (default 1)"},
     {"cone-offset", 0, OPT_CONE_OFFSET, 1, "VOXELS",
@@ -133,7 +133,7 @@ static const cli_option vct_rows[] = {
     {"cone-levels", 0, OPT_CONE_LEVELS, 1, "blend|nearest",
      "a sample blends two octree levels (default) or reads the nearest one"},
     {"dense-diffuse", 0, OPT_DENSE_DIFFUSE, 0, NULL,
-     "diffuse cones at every pixel (by default at every other pixel per axis, the rest filled in "
+     "the diffuse gather at every pixel (by default at every other pixel per axis, the rest filled in "
      "from traced neighbours on the same surface)"},
     {"indirect-filter", 0, OPT_INDIRECT_FILTER, 1, "N",
      "the indirect diffuse light through N passes of the denoiser, guided by the first hit's "

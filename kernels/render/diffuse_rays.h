@@ -18,8 +18,8 @@
  * bounces' light unchanged). What they cost is noise: the few rays that
  * meet a small bright patch (the ceiling 10 cm above a point light, lamp
  * room 0.064 -> 0.083), which the sparse fill and the indirect filter take.
- * A ray that meets glass or a mirror shows the voxels' light there, as a
- * cone's would. */
+ * A ray passes through glass, as the voxels let light through it, and one
+ * that meets a mirror shows the voxels' light there, as a cone's would. */
 #ifndef VCT_DIFFUSE_RAYS_H
 #define VCT_DIFFUSE_RAYS_H
 
@@ -94,6 +94,31 @@ inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global con
     return bounced + diffuse_color(&m) * VCT_INV_PI * dt.irradiance;
 }
 
+/* The first surface other than glass that the ray from `from` along unit
+ * d meets within `reach`, as the voxels see the scene (glass lets light
+ * through them unlit, and shadow rays stop at it: the light through glass
+ * is the caustics pass's); 0 where it meets none, or more than
+ * GATHER_GLASS_MAX panes on the way. h->t is the distance from `from`. */
+#define GATHER_GLASS_MAX 4u
+inline int gather_trace(const shading_scene *ps, float3 from, float3 d, float reach,
+                        hit_record *h) {
+    float3 o = from;
+    float travelled = 0.0f;
+    for (uint pane = 0; pane <= GATHER_GLASS_MAX; ++pane) {
+        if (!accel_trace(&ps->g, o, d, 0.0f, reach - travelled, 0, h))
+            return 0;
+        const float t = h->t;
+        h->t += travelled;
+        const vct_material_desc m = ps->materials[ps->tri_material[h->tri]];
+        if (!is_dielectric(&m))
+            return 1;
+        const float3 p = o + t * d;
+        o = p + d * surface_epsilon(&ps->g, p);
+        travelled += t + surface_epsilon(&ps->g, p);
+    }
+    return 0;
+}
+
 /* Ray k of m over the hemisphere about unit n (tangents t, b),
  * cosine-weighted: a Fibonacci spiral over the unit disc (radius
  * sqrt((k + 0.5) / m), turned by the golden angle from ray to ray) lifted
@@ -129,7 +154,7 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
     for (uint k = 0; k < m; ++k) {
         const float3 d = gather_dir(n, t, b, k, m);
         hit_record h;
-        if (!accel_trace(&ps->g, from, d, 0.0f, reach, 0, &h)) {
+        if (!gather_trace(ps, from, d, reach, &h)) {
             sum += c->ambient.xyz;
             ++open_rays;
             continue;
