@@ -6,7 +6,7 @@
 # gathering, each against an 8192-spp reference of another seed,
 # or what suite.txt gives the scene; at 2048 spp the noisiest references
 # held 6 % NRMSE of their own, which every method's error took in), and
-# bench/denoised_rows.py on it (the path tracer at 1 to 64 spp denoised by
+# bench/denoised_rows.py on it (the path tracer at 1 to 256 spp denoised by
 # the engine's filter and by OIDN),
 # and gathers one table: out/suite/table.md, the page doc/results/suite.md
 # with the README's summary of it, and the error-time plot of every scene
@@ -66,7 +66,7 @@ tools/python.sh bench/suite_plot.py out/suite scenes/suite/suite.txt doc/results
     echo "image; for a denoised path tracer, the guides and the filter too (OIDN's: its filter"
     echo "call on the same CPU). The last columns are"
     echo "the time the path tracer needs for the same error, read between its sample counts (1 to"
-    echo "1024 spp; denoised, 1 to 64 spp): as it is, denoised by the engine's filter, and by OIDN."
+    echo "1024 spp; denoised, 1 to 256 spp): as it is, denoised by the engine's filter, and by OIDN."
     echo
     echo "![Error against time, every scene](suite_front.png)"
     echo

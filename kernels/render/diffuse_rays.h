@@ -1,25 +1,24 @@
-/* The camera's diffuse gather, by rays. Each cone of the preset stands for
- * a cell of the hemisphere about the hit's normal (its weight and its
- * cell's aperture, vct_cone_dir); GATHER_CELL_RAYS rays across the cell
- * (cone_sky.h's nine: the axis and two rings) go through the acceleration
- * structure. Where a ray meets a surface, it takes the light a path
- * tracer's second vertex would send back: the direct light of every light
- * and emitter there, exactly (shadow rays, the texture's albedo), plus the
- * light that bounced off the leaf voxel there, on the side of its plane the
- * ray sees (the voxels' light less their direct light). Where it meets
- * nothing, the sky's.
+/* The camera's diffuse gather, by rays: GATHER_RAYS_PER_CONE for each cone
+ * of the preset (--cones), spread over the hemisphere about the hit's
+ * normal by their cosine (gather_dir), through the acceleration structure.
+ * Where a ray meets a surface, it takes the light a path tracer's second
+ * vertex would send back: the direct light of every light and emitter
+ * there, exactly (shadow rays, the texture's albedo), plus the light that
+ * bounced off the leaf voxel there, on the side of its plane the ray sees
+ * (the voxels' light less their direct light). Where it meets nothing, the
+ * sky's.
  *
  * Cones marched through the bricks read that light a footprint wide, and a
  * voxel cannot hold light that changes within it: in a hall lit through a
  * roof slit, the sun's strip on the floor (2.6 voxels wide) lit 3 voxels,
  * the foot of a column beside it got a quarter of its light and the light
- * above one-voxel slabs came through them. Rays see the geometry itself
- * (the hall 0.146 -> 0.097 NRMSE, the suite's mean 0.075 -> 0.062, the
- * bounces' light unchanged). What they cost is noise: the few rays that
- * meet a small bright patch (the ceiling 10 cm above a point light, lamp
- * room 0.064 -> 0.083), which the sparse fill and the indirect filter take.
- * A ray passes through glass, as the voxels let light through it, and one
- * that meets a mirror shows the voxels' light there, as a cone's would. */
+ * was spread up the columns' sides. Rays see the geometry itself (the hall
+ * 0.146 -> 0.093 NRMSE, the suite's mean 0.075 -> 0.056, the bounces'
+ * light unchanged). What they cost is noise where few rays meet a small
+ * bright patch (the ceiling 10 cm above a point light), which the sparse
+ * fill and the indirect filter take. A ray passes through glass, as the
+ * voxels let light through it, and one that meets a mirror shows the
+ * voxels' light there, as a cone's would. */
 #ifndef VCT_DIFFUSE_RAYS_H
 #define VCT_DIFFUSE_RAYS_H
 
