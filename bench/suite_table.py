@@ -143,9 +143,11 @@ def main():
         for r in keep:
             to = ["", "", ""]
             if r["setting"].startswith(("vct", "photon")):
-                for i, (kind, most) in enumerate((("", 1024), ("denoiser", 64), ("OIDN", 64))):
-                    if kind and not any(path_trace_kind(o["setting"]) == kind for o in rows):
+                for i, kind in enumerate(("", "denoiser", "OIDN")):
+                    runs = [o for o in rows if path_trace_kind(o["setting"]) == kind]
+                    if not runs:
                         continue
+                    most = max(int(o["setting"].split()[2]) for o in runs)
                     t = pt_time_for(rows, float(r["nrmse"]), kind)
                     to[i] = f"{t:.0f} ms" if t else f"not reached by {most} spp"
             stages = (f"{float(r['accel_ms']):.0f} / {float(r['build_ms']):.0f} / "

@@ -462,11 +462,11 @@ static int primary(frame *f, const vct_scene *s, const vct_accel *g, const vct_c
 }
 
 /* One cone kernel over the G-buffer: ACCEL_ARGS when `rays` (the diffuse
- * cones test the sky with them), CONE_POOLS, child, desc, then, if given, a
+ * gather traces them), CONE_POOLS, child, desc, then, if given, a
  * buffer and a count (cones, lights, or glass reflections and float4 per
- * pixel), then gbuf, materials, size, image, aov, and the sparse diffuse
+ * pixel), then gbuf, materials, size, image, aov, the sparse diffuse
  * cells if given (which the kernel runs over, one per 2x2 pixels, when
- * `over_cells`). */
+ * `over_cells`), and for the diffuse kernels the gather's (gather_args). */
 static int cone_pass_with(frame *f, const char *stage, const char *name, int rays, cl_mem list,
                           cl_uint list_count, cl_mem sparse, int over_cells, vct_error *err) {
     cl_kernel k = vct_kernel_create(f->ctx, f->program, name, err);
