@@ -93,29 +93,34 @@ inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global con
     return bounced + diffuse_color(&m) * VCT_INV_PI * dt.irradiance;
 }
 
+/* What a gather ray found: a surface, nothing (the sky), or more than
+ * GATHER_GLASS_MAX panes of glass on the way (no light). */
+#define GATHER_GLASS_MAX 4u
+#define GATHER_MISS 0
+#define GATHER_HIT 1
+#define GATHER_LOST 2
+
 /* The first surface other than glass that the ray from `from` along unit
  * d meets within `reach`, as the voxels see the scene (glass lets light
  * through them unlit, and shadow rays stop at it: the light through glass
- * is the caustics pass's); 0 where it meets none, or more than
- * GATHER_GLASS_MAX panes on the way. h->t is the distance from `from`. */
-#define GATHER_GLASS_MAX 4u
+ * is the caustics pass's). h->t is the distance from `from`. */
 inline int gather_trace(const shading_scene *ps, float3 from, float3 d, float reach,
                         hit_record *h) {
     float3 o = from;
     float travelled = 0.0f;
     for (uint pane = 0; pane <= GATHER_GLASS_MAX; ++pane) {
         if (!accel_trace(&ps->g, o, d, 0.0f, reach - travelled, 0, h))
-            return 0;
+            return GATHER_MISS;
         const float t = h->t;
         h->t += travelled;
         const vct_material_desc m = ps->materials[ps->tri_material[h->tri]];
         if (!is_dielectric(&m))
-            return 1;
+            return GATHER_HIT;
         const float3 p = o + t * d;
         o = p + d * surface_epsilon(&ps->g, p);
         travelled += t + surface_epsilon(&ps->g, p);
     }
-    return 0;
+    return GATHER_LOST;
 }
 
 /* Ray k of m over the hemisphere about unit n (tangents t, b),
@@ -153,11 +158,14 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
     for (uint k = 0; k < m; ++k) {
         const float3 d = gather_dir(n, t, b, k, m);
         hit_record h;
-        if (!gather_trace(ps, from, d, reach, &h)) {
+        const int found = gather_trace(ps, from, d, reach, &h);
+        if (found == GATHER_MISS) {
             sum += c->ambient.xyz;
             ++open_rays;
             continue;
         }
+        if (found == GATHER_LOST)
+            continue;
         open_rays += h.t > near;
 #ifdef VCT_INDIRECT
         sum += gather_hit_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, &h, tan_half,
