@@ -37,7 +37,7 @@
  * what their gathering neighbours on the same surface received
  * (inject_bounce_fill). A bounce's light varies slowly along a surface. */
 #include "conetrace/cone_frame.h"
-#include "conetrace/cone_sky.h" /* cone_hit_light */
+#include "conetrace/cone_hit.h" /* cone_hit_light */
 #include "conetrace/cone_trace.h"
 #include "light/direct_light.h" /* surface_epsilon */
 #include "scene/bsdf.h"         /* cosine_dir */

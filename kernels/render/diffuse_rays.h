@@ -23,7 +23,7 @@
 #define VCT_DIFFUSE_RAYS_H
 
 #include "accel/accel.h"
-#include "conetrace/cone_sky.h"
+#include "conetrace/cone_hit.h"
 #include "conetrace/cone_trace.h"
 #include "light/direct_light.h"
 #include "light/emitters.h"

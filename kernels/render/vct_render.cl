@@ -51,7 +51,7 @@
 #include "light/emitters.h"
 #include "scene/texture.h"
 #include "accel/accel.h"
-#include "conetrace/cone_sky.h"
+#include "conetrace/cone_hit.h"
 #include "render/diffuse_rays.h"
 #include "render/primary_sample.h"
 #include "photon/photon.h"

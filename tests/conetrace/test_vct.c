@@ -695,13 +695,11 @@ static void sparse_diffuse(void) {
     vct_scene *box = check_cornell_box();
     vct_voxel_options vo = {0};
     vo.resolution = 128; /* a pixel is about 2 voxels: the cells lie 4 voxels apart */
-    /* Measured: 0.0324 (0.0283 while the cones' rest read the light at 0.7 of
-     * their diameter, cone_sky.h: finer reads vary more between the pixels a
-     * cell stands for; 0.0202 when cells had to lie within the cone offset,
-     * where about 1450 pixels traced their own cones; the default's NRMSE against
-     * the path tracer, 0.0772 -> 0.0778, is the same). Only the box's
+    /* Measured: 0.0209 with the gather's rays (0.0324 with marched cones;
+     * 0.0202 when cells had to lie within the cone offset, where about 1450
+     * pixels traced their own cones). Only the box's
      * creases and the blocks' edges trace their own (14). A fill that takes
-     * the wrong neighbours fails the AO and level checks. */
+     * the wrong neighbours fails the AO check. */
     sparse_diffuse_case("Cornell box", box, &vo, 64, 64, (const int[]){900, 2500, 10, 0}, 0.035);
     vct_scene_release(box);
     /* A sky-lit floor with a raised square 1.6 voxels above it: same normal,
@@ -786,8 +784,8 @@ static void box_quads(float w, float h, float d, float *q) {
  * inside, which the path tracer renders black. Cone tracing, isotropic and
  * directional, must keep it below 1% of the light the sunlit walls send out
  * under the sun alone: their outer faces' light must not show through them.
- * Under the sky too: wide cones must not find the sky through the walls
- * (cone_sky.h; 39% and 11% without), and every outer face lit makes the
+ * Under the sky too: the diffuse gather must not find the sky through the
+ * walls (wide marched cones did: 39% and 11%), and every outer face lit makes the
  * room's brick samples at its own scale hold walls lit outwards on all
  * sides, whose planes cancel: directional bricks below 6% (3.2%), isotropic
  * ones below 1.2%, where the light that the open rest's rays find is read
@@ -893,8 +891,8 @@ static void closed_room_under_a_lit_slab(void) {
  * against the path tracer, with isotropic bricks (the default) and
  * directional ones: the voxel bounces and the rest of the series must keep
  * its energy. Isotropic bricks average a wall with the space beside it and
- * wide cones pass it in part: without the light their open rest takes where
- * a ray along the axis meets the scene (cone_sky.h) the room came out at
+ * wide cones pass it in part: without the light their open rest took where
+ * a ray along the axis met the scene, the room came out at
  * 0.60 of the path tracer's mean. Directional bricks keep the walls opaque;
  * the same rest there gained light (1.11). Measured at 48 x 48, 64^3: 1.05
  * and 1.05. The mean must be within 8 % in both. */
@@ -947,8 +945,8 @@ static void closed_room_against_path_tracer(void) {
 /* A closed room (6 x 3 x 6, albedo 0.5) whose ceiling is open along a slit
  * 0.4 wide, under a sky alone, seen from inside with the slit out of view:
  * all its light comes in through the slit. Wide cones take the ceiling
- * beside the slit in part, and the open share of their rest's rays is the
- * sky they see through it (cone_sky.h); scaled by the cones' own
+ * beside the slit in part, and the open share of their rest's rays was the
+ * sky they saw through it; scaled by the cones' own
  * transparency as well, the slit's light was counted as if seen through it
  * twice: 0.867 of the path tracer's mean at 48 x 48, 64^3 (0.992 now). The
  * mean must be within 6 % of the path tracer's. */

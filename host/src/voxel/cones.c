@@ -61,8 +61,8 @@ static const preset_rings presets[] = {
  * gained over the suite was their open rest's wider spread, which the rest
  * now has at every cap (below). */
 #define MAX_HALF_ANGLE (20.0 * PI / 180.0)
-/* The rays that look past a cone where it leaves the volume (the open
- * rest, kernels/conetrace/cone_sky.h) spread over a cone of its cell's
+/* The rays that look past a cone where it leaves the volume (its open
+ * rest, for a caller that marches the preset's cones) spread over a cone of its cell's
  * solid angle, uncapped: the sky and the walls between 20 degrees and a
  * cell's edge are its own, and rays kept within the cone's aperture missed
  * them (the suite's mean NRMSE at 128^2 0.0783 -> 0.0759: the Cornell box
