@@ -117,8 +117,9 @@ inline int gather_trace(const shading_scene *ps, float3 from, float3 d, float re
         if (!is_dielectric(&m))
             return GATHER_HIT;
         const float3 p = o + t * d;
-        o = p + d * surface_epsilon(&ps->g, p);
-        travelled += t + surface_epsilon(&ps->g, p);
+        const float eps = surface_epsilon(&ps->g, p);
+        o = p + d * eps;
+        travelled += t + eps;
     }
     return GATHER_LOST;
 }
