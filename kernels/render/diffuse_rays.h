@@ -5,8 +5,9 @@
  * vertex would send back: the direct light of every light and emitter
  * there, exactly (shadow rays, the texture's albedo), plus the light that
  * bounced off the leaf voxel there, on the side of its plane the ray sees
- * (the voxels' light less their direct light). Where it meets nothing, the
- * sky's.
+ * (the voxels' light less their direct light), or where the surface is
+ * nearer than the voxels resolve, what a next vertex's ray brings. Where it
+ * meets nothing, the sky's.
  *
  * Cones marched through the bricks read that light a footprint wide, and a
  * voxel cannot hold light that changes within it: in a hall lit through a
@@ -58,41 +59,6 @@ inline float3 gather_bounced(__global const uint *child, const vct_cone_desc *c,
                 0.0f);
 }
 
-/* The light a gather ray from `from` along unit d brings back from h, the
- * surface it met; tan_half: its cone's aperture, seed: its emitter
- * samples' stream. */
-inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global const uint *child,
-                               const vct_cone_desc *c, const gather_voxels *gv, float3 from,
-                               float3 d, const hit_record *h, float tan_half, uint seed) {
-    float3 p, ng, n;
-    int front;
-    if (!surface_hit(&ps->g, h, d, &p, &ng, &n, &front))
-        return (float3)(0.0f);
-    const float voxel = c->volume.w / (float)c->res.x;
-    /* off the hit on the ray's side, a cone's diameter out (cone_hit_light) */
-    const float3 seen_from = p + n * fmax(2.0f * h->t * tan_half, 2.0f * voxel);
-    vct_material_desc m = ps->materials[ps->tri_material[h->tri]];
-    /* the surface's voxel: a quarter voxel back along the ray, or where
-     * that lies in an empty one, a quarter voxel on */
-    float3 bounced = gather_bounced(child, c, gv, p - d * (0.25f * voxel), seen_from);
-    if (bounced.x < 0.0f)
-        bounced = gather_bounced(child, c, gv, p + d * (0.25f * voxel), seen_from);
-    if (bounced.x < 0.0f || bsdf_delta_only(&m))
-        return cone_hit_light(CONE_POOLS_PASS, child, c, from, d, h->t, tan_half, 1.0f, seen_from);
-    m.albedo.xyz = texture_albedo(&ps->tv, &m, h->tri, h->u, h->v);
-    direct_terms dt =
-        direct_gather(&ps->g, ps->lights, ps->light_count, p, n, 1, (float3)(0.0f), -1.0f, 0);
-#ifdef VCT_EMITTERS
-    direct_emitters_part(&ps->g, &ps->e, ps->materials, ps->tri_material, p, n, (float3)(0.0f),
-                         -1.0f, seed, 0u, 1u, &dt);
-#else
-    /* emitters seen through the voxels: the camera's direct light left
-     * them out, and their emission is the voxels' direct light */
-    bounced += m.emission.xyz;
-#endif
-    return bounced + diffuse_color(&m) * VCT_INV_PI * dt.irradiance;
-}
-
 /* What a gather ray found: a surface, nothing (the sky), or more than
  * GATHER_GLASS_MAX panes of glass on the way (no light). */
 #define GATHER_GLASS_MAX 4u
@@ -122,6 +88,89 @@ inline int gather_trace(const shading_scene *ps, float3 from, float3 d, float re
         travelled += t + eps;
     }
     return GATHER_LOST;
+}
+
+/* The direct light surface point p (unit normal n, on the ray's side)
+ * sends back, exactly: shadow rays to every light, emitter samples of
+ * stream `seed`; m holds its texture's albedo. */
+inline float3 gather_direct(const shading_scene *ps, const vct_material_desc *m, float3 p, float3 n,
+                            uint seed) {
+    direct_terms dt =
+        direct_gather(&ps->g, ps->lights, ps->light_count, p, n, 1, (float3)(0.0f), -1.0f, 0);
+#ifdef VCT_EMITTERS
+    direct_emitters_part(&ps->g, &ps->e, ps->materials, ps->tri_material, p, n, (float3)(0.0f),
+                         -1.0f, seed, 0u, 1u, &dt);
+    const float3 glow = (float3)(0.0f);
+#else
+    /* emitters seen through the voxels: the camera's direct light left
+     * them out, and their emission is the voxels' direct light */
+    const float3 glow = m->emission.xyz;
+#endif
+    return glow + diffuse_color(m) * VCT_INV_PI * dt.irradiance;
+}
+
+/* A hit nearer its ray's origin than this many voxels lies in a gap the
+ * voxels cannot resolve: the two surfaces share voxels, and a voxel's two
+ * sides hold one plane's light (a ball's underside and the plinth it rests
+ * on, a voxel apart, both read the plinth's: the plinth beside the ball got
+ * 0.31 of the path tracer's indirect light). There the light that bounced
+ * off the hit is gathered by one more ray, as a path tracer's next vertex
+ * would, up to GATHER_NEAR_DEPTH vertices (a wedge's two faces light each
+ * other back and forth: three left a plate leaning on a floor at 0.85 of
+ * its light under the first voxel, five 0.93); beyond, the leaf voxel's.
+ * The dense hall's NRMSE 0.047 -> 0.026; no suite scene's rose. */
+#define GATHER_NEAR_VOXELS 2.0f
+#define GATHER_NEAR_DEPTH 5u
+
+/* The light a gather ray from `from` along unit d brings back from h, the
+ * surface it met; tan_half: its cone's aperture, seed: its stream (emitter
+ * samples, the near vertices' rays). */
+inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global const uint *child,
+                               const vct_cone_desc *c, const gather_voxels *gv, float3 from,
+                               float3 d, const hit_record *h, float tan_half, uint seed) {
+    const float voxel = c->volume.w / (float)c->res.x;
+    float3 sum = (float3)(0.0f), weight = (float3)(1.0f);
+    hit_record hit = *h;
+    for (uint depth = 0u;; ++depth) {
+        float3 p, ng, n;
+        int front;
+        if (!surface_hit(&ps->g, &hit, d, &p, &ng, &n, &front))
+            return sum;
+        /* off the hit on the ray's side, a cone's diameter out (cone_hit_light) */
+        const float3 seen_from = p + n * fmax(2.0f * hit.t * tan_half, 2.0f * voxel);
+        vct_material_desc m = ps->materials[ps->tri_material[hit.tri]];
+        const int last = hit.t >= GATHER_NEAR_VOXELS * voxel || depth + 1u >= GATHER_NEAR_DEPTH;
+        float3 bounced = (float3)(0.0f);
+        if (last) {
+            /* the surface's voxel: a quarter voxel back along the ray, or
+             * where that lies in an empty one, a quarter voxel on */
+            bounced = gather_bounced(child, c, gv, p - d * (0.25f * voxel), seen_from);
+            if (bounced.x < 0.0f)
+                bounced = gather_bounced(child, c, gv, p + d * (0.25f * voxel), seen_from);
+        }
+        if (bounced.x < 0.0f || bsdf_delta_only(&m))
+            return sum + weight * cone_hit_light(CONE_POOLS_PASS, child, c, from, d, hit.t,
+                                                 tan_half, 1.0f, seen_from);
+        m.albedo.xyz = texture_albedo(&ps->tv, &m, hit.tri, hit.u, hit.v);
+        sum += weight * gather_direct(ps, &m, p, n, seed);
+        if (last)
+            return sum + weight * bounced;
+        /* the next vertex: a cosine-weighted ray, whose light the surface
+         * reflects by its albedo */
+        weight *= diffuse_color(&m);
+        seed = rng_hash(seed + 0x9e3779b9u);
+        const uint s2 = rng_hash(seed);
+        float3 t, b;
+        basis_of(n, &t, &b);
+        d = normalize(cosine_dir(n, t, b, (float)(seed >> 8) * (1.0f / 16777216.0f),
+                                 (float)(s2 >> 8) * (1.0f / 16777216.0f)));
+        from = p + n * surface_epsilon(&ps->g, p);
+        const int found = gather_trace(ps, from, d, INFINITY, &hit);
+        if (found == GATHER_MISS)
+            return sum + weight * c->ambient.xyz;
+        if (found != GATHER_HIT)
+            return sum;
+    }
 }
 
 /* Ray k of m over the hemisphere about unit n (tangents t, b),

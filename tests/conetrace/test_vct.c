@@ -1145,6 +1145,67 @@ static void wall_beside_a_sun_strip(void) {
     vct_scene_release(s);
 }
 
+/* A plate leaning on a floor, its low edge on it (a book against a shelf,
+ * a ball on a plinth): the sun, low from the open side, lights the floor
+ * under the plate but not the plate's underside, which takes its light
+ * from that floor and from itself, back and forth. Near the edge the two
+ * are nearer than a voxel, share voxels, and a voxel's two sides hold one
+ * plane's light: read from the voxels, the underside over a gap under one
+ * voxel got 0.654 of the path tracer's light (0.909 over one to three).
+ * Gather rays that meet a surface within 2 voxels go on to the next vertex
+ * (render/diffuse_rays.h): measured 0.930 and 0.932 (0.853 and 0.928 with
+ * three vertices at most, five now). Each within 10 %. */
+static void plate_leaning_on_a_floor(void) {
+    const float quads[] = {/* floor, plate rising from x = 0 to x = 1 (0.3 up) */
+                           -1, 0, -1, -1, 0, 1, 1, 0,    1, 1, 0,    -1, /**/
+                           0,  0, -1, 0,  0, 1, 1, 0.3f, 1, 1, 0.3f, -1};
+    vct_material m = vct_material_default();
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.7f;
+    vct_scene *s = one_material_scene(quads, 2, m);
+    const vct_light sun = {
+        VCT_LIGHT_DIRECTIONAL, {0, 0, 0}, {-1.0f, -0.2f, 0.0f}, {10, 10, 10}, 0, 0, 0};
+    vct_error err = {0};
+    REQUIRE_OK(vct_scene_add_light(s, &sun, &err), err);
+    s->camera = (vct_camera){{0.8f, 0.05f, 0.0f}, {0.0f, 0.02f, 0.0f}, {0, 1, 0}, 50.0f};
+    s->has_camera = 1;
+    const int w = 40, h = 40;
+    vct_image ref = path_traced(s, w, h, 1024, 7);
+    vct_plan p;
+    vct_plan_make(s, NULL, &p);
+    vct_aovs aovs;
+    vct_image im = vct_case_render_bricks(ctx, s, &p, 64, w, h, 4, 0, &aovs);
+    /* the underside where the gap is under one voxel (0.031 at x = 0.1),
+     * and from one to three */
+    double got[2] = {0}, want[2] = {0};
+    int count[2] = {0};
+    for (int px = 0; px < w * h; ++px) {
+        const float *at = aovs.position.rgba + 4 * px, *n = aovs.normal.rgba + 4 * px;
+        if (!(at[3] > 0.0f && n[1] < -0.9f && at[0] < 0.3f && fabs(at[2]) < 0.6f))
+            continue;
+        const int band = at[0] >= 0.1f;
+        for (int c = 0; c < 3; ++c) {
+            got[band] += im.rgba[4 * px + c];
+            want[band] += ref.rgba[4 * px + c];
+        }
+        ++count[band];
+    }
+    for (int band = 0; band < 2; ++band) {
+        const double ratio = want[band] > 0.0 ? got[band] / want[band] : 0.0;
+        CHECK(count[band] > 10 && fabs(ratio - 1.0) < 0.1,
+              "plate leaning on a floor: its underside over a gap %s one voxel %.3f of the path "
+              "tracer's light over %d pixels",
+              band ? "of one to three" : "under", ratio, count[band]);
+        printf("plate leaning on a floor %dx%d, gap %s voxel: %.3f of the path tracer's "
+               "(%d pixels)\n",
+               w, h, band ? "1 to 3" : "under 1", ratio, count[band]);
+    }
+    CHECK(nonfinite(&im) == 0, "plate leaning on a floor: NaN in the image");
+    vct_image_release(&im);
+    vct_aovs_release(&aovs);
+    vct_image_release(&ref);
+    vct_scene_release(s);
+}
+
 int main(void) {
     ctx = check_context();
     plans();
@@ -1160,6 +1221,7 @@ int main(void) {
     gap_under_a_plate();
     floor_beside_a_plate();
     wall_beside_a_sun_strip();
+    plate_leaning_on_a_floor();
     sky_through_a_slit();
     cornell_against_path_tracer();
     glossy_cornell_against_path_tracer();
