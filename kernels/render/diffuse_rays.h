@@ -158,11 +158,12 @@ inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global con
         /* the next vertex: a cosine-weighted ray, whose light the surface
          * reflects by its albedo */
         weight *= diffuse_color(&m);
+        /* its direction's numbers apart from the next vertex's emitter stream */
         seed = rng_hash(seed + 0x9e3779b9u);
-        const uint s2 = rng_hash(seed);
+        const uint s1 = rng_hash(seed ^ 0x85ebca6bu), s2 = rng_hash(s1);
         float3 t, b;
         basis_of(n, &t, &b);
-        d = normalize(cosine_dir(n, t, b, (float)(seed >> 8) * (1.0f / 16777216.0f),
+        d = normalize(cosine_dir(n, t, b, (float)(s1 >> 8) * (1.0f / 16777216.0f),
                                  (float)(s2 >> 8) * (1.0f / 16777216.0f)));
         from = p + n * surface_epsilon(&ps->g, p);
         const int found = gather_trace(ps, from, d, INFINITY, &hit);

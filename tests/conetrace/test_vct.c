@@ -1153,7 +1153,7 @@ static void wall_beside_a_sun_strip(void) {
  * plane's light: read from the voxels, the underside over a gap under one
  * voxel got 0.654 of the path tracer's light (0.909 over one to three).
  * Gather rays that meet a surface within 2 voxels go on to the next vertex
- * (render/diffuse_rays.h): measured 0.930 and 0.932 (0.853 and 0.928 with
+ * (render/diffuse_rays.h): measured 0.928 and 0.932 (0.853 and 0.928 with
  * three vertices at most, five now). Each within 10 %. */
 static void plate_leaning_on_a_floor(void) {
     const float quads[] = {/* floor, plate rising from x = 0 to x = 1 (0.3 up) */
