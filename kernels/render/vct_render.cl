@@ -13,7 +13,7 @@
  *   vct_soft_shadows   direct light of the lights with a radius, through one
  *                      cone per light as wide as the light
  *   vct_diffuse_cones  indirect diffuse light and ambient occlusion: rays
- *                      across each cone's cell of the hemisphere, their hits
+ *                      spread over the hemisphere by their cosine, their hits
  *                      shaded exactly and by the voxels' bounced light
  *                      (render/diffuse_rays.h)
  *   vct_diffuse_sparse, vct_diffuse_fill  the same, traced at every other
