@@ -18,6 +18,7 @@ void cli_layers_add_aovs(cli_layers *l, const vct_aovs *a) {
     cli_layers_add(l, "position", &a->position, "XYZ");
     cli_layers_add(l, "normal", &a->normal, "XYZ");
     cli_layers_add(l, "albedo", &a->albedo, "RGB");
+    cli_layers_add(l, "indirect_variance", &a->indirect_variance, "Y");
 }
 
 vct_image *cli_layers_own(cli_layers *l) {

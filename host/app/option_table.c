@@ -13,9 +13,9 @@ static const cli_option output_rows[] = {
      "(exposure, tone curve and sRGB); render defaults to render.png"},
     {"aov", 0, OPT_AOV, 0, NULL,
      "also write arbitrary output values: cone tracing's direct, indirect, specular, ao, "
-     "position, normal and albedo; the other methods' albedo, normal, depth (and pt's variance "
-     "with --denoise): layers of the same file for .exr, else FILE_albedo.pfm and so on beside "
-     "it"},
+     "position, normal, albedo and indirect_variance; the other methods' albedo, normal, depth "
+     "(and pt's variance with --denoise): layers of the same file for .exr, else "
+     "FILE_albedo.pfm and so on beside it"},
     {"exr", 0, OPT_EXR, 1, "half|float",
      "EXR only: 16-bit half floats (default) or 32-bit floats, as PFM holds them"},
     {"stats", 0, OPT_STATS, 0, NULL, "per-stage device time, host time and memory"},
@@ -125,7 +125,8 @@ static const cli_option vct_rows[] = {
     {"effect", 0, OPT_EFFECT, 1, "NAME=on|off",
      "force an effect on or off against the plan: direct, shadows, indirect, specular, "
      "refraction, emission, ao, soft_shadows (repeatable)"},
-    {"cones", 0, OPT_CONES, 1, "N", "the diffuse gather at the camera's hits: 9 N rays, N 1 to 16 (default 9)"},
+    {"cones", 0, OPT_CONES, 1, "N",
+     "the diffuse gather at the camera's hits: 9 N rays, N 1 to 16 (default 9)"},
     {"cone-step", 0, OPT_CONE_STEP, 1, "F",
      "cone march step as a fraction of the cone's diameter (default 1)"},
     {"cone-offset", 0, OPT_CONE_OFFSET, 1, "VOXELS",
@@ -133,11 +134,12 @@ static const cli_option vct_rows[] = {
     {"cone-levels", 0, OPT_CONE_LEVELS, 1, "blend|nearest",
      "a sample blends two octree levels (default) or reads the nearest one"},
     {"dense-diffuse", 0, OPT_DENSE_DIFFUSE, 0, NULL,
-     "the diffuse gather at every pixel (by default at every other pixel per axis, the rest filled in "
-     "from traced neighbours on the same surface)"},
+     "the diffuse gather at every pixel (by default at every other pixel per axis, the rest filled "
+     "in from traced neighbours on the same surface)"},
     {"indirect-filter", 0, OPT_INDIRECT_FILTER, 1, "N",
      "the indirect diffuse light through N passes of the denoiser, guided by the first hit's "
-     "albedo, normal and depth (default 2; 0: none; --denoise: 5)"},
+     "albedo, normal and depth and by the variance of its gather rays (default 3; 0: none; "
+     "--denoise: 5)"},
     {"edge-samples", 0, OPT_EDGE_SAMPLES, 1, "N",
      "N x N camera rays at pixels on an edge (surface, material, hard shadow), shown as their "
      "mean; 2N x 2N where the shading on its two sides is four times apart, 4N x 4N on an "

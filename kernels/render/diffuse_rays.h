@@ -174,6 +174,10 @@ inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global con
     }
 }
 
+inline float gather_luminance(float3 c) {
+    return dot(c, (float3)(0.2126f, 0.7152f, 0.0722f));
+}
+
 /* Ray k of m over the hemisphere about unit n (tangents t, b),
  * cosine-weighted: a Fibonacci spiral over the unit disc (radius
  * sqrt((k + 0.5) / m), turned by the golden angle from ray to ray) lifted
@@ -195,7 +199,8 @@ inline float3 gather_dir(float3 n, float3 t, float3 b, uint k, uint m) {
  * (occlusion only), the rays reach `near` alone. */
 inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const uint *child,
                           const vct_cone_desc *c, const gather_voxels *gv, float3 p, float3 n,
-                          float3 t, float3 b, uint m, uint seed, float near, float *open) {
+                          float3 t, float3 b, uint m, uint seed, float near, float *open,
+                          float *variance) {
     const float3 from = p + n * surface_epsilon(&ps->g, p);
     /* a cone of a ray's share of the hemisphere, where a ray reads bricks */
     const float tan_half = sqrt(2.0f / (float)m);
@@ -205,6 +210,7 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
     const float reach = near;
 #endif
     float3 sum = (float3)(0.0f);
+    float squares = 0.0f; /* of each ray's luminance */
     uint open_rays = 0u;
     for (uint k = 0; k < m; ++k) {
         const float3 d = gather_dir(n, t, b, k, m);
@@ -212,6 +218,7 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
         const int found = gather_trace(ps, from, d, reach, &h);
         if (found == GATHER_MISS) {
             sum += c->ambient.xyz;
+            squares += gather_luminance(c->ambient.xyz) * gather_luminance(c->ambient.xyz);
             ++open_rays;
             continue;
         }
@@ -219,11 +226,16 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
             continue;
         open_rays += h.t > near;
 #ifdef VCT_INDIRECT
-        sum += gather_hit_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, &h, tan_half,
-                                rng_hash(seed ^ k));
+        const float3 light = gather_hit_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, &h,
+                                              tan_half, rng_hash(seed ^ k));
+        sum += light;
+        squares += gather_luminance(light) * gather_luminance(light);
 #endif
     }
     *open = (float)open_rays / (float)m;
+    const float mean = gather_luminance(sum) / (float)m;
+    /* the variance of the mean's luminance, from the rays' spread */
+    *variance = fmax(squares / (float)m - mean * mean, 0.0f) / (float)m;
     return sum / (float)m;
 }
 

@@ -468,6 +468,7 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
 typedef struct diffuse_light {
     float3 radiance;
     float open;
+    float variance; /* of the radiance's luminance */
 } diffuse_light;
 
 inline diffuse_light diffuse_trace(const shading_scene *ps, CONE_POOLS, __global const uint *child,
@@ -477,8 +478,9 @@ inline diffuse_light diffuse_trace(const shading_scene *ps, CONE_POOLS, __global
     const uint seed = cone_point_seed(cd->volume.xyz, cd->volume.w, cd->res.x, g->p);
     cone_frame(g->n, seed, &t, &b);
     diffuse_light l;
-    l.radiance = gather_rays(ps, CONE_POOLS_PASS, child, cd, gv, g->p, g->n, t, b,
-                             cone_count * GATHER_RAYS_PER_CONE, seed, cd->march.z, &l.open);
+    l.radiance =
+        gather_rays(ps, CONE_POOLS_PASS, child, cd, gv, g->p, g->n, t, b,
+                    cone_count * GATHER_RAYS_PER_CONE, seed, cd->march.z, &l.open, &l.variance);
     return l;
 }
 
@@ -486,14 +488,17 @@ inline diffuse_light diffuse_trace(const shading_scene *ps, CONE_POOLS, __global
 inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pixel,
                           const gbuffer_surface *g, diffuse_light l, float3 ambient) {
     float3 add = (float3)(0.0f);
+    float variance = 0.0f;
 #if defined(VCT_INDIRECT)
-    add = diffuse_color(&g->m) * g->throughput * l.radiance;
+    const float3 reflect = diffuse_color(&g->m) * g->throughput;
+    add = reflect * l.radiance;
+    variance = l.variance * gather_luminance(reflect) * gather_luminance(reflect);
 #elif defined(VCT_AO)
     add = diffuse_color(&g->m) * g->throughput * ambient * l.open;
 #endif
     pixel_add(image, aov, pixel, 1u, add);
     if (aov)
-        aov[AOV_SLOTS * pixel + 3u] = (float4)(l.open, 0.0f, 0.0f, 1.0f);
+        aov[AOV_SLOTS * pixel + 3u] = (float4)(l.open, variance, 0.0f, 1.0f);
 }
 
 #if (defined(VCT_INDIRECT) || defined(VCT_AO)) && !defined(VCT_SPARSE_DIFFUSE)
@@ -549,11 +554,12 @@ __kernel void vct_diffuse_sparse(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
         return;
     uint pixel;
     gbuffer_surface g;
-    diffuse_light l = {(float3)(0.0f), 0.0f};
+    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
     if (gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &pixel, &g))
         l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cone_count, &g);
     const uint cell = j * cells.x + i;
-    sparse[cell] = (float4)(l.radiance, l.open);
+    sparse[2u * cell] = (float4)(l.radiance, l.open);
+    sparse[2u * cell + 1u] = (float4)(l.variance, 0.0f, 0.0f, 0.0f);
 }
 #endif
 
@@ -579,7 +585,7 @@ __kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *chil
     if (!gbuffer_read(gbuf, materials, size, &pixel, &g))
         return;
     const uint x = get_global_id(0), y = get_global_id(1), columns = (size.x + 1u) / 2u;
-    diffuse_light l = {(float3)(0.0f), 0.0f};
+    diffuse_light l = {(float3)(0.0f), 0.0f, 0.0f};
     float agree = 0.0f;
     for (uint dy = 0; dy <= (y & 1u); ++dy)
         for (uint dx = 0; dx <= (x & 1u); ++dx) {
@@ -589,14 +595,16 @@ __kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *chil
             if (!gbuffer_at(gbuf, materials, size, 2u * i, 2u * j, &at, &q) ||
                 !sparse_agrees(&cd, &g, &q))
                 continue;
-            const float4 a = sparse[j * columns + i];
+            const float4 a = sparse[2u * (j * columns + i)];
             l.radiance += a.xyz;
             l.open += a.w;
+            l.variance += sparse[2u * (j * columns + i) + 1u].x;
             agree += 1.0f;
         }
     if (agree > 0.0f) {
         l.radiance /= agree;
         l.open /= agree;
+        l.variance /= agree * agree; /* the mean's, of independent cells */
     } else {
         l = diffuse_trace(&ps, CONE_POOLS_PASS, child, &cd, &gv, cone_count, &g);
     }

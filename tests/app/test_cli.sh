@@ -101,19 +101,19 @@ CORNELL=$SRC/scenes/cornell_box.gltf
 "$VCT" render "$CORNELL" --size 24 16 --effect indirect=off --denoise -o "$DIR/dn.pfm" >/dev/null 2>&1
 cmp -s "$DIR/plain.pfm" "$DIR/dn.pfm" && ok "cone tracing's --denoise leaves direct light alone" ||
     fail "cone tracing's --denoise changed an image without indirect light"
-# Its indirect light is filtered by default (--indirect-filter 2): 0 turns
+# Its indirect light is filtered by default (--indirect-filter 3): 0 turns
 # the filter off, --denoise takes it through all 5 passes; three images.
-for f in 0 2 5; do
+for f in 0 3 5; do
     "$VCT" render "$CORNELL" --size 24 16 --voxel-res 32 --indirect-filter $f \
         -o "$DIR/if$f.pfm" >/dev/null 2>&1 || fail "--indirect-filter $f did not render"
 done
 "$VCT" render "$CORNELL" --size 24 16 --voxel-res 32 -o "$DIR/if_default.pfm" >/dev/null 2>&1
 "$VCT" render "$CORNELL" --size 24 16 --voxel-res 32 --denoise -o "$DIR/if_dn.pfm" >/dev/null 2>&1
-if cmp -s "$DIR/if2.pfm" "$DIR/if_default.pfm" && cmp -s "$DIR/if5.pfm" "$DIR/if_dn.pfm" &&
-    ! cmp -s "$DIR/if0.pfm" "$DIR/if2.pfm" && ! cmp -s "$DIR/if2.pfm" "$DIR/if5.pfm"; then
-    ok "--indirect-filter: 2 by default, 5 with --denoise, 0 unfiltered, each its own image"
+if cmp -s "$DIR/if3.pfm" "$DIR/if_default.pfm" && cmp -s "$DIR/if5.pfm" "$DIR/if_dn.pfm" &&
+    ! cmp -s "$DIR/if0.pfm" "$DIR/if3.pfm" && ! cmp -s "$DIR/if3.pfm" "$DIR/if5.pfm"; then
+    ok "--indirect-filter: 3 by default, 5 with --denoise, 0 unfiltered, each its own image"
 else
-    fail "--indirect-filter 0, 2 and 5 against the default and --denoise"
+    fail "--indirect-filter 0, 3 and 5 against the default and --denoise"
 fi
 "$VCT" render "$CORNELL" --indirect-filter 6 -o "$DIR/no.pfm" >/dev/null 2>"$DIR/err"
 grep -q -- "--indirect-filter" "$DIR/err" && [ ! -e "$DIR/no.pfm" ] && ok "--indirect-filter 6 refused" ||

@@ -226,6 +226,71 @@ static void constant_environment(void) {
     sky_floor(m, presets, 1, 1);
 }
 
+/* The gather's variance (vct_aovs.indirect_variance) on a floor beside a
+ * tall black wall under a sky: each of a point's m rays brings the sky's
+ * light L or nothing (the wall is black and one bounce leaves no light in
+ * the voxels), so the variance of their mean's luminance is f (1 - f) L^2
+ * / m for the share f that meets the sky, read from the indirect light
+ * (albedo * f * sky); times the albedo's luminance squared, as the image
+ * holds it. Points far from the wall (f = 1) have none. */
+static void gather_variance_beside_a_wall(void) {
+    const float quads[24] = {-1,   0, -1, 0.5f, 0,  -1, 0.5f, 0,  1, -1,   0, 1,
+                             0.5f, 0, -1, 0.5f, 10, -1, 0.5f, 10, 1, 0.5f, 0, 1};
+    test_mesh t = mesh_quads(quads, 2);
+    uint32_t *mat = calloc(t.nt, 4);
+    mat[2] = mat[3] = 1; /* the wall */
+    vct_material m[2] = {vct_material_default(), vct_material_default()};
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.5f;
+    m[1].albedo[0] = m[1].albedo[1] = m[1].albedo[2] = 0.0f;
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(t.pos, t.nv, t.tri, t.nt, mat, m, 2, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    free(mat);
+    mesh_free(&t);
+    s->ambient[0] = 1.0f, s->ambient[1] = 2.0f, s->ambient[2] = 0.5f;
+    s->camera = (vct_camera){{-0.25f, 3.0f, 0.01f}, {-0.25f, 0, 0}, {0, 0, -1}, 50.0f};
+    vct_plan p;
+    vct_plan_make(s, NULL, &p);
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    vct_voxel_options vo = {0};
+    vo.resolution = 32;
+    vct_vct_options o = vct_vct_options_default(48, 48);
+    o.edge_samples = 1;
+    o.sparse_diffuse = 0; /* every pixel its own rays */
+    o.indirect_passes = 0;
+    vct_voxels *v = NULL;
+    REQUIRE_OK(vct_vct_prepare(ctx, s, g, &p, &vo, NULL, 1, &o.cones, &v, &err), err);
+    vct_image im;
+    vct_aovs a;
+    REQUIRE_OK(vct_render_vct(ctx, s, g, v, &p, &o, &im, &a, &err), err);
+    const double rays = o.diffuse_cones * 9.0, sky = 0.2126 + 0.7152 * 2.0 + 0.0722 * 0.5;
+    double worst = 0.0, least = 1.0, most = 0.0;
+    int floor_pixels = 0;
+    for (int px = 0; px < 48 * 48; ++px) {
+        if (a.normal.rgba[4 * px + 3] != 1.0f || a.albedo.rgba[4 * px] != 0.5f)
+            continue; /* the floor's pixels */
+        const double f = a.indirect.rgba[4 * px + 1] / (0.5 * 2.0);
+        const double expect = 0.25 * f * (1.0 - f) * sky * sky / rays;
+        const double got = a.indirect_variance.rgba[4 * px];
+        worst = fmax(worst, fabs(got - expect) / (expect + 1e-4));
+        least = fmin(least, f), most = fmax(most, f);
+        ++floor_pixels;
+    }
+    CHECK(worst < 1e-3 && floor_pixels > 500 && least < 0.6 && most > 0.8,
+          "gather variance beside a black wall: within %.2g of f (1 - f) L^2 / m (%d floor "
+          "pixels, sky share f from %.2f to %.2f)",
+          worst, floor_pixels, least, most);
+    printf("gather variance beside a black wall: within %.1g of f (1 - f) L^2 / m (%d floor "
+           "pixels, f %.2f to %.2f)\n",
+           worst, floor_pixels, least, most);
+    vct_image_release(&im);
+    vct_aovs_release(&a);
+    vct_voxels_release(v);
+    vct_accel_release(g);
+    vct_scene_release(s);
+}
+
 /* The Cornell box at default settings against the path tracer. */
 /* Pixel-to-pixel roughness of an image's red, green and blue: the mean
  * absolute difference between horizontal neighbours that both show a
@@ -587,12 +652,19 @@ static int sparse_agrees_ref(const vct_aovs *a, int p, int c, double voxel) {
     return agree;
 }
 
+static double albedo_luminance(const vct_aovs *a, int p) {
+    const float *c = &a->albedo.rgba[4 * p];
+    return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+}
+
 /* What the reference expects at pixel (x, y) of the sparse render, from the
- * full render's AO AOV (what the gather found, before any material): *ao. */
+ * full render's AO AOV (what the gather found, before any material): *ao;
+ * and from its variance AOV (over the albedo's luminance squared, the
+ * gather's own), the variance of the cells' mean: *variance. */
 static sparse_kind sparse_expect(const vct_aovs *full, int w, int h, int x, int y, double voxel,
-                                 double *ao) {
+                                 double *ao, double *variance) {
     const int p = y * w + x;
-    double sum_ao = 0.0;
+    double sum_ao = 0.0, sum_variance = 0.0;
     int agree = 0;
     for (int j = y / 2; j <= y / 2 + (y & 1); ++j)
         for (int i = x / 2; i <= x / 2 + (x & 1); ++i) {
@@ -603,15 +675,20 @@ static sparse_kind sparse_expect(const vct_aovs *full, int w, int h, int x, int 
             if (a < 0)
                 return SPARSE_BORDERLINE;
             if (a) {
+                const double lc = albedo_luminance(full, c);
                 sum_ao += full->ao.rgba[4 * c];
+                sum_variance += full->indirect_variance.rgba[4 * c] / (lc * lc);
                 ++agree;
             }
         }
     if (agree == 0) {
         *ao = full->ao.rgba[4 * p];
+        *variance = full->indirect_variance.rgba[4 * p];
         return SPARSE_OWN;
     }
+    const double lp = albedo_luminance(full, p);
     *ao = sum_ao / agree;
+    *variance = lp * lp * sum_variance / ((double)agree * agree);
     return x % 2 == 0 && y % 2 == 0 ? SPARSE_TRACED : SPARSE_FILLED;
 }
 
@@ -629,7 +706,8 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
     o.width = w;
     o.height = h;
     o.aovs = 1;
-    o.sparse_diffuse = 0;  /* the full render first: every pixel's cones */
+    o.sparse_diffuse = 0; /* the full render first: every pixel's cones */
+    o.edge_samples = 1; /* the albedo guide the surface's own, as the variance's reference needs */
     o.indirect_passes = 0; /* each pixel's own, to compare bit for bit */
     vct_voxels *v = NULL;
     REQUIRE_OK(vct_vct_prepare(ctx, s, g, &p, vo, NULL, 2, &o.cones, &v, &err), err);
@@ -641,16 +719,16 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
     REQUIRE_OK(vct_render_vct(ctx, s, g, v, &p, &o, &full, &fa, &err), err);
     o.sparse_diffuse = 1;
     REQUIRE_OK(vct_render_vct(ctx, s, g, v, &p, &o, &sparse, &sa, &err), err);
-    int counts[4] = {0}, traced_differ = 0, wrong = 0, surfaces = 0;
-    double worst = 0.0;
+    int counts[4] = {0}, traced_differ = 0, wrong = 0, wrong_variance = 0, surfaces = 0;
+    double worst = 0.0, worst_variance = 0.0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const int px = y * w + x;
             if (fa.normal.rgba[4 * px + 3] != 1.0f)
                 continue;
             ++surfaces;
-            double ao;
-            const sparse_kind k = sparse_expect(&fa, w, h, x, y, voxel, &ao);
+            double ao, variance;
+            const sparse_kind k = sparse_expect(&fa, w, h, x, y, voxel, &ao, &variance);
             ++counts[k];
             if (k == SPARSE_TRACED)
                 traced_differ +=
@@ -661,6 +739,10 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
             const double e = fabs(sa.ao.rgba[4 * px] - ao);
             worst = fmax(worst, e);
             wrong += e > 1e-5;
+            const double ev =
+                fabs(sa.indirect_variance.rgba[4 * px] - variance) / (variance + 1e-12);
+            worst_variance = fmax(worst_variance, ev);
+            wrong_variance += ev > 1e-4;
         }
     CHECK(traced_differ == 0, "sparse diffuse, %s: %d traced pixels differ from the full render",
           name, traced_differ);
@@ -668,6 +750,10 @@ static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_
           "sparse diffuse, %s: %d pixels' AO differ from the reference's fill (worst by "
           "%g)",
           name, wrong, worst);
+    CHECK(wrong_variance == 0,
+          "sparse diffuse, %s: %d pixels' variance differ from the reference's fill (worst by "
+          "%g of it)",
+          name, wrong_variance, worst_variance);
     CHECK(counts[SPARSE_TRACED] >= min_counts[SPARSE_TRACED] &&
               counts[SPARSE_FILLED] >= min_counts[SPARSE_FILLED] &&
               counts[SPARSE_OWN] >= min_counts[SPARSE_OWN] && counts[SPARSE_BORDERLINE] < 10,
@@ -1221,6 +1307,7 @@ int main(void) {
     plans();
     specular_only_when_planned();
     constant_environment();
+    gather_variance_beside_a_wall();
     empty_volume();
     sparse_diffuse();
     glass_pane();

@@ -15,7 +15,8 @@ import numpy as np
 import OpenEXR
 
 LAYERS = {"direct": "RGB", "indirect": "RGB", "specular": "RGB", "ao": "Y",
-          "position": "XYZ", "normal": "XYZ", "albedo": "RGB"}
+          "position": "XYZ", "normal": "XYZ", "albedo": "RGB",
+          "indirect_variance": "Y"}
 failures = 0
 
 

@@ -160,20 +160,20 @@ typedef struct vct_vct_options {
     int aovs; /* also fill the AOV images */
     /* The indirect diffuse light through this many of the denoiser's
      * passes (vct/denoise.h), guided by the first hit's albedo, normal and
-     * depth; the direct light and the specular cone are kept as they are.
-     * The cones' grain is pixel-sized: over the scene suite 2 passes take
-     * the error as far down as 5 do. 0: not filtered. At most
-     * VCT_INDIRECT_PASSES_MAX. */
+     * depth and by each pixel's variance (vct_aovs.indirect_variance); the
+     * direct light and the specular cone are kept as they are. Over the
+     * scene suite 3 passes take the error as far down as 4 or 5 do. 0: not
+     * filtered. At most VCT_INDIRECT_PASSES_MAX. */
     uint32_t indirect_passes;
 } vct_vct_options;
 
 #define VCT_EDGE_SAMPLES_DEFAULT 4u
 #define VCT_EDGE_SAMPLES_MAX 8u
-#define VCT_INDIRECT_PASSES_DEFAULT 2u
+#define VCT_INDIRECT_PASSES_DEFAULT 3u
 #define VCT_INDIRECT_PASSES_MAX 5u
 
 /* 9 diffuse cones, default cone settings, 4 x 4 rays at edges, the indirect
- * light through 2 filter passes, no AOVs. */
+ * light through 3 filter passes, no AOVs. */
 VCT_API vct_vct_options vct_vct_options_default(int width, int height);
 
 typedef struct vct_aovs {
@@ -190,6 +190,10 @@ typedef struct vct_aovs {
      * the mean distance of those that found a surface (0 where none did). */
     vct_image albedo;
     vct_image normal_depth;
+    /* The variance of each pixel's indirect light (its luminance, as grey):
+     * the spread of its gather rays' light over their count, the indirect
+     * filter's guide; 0 where no rays were traced. */
+    vct_image indirect_variance;
 } vct_aovs;
 VCT_API void vct_aovs_release(vct_aovs *aovs);
 

@@ -14,13 +14,14 @@ int vct_indirect_filter_reach(uint32_t passes) {
 }
 
 int vct_indirect_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
-                        uint32_t passes, vct_image *indirect, vct_error *err) {
+                        const vct_image *variance, uint32_t passes, vct_image *indirect,
+                        vct_error *err) {
     const int width = indirect->width, height = indirect->height;
     vct_image frame = {0}, filtered = {0};
     int rc = vct_image_read_device(ctx, STAGE, ctx->frame, width, height, &frame, err);
     vct_denoise_options o = vct_denoise_options_default();
     o.iterations = passes;
-    const vct_denoise_guides guides = {albedo, normal_depth, NULL, indirect, 1};
+    const vct_denoise_guides guides = {albedo, normal_depth, variance, indirect, 1};
     if (rc == VCT_OK)
         rc = vct_denoise(ctx, &frame, &guides, &o, &filtered, err);
     const size_t values = 4 * (size_t)width * height;

@@ -17,6 +17,7 @@ int vct_indirect_filter_reach(uint32_t passes);
  * of the surfaces it was gathered at (vct/denoise.h), and puts what the
  * filter changed into the frame. */
 int vct_indirect_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
-                        uint32_t passes, vct_image *indirect, vct_error *err);
+                        const vct_image *variance, uint32_t passes, vct_image *indirect,
+                        vct_error *err);
 
 #endif

@@ -46,6 +46,7 @@ void vct_aovs_release(vct_aovs *a) {
     vct_image_release(&a->normal);
     vct_image_release(&a->albedo);
     vct_image_release(&a->normal_depth);
+    vct_image_release(&a->indirect_variance);
 }
 
 /* The preset on the device: vct_cone_dir per cone. */
@@ -518,7 +519,7 @@ static int diffuse_pass(frame *f, cl_mem cones, cl_uint count, int sparse, vct_e
     if (!sparse)
         return cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_cones", 1, cones, count, NULL, 0, err);
     const size_t cells = (size_t)((f->size[0] + 1) / 2) * ((f->size[1] + 1) / 2);
-    cl_mem buffer = vct_buffer_create(f->ctx, DIFFUSE_STAGE, "sparse diffuse cells", 16 * cells,
+    cl_mem buffer = vct_buffer_create(f->ctx, DIFFUSE_STAGE, "sparse diffuse cells", 32 * cells,
                                       CL_MEM_READ_WRITE, NULL, err);
     int rc = buffer ? cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_sparse", 1, cones, count,
                                      buffer, 1, err)
@@ -536,9 +537,9 @@ static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
     const struct {
         vct_image *image;
         int slot, component; /* component -1: the whole float4 */
-    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1},    {&a->specular, 2, -1},
-                {&a->ao, 3, 0},      {&a->position, 4, -1},    {&a->normal, 5, -1},
-                {&a->albedo, 6, -1}, {&a->normal_depth, 7, -1}};
+    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1},     {&a->specular, 2, -1},
+                {&a->ao, 3, 0},      {&a->position, 4, -1},     {&a->normal, 5, -1},
+                {&a->albedo, 6, -1}, {&a->normal_depth, 7, -1}, {&a->indirect_variance, 3, 1}};
     const size_t pixels = (size_t)f->size[0] * f->size[1], bytes = 16 * AOV_SLOTS * pixels;
     float *raw = malloc(bytes);
     int rc = raw ? vct_buffer_read(f->ctx, "vct AOVs", f->aov, 0, bytes, raw, err)
@@ -669,8 +670,8 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
         rc = read_aovs(&f, aovs ? aovs : &for_filter, err);
     vct_aovs *kept = aovs ? aovs : &for_filter;
     if (rc == VCT_OK && filter)
-        rc = vct_indirect_filter(ctx, &kept->albedo, &kept->normal_depth, opt->indirect_passes,
-                                 &kept->indirect, err);
+        rc = vct_indirect_filter(ctx, &kept->albedo, &kept->normal_depth, &kept->indirect_variance,
+                                 opt->indirect_passes, &kept->indirect, err);
     vct_aovs_release(&for_filter);
     if (rc == VCT_OK)
         rc = vct_frame_deliver(ctx, "vct image", image, err);
