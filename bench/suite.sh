@@ -60,7 +60,9 @@ tools/python.sh bench/suite_plot.py out/suite scenes/suite/suite.txt doc/results
     echo "$stamp"
     echo
     echo "Each scene of \`scenes/suite/suite.txt\` at ${SIZE}x${SIZE}, against a path-traced reference of"
-    echo "$REF_SPP samples per pixel (another seed; fewer where suite.txt says so). NRMSE is the RMSE"
+    echo "$REF_SPP samples per pixel (another seed; more or fewer where suite.txt says so: more"
+    echo "where a scene's path tracer is noisiest, so that the reference's own noise, which every"
+    echo "method's error takes in, stays near 2 %, fewer where it is slowest). NRMSE is the RMSE"
     echo "over all pixels and channels over the reference's mean; device ms is the sum of the"
     echo "stages' device time: the acceleration structure, the voxels and their light, and the"
     echo "image; for a denoised path tracer, the guides and the filter too (OIDN's: its filter"
