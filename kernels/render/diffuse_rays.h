@@ -194,9 +194,11 @@ inline float3 gather_dir(float3 n, float3 t, float3 b, uint k, uint m) {
 }
 
 /* The mean light of m gather rays from surface point p (unit normal n,
- * tangents t and b, turned per point by the caller), and in *open the
- * share of them that meet nothing within `near`. Without indirect light
- * (occlusion only), the rays reach `near` alone. */
+ * tangents t and b, turned per point by the caller), in *open the share of
+ * them that meet nothing within `near`, and in *variance the variance of
+ * the mean's luminance by the rays' spread (the indirect filter's guide: a
+ * rare ray that met a small bright patch marks its pixel as noisy).
+ * Without indirect light (occlusion only), the rays reach `near` alone. */
 inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const uint *child,
                           const vct_cone_desc *c, const gather_voxels *gv, float3 p, float3 n,
                           float3 t, float3 b, uint m, uint seed, float near, float *open,

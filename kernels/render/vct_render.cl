@@ -37,7 +37,7 @@
  * albedo there, the material's times its texture (scene/texture.h), and
  * until the edges are refined the centre's shading (sample_shade). AOVs, AOV_SLOTS
  * float4 per pixel when given: direct, indirect diffuse, specular, (open
- * fraction, 0, 0, 1), position and normal (w 1 where a
+ * fraction, the indirect light's variance, 0, 1), position and normal (w 1 where a
  * surface was found, else the slot stays 0), and the denoiser's albedo and
  * normal-depth guides (guide_write). Glass reflections, 3 float4
  * per pixel, when refraction and specular are both planned: (point,
@@ -521,7 +521,8 @@ __kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *chi
 
 /* Diffuse light traced sparsely: vct_diffuse_sparse traces the cones of
  * every other pixel per axis, pixel (2i, 2j) into cell (i, j) of `sparse`
- * (a float4 each: radiance and open fraction), and
+ * (two float4 each: radiance and open fraction; the variance of the
+ * radiance's luminance, 0, 0, 0), and
  * vct_diffuse_fill gives every pixel the mean of the cells around it (itself
  * at (2i, 2j), else the 2 or 4 nearest) whose surface agrees with its own:
  * normals within SPARSE_NORMAL_COS and the cell's point within

@@ -1,6 +1,6 @@
 /* Cone tracing's indirect diffuse light through the denoiser (vct/denoise.h):
- * nine cones per traced pixel, and the near rays among them, leave a
- * pixel-scale grain that a few edge-avoiding passes remove. */
+ * the gather's 81 rays per traced pixel leave a pixel-scale grain that a
+ * few edge-avoiding passes, guided by the rays' own variance, remove. */
 #ifndef VCT_VCT_INDIRECT_FILTER_H
 #define VCT_VCT_INDIRECT_FILTER_H
 
@@ -14,8 +14,9 @@ int vct_indirect_filter_reach(uint32_t passes);
 
 /* Filters `indirect` (the frame's indirect light: ctx's frame, or the band
  * of it ctx renders) in place, guided by the albedo and normal-depth images
- * of the surfaces it was gathered at (vct/denoise.h), and puts what the
- * filter changed into the frame. */
+ * of the surfaces it was gathered at (vct/denoise.h) and by its variance
+ * (NULL: estimated from the image), and puts what the filter changed into
+ * the frame. */
 int vct_indirect_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
                         const vct_image *variance, uint32_t passes, vct_image *indirect,
                         vct_error *err);
