@@ -3,7 +3,8 @@
  * it on leaves the image bit-identical; a constant environment is
  * integrated exactly by the diffuse cones; the Cornell box against the path
  * tracer with a stated tolerance; determinism; no NaN on an empty volume;
- * sparse diffuse against every pixel's cones and a plain-C fill; the
+ * the gather's variance against a Bernoulli sky's; sparse diffuse against
+ * every pixel's cones and a plain-C fill (AO and variance); the
  * gather's rays beside a plate's edge and at a wall's foot beside a strip
  * of sunlit floor thinner than a voxel. */
 #include <math.h>
@@ -693,7 +694,7 @@ static sparse_kind sparse_expect(const vct_aovs *full, int w, int h, int x, int 
 }
 
 /* Sparse diffuse against every pixel's cones: the traced pixels bit for
- * bit, the others as the reference fills them, and the image close to the
+ * bit, the others' AO and variance as the reference fills them, and the image close to the
  * full one. At least min_counts[kind] pixels of each kind. */
 static void sparse_diffuse_case(const char *name, const vct_scene *s, const vct_voxel_options *vo,
                                 int w, int h, const int *min_counts, double tolerance) {
