@@ -29,7 +29,7 @@ suite_with_references error_split | while read -r name file ambient; do
         >>"$rows"
     echo "error_split: $name" >&2
 done
-spp=$(cat out/suite/*/reference.spp 2>/dev/null | sort -u | tr '\n' ' ')
+spp=$(cat out/suite/*/reference.spp 2>/dev/null | sort -n -u | paste -s -d / -)
 stamp=$(bench/stamp.sh bench/error_split.sh "$@")
 {
     echo "# Where cone tracing's error lies"
@@ -37,7 +37,7 @@ stamp=$(bench/stamp.sh bench/error_split.sh "$@")
     echo "$stamp"
     echo
     echo "Each suite scene at ${SIZE}x${SIZE}, cone tracing at its default against the suite's"
-    echo "path-traced reference (${spp:-?}spp). Its direct term (the \`direct\` AOV) against the"
+    echo "path-traced reference (${spp:-?} spp, by scene). Its direct term (the \`direct\` AOV) against the"
     echo "path tracer's direct light (\`--max-depth 1\`, 512 spp), and the rest of its image,"
     echo "the indirect light, against the reference less that: each term's mean over its"
     echo "reference's, and its NRMSE over the reference image's mean. The last columns name"
