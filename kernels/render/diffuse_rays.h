@@ -174,10 +174,6 @@ inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global con
     }
 }
 
-inline float gather_luminance(float3 c) {
-    return dot(c, (float3)(0.2126f, 0.7152f, 0.0722f));
-}
-
 /* Ray k of m over the hemisphere about unit n (tangents t, b),
  * cosine-weighted: a Fibonacci spiral over the unit disc (radius
  * sqrt((k + 0.5) / m), turned by the golden angle from ray to ray) lifted
@@ -220,7 +216,7 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
         const int found = gather_trace(ps, from, d, reach, &h);
         if (found == GATHER_MISS) {
             sum += c->ambient.xyz;
-            squares += gather_luminance(c->ambient.xyz) * gather_luminance(c->ambient.xyz);
+            squares += side_luminance(c->ambient.xyz) * side_luminance(c->ambient.xyz);
             ++open_rays;
             continue;
         }
@@ -231,11 +227,11 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
         const float3 light = gather_hit_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, &h,
                                               tan_half, rng_hash(seed ^ k));
         sum += light;
-        squares += gather_luminance(light) * gather_luminance(light);
+        squares += side_luminance(light) * side_luminance(light);
 #endif
     }
     *open = (float)open_rays / (float)m;
-    const float mean = gather_luminance(sum) / (float)m;
+    const float mean = side_luminance(sum) / (float)m;
     /* the variance of the mean's luminance, from the rays' spread */
     *variance = fmax(squares / (float)m - mean * mean, 0.0f) / (float)m;
     return sum / (float)m;

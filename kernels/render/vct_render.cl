@@ -492,7 +492,7 @@ inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pix
 #if defined(VCT_INDIRECT)
     const float3 reflect = diffuse_color(&g->m) * g->throughput;
     add = reflect * l.radiance;
-    variance = l.variance * gather_luminance(reflect) * gather_luminance(reflect);
+    variance = l.variance * albedo_luminance(reflect) * albedo_luminance(reflect);
 #elif defined(VCT_AO)
     add = diffuse_color(&g->m) * g->throughput * ambient * l.open;
 #endif
