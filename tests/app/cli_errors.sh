@@ -135,7 +135,7 @@ expect_failure "pt without samples" "not an integer" render ok.obj --method pt -
 expect_failure "unknown method" "unknown --method" render ok.obj --method magic -o out.png
 expect_failure "unknown effect" "NAME=on or NAME=off" render ok.obj --effect sparkle=on -o out.png
 expect_failure "effect without a value" "NAME=on or NAME=off" render ok.obj --effect ao -o out.png
-expect_failure "unknown cone preset" "presets are 1, 5, 6, 9 and 16" render ok.obj --ambient 1 1 1 --cones 7 -o out.png
+expect_failure "too many diffuse cones" "not an integer in 1..16" render ok.obj --ambient 1 1 1 --cones 17 -o out.png
 expect_failure "negative ambient" "ambient radiance" render ok.obj --ambient 1 -1 1 -o out.png
 expect_failure "negative light radius" "radius -1" render ok.obj --point-light 0 2 0 1 1 1 --light-radius -1 -o out.png
 expect_failure "sun radius of a radian or more" "below 1 radian" render ok.obj --dir-light 0 -1 0 1 1 1 --light-radius 1.5 -o out.png

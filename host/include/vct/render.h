@@ -141,7 +141,7 @@ VCT_API int vct_plan_needs_voxel_light(const vct_plan *plan);
 
 typedef struct vct_vct_options {
     int width, height;
-    uint32_t diffuse_cones; /* preset: 1, 5, 6, 9 or 16 */
+    uint32_t diffuse_cones; /* 1 to 16: the diffuse gather's rays, 9 per cone */
     vct_cone_settings cones;
     /* 1 (vct_vct_options_default): trace the diffuse cones at every other
      * pixel per axis and give the others the mean of the traced neighbours

@@ -49,19 +49,18 @@ void vct_aovs_release(vct_aovs *a) {
     vct_image_release(&a->indirect_variance);
 }
 
-/* The preset on the device: vct_cone_dir per cone. */
+/* The diffuse passes' cone argument: count vct_cone_dir, zeroed. Their
+ * gather spreads GATHER_RAYS_PER_CONE rays a cone over the hemisphere
+ * itself (kernels/render/diffuse_rays.h), so any count from 1 to 16 is
+ * taken; the argument keeps the signature every cone pass shares. */
 static cl_mem cone_buffer(vct_context *ctx, uint32_t count, const char *stage, vct_error *err) {
-    float dirs[64], tan_half[16], cell_tan[16];
-    if (vct_cone_preset(count, dirs, tan_half, cell_tan, err))
+    if (count < 1 || count > 16) {
+        vct_fail(err, VCT_ERR_INPUT, "%u diffuse cones: 1 to 16 (9 gather rays each)", count);
         return NULL;
+    }
     vct_cone_dir cones[16];
     memset(cones, 0, sizeof cones);
-    for (uint32_t i = 0; i < count; ++i) {
-        memcpy(cones[i].dir.s, &dirs[4 * i], 16);
-        cones[i].aperture.s[0] = tan_half[i];
-        cones[i].aperture.s[1] = cell_tan[i];
-    }
-    return vct_buffer_create(ctx, stage, "cone preset", sizeof cones[0] * count, CL_MEM_READ_ONLY,
+    return vct_buffer_create(ctx, stage, "diffuse cones", sizeof cones[0] * count, CL_MEM_READ_ONLY,
                              cones, err);
 }
 
@@ -608,7 +607,8 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
 
     vct_stage_begin(ctx, PRIMARY_STAGE);
     rc = vct_program_get(ctx, "render/vct_render.cl", options, &f.program, err);
-    f.gbuf = rc == VCT_OK ? vct_buffer_create(ctx, PRIMARY_STAGE, "G-buffer", 80 * pixels,
+    /* GBUF_SLOTS (8) float4 per pixel (kernels/render/vct_render.cl) */
+    f.gbuf = rc == VCT_OK ? vct_buffer_create(ctx, PRIMARY_STAGE, "G-buffer", 128 * pixels,
                                               CL_MEM_READ_WRITE, NULL, err)
                           : NULL;
     f.image = f.gbuf ? vct_frame_get(ctx, PRIMARY_STAGE, opt->width, opt->height, err) : NULL;

@@ -23,9 +23,12 @@ void vct_band_shape(const vct_render_job *job, int *align, int *above, int *belo
         *align = 2, *below = 2;
     if (job->method == VCT_METHOD_VCT && job->vct.edge_samples != 1) {
         /* the edge search reads the centres within two rows (a multiple of
-         * the alignment, which keeps the sparse rows' parity) */
-        *above = *above > 2 ? *above : 2;
-        *below = *below > 2 ? *below : 2;
+         * the alignment, which keeps the sparse rows' parity); the sparse
+         * fill reads a second surface's cells within three rows, whose
+         * refined surfaces read the centres two rows further */
+        const int reach = job->vct.sparse_diffuse ? 6 : 2;
+        *above = *above > reach ? *above : reach;
+        *below = *below > reach ? *below : reach;
     }
     if (job->method == VCT_METHOD_VCT && job->vct.indirect_passes) {
         /* the indirect light's filter reads rows that must themselves be
