@@ -308,9 +308,8 @@ inline float3 sharp_edge_radiance(const shading_scene *ps, const vct_camera_desc
  * the surface it shades, the first other surface its samples met and their
  * share of those that met one, and the diffuse passes give that share of
  * the pixel the second surface's own light. A sample lies on a surface
- * when its normal is within MIXED_NORMAL_COS of the surface's and its point
- * within MIXED_PLANE_PIXELS of the pixel's footprint of its plane. */
-#define MIXED_NORMAL_COS 0.9f
+ * when it is on its plane (on_plane) within MIXED_PLANE_PIXELS of the
+ * pixel's footprint. */
 #define MIXED_PLANE_PIXELS 1.0f
 
 typedef struct second_surface {
@@ -318,8 +317,13 @@ typedef struct second_surface {
     uint material, count;
 } second_surface;
 
-inline int on_surface(float3 p, float3 n, float tolerance, const primary_sample *t) {
-    return dot(n, t->gnormal.xyz) >= MIXED_NORMAL_COS && fabs(dot(n, t->gpos.xyz - p)) <= tolerance;
+/* Point q of unit normal m on the surface through p of unit normal n: the
+ * normals within about 26 degrees, q within `tolerance` of p's tangent
+ * plane (however far along it). What the edge pixels' samples and the
+ * sparse fill's cells are told apart by. */
+#define PLANE_NORMAL_COS 0.9f
+inline int on_plane(float3 p, float3 n, float3 q, float3 m, float tolerance) {
+    return dot(n, m) >= PLANE_NORMAL_COS && fabs(dot(n, q - p)) <= tolerance;
 }
 
 /* The pixel's footprint at distance d from the camera: a pixel's height there. */
@@ -392,11 +396,11 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
                     MIXED_PLANE_PIXELS * pixel_footprint(&cam, distance(cam.position.xyz, kept_p));
             }
             ++met;
-            if (!on_surface(kept_p, kept_n, tolerance, &t)) {
+            if (!on_plane(kept_p, kept_n, t.gpos.xyz, t.gnormal.xyz, tolerance)) {
                 if (second.count == 0u)
                     second = (second_surface){t.gpos.xyz, t.gnormal.xyz, t.galbedo.xyz,
                                               as_uint(t.gpos.w), 1u};
-                else if (on_surface(second.p, second.n, tolerance, &t)) {
+                else if (on_plane(second.p, second.n, t.gpos.xyz, t.gnormal.xyz, tolerance)) {
                     second.albedo += t.galbedo.xyz;
                     ++second.count;
                 }
@@ -626,7 +630,7 @@ __kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *chi
  * radiance's luminance, 0, 0, 0), and
  * vct_diffuse_fill gives every pixel the mean of the cells around it (itself
  * at (2i, 2j), else the 2 or 4 nearest) whose surface agrees with its own:
- * normals within SPARSE_NORMAL_COS and the cell's point within
+ * on the pixel's plane (on_plane), the cell's point within
  * SPARSE_PLANE_VOXELS of the pixel's tangent plane. The cells are the
  * pixel's neighbours on the screen, so on one plane the pixel's point lies
  * between theirs, however far apart a grazing view puts them: the fill
@@ -648,7 +652,6 @@ __kernel void vct_diffuse_cones(ACCEL_ARGS, CONE_POOLS, __global const uint *chi
  * rays of its own (thinner parts take the first surface's light).
  * vct_diffuse_sparse takes image and aov only to share every cone pass's
  * signature. */
-#define SPARSE_NORMAL_COS 0.9f
 #define SPARSE_PLANE_VOXELS 0.25f
 #define FILL_CONES(n) max((n) / 3u, 1u)
 #define SECOND_TRACE_SHARE 0.25f
@@ -681,8 +684,7 @@ __kernel void vct_diffuse_sparse(ACCEL_ARGS, CONE_POOLS, __global const uint *ch
 inline int sparse_agrees(const vct_cone_desc *cd, const gbuffer_surface *g,
                          const gbuffer_surface *cell) {
     const float voxel = cd->volume.w / (float)cd->res.x;
-    return dot(g->n, cell->n) >= SPARSE_NORMAL_COS &&
-           fabs(dot(g->n, cell->p - g->p)) <= SPARSE_PLANE_VOXELS * voxel;
+    return on_plane(g->p, g->n, cell->p, cell->n, SPARSE_PLANE_VOXELS * voxel);
 }
 
 /* The mean light of the cells (i, j), i0 <= i <= i1 and j0 <= j <= j1,
