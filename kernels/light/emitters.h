@@ -21,6 +21,7 @@
 
 #include "accel/accel.h"
 #include "light/direct_light.h"
+#include "scene/angle.h"
 #include "scene/rng.h"
 #include "vct_types.h"
 
@@ -156,7 +157,7 @@ inline float emitter_irradiance(float3 p, float3 n, float3 a, float3 b, float3 c
         const float3 u = normalize(from), w = normalize(to), cr = cross(u, w);
         const float s = length(cr);
         if (s > 0.0f)
-            sum += atan2(s, dot(u, w)) * (dot(n, cr) / s);
+            sum += angle_of(s, dot(u, w)) * (dot(n, cr) / s);
     }
     return 0.5f * fabs(sum);
 }
