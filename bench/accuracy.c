@@ -287,8 +287,8 @@ static vct_image render(vct_context *ctx, const vct_scene *s, const settings *cf
     vct_accel *g = run_begin(ctx, s, cfg, &t0);
     vct_image im;
     if (strcmp(method, "pt") == 0) {
-        vct_pathtrace_options o = {cfg->width,          cfg->height, spp, 0.0,  16,  seed,
-                                   spp < 16 ? spp : 16, 1,           0,   NULL, NULL};
+        vct_pathtrace_options o = {cfg->width,          cfg->height, spp, 0.0,  16,   seed,
+                                   spp < 16 ? spp : 16, 1,           0,   NULL, NULL, 1};
         vct_pathtrace_result pr;
         if (vct_render_pathtrace(ctx, s, g, &o, &im, &pr, &err))
             bench_die(&err);

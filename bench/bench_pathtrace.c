@@ -15,7 +15,7 @@ static double render_best(vct_context *ctx, const vct_scene *s, vct_accel_kind k
     vct_accel *a = vct_accel_build(ctx, s, &o, &err);
     if (!a)
         bench_die(&err);
-    const vct_pathtrace_options po = {SIZE, SIZE, SPP, 0.0, 8, 1, 4, 0, 0, NULL, NULL};
+    const vct_pathtrace_options po = {SIZE, SIZE, SPP, 0.0, 8, 1, 4, 0, 0, NULL, NULL, 1};
     double best = 1e30;
     for (int i = 0; i < bench_repeats(); ++i) {
         vct_image im;

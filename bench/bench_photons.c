@@ -112,7 +112,7 @@ static void caustic_race(vct_context *ctx, const vct_scene *s, const char *ref_p
         h = ref.height;
     } else {
         fprintf(stderr, "reference: path tracing, %u spp at %dx%d...\n", ref_spp, w, h);
-        vct_pathtrace_options po = {w, h, ref_spp, 0.0, 16, 0x5eed, 16, 0, 0, NULL, NULL};
+        vct_pathtrace_options po = {w, h, ref_spp, 0.0, 16, 0x5eed, 16, 0, 0, NULL, NULL, 1};
         if (vct_render_pathtrace(ctx, s, a, &po, &ref, NULL, &err))
             bench_die(&err);
         vct_image_write_pfm(&ref, "bench_photons_reference.pfm", &err);
@@ -152,7 +152,7 @@ static void caustic_race(vct_context *ctx, const vct_scene *s, const char *ref_p
         vct_image_release(&im);
     }
     for (uint32_t spp = 4; spp <= 4096 && nt < 8; spp *= 4, ++nt) {
-        vct_pathtrace_options po = {w, h, spp, 0.0, 16, 1, 16, 0, 0, NULL, NULL};
+        vct_pathtrace_options po = {w, h, spp, 0.0, 16, 1, 16, 0, 0, NULL, NULL, 1};
         vct_stats_reset(ctx);
         vct_image im;
         if (vct_render_pathtrace(ctx, s, a, &po, &im, NULL, &err))

@@ -11,16 +11,15 @@
 
 /* Every method, with the passes a user may ask of it: the denoiser for the
  * estimators, adaptive subsampling for the ray caster and Whitted (whose
- * programs are then built for both, plain and subsampled). */
+ * programs are then built for both, plain and subsampled); the path tracer
+ * also without the denoiser, whose sums then hold the colour alone. */
 static const struct {
     vct_method method;
     const char *name;
     int denoise, subsample;
-} methods[] = {{VCT_METHOD_VCT, "vct", 1, 0},
-               {VCT_METHOD_PATHTRACE, "pt", 1, 0},
-               {VCT_METHOD_PM, "pm", 1, 0},
-               {VCT_METHOD_RAYCAST, "raycast", 0, 8},
-               {VCT_METHOD_WHITTED, "whitted", 0, 8}};
+} methods[] = {{VCT_METHOD_VCT, "vct", 1, 0},         {VCT_METHOD_PATHTRACE, "pt", 1, 0},
+               {VCT_METHOD_PATHTRACE, "pt", 0, 0},    {VCT_METHOD_PM, "pm", 1, 0},
+               {VCT_METHOD_RAYCAST, "raycast", 0, 8}, {VCT_METHOD_WHITTED, "whitted", 0, 8}};
 
 static int compile_all(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
                        const cli_options *opt, vct_error *err) {
@@ -44,7 +43,10 @@ static int compile_all(vct_context *ctx, vct_device_scene *ds, const vct_scene *
         cli_frame_release(&f);
         vct_context_program_stats(ctx, &after);
         fprintf(stderr, "vct compile: --method %s%s ready (%d programs compiled for it)\n",
-                methods[i].name, methods[i].denoise ? " --denoise" : " --subsample",
+                methods[i].name,
+                methods[i].denoise     ? " --denoise"
+                : methods[i].subsample ? " --subsample"
+                                       : "",
                 after.compiled - before.compiled);
     }
     return VCT_OK;

@@ -33,6 +33,7 @@ render() { # NAME ARGS...
 }
 render vct --method vct --denoise
 render pt --method pt --denoise
+render pt_plain --method pt
 render pm --method pm --denoise
 render raycast --method raycast --subsample 8
 render whitted --method whitted --subsample 8

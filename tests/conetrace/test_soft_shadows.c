@@ -146,7 +146,7 @@ static vct_image render_pt(const vct_scene *s, uint32_t spp) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_pathtrace_options o = {W, H, spp, 0.0, 1, 7, 64, 0, 0, NULL, NULL};
+    vct_pathtrace_options o = {W, H, spp, 0.0, 1, 7, 64, 0, 0, NULL, NULL, 1};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, NULL, &err), err);
     vct_accel_release(g);

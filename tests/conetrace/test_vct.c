@@ -348,7 +348,7 @@ static void cornell_against_path_tracer(void) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, box, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_pathtrace_options po = {w, h, 2048, 0.0, 16, 3, 64, 0, 0, NULL, NULL};
+    const vct_pathtrace_options po = {w, h, 2048, 0.0, 16, 3, 64, 0, 0, NULL, NULL, 1};
     vct_pathtrace_result pr;
     vct_image ref, rc;
     REQUIRE_OK(vct_render_pathtrace(ctx, box, g, &po, &ref, &pr, &err), err);
@@ -405,7 +405,7 @@ static vct_image path_traced(const vct_scene *s, int w, int h, uint32_t spp, uin
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_pathtrace_options po = {w, h, spp, 0.0, 16, seed, 64, 0, 0, NULL, NULL};
+    const vct_pathtrace_options po = {w, h, spp, 0.0, 16, seed, 64, 0, 0, NULL, NULL, 1};
     vct_image ref;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &po, &ref, NULL, &err), err);
     vct_accel_release(g);
@@ -1007,7 +1007,7 @@ static void closed_room_against_path_tracer(void) {
     const int w = 48, h = 48;
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    const vct_pathtrace_options po = {w, h, 2048, 0.0, 16, 3, 64, 0, 0, NULL, NULL};
+    const vct_pathtrace_options po = {w, h, 2048, 0.0, 16, 3, 64, 0, 0, NULL, NULL, 1};
     vct_pathtrace_result pr;
     vct_image ref;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &po, &ref, &pr, &err), err);

@@ -2,8 +2,8 @@
  * of albedo a and emission Le has radiance Le / (1 - a) everywhere), direct
  * light equal to the ray caster's at depth 1, no gain of energy in an open
  * scene, error falling as 1 / sqrt(spp), determinism, resumed calls that
- * continue one sample sequence, and no NaN on adversarial geometry. Bounds come from the measured
- * spread of the samples. */
+ * continue one sample sequence, sums of the colour alone, and no NaN on adversarial geometry.
+ * Bounds come from the measured spread of the samples. */
 #include <math.h>
 #include <string.h>
 
@@ -29,7 +29,7 @@ static vct_image trace(vct_context *ctx, const vct_scene *s, int w, int h, uint3
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0, NULL, NULL};
+    vct_pathtrace_options o = {w, h, spp, 0.0, depth, seed, spp, 0, 0, NULL, NULL, 0};
     vct_image im;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &im, res, &err), err);
     vct_accel_release(g);
@@ -145,7 +145,7 @@ static void direct_and_indirect(vct_context *ctx) {
     REQUIRE_OK(g ? VCT_OK : err.status, err);
     const int w = 24, h = 16, n = w * h;
     vct_image full, one, indirect, indirect_one, var, var_one;
-    vct_pathtrace_options o = {w, h, 16, 0.0, 32, 7, 16, 0, 0, &var, &indirect};
+    vct_pathtrace_options o = {w, h, 16, 0.0, 32, 7, 16, 0, 0, &var, &indirect, 0};
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &full, NULL, &err), err);
     o.max_depth = 1;
     o.variance = &var_one;
@@ -310,7 +310,7 @@ static void resume_continues(vct_context *ctx) {
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
-    vct_pathtrace_options whole = {24, 16, 4, 0.0, 8, 5, 1, 0, 0, NULL, NULL};
+    vct_pathtrace_options whole = {24, 16, 4, 0.0, 8, 5, 1, 0, 0, NULL, NULL, 0};
     vct_pathtrace_result r;
     vct_image once, step = {0}, fresh;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &whole, &once, &r, &err), err);
@@ -335,9 +335,59 @@ static void resume_continues(vct_context *ctx) {
     vct_scene_release(s);
 }
 
+/* Sums of the colour alone (colour_only) give the image of sums with their
+ * moments, bit for bit; asking for the variance of them is refused; a
+ * resumed call whose sums differ in kind from the running ones starts over,
+ * and then gives a fresh call's image. */
+static void colour_only_sums(vct_context *ctx) {
+    vct_material m = vct_material_default();
+    for (int c = 0; c < 3; ++c) { /* a colour, so that the channels' sums differ */
+        m.albedo[c] = 0.6f - 0.1f * (float)c;
+        m.emission[c] = 0.5f - 0.1f * (float)c;
+    }
+    vct_scene *s = cube_scene(m);
+    vct_error err = {0};
+    vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
+    REQUIRE_OK(g ? VCT_OK : err.status, err);
+    const size_t bytes = 16ull * 24 * 16;
+    vct_image with_moments, variance, colour, resumed, again = {0};
+    vct_pathtrace_options o = {24, 16, 4, 0.0, 8, 3, 2, 0, 0, &variance, NULL, 0};
+    vct_pathtrace_result r;
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &with_moments, &r, &err), err);
+    vct_pathtrace_options plain = o;
+    plain.variance = NULL;
+    plain.colour_only = 1;
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &plain, &colour, &r, &err), err);
+    CHECK(memcmp(with_moments.rgba, colour.rgba, bytes) == 0,
+          "the colour alone differs from the colour summed with its moments");
+    plain.variance = &again;
+    const vct_status refused = vct_render_pathtrace(ctx, s, g, &plain, &again, &r, &err);
+    CHECK(refused == VCT_ERR_INPUT && strstr(err.message, "colour_only"),
+          "the variance of colour-only sums: status %d (%s), expected an input error naming "
+          "colour_only",
+          (int)refused, err.message);
+    plain.variance = NULL;
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &plain, &colour, &r, &err), err);
+    vct_image_release(&variance);
+    o.resume = 1; /* the running sums hold no moments: this call starts over */
+    REQUIRE_OK(vct_render_pathtrace(ctx, s, g, &o, &resumed, &r, &err), err);
+    CHECK(r.spp == 4 && memcmp(resumed.rgba, with_moments.rgba, bytes) == 0,
+          "a call with moments resumed colour-only sums (%u samples, expected a fresh 4)", r.spp);
+    int known = 1;
+    for (int i = 0; i < 24 * 16; ++i)
+        known &= variance.rgba[4 * i] >= 0.0f;
+    CHECK(known, "the variance after starting over is unknown somewhere");
+    vct_image *all[] = {&with_moments, &variance, &colour, &resumed, &again};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
+        vct_image_release(all[i]);
+    vct_accel_release(g);
+    vct_scene_release(s);
+}
+
 int main(void) {
     vct_context *ctx = check_context();
     resume_continues(ctx);
+    colour_only_sums(ctx);
     vct_material m = vct_material_default();
     for (int c = 0; c < 3; ++c) {
         m.albedo[c] = 0.5f;

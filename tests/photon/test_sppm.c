@@ -244,7 +244,7 @@ static void glass_caustic(vct_context *ctx) {
     const int w = 40, h = 40;
     vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
-    vct_pathtrace_options po = {w, h, 2048, 0.0, 8, 5, 64, 0, 0, NULL, NULL};
+    vct_pathtrace_options po = {w, h, 2048, 0.0, 8, 5, 64, 0, 0, NULL, NULL, 1};
     vct_image ref;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, a, &po, &ref, NULL, &err), err);
     vct_pm_options o = vct_pm_options_default(w, h);
@@ -309,7 +309,7 @@ static void corners(vct_context *ctx) {
     s->camera = (vct_camera){{-0.2f, -0.2f, -0.2f}, {1, 1, 1}, {0, 1, 0}, 60.0f};
     vct_accel *a = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(a ? VCT_OK : err.status, err);
-    vct_pathtrace_options po = {32, 32, 1024, 0.0, 16, 3, 64, 0, 0, NULL, NULL};
+    vct_pathtrace_options po = {32, 32, 1024, 0.0, 16, 3, 64, 0, 0, NULL, NULL, 1};
     vct_image ref, on, off;
     REQUIRE_OK(vct_render_pathtrace(ctx, s, a, &po, &ref, NULL, &err), err);
     vct_pm_options o = vct_pm_options_default(32, 32);

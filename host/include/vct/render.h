@@ -64,6 +64,12 @@ typedef struct vct_pathtrace_options {
      * the lights and emitters by next-event estimation, or the background a
      * camera ray meets). The denoiser filters the two parts apart. */
     vct_image *indirect;
+    /* 1: the running sums hold each pixel's colour alone, not the moments
+     * that variance and indirect must be resolved from (both must then be
+     * NULL): on PoCL the Cornell box's path tracing takes about 5 % less
+     * time. Sums kept this way are not resumed by a call without it, nor
+     * sums with moments by one with it: such a call starts over. */
+    int colour_only;
 } vct_pathtrace_options;
 
 /* 64 samples per pixel, depth 16, one sample per pass, seed 0. */

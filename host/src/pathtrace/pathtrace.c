@@ -15,6 +15,8 @@
 #include "frame/progress.h"
 
 #define STAGE "path trace"
+/* The kernel variant whose sums hold the colour alone (colour_only). */
+#define PT_COLOUR_ONLY_OPTION "-DVCT_PT_COLOUR_ONLY"
 
 void vct_pt_sums_release(vct_context *ctx, vct_accumulation *acc) {
     vct_buffer_release(ctx, acc->pt_sums);
@@ -32,7 +34,7 @@ static void context_sums_release(vct_context *ctx) {
 static int accumulation_get(vct_context *ctx, vct_accumulation *acc,
                             const vct_pathtrace_options *opt, vct_error *err) {
     if (opt->resume && acc->pt_sums && acc->pt_size[0] == opt->width &&
-        acc->pt_size[1] == opt->height)
+        acc->pt_size[1] == opt->height && acc->pt_colour_only == (opt->colour_only != 0))
         return VCT_OK;
     vct_pt_sums_release(ctx, acc);
     if (acc == &ctx->accumulation)
@@ -53,6 +55,7 @@ static int accumulation_get(vct_context *ctx, vct_accumulation *acc,
     else {
         acc->pt_size[0] = opt->width;
         acc->pt_size[1] = opt->height;
+        acc->pt_colour_only = opt->colour_only != 0;
     }
     return rc;
 }
@@ -65,13 +68,22 @@ int vct_pt_begin(vct_context *ctx, const vct_scene *s, const vct_accel *g,
     pt->acc = vct_accumulation_of(ctx, s);
     if (opt->max_depth == 0)
         return vct_fail(err, VCT_ERR_INPUT, "%s: the path depth must be at least 1", STAGE);
+    if (opt->colour_only && (opt->variance || opt->indirect))
+        return vct_fail(err, VCT_ERR_INPUT,
+                        "%s: the variance and the indirect light need the sums' moments: "
+                        "set colour_only to 0 to have them",
+                        STAGE);
     vct_camera_desc cam;
     int rc = vct_frame_camera(ctx, &s->camera, opt->width, opt->height, &cam, err);
     if (rc)
         return rc;
     vct_stage_begin(ctx, STAGE);
-    rc = vct_program_get(ctx, "render/pathtrace.cl", vct_accel_program_options(g), &pt->program,
-                         err);
+    char options[256];
+    rc = vct_program_get(
+        ctx, "render/pathtrace.cl",
+        opt->colour_only ? vct_accel_options_join(g, PT_COLOUR_ONLY_OPTION, options, sizeof options)
+                         : vct_accel_program_options(g),
+        &pt->program, err);
     if (rc == VCT_OK)
         rc = vct_scene_buffers_make(ctx, s, STAGE, &pt->sb, err);
     if (rc == VCT_OK)

@@ -26,7 +26,8 @@ typedef void (*vct_release_hook)(vct_context *ctx);
 typedef struct vct_accumulation {
     cl_mem pt_sums, pt_discarded;
     int pt_size[2];
-    uint32_t pt_done; /* samples in pt_sums */
+    uint32_t pt_done;   /* samples in pt_sums */
+    int pt_colour_only; /* pt_sums hold no moments (vct_pathtrace_options) */
     void *pm_state;
 } vct_accumulation;
 
