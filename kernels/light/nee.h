@@ -82,10 +82,15 @@ inline float3 nee_emitters(const accel_view *g, const emitters *e,
     const float3 fc = bsdf_eval(m, n, wo, wi, &pdf_bsdf);
     if (all(fc == 0.0f))
         return (float3)(0.0f);
-    const float eps = surface_epsilon(g, p);
-    const float leps = surface_epsilon(g, q);
+    /* The shadow ray runs from the lifted point to q itself, not parallel
+     * to p -> q: towards an emitter seen edge-on (a ceiling beside a panel a
+     * centimetre under it) a parallel ray meets the emitter's own plane the
+     * lift over the sine of the angle short of q, which hid it. */
+    const float3 o = p + n * surface_epsilon(g, p);
+    const float3 to_q = q - o;
+    const float reach = length(to_q);
     hit_record h;
-    if (accel_trace(g, p + n * eps, wi, 0.0f, dist - eps - 2.0f * leps, 1, &h))
+    if (accel_trace(g, o, to_q / reach, 0.0f, reach - 2.0f * surface_epsilon(g, q), 1, &h))
         return (float3)(0.0f);
     const float pdf_light = e->inv_area * d2 / cos_l; /* solid angle */
     const float3 Le = materials[tri_material[tri]].emission.xyz;

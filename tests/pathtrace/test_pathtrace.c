@@ -8,7 +8,9 @@
 #include <string.h>
 
 #include "check.h"
+#include "lambert.h"
 #include "mesh_gen.h"
+#include "vec3d.h"
 
 /* Closed cube [-1, 1]^3 (12 triangles) of one material, camera inside. */
 static vct_scene *cube_scene(vct_material m) {
@@ -335,6 +337,74 @@ static void resume_continues(vct_context *ctx) {
     vct_scene_release(s);
 }
 
+/* A ceiling beside an emissive panel a centimetre under it, seen from below
+ * at depth 1: each ceiling pixel against Lambert's formula (in double,
+ * averaged over 8 x 8 points of the pixel), in bands of distance from the
+ * panel's edge. Beyond a few centimetres the ceiling sees the panel edge-on;
+ * a shadow ray parallel to the sample's direction but lifted off the ceiling
+ * met the panel's own plane short of its end there, and the light was lost. */
+static void ceiling_beside_panel(vct_context *ctx) {
+    enum { W = 40, H = 40, SUB = 8, BANDS = 3 };
+    const double le = 5.0, albedo = 0.7, ceiling = 3.0, panel_y = 2.99;
+    const float corners[] = {0,    3,     0,    10, 3,     0,    10, 3,     10,   0, 3,     10,
+                             4.0f, 2.99f, 4.0f, 6,  2.99f, 4.0f, 6,  2.99f, 6.0f, 4, 2.99f, 6.0f};
+    const uint32_t tris[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7}, mats[4] = {0, 0, 1, 1};
+    vct_material m[2] = {vct_material_default(), vct_material_default()};
+    for (int c = 0; c < 3; ++c) {
+        m[0].albedo[c] = (float)albedo;
+        m[1].albedo[c] = 0.0f;
+        m[1].emission[c] = (float)le;
+    }
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(corners, 8, tris, 4, mats, m, 2, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    const v3 eye = v(5.0, 1.0, 2.0), at = v(5.0, 3.0, 3.8), up = v(0.0, 1.0, 0.0);
+    const double fov = 16.0;
+    s->camera = (vct_camera){{5.0f, 1.0f, 2.0f}, {5.0f, 3.0f, 3.8f}, {0, 1, 0}, (float)fov};
+    s->has_camera = 1;
+    vct_pathtrace_result r;
+    vct_image im = trace(ctx, s, W, H, 512, 1, 11, &r);
+    static const double panel[4][3] = {{4, 2.99, 4}, {6, 2.99, 4}, {6, 2.99, 6}, {4, 2.99, 6}};
+    static const double down[3] = {0.0, -1.0, 0.0};
+    double got[BANDS] = {0}, want[BANDS] = {0};
+    int count[BANDS] = {0};
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            double sum = 0.0, nearest = 1e30;
+            int on_ceiling = 1;
+            for (int k = 0; k < SUB * SUB && on_ceiling; ++k) {
+                /* the point of the pixel's k-th sub-square, as a finer image's pixel centre */
+                const v3 d = camera_ray(eye, at, up, fov, W * SUB, H * SUB, x * SUB + k % SUB,
+                                        y * SUB + k / SUB);
+                const v3 on_panel = add(eye, mul(d, (panel_y - eye.y) / d.y));
+                const v3 q = add(eye, mul(d, (ceiling - eye.y) / d.y));
+                on_ceiling =
+                    !(on_panel.x >= 4 && on_panel.x <= 6 && on_panel.z >= 4 && on_panel.z <= 6) &&
+                    q.z < 4.0;
+                const double p[3] = {q.x, q.y, q.z};
+                sum += albedo / CHECK_PI * lambert_irradiance(p, down, panel, 4, le);
+                nearest = fmin(nearest, 4.0 - q.z);
+            }
+            if (!on_ceiling)
+                continue;
+            const int band = nearest < 0.05 ? 0 : nearest < 0.15 ? 1 : 2;
+            got[band] += im.rgba[4 * (y * W + x)];
+            want[band] += sum / (SUB * SUB);
+            ++count[band];
+        }
+    static const char *names[BANDS] = {"within 5 cm", "5 to 15 cm", "farther"};
+    for (int b = 0; b < BANDS; ++b) {
+        const double ratio = got[b] / want[b];
+        CHECK(count[b] > 20 && fabs(ratio - 1.0) < 0.03,
+              "ceiling %s of a panel 1 cm under it: %d pixels at %.4f of Lambert's formula",
+              names[b], count[b], ratio);
+        printf("ceiling %-12s of a panel 1 cm under it: %4d pixels, %.4f of Lambert's formula\n",
+               names[b], count[b], ratio);
+    }
+    vct_image_release(&im);
+    vct_scene_release(s);
+}
+
 /* Sums of the colour alone (colour_only) give the image of sums with their
  * moments, bit for bit; asking for the variance of them is refused; a
  * resumed call whose sums differ in kind from the running ones starts over,
@@ -388,6 +458,7 @@ int main(void) {
     vct_context *ctx = check_context();
     resume_continues(ctx);
     colour_only_sums(ctx);
+    ceiling_beside_panel(ctx);
     vct_material m = vct_material_default();
     for (int c = 0; c < 3; ++c) {
         m.albedo[c] = 0.5f;

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "lambert.h"
 #include "vct_case.h"
 #include "voxel/voxels.h"
 
@@ -17,26 +18,10 @@
 
 static vct_context *ctx;
 
-/* E at p (normal +y) from the square lamp at height h over [x0, x1] x [z0, z1]. */
+/* E at p (normal +y) from the square lamp. */
 static double lambert_polygon(const double p[3], const double lamp[4][3]) {
-    double sum = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        double a[3], b[3], c[3];
-        for (int k = 0; k < 3; ++k) {
-            a[k] = lamp[i][k] - p[k];
-            b[k] = lamp[(i + 1) % 4][k] - p[k];
-        }
-        const double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        const double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-        const double cosg = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
-        const double angle = acos(fmax(-1.0, fmin(1.0, cosg)));
-        c[0] = a[1] * b[2] - a[2] * b[1];
-        c[1] = a[2] * b[0] - a[0] * b[2];
-        c[2] = a[0] * b[1] - a[1] * b[0];
-        const double lc = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-        sum += angle * c[1] / lc; /* the floor's normal is +y */
-    }
-    return LE / 2.0 * fabs(sum);
+    static const double up[3] = {0.0, 1.0, 0.0};
+    return lambert_irradiance(p, up, lamp, 4, LE);
 }
 
 /* Materials of quad_scene: the floor's, the lamp's (black, emitting Le)
