@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Where cone tracing's error lies in one image: its direct term (the `direct`
-AOV) against the path tracer's direct light (`--max-depth 1`), the rest (its
+AOV) against the path tracer's direct light (its `direct` AOV at
+`--max-depth 1`), the rest (its
 indirect light) against the reference less that, each as its own NRMSE over
 the reference's mean, and the surfaces (by the `normal` AOV's dominant axis)
 whose indirect light holds the largest share of that term's squared error.

@@ -233,8 +233,8 @@ vct_render_job cli_render_job(const cli_options *opt, vct_method method, const v
     job.whitted.subsample_contrast = job.raycast.subsample_contrast = opt->contrast;
     job.pathtrace.seed = (uint32_t)opt->seed;
     job.pathtrace.progress = 1;
-    /* without the denoiser nothing resolves the sums' moments */
-    job.pathtrace.colour_only = !opt->denoise;
+    /* without the denoiser or the AOVs nothing resolves the sums' moments */
+    job.pathtrace.colour_only = !opt->denoise && !opt->aov;
     cli_pm_options(opt, &job.pm);
     vct_vct_options *vo = &job.vct;
     vo->diffuse_cones = (uint32_t)opt->diffuse_cones;

@@ -12,6 +12,23 @@
 #include "cmd_render_frame.h"
 #include "cmd_render_vct.h"
 
+/* The path tracer's direct light: the image less its indirect part (before
+ * any filter), the light of the first surface and the background seen. */
+static int direct_part(const vct_image *image, const vct_image *indirect, vct_image *direct,
+                       vct_error *err) {
+    const size_t floats = 4 * (size_t)image->width * image->height;
+    *direct = (vct_image){image->width, image->height, malloc(sizeof(float) * floats)};
+    if (!direct->rgba) {
+        snprintf(err->message, sizeof err->message,
+                 "vct render: out of host memory for the direct light");
+        err->status = VCT_ERR_MEMORY;
+        return VCT_ERR_MEMORY;
+    }
+    for (size_t i = 0; i < floats; ++i)
+        direct->rgba[i] = i % 4 == 3 ? 1.0f : image->rgba[i] - indirect->rgba[i];
+    return VCT_OK;
+}
+
 int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
                    const cli_options *opt, vct_method method, cli_frame *f, vct_error *err) {
     memset(f, 0, sizeof *f);
@@ -22,11 +39,13 @@ int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
         job.plan = &plan;
         job.aovs = opt->aov ? &f->aovs : NULL;
     }
-    if (opt->denoise && method == VCT_METHOD_PATHTRACE) {
+    if (opt->denoise && method == VCT_METHOD_PATHTRACE)
         job.pathtrace.variance = &f->variance;
+    if ((opt->denoise || opt->aov) && method == VCT_METHOD_PATHTRACE)
         job.pathtrace.indirect = &f->aovs.indirect; /* filtered apart from the direct light */
-    }
     int rc = vct_device_scene_render(ds, &job, &f->image, &f->result, err);
+    if (rc == VCT_OK && opt->aov && method == VCT_METHOD_PATHTRACE)
+        rc = direct_part(&f->image, &f->aovs.indirect, &f->aovs.direct, err);
     if (rc == VCT_OK && method == VCT_METHOD_VCT)
         cli_print_voxels(opt, vct_device_scene_voxels(ds));
     if (rc == VCT_OK && method == VCT_METHOD_PM)
@@ -35,8 +54,10 @@ int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
         cli_print_result(opt, &f->result);
     if (rc == VCT_OK && opt->aov && method == VCT_METHOD_VCT)
         cli_layers_add_aovs(&f->layers, &f->aovs);
-    if (rc == VCT_OK && opt->aov && f->aovs.indirect.rgba && method == VCT_METHOD_PATHTRACE)
+    if (rc == VCT_OK && opt->aov && f->aovs.indirect.rgba && method == VCT_METHOD_PATHTRACE) {
+        cli_layers_add(&f->layers, "direct", &f->aovs.direct, "RGB");
         cli_layers_add(&f->layers, "indirect", &f->aovs.indirect, "RGB");
+    }
     if (rc == VCT_OK)
         rc = cli_denoise_outputs(ctx, s, vct_device_scene_accel(ds), opt, method, &f->image,
                                  f->variance.rgba ? &f->variance : NULL,

@@ -14,7 +14,8 @@ static const cli_option output_rows[] = {
     {"aov", 0, OPT_AOV, 0, NULL,
      "also write arbitrary output values: cone tracing's direct, indirect, specular, ao, "
      "position, normal, albedo and indirect_variance; the other methods' albedo, normal, depth "
-     "(and pt's variance with --denoise): layers of the same file for .exr, else "
+     "(and pt's direct and indirect light, and its variance with --denoise): layers of the same "
+     "file for .exr, else "
      "FILE_albedo.pfm and so on beside it"},
     {"exr", 0, OPT_EXR, 1, "half|float",
      "EXR only: 16-bit half floats (default) or 32-bit floats, as PFM holds them"},

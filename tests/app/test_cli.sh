@@ -119,5 +119,32 @@ fi
 grep -q -- "--indirect-filter" "$DIR/err" && [ ! -e "$DIR/no.pfm" ] && ok "--indirect-filter 6 refused" ||
     { fail "--indirect-filter 6"; cat "$DIR/err"; }
 
+# The path tracer's --aov: its direct and indirect light beside the image,
+# which they add up to, and the image the same bits as without the AOVs
+# (whose sums hold the colour alone).
+"$VCT" render "$CORNELL" --method pt --size 24 16 --spp 8 --max-depth 3 -o "$DIR/pt.pfm" \
+    >/dev/null 2>&1
+"$VCT" render "$CORNELL" --method pt --size 24 16 --spp 8 --max-depth 3 --aov \
+    -o "$DIR/pt_aov.pfm" >/dev/null 2>&1
+if cmp -s "$DIR/pt.pfm" "$DIR/pt_aov.pfm" &&
+    "$SRC/tools/python.sh" - "$DIR/pt_aov.pfm" "$DIR/pt_aov_direct.pfm" \
+        "$DIR/pt_aov_indirect.pfm" <<'PY'; then
+import sys
+import numpy as np
+def pfm(path):
+    with open(path, "rb") as f:
+        f.readline()
+        w, h = map(int, f.readline().split())
+        scale = float(f.readline())
+        return np.fromfile(f, "<f4" if scale < 0 else ">f4").reshape(h, w, 3)
+image, direct, indirect = (pfm(p) for p in sys.argv[1:4])
+sys.exit(not (np.abs(direct + indirect - image).max() <= 1e-6 * image.max()
+              and direct.mean() > 0 and indirect.mean() > 0))
+PY
+    ok "pt --aov: direct + indirect is the image, the same bits as without --aov"
+else
+    fail "pt --aov: no direct and indirect light adding up to the image"
+fi
+
 echo "$failures failed"
 [ "$failures" -eq 0 ]
