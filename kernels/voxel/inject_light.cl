@@ -230,7 +230,7 @@ inline float3 gap_escape(const accel_view *g, const emitter_view *e,
     float3 t1, t2;
     basis_of(n, &t1, &t2);
     const float3 centre = p - n * dot(p - q, n);
-    float3 rim = (float3)(0.0f); /* the sum of L g times the rim's length */
+    float3 rim = (float3)(0.0f); /* per unit albedo, what leaves times the rim's length */
     for (uint k = 0u; k < count; ++k) {
         float3 x[3];
         const uint tri = e->tris[traps[k]];
@@ -245,12 +245,20 @@ inline float3 gap_escape(const accel_view *g, const emitter_view *e,
                 segment_in_square((float2)(dot(u - centre, t1), dot(u - centre, t2)),
                                   (float2)(dot(v - centre, t1), dot(v - centre, t2)), 0.5f * size);
         }
-        rim += materials[tri_material[tri]].emission.xyz * (gap * length_in);
+        /* and the band beside the rim whose fragments emitter_traps took
+         * too (within `size` of the emitter: x < w = sqrt(size^2 - gap^2)
+         * out from its edge), which sees the emitter's face edge-on and
+         * sends its light straight out: the half plane's irradiance there,
+         * pi L / 2 (1 - x / sqrt(x^2 + gap^2)), over pi and integrated over
+         * x < w, is L (w + gap - size) / 2 per unit of rim */
+        const float band = 0.5f * (sqrt(fmax(size * size - gap * gap, 0.0f)) + gap - size);
+        rim += materials[tri_material[tri]].emission.xyz *
+               ((GAP_ESCAPE_SHARE * gap + band) * length_in);
     }
     float3 a, b, c;
     emitter_vertices(g, e->tris[traps[0]], &a, &b, &c);
     *toward = dot(a - q, n) >= 0.0f ? n : -n;
-    return rim * (GAP_ESCAPE_SHARE / (size * size));
+    return rim / (size * size);
 }
 
 /* Irradiance at centre p onto one fragment (triangle normal n, nearest

@@ -438,8 +438,11 @@ static double panel_under_plane(double below, double L, double albedo, double *w
  * leaves through the gap's rim: per unit of rim, pi albedo L g 0.40 (the
  * share of a half plane's light that gets out of a slit g high,
  * inject_light.cl's gap_escape), sent out by the voxels the rim crosses
- * over their face: their radiance sums to albedo L g 0.40 times the
- * perimeter (32 voxels). Beyond a voxel from its edge, the plane sees the
+ * over their face, with the light of the band beside the rim that sees the
+ * panel's upper face edge-on within a voxel of it (the half plane's
+ * irradiance integrated over the band): their radiance sums to albedo L
+ * (g 0.40 + (w + g - 1) / 2) times the perimeter (32 voxels), w =
+ * sqrt(1 - g^2). Beyond a voxel from its edge, the plane sees the
  * panel's upper face edge-on and gets albedo / pi times that irradiance: a
  * ceiling's share of a panel hung under it. Three voxels under it, its
  * light on the plane is albedo / pi times the irradiance of the square.
@@ -454,7 +457,11 @@ static void trapped_light(void) {
           "a panel a third of a voxel under the plane: voxels over it up to %.4g (unhidden, up "
           "to about %.3g)",
           worst, albedo * L);
-    const double escape = albedo * L * gap * 0.40 * 32.0;
+    /* and the band beside the rim within a voxel of the panel, whose
+     * fragments are taken as trapped: the half plane's light there, albedo
+     * L (w + g - 1) / 2 per unit of rim, w = sqrt(1 - g^2) */
+    const double band = 0.5 * (sqrt(1.0 - gap * gap) + gap - 1.0);
+    const double escape = albedo * L * (gap * 0.40 + band) * 32.0;
     CHECK(fabs(rim / escape - 1.0) < 0.01,
           "a panel a third of a voxel under the plane: its rim's voxels send out %.4g, expected "
           "%.4g",
