@@ -133,8 +133,9 @@ inline float3 fragment_irradiance(const accel_view *g, const light_bins_view *bi
  * ceiling panel hung just below the ceiling) lights that surface over the
  * panel only in the gap between them, whence the light cannot get out; in a
  * voxel both share, that light would show on the panel's face instead. The
- * same surface beyond a voxel from the emitter's edge sees its face
- * edge-on and keeps that light. */
+ * same surface beside the emitter sees its face edge-on and lights the room:
+ * beyond a voxel from its edge it keeps that light, within a voxel it is
+ * taken as trapped and gap_escape sends that band's light. */
 #define TRAPPED_PARALLEL 0.95f
 
 /* Whether emitter triangle (a, b, c) traps its light between itself and a
@@ -153,13 +154,11 @@ inline int emitter_traps(float3 a, float3 b, float3 c, float3 q, float3 n, float
  * dphi over the half turn facing out, sums over x to g / 2; weighted by the
  * irradiance there (the half plane's, pi L (1 / 2 + x / 2 sqrt(x^2 + g^2)))
  * it is GAP_ESCAPE_SHARE g times pi L. So the surface sends out pi rho L g
- * GAP_ESCAPE_SHARE per unit of rim, into the room: a ceiling panel hung 1 cm
- * under a white ceiling lights the room 3.6 % more for it in the path
- * tracer (panel_room against the same room with each panel capped). The
- * voxel the rim crosses sends that out on the emitter's side, as radiance
- * over its face. The rim: the trapping triangles' edges that no other
- * trapping triangle shares (a quad's diagonal is no rim), within the voxel's
- * square on the fragment's plane. */
+ * GAP_ESCAPE_SHARE per unit of rim, into the room. The voxel the rim
+ * crosses sends that out on the emitter's side, as radiance over its face.
+ * The rim: the trapping triangles' edges that no other trapping triangle
+ * shares (a quad's diagonal is no rim), within the voxel's square on the
+ * fragment's plane. */
 #define GAP_ESCAPE_SHARE 0.40f
 
 /* Length of segment (a, b) (2D) inside the square [-h, h]^2, a segment on
