@@ -42,7 +42,7 @@ int cli_frame_make(vct_context *ctx, vct_device_scene *ds, const vct_scene *s,
     if (opt->denoise && method == VCT_METHOD_PATHTRACE)
         job.pathtrace.variance = &f->variance;
     if ((opt->denoise || opt->aov) && method == VCT_METHOD_PATHTRACE)
-        job.pathtrace.indirect = &f->aovs.indirect; /* filtered apart from the direct light */
+        job.pathtrace.indirect = &f->aovs.indirect; /* filtered apart; an AOV layer */
     int rc = vct_device_scene_render(ds, &job, &f->image, &f->result, err);
     if (rc == VCT_OK && opt->aov && method == VCT_METHOD_PATHTRACE)
         rc = direct_part(&f->image, &f->aovs.indirect, &f->aovs.direct, err);
