@@ -102,6 +102,32 @@ inline uint bounce_skips(uint key) {
     return ((c.x + c.y + c.z) & 3u) != 0u;
 }
 
+/* A face within a voxel of a voxel's plane and parallel to it (within about
+ * 25 degrees) lies between the plane and the side of the voxel that faces
+ * the way it does. */
+#define SIDE_FACE_PARALLEL 0.9f
+
+/* Where the rays of the side unit n faces leave from, for the voxel's plane
+ * point `surface`: just off it, or where a parallel face lies within a
+ * voxel along n, just past that face. The plane of a closed object thinner
+ * than a voxel (a slat, a table top, a slab) runs between its faces, the
+ * mean of its fragments' points, so rays from just off it start inside the
+ * object and meet its inner faces: its sides gathered their own light,
+ * dark, and the blinds' slats, which reflect most of the floor's light that
+ * reaches them back into the room, were black to it. */
+inline float3 side_origin(const accel_view *acc, float3 surface, float3 n, float voxel) {
+    const float eps = surface_epsilon(acc, surface);
+    const float3 from = surface + n * eps;
+    hit_record hit;
+    float3 p, ng, facing;
+    int front;
+    if (accel_trace(acc, from, n, 0.0f, voxel, 0, &hit) &&
+        surface_hit(acc, &hit, n, &p, &ng, &facing, &front) &&
+        fabs(dot(ng, n)) > SIDE_FACE_PARALLEL)
+        return p + n * surface_epsilon(acc, p);
+    return from;
+}
+
 /* What voxel v's two sides receive. With a normal the rays leave from the
  * point of the voxel's plane nearest its centre, just off it on each side;
  * without, from its centre lifted the cone offset along +-z. */
@@ -120,9 +146,10 @@ inline void gather_voxel(const accel_view *acc, CONE_POOLS, __global const uint 
     const float3 c_unit = (centre - cd->volume.xyz) * cd->ambient.w - 0.5f;
     const float3 surface =
         cd->volume.xyz + (c_unit - (dot(n, c_unit) - plane.w) * n + 0.5f) * cd->volume.w;
-    const float eps = surface_epsilon(acc, surface);
-    *front = gather_side(acc, CONE_POOLS_PASS, child, cd, key, surface + n * eps, n);
-    *back = gather_side(acc, CONE_POOLS_PASS, child, cd, key, surface - n * eps, -n);
+    *front =
+        gather_side(acc, CONE_POOLS_PASS, child, cd, key, side_origin(acc, surface, n, voxel), n);
+    *back =
+        gather_side(acc, CONE_POOLS_PASS, child, cd, key, side_origin(acc, surface, -n, voxel), -n);
 }
 
 /* Voxel v's radiance and sides from what its sides receive; keep_sides 1:

@@ -39,9 +39,9 @@ static double ref_intersect(const double o[3], const double d[3], const float *a
 
 /* The nearest hit in (0, reach] of the ray from o along d over the scene's
  * triangles, by brute force; -1 where none. *border: the hit's distance to
- * its triangle's border in barycentric units. */
-static inline double ref_closest(const vct_scene *s, const double o[3], const double d[3],
-                                 double reach, double *border) {
+ * its triangle's border in barycentric units; *tri: the triangle hit. */
+static inline double ref_closest_tri(const vct_scene *s, const double o[3], const double d[3],
+                                     double reach, double *border, uint32_t *tri) {
     double best = -1.0;
     for (uint32_t i = 0; i < s->triangle_count; ++i) {
         const uint32_t *t = s->triangles + 3 * i;
@@ -51,9 +51,17 @@ static inline double ref_closest(const vct_scene *s, const double o[3], const do
         if (hit > 0.0 && hit <= reach && (best < 0.0 || hit < best)) {
             best = hit;
             *border = b;
+            *tri = i;
         }
     }
     return best;
+}
+
+/* ref_closest_tri without the triangle. */
+static inline double ref_closest(const vct_scene *s, const double o[3], const double d[3],
+                                 double reach, double *border) {
+    uint32_t tri = 0;
+    return ref_closest_tri(s, o, d, reach, border, &tri);
 }
 
 #endif
