@@ -54,7 +54,10 @@ stamp=$(bench/stamp.sh bench/bounces.sh "$@")
     echo "tracing's default (4 bounces and the rest of the series); then what bounces 2, 3 and 4"
     echo "add to the one before, each beside the path tracer's. A bounce that adds more than"
     echo "the one before it, or far more or less than the path tracer's, points at the bounces;"
-    echo "K = 1 off points at the direct light or the first gather."
+    echo "K = 1 off points at the direct light or the first gather. Under a sky (atrium,"
+    echo "window_room, blinds_fins, long_hall) the path tracer's last surface also meets the sky"
+    echo "its BSDF sample finds, which cone tracing's voxels hold one bounce later: there each"
+    echo "of cone tracing's K lies between the path tracer's K and K + 1."
     echo
     echo "| scene | K = 1 | K = 2 | K = 3 | K = 4 | default | adds at 2 | adds at 3 | adds at 4 |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
