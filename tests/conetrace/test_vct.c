@@ -619,10 +619,9 @@ static void empty_volume(void) {
 }
 
 /* How sparse diffuse fills a pixel (kernels/render/vct_render.cl): from the traced
- * pixels (2i, 2j) around it whose surface agrees with its own, where at
- * least two of them do (or the one there is), else by its own rays, a
- * third of the gather's. Written here in double from the position and
- * normal AOVs. */
+ * pixels (2i, 2j) around it, where the surface of every one of them agrees
+ * with its own, else by its own rays, a third of the gather's. Written here
+ * in double from the position and normal AOVs. */
 typedef enum sparse_kind {
     SPARSE_TRACED,
     SPARSE_FILLED,
@@ -687,7 +686,7 @@ static sparse_kind sparse_expect(const vct_aovs *full, const vct_aovs *own, int 
                 ++agree;
             }
         }
-    if (agree < (cells < 2 ? cells : 2)) {
+    if (agree < cells) {
         *ao = own->ao.rgba[4 * p];
         *variance = own->indirect_variance.rgba[4 * p];
         return SPARSE_OWN;
@@ -796,7 +795,7 @@ static void sparse_diffuse(void) {
      * The pixels beside the box's creases and the blocks' edges, where
      * fewer than two cells agree, trace their own (280). A fill that takes
      * the wrong neighbours fails the AO check. */
-    sparse_diffuse_case("Cornell box", box, &vo, 64, 64, (const int[]){900, 2500, 200, 0}, 0.035);
+    sparse_diffuse_case("Cornell box", box, &vo, 64, 64, (const int[]){900, 2200, 400, 0}, 0.035);
     vct_scene_release(box);
     /* A sky-lit floor with a raised square 1.6 voxels above it: same normal,
      * a pixel away, but off the tangent plane, so edge pixels must not take
@@ -813,7 +812,7 @@ static void sparse_diffuse(void) {
     vo.bounds_size = 2.0;
     /* A filled pixel takes its neighbours' rays, turned per voxel cell
      * (cone_frame.h): 0.0093 measured. */
-    sparse_diffuse_case("raised square", s, &vo, 32, 32, (const int[]){80, 180, 20, 0}, 0.015);
+    sparse_diffuse_case("raised square", s, &vo, 32, 32, (const int[]){80, 150, 60, 0}, 0.015);
     vct_scene_release(s);
     /* A ridge of two faces 40 degrees apart, seen closely, a wall shading one
      * side: near the ridge the other face's points lie on a pixel's tangent
