@@ -6,7 +6,8 @@
  * Surfaces are two-sided, whatever their winding: each fragment of a voxel
  * (one triangle crossing it) is lit from the side its light is on, and each
  * side of the voxel (about its normal axis) sends out the mean of what its
- * fragments reflect to that side (voxel_side.h), over the fragments' sides
+ * fragments reflect to that side, each weighed by its triangle's area in
+ * the voxel (voxel_side.h), over the fragments' sides
  * that do not look into a closed object (fragment_enclosed). A fragment is
  * shaded at the voxel's centre with its triangle's normal (and its albedo
  * averaged over the voxel, fragment_albedo.h), and seen from the light at
@@ -24,6 +25,7 @@
 #include "light/direct_light.h"
 #include "light/emitters.h"
 #include "accel/tri_nearest.h"
+#include "voxel/clip_area.h"
 #include "voxel/fragment_albedo.h"
 #include "light/light_bins.h"
 #include "voxel/octree.h"
@@ -420,6 +422,15 @@ __kernel void carry_direct(vct_volume_desc vol, __global const uint *keys, uint 
         side[VCT_VOXEL_SIDE_FLOAT4S * v + k] = before_side[VCT_VOXEL_SIDE_FLOAT4S * from + k];
 }
 
+/* The area of triangle t inside the voxel of side `size` centred at p, in
+ * faces of it. */
+inline float fragment_area(__global const float4 *tri_vertices, uint t, float3 p, float size) {
+    const float inv = 1.0f / size;
+    return triangle_area_in_cube((tri_vertices[3u * t].xyz - p) * inv,
+                                 (tri_vertices[3u * t + 1u].xyz - p) * inv,
+                                 (tri_vertices[3u * t + 2u].xyz - p) * inv);
+}
+
 /* carry 1: voxels with a voxel before (carried_from) keep the light
  * carry_direct copied. */
 __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
@@ -452,6 +463,14 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                 rim = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0};
     /* what leaves gaps under emitters (gap_escape), and the side it leaves on */
     float3 escape = (float3)(0.0f), escape_side = (float3)(0.0f);
+    /* Each fragment weighs by its triangle's area inside the voxel, as the
+     * voxel's albedo and opacity do (vox_reduce): a thin closed object's
+     * edge, a strip a fifth of a voxel's width along a slat, would send as
+     * much as its faces (where fragments only touch the voxel, plain means) */
+    float area_total = 0.0f;
+    for (uint f = begin; f < end; ++f)
+        area_total += fragment_area(tri_vertices, fragment_tri[f], p, size);
+    const int by_area = area_total >= CLIP_AREA_WEIGHED_MIN;
     for (uint f = begin; f < end; ++f) {
         const uint t = fragment_tri[f];
         const float3 a = tri_vertices[3u * t].xyz, b = tri_vertices[3u * t + 1u].xyz,
@@ -468,7 +487,8 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
         const uint hidden =
             fragment_enclosed(tri_vertices, fragment_tri, begin, end, f, p, n, q, size,
                               fmax(1e-3f * size, 8.0f * surface_epsilon(&g, q)));
-        open_sides += 0.5f * (float)(((hidden & 1u) == 0u) + ((hidden & 2u) == 0u));
+        const float weight = by_area ? fragment_area(tri_vertices, t, p, size) : 1.0f;
+        open_sides += 0.5f * weight * (float)(((hidden & 1u) == 0u) + ((hidden & 2u) == 0u));
         float3 behind = (float3)(0.0f);
         const float plane = SHARED_PLANE * size;
         const int reuse_lit = shared_plane(&lit, n, q, plane);
@@ -507,9 +527,9 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
             }
         }
         if (!(hidden & 1u))
-            side_cube_add(&sides, n, rho * front);
+            side_cube_add(&sides, n, weight * rho * front);
         if (!(hidden & 2u))
-            side_cube_add(&sides, -n, rho * behind);
+            side_cube_add(&sides, -n, weight * rho * behind);
     }
     const float scale = open_sides > 0.0f ? VCT_INV_PI / open_sides : 0.0f;
     /* the plane between the sides: across the way most light leaves, else
