@@ -161,8 +161,6 @@ inline void guide_write(__global float4 *aov, uint pixel, const guide_sum *g, ui
         (float4)(g->normal * inv, g->hits ? g->depth / (float)g->hits : 0.0f);
 }
 
-/* The camera ray through each pixel's centre. keys: what vct_edge_flags
- * compares between neighbours. */
 /* A pixel whose centre sees the sky, straight, also looks through
  * SKY_PROBES points of it, each on its own quarter of the pixel's rows
  * and of its columns (a rotated grid): geometry thinner than a pixel in
@@ -186,6 +184,8 @@ inline int sky_probes_meet(const shading_scene *ps, const vct_camera_desc *cam, 
     return 0;
 }
 
+/* The camera ray through each pixel's centre. keys: what vct_edge_flags
+ * compares between neighbours. */
 __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
     const uint x = get_global_id(0), y = get_global_id(1);
     if (x >= cam.size.x || y >= cam.size.y)
