@@ -876,19 +876,16 @@ static void bounces(void) {
  * fifth of its albedo times the floor's light (from inside, nothing). */
 static void thin_slab_bounce(void) {
     const float y0 = 0.5f, y1 = 0.508f, lo = 0.35f, hi = 0.65f;
-    const float quads[] = {0.02f, 0.1f, 0.02f, 0.98f, 0.1f, 0.02f, 0.98f, 0.1f, 0.98f,
-                           0.02f, 0.1f, 0.98f, /* floor */
-                           lo,    y1,   lo,    hi,    y1,   lo,    hi,    y1,   hi,
-                           lo,    y1,   hi, /* the slab's top */
-                           lo,    y0,   lo,    lo,    y0,   hi,    hi,    y0,   hi,
-                           hi,    y0,   lo, /* its underside */
-                           lo,    y0,   lo,    hi,    y0,   lo,    hi,    y1,   lo,
-                           lo,    y1,   lo, /* its four sides */
-                           lo,    y0,   hi,    lo,    y1,   hi,    hi,    y1,   hi,
-                           hi,    y0,   hi,    lo,    y0,   lo,    lo,    y1,   lo,
-                           lo,    y1,   hi,    lo,    y0,   hi,    hi,    y0,   lo,
-                           hi,    y0,   hi,    hi,    y1,   hi,    hi,    y1,   lo};
-    vct_scene *scene = quads_scene(quads, 6);
+    const float quads[7][12] = {
+        /* the floor, the slab's top and underside, then its four sides */
+        {0.02f, 0.1f, 0.02f, 0.98f, 0.1f, 0.02f, 0.98f, 0.1f, 0.98f, 0.02f, 0.1f, 0.98f},
+        {lo, y1, lo, hi, y1, lo, hi, y1, hi, lo, y1, hi},
+        {lo, y0, lo, lo, y0, hi, hi, y0, hi, hi, y0, lo},
+        {lo, y0, lo, hi, y0, lo, hi, y1, lo, lo, y1, lo},
+        {lo, y0, hi, lo, y1, hi, hi, y1, hi, hi, y0, hi},
+        {lo, y0, lo, lo, y1, lo, lo, y1, hi, lo, y0, hi},
+        {hi, y0, lo, hi, y0, hi, hi, y1, hi, hi, y1, lo}};
+    vct_scene *scene = quads_scene(&quads[0][0], 7);
     add_point_light(scene, 0.1f, 0.9f, 0.1f, 0.5f);
     const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1, 0};
     brick_case c = make_case("thin slab 32^3", scene, 32, 1.0f, &opt);
