@@ -7,6 +7,7 @@
  * exceeds 1. */
 #include "brick_case.h"
 #include "ray_ref.h"
+#include "vec3d.h"
 
 /* ---- the reference marcher ---------------------------------------------- */
 
@@ -657,15 +658,12 @@ static void past_parallel_face(const vct_scene *s, double from[3], const double 
     const double t = ref_closest_tri(s, from, n, reach, &border, &tri);
     if (t < 0.0)
         return;
-    const float *a = s->positions + 3 * s->triangles[3 * tri],
-                *b = s->positions + 3 * s->triangles[3 * tri + 1],
-                *c = s->positions + 3 * s->triangles[3 * tri + 2];
-    const double e1[3] = {(double)b[0] - a[0], (double)b[1] - a[1], (double)b[2] - a[2]};
-    const double e2[3] = {(double)c[0] - a[0], (double)c[1] - a[1], (double)c[2] - a[2]};
-    const double cr[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                          e1[0] * e2[1] - e1[1] * e2[0]};
-    const double len = sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
-    if (!(len > 0.0) || fabs(cr[0] * n[0] + cr[1] * n[1] + cr[2] * n[2]) / len <= 0.9)
+    const uint32_t *corner = s->triangles + 3 * tri;
+    const v3 a = v3_of(s->positions + 3 * corner[0]);
+    const v3 normal = cross(sub(v3_of(s->positions + 3 * corner[1]), a),
+                            sub(v3_of(s->positions + 3 * corner[2]), a));
+    const double len = sqrt(dot(normal, normal));
+    if (!(len > 0.0) || fabs(dot(normal, v(n[0], n[1], n[2]))) / len <= 0.9)
         return;
     for (int k = 0; k < 3; ++k)
         from[k] += n[k] * (t + lift);
@@ -830,6 +828,28 @@ static void bounce_against_reference(const char *what, brick_case *c, const vct_
     pyramid_free(&p);
 }
 
+/* A case's light before a bounce (direct: injection's) and after it, its
+ * radiance and sides as vct_voxels_read_* give them. */
+typedef struct bounce_light {
+    float *direct, *after, *direct_sides, *after_sides;
+} bounce_light;
+
+static bounce_light bounce_light_of(const brick_case *c) {
+    const uint32_t nv = c->info.voxels;
+    bounce_light l = {malloc(16ull * nv), malloc(16ull * nv), malloc(32ull * nv),
+                      malloc(32ull * nv)};
+    memcpy(l.direct, c->radiance, 16ull * nv);
+    memcpy(l.direct_sides, c->sides, 32ull * nv);
+    return l;
+}
+
+static void bounce_light_free(bounce_light *l) {
+    free(l->direct);
+    free(l->after);
+    free(l->direct_sides);
+    free(l->after_sides);
+}
+
 /* Bounces (vct_voxels_inject_bounce): the second bounce gathers the direct
  * light's bricks; the third gathers the bricks of the second's radiance and
  * still adds to the direct light alone, so that the light of the second
@@ -845,26 +865,19 @@ static void bounces(void) {
     add_point_light(scene, 0.3f, 0.8f, 0.6f, 0.5f);
     const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1, 0};
     brick_case c = make_case("bounces 32^3", scene, 32, 1.0f, &opt);
-    const uint32_t nv = c.info.voxels;
-    float *direct = malloc(16ull * nv), *after = malloc(16ull * nv);
-    float *direct_sides = malloc(32ull * nv), *after_sides = malloc(32ull * nv);
-    memcpy(direct, c.radiance, 16ull * nv);
-    memcpy(direct_sides, c.sides, 32ull * nv);
+    bounce_light l = bounce_light_of(&c);
     vct_error err = {0};
     const vct_cone_settings s = vct_cone_settings_default();
-    bounce_against_reference("second bounce", &c, scene, &s, direct, direct_sides, direct,
-                             direct_sides, 0, after, after_sides, 4);
+    bounce_against_reference("second bounce", &c, scene, &s, l.direct, l.direct_sides, l.direct,
+                             l.direct_sides, 0, l.after, l.after_sides, 4);
     /* The third bounce reads the second's radiance. */
-    bounce_against_reference("third bounce", &c, scene, &s, after, after_sides, direct,
-                             direct_sides, 1, after, after_sides, 4);
+    bounce_against_reference("third bounce", &c, scene, &s, l.after, l.after_sides, l.direct,
+                             l.direct_sides, 1, l.after, l.after_sides, 4);
     /* Light injection starts over: one bounce after it is the second again. */
     REQUIRE_OK(vct_voxels_inject_light(ctx, scene, c.accel, c.voxels, &err), err);
-    bounce_against_reference("second bounce again", &c, scene, &s, direct, direct_sides, direct,
-                             direct_sides, 0, after, after_sides, 4);
-    free(direct);
-    free(after);
-    free(direct_sides);
-    free(after_sides);
+    bounce_against_reference("second bounce again", &c, scene, &s, l.direct, l.direct_sides,
+                             l.direct, l.direct_sides, 0, l.after, l.after_sides, 4);
+    bounce_light_free(&l);
     case_free(&c);
 }
 
@@ -890,15 +903,12 @@ static void thin_slab_bounce(void) {
     const vct_brick_options opt = {VCT_BRICKS_BUFFER, 1, 0};
     brick_case c = make_case("thin slab 32^3", scene, 32, 1.0f, &opt);
     const uint32_t nv = c.info.voxels;
-    float *direct = malloc(16ull * nv), *after = malloc(16ull * nv);
-    float *direct_sides = malloc(32ull * nv), *after_sides = malloc(32ull * nv);
+    bounce_light l = bounce_light_of(&c);
     uint32_t *keys = malloc(4ull * nv);
-    memcpy(direct, c.radiance, 16ull * nv);
-    memcpy(direct_sides, c.sides, 32ull * nv);
     const vct_cone_settings s = vct_cone_settings_default();
     /* only the slab's voxels gain light: the floor sees its dark underside */
-    bounce_against_reference("thin slab", &c, scene, &s, direct, direct_sides, direct, direct_sides,
-                             0, after, after_sides, 10);
+    bounce_against_reference("thin slab", &c, scene, &s, l.direct, l.direct_sides, l.direct,
+                             l.direct_sides, 0, l.after, l.after_sides, 10);
     vct_error err = {0};
     REQUIRE_OK(vct_voxels_read(ctx, c.voxels, keys, NULL, NULL, NULL, &err), err);
     /* the floor's light (its voxels' brighter side) and the slab's
@@ -909,15 +919,15 @@ static void thin_slab_bounce(void) {
         uint32_t cell[3];
         decode(keys[v], cell);
         if (cell[1] == 3) {
-            floor_light +=
-                luminance((const double[3]){direct[4 * v], direct[4 * v + 1], direct[4 * v + 2]});
+            floor_light += luminance(
+                (const double[3]){l.direct[4 * v], l.direct[4 * v + 1], l.direct[4 * v + 2]});
             ++floor_voxels;
         }
         if (cell[1] == 16 && cell[0] >= 12 && cell[0] <= 19 && cell[2] >= 12 && cell[2] <= 19) {
-            const float *plane = after_sides + 8 * v + 4;
+            const float *plane = l.after_sides + 8 * v + 4;
             double side[3];
             for (int k = 0; k < 3; ++k) /* the side facing down */
-                side[k] = after[4 * v + k] - (plane[1] < 0.0f ? 0.0f : after_sides[8 * v + k]);
+                side[k] = l.after[4 * v + k] - (plane[1] < 0.0f ? 0.0f : l.after_sides[8 * v + k]);
             under += luminance(side);
             rho += luminance(
                 (const double[3]){c.albedo[4 * v], c.albedo[4 * v + 1], c.albedo[4 * v + 2]});
@@ -933,10 +943,7 @@ static void thin_slab_bounce(void) {
     printf("thin slab: underside %.4f = %.2f of albedo times the floor's light\n", under,
            under / (rho * floor_light));
     free(keys);
-    free(direct);
-    free(after);
-    free(direct_sides);
-    free(after_sides);
+    bounce_light_free(&l);
     case_free(&c);
 }
 
