@@ -95,6 +95,8 @@ typedef vct_f4 vct_hit_desc;
 #define VCT_VOXEL_MAX_LEVELS 10
 /* float4s per voxel in the sides array (voxel/voxel_side.h) */
 #define VCT_VOXEL_SIDE_FLOAT4S 2
+/* leaf voxels per work-item of gather_pick_peak (render/vct_render.cl) */
+#define VCT_PICK_SPAN 64
 /* A voxel with no counterpart (kernels/voxel/voxel_carry.h). */
 #define VCT_NO_VOXEL 0xffffffffu
 

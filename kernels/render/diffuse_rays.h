@@ -16,8 +16,9 @@
  * was spread up the columns' sides. Rays see the geometry itself (the hall
  * 0.146 -> 0.093 NRMSE, the suite's mean 0.075 -> 0.056, the bounces'
  * light unchanged). What they cost is noise where few rays meet a small
- * bright patch (the ceiling 10 cm above a point light), which the sparse
- * fill and the indirect filter take. A ray passes through glass, as the
+ * bright patch (the ceiling 10 cm above a point light): there picks aim
+ * more rays at it (gather_picks.h), and the sparse fill and the indirect
+ * filter take the rest. A ray passes through glass, as the
  * voxels let light through it, and one that meets a mirror shows the
  * voxels' light there, as a cone's would. */
 #ifndef VCT_DIFFUSE_RAYS_H
@@ -28,6 +29,7 @@
 #include "conetrace/cone_trace.h"
 #include "light/direct_light.h"
 #include "light/emitters.h"
+#include "render/gather_picks.h"
 #include "render/shading_scene.h"
 #include "scene/bsdf.h"
 #include "scene/rng.h"
@@ -39,10 +41,16 @@
 /* Rays per cone of the preset (--cones): its count sets the gather's rays. */
 #define GATHER_RAYS_PER_CONE 9u
 
+/* Picks per cone of the preset: rays aimed at voxels by their direct
+ * light (gather_picks.h). */
+#define GATHER_PICKS_PER_CONE 2u
+
 /* The voxels' light per leaf voxel, with its sides (voxel_side.h): all of
- * it, and its direct part alone (the same buffers before any bounce). */
+ * it, and its direct part alone (the same buffers before any bounce); and
+ * the picks by their direct light. */
 typedef struct gather_voxels {
     __global const float4 *total, *total_side, *direct, *direct_side;
+    gather_picks picks;
 } gather_voxels;
 
 /* The light that bounced off the leaf voxel holding p, on the side of its
@@ -189,51 +197,95 @@ inline float3 gather_dir(float3 n, float3 t, float3 b, uint k, uint m) {
     return normalize(sqrt(r2) * (cs.x * t + cs.y * b) + sqrt(fmax(1.0f - r2, 0.0f)) * n);
 }
 
+/* The light ray d from `from` brings back (h: what gather_trace found),
+ * in *open whether it met nothing within `near`. */
+inline float3 gather_ray_light(const shading_scene *ps, CONE_POOLS, __global const uint *child,
+                               const vct_cone_desc *c, const gather_voxels *gv, float3 from,
+                               float3 d, int found, const hit_record *h, float tan_half, uint seed,
+                               float near, int *open) {
+    *open = found == GATHER_MISS || (found == GATHER_HIT && h->t > near);
+    if (found == GATHER_MISS)
+        return c->ambient.xyz;
+#ifdef VCT_INDIRECT
+    if (found == GATHER_HIT)
+        return gather_hit_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, h, tan_half, seed);
+#endif
+    return (float3)(0.0f);
+}
+
+/* The power heuristic's factor (exponent 2) for a ray along d (cosine
+ * cos_n with the normal) whose hit lies in voxel v, of m rays by the
+ * cosine and k picks, for a ray of either kind (`picked`), over m: 1 for a
+ * cosine's ray where no pick can aim there (gather_picks.h). */
+inline float gather_mis(const gather_voxels *gv, const vct_cone_desc *c, float3 p, float cos_n,
+                        uint v, uint m, uint k, int picked) {
+    const float density = k ? pick_density(&gv->picks, c, v, p) : 0.0f;
+    if (!(density > 0.0f))
+        return picked ? 0.0f : 1.0f;
+    const float by_cosine = (float)m * fmax(cos_n, 0.0f) * VCT_INV_PI,
+                by_picks = (float)k * density;
+    const float both = by_cosine * by_cosine + by_picks * by_picks;
+    return (picked ? by_cosine * by_picks : by_cosine * by_cosine) / both;
+}
+
 /* The mean light of m gather rays from surface point p (unit normal n,
- * tangents t and b, turned per point by the caller), in *open the share of
- * them that meet nothing within `near`, and in *variance the variance of
- * the mean's luminance by the rays' spread (the indirect filter's guide: a
- * rare ray that met a small bright patch marks its pixel as noisy).
- * Without indirect light (occlusion only), the rays reach `near` alone. */
+ * tangents t and b, turned per point by the caller) and of k picks
+ * (gather_picks.h), in *open the share of the m that meet nothing within
+ * `near`, and in *variance the variance of the mean's luminance by the
+ * rays' spread (the indirect filter's guide: a rare ray that met a small
+ * bright patch marks its pixel as noisy). Without indirect light
+ * (occlusion only), the rays reach `near` alone and nothing is picked. */
 inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const uint *child,
                           const vct_cone_desc *c, const gather_voxels *gv, float3 p, float3 n,
-                          float3 t, float3 b, uint m, uint seed, float near, float *open,
+                          float3 t, float3 b, uint m, uint k, uint seed, float near, float *open,
                           float *variance) {
     const float3 from = p + n * surface_epsilon(&ps->g, p);
     /* a cone of a ray's share of the hemisphere, where a ray reads bricks */
     const float tan_half = sqrt(2.0f / (float)m);
 #ifdef VCT_INDIRECT
     const float reach = INFINITY;
+    k = gv->picks.count ? k : 0u;
 #else
     const float reach = near;
+    k = 0u;
 #endif
     float3 sum = (float3)(0.0f);
-    float squares = 0.0f; /* of each ray's luminance */
+    /* per kind (by the cosine, picked): the sum of each ray's luminance and
+     * of its square */
+    float2 lum = (float2)(0.0f), squares = (float2)(0.0f);
     uint open_rays = 0u;
-    for (uint k = 0; k < m; ++k) {
-        const float3 d = gather_dir(n, t, b, k, m);
+    for (uint r = 0; r < m + k; ++r) {
+        const int by_cosine = r < m;
+        uint aimed = OCT_NULL;
+        const float3 d = by_cosine
+                             ? gather_dir(n, t, b, r, m)
+                             : pick_dir(&gv->picks, c, from, r - m, k, rng_hash(seed ^ r), &aimed);
+        const float cos_n = dot(d, n);
+        if (!by_cosine && !(cos_n > 0.0f))
+            continue; /* below the surface, or a voxel too near */
         hit_record h;
         const int found = gather_trace(ps, from, d, reach, &h);
-        if (found == GATHER_MISS) {
-            sum += c->ambient.xyz;
-            squares += side_luminance(c->ambient.xyz) * side_luminance(c->ambient.xyz);
-            ++open_rays;
-            continue;
-        }
-        if (found == GATHER_LOST)
-            continue;
-        open_rays += h.t > near;
-#ifdef VCT_INDIRECT
-        const float3 light = gather_hit_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, &h,
-                                              tan_half, rng_hash(seed ^ k));
-        sum += light;
-        squares += side_luminance(light) * side_luminance(light);
-#endif
+        const uint v = k && found == GATHER_HIT ? pick_voxel_of(child, c, from, d, h.t) : OCT_NULL;
+        if (!by_cosine && v != aimed)
+            continue; /* the picks' light is their voxel's alone */
+        int is_open;
+        const float3 light = gather_ray_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, found, &h,
+                                              tan_half, rng_hash(seed ^ r), near, &is_open);
+        if (by_cosine)
+            open_rays += is_open;
+        const float3 share = light * gather_mis(gv, c, from, cos_n, v, m, k, !by_cosine);
+        sum += share;
+        const float y = side_luminance(share);
+        lum += by_cosine ? (float2)(y, 0.0f) : (float2)(0.0f, y);
+        squares += by_cosine ? (float2)(y * y, 0.0f) : (float2)(0.0f, y * y);
     }
     *open = (float)open_rays / (float)m;
-    const float mean = side_luminance(sum) / (float)m;
-    /* the variance of the mean's luminance, from the rays' spread */
-    *variance = fmax(squares / (float)m - mean * mean, 0.0f) / (float)m;
+    /* the variance of the mean's luminance, from the rays' spread: the sum
+     * over m of m rays of one kind and k (a pick that missed its voxel
+     * adding 0) of the other, each kind's by its own spread */
+    const float2 n_kind = (float2)((float)m, (float)max(k, 1u)), mean = lum / n_kind;
+    const float2 spread = fmax(squares / n_kind - mean * mean, 0.0f) * n_kind;
+    *variance = (spread.x + spread.y) / ((float)m * (float)m);
     return sum / (float)m;
 }
 
