@@ -85,20 +85,53 @@ inline float pick_density(const gather_picks *gp, const vct_cone_desc *c, uint v
     return omega > 0.0f ? (float)weight / ((float)gp->total * omega) : 0.0f;
 }
 
-/* Pick i of k from stream `seed`: stratified over the running sum, the
- * first voxel whose sum exceeds the pick's share of the total. */
-inline uint pick_find(const gather_picks *gp, uint i, uint k, uint seed) {
-    const ulong at = (((ulong)i << 32) + (ulong)rng_hash(seed)) / (ulong)k; /* < 2^32 */
-    const uint target = (uint)((at * (ulong)gp->total) >> 32);
-    uint lo = 0u, hi = gp->count - 1u;
+/* The first voxel in [lo, hi) whose running sum exceeds target (hi - 1 if
+ * none does). */
+inline uint pick_search(__global const uint *cdf, uint lo, uint hi, uint target) {
+    --hi;
     while (lo < hi) {
         const uint mid = (lo + hi) / 2u;
-        if (gp->cdf[mid] > target)
+        if (cdf[mid] > target)
             hi = mid;
         else
             lo = mid + 1u;
     }
     return lo;
+}
+
+/* The first voxel in [lo, hi) whose key is at least `key` (hi if none). */
+inline uint pick_key_search(__global const uint *keys, uint lo, uint hi, uint key) {
+    while (lo < hi) {
+        const uint mid = (lo + hi) / 2u;
+        if (keys[mid] >= key)
+            hi = mid;
+        else
+            lo = mid + 1u;
+    }
+    return lo;
+}
+
+/* A block of PICK_BLOCK_BITS low Morton bits: 8^3 voxels, which lie
+ * together in the sorted voxels. */
+#define PICK_BLOCK_BITS 9u
+
+/* Pick i of k from stream `seed`, each voxel by its weight's share of the
+ * total: first a block (stratified over the running sum: the block of the
+ * voxel whose sum first exceeds the pick's share of the total), then a
+ * voxel in it by its share of the block's weight. A voxel whose light
+ * changes (a moving object's, a wall's wound the other way) moves the
+ * running sum beyond it, and with one search every pick beyond it would
+ * land on another voxel, the whole image's noise changing; by blocks only
+ * the picks near a block's border move. */
+inline uint pick_find(const gather_picks *gp, uint i, uint k, uint seed) {
+    const uint s1 = rng_hash(seed), s2 = rng_hash(s1 ^ 0x2c1b3c6du);
+    const ulong at = (((ulong)i << 32) + (ulong)s1) / (ulong)k; /* < 2^32 */
+    const uint v = pick_search(gp->cdf, 0u, gp->count, (uint)((at * (ulong)gp->total) >> 32));
+    const uint block = gp->keys[v] >> PICK_BLOCK_BITS;
+    const uint lo = pick_key_search(gp->keys, 0u, v, block << PICK_BLOCK_BITS),
+               hi = pick_key_search(gp->keys, v + 1u, gp->count, (block + 1u) << PICK_BLOCK_BITS);
+    const uint before = lo > 0u ? gp->cdf[lo - 1u] : 0u, weight = gp->cdf[hi - 1u] - before;
+    return pick_search(gp->cdf, lo, hi, before + (uint)(((ulong)s2 * (ulong)weight) >> 32));
 }
 
 /* The direction of pick i of k from p, uniform in its voxel's cone, in *v

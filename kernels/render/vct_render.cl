@@ -785,17 +785,13 @@ __kernel void vct_diffuse_fill(ACCEL_ARGS, CONE_POOLS, __global const uint *chil
 }
 #endif
 
-/* The picks' weights (gather_picks.h): each leaf voxel's by the luminance
- * of its direct light (the brighter side's), scaled so that the brightest
- * weighs `peak_weight` and the weights' sum fits in 32 bits; those less
- * than PICK_FLOOR as bright as the brightest weigh 0 and are left to the
- * cosine's rays, which meet wide, evenly lit surfaces well (with every lit
- * voxel picked the Cornell box's NRMSE rose, 0.0252 -> 0.0263). peak[1]
- * counts the voxels that weigh anything. gather_pick_peak first finds the
- * brightest into peak[0]: luminances are not negative, so their bits order
- * as integers do. */
+/* The picks' weights (gather_picks.h; host/src/conetrace/gather_picks.c
+ * chooses them): each leaf voxel's by the luminance l of its direct light
+ * (the brighter side's), min(l scale, cap) unit rounded where l is at
+ * least floor_l and above 0, else 0. gather_pick_peak finds the brightest
+ * (its bits, into peak[0], which must start at 0): luminances are not
+ * negative, so their bits order as integers do. */
 #if defined(VCT_INDIRECT)
-#define PICK_FLOOR 0.0625f
 __kernel void gather_pick_peak(__global const float4 *direct, uint voxels, __global int *peak) {
     const uint first = get_global_id(0) * VCT_PICK_SPAN;
     float brightest = 0.0f;
@@ -805,19 +801,13 @@ __kernel void gather_pick_peak(__global const float4 *direct, uint voxels, __glo
         atomic_max(peak, as_int(brightest));
 }
 
-__kernel void gather_pick_weights(__global const float4 *direct, uint voxels, __global int *peak,
-                                  uint peak_weight, __global uint *weights) {
+__kernel void gather_pick_weights(__global const float4 *direct, uint voxels, float scale,
+                                  float floor_l, float cap, uint unit, __global uint *weights) {
     const uint v = get_global_id(0);
     if (v >= voxels)
         return;
-    const float brightest = as_float(peak[0]);
     const float l = side_luminance(direct[v].xyz);
-    const uint w = brightest > 0.0f && l >= brightest * PICK_FLOOR
-                       ? (uint)(fmin(l / brightest, 1.0f) * (float)peak_weight + 0.5f)
-                       : 0u;
-    weights[v] = w;
-    if (w > 0u)
-        atomic_inc(peak + 1);
+    weights[v] = l > 0.0f && l >= floor_l ? (uint)(fmin(l * scale, cap) * (float)unit + 0.5f) : 0u;
 }
 #endif
 

@@ -80,6 +80,7 @@ inline float3 lift_direction(float3 n, float3 w) {
 typedef struct shared_rays {
     float3 n, q;               /* the normal and point of the fragment that traced them */
     float seen[SHARED_LIGHTS]; /* per light (or emitter sample), the fraction seen */
+    uint trapped;              /* per emitter sample, a bit: its emitter traps its light */
     uint seed;                 /* emitter samples: the stream they came from */
     int valid;
 } shared_rays;
@@ -146,6 +147,31 @@ inline int emitter_traps(float3 a, float3 b, float3 c, float3 q, float3 n, float
     const float3 nl = normalize(cross(b - a, c - a));
     return fabs(dot(nl, n)) > TRAPPED_PARALLEL && fabs(dot(q - a, nl)) < gap &&
            length(triangle_nearest(q, a, b, c) - q) < gap;
+}
+
+/* Whether emitter triangle (a, b, c) traps its light beside q: it does
+ * itself (emitter_traps), or it lies in the plane of one that does (a quad
+ * lamp's other triangle, whose light reaches q only through the gap). By
+ * the triangle alone, a fragment over one triangle of a lamp hung 0.1 under
+ * a ceiling, 0.1 from the other's edge, took the other's light: which
+ * fragment of a voxel traced the shared rays first decided it, and wound
+ * the other way the ceiling along the lamp's diagonal lit up. Emitters in
+ * scenes of more than EMITTER_EXACT_MAX emitter triangles by themselves. */
+inline int emitter_traps_in_plane(const accel_view *g, const emitter_view *e, float3 a, float3 b,
+                                  float3 c, float3 q, float3 n, float gap) {
+    if (emitter_traps(a, b, c, q, n, gap))
+        return 1;
+    const float3 nl = normalize(cross(b - a, c - a));
+    if (e->count > EMITTER_EXACT_MAX || !(fabs(dot(nl, n)) > TRAPPED_PARALLEL) ||
+        !(fabs(dot(q - a, nl)) < gap))
+        return 0;
+    for (uint j = 0u; j < e->count; ++j) {
+        float3 x, y, z;
+        emitter_vertices(g, e->tris[j], &x, &y, &z);
+        if (fabs(dot(x - a, nl)) < 1e-3f * gap && emitter_traps(x, y, z, q, n, gap))
+            return 1;
+    }
+    return 0;
 }
 
 /* The light trapped in such a gap leaves through its rim: the surface over
@@ -223,7 +249,7 @@ inline float3 gap_escape(const accel_view *g, const emitter_view *e,
     for (uint i = 0u; i < e->count; ++i) {
         float3 a, b, c;
         emitter_vertices(g, e->tris[i], &a, &b, &c);
-        if (emitter_traps(a, b, c, q, n, size))
+        if (emitter_traps_in_plane(g, e, a, b, c, q, n, size))
             traps[count++] = i;
     }
     if (count == 0u)
@@ -289,7 +315,7 @@ inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
         for (uint i = 0u; i < e->count; ++i) {
             float3 a, b, c;
             emitter_vertices(g, e->tris[i], &a, &b, &c);
-            if (emitter_traps(a, b, c, q, n, gap))
+            if (emitter_traps_in_plane(g, e, a, b, c, q, n, gap))
                 continue;
             for (uint side = 0u; side < 2u; ++side) {
                 float area;
@@ -306,17 +332,22 @@ inline float3 fragment_emitters(const accel_view *g, const emitter_view *e,
             emitter_sample(e, g, materials, tri_material, p, seed, s, &target, &tri);
         float3 a, b, c;
         emitter_vertices(g, tri, &a, &b, &c);
-        const int traps = emitter_traps(a, b, c, q, n, gap);
+        const int traps = emitter_traps_in_plane(g, e, a, b, c, q, n, gap);
         float seen = 0.0f;
-        if (reuse) {
+        /* what the shared fragment saw, where it took the sample as this
+         * one does: a fragment within a trap's gap and one beside it see
+         * the emitter differently */
+        if (reuse && ((shared->trapped >> s) & 1u) == (uint)traps) {
             seen = shared->seen[s];
         } else if (any(radiant != 0.0f) && !traps) {
             const float3 wq = normalize(target - q);
             const float3 up = lift_direction(n, wq);
             seen = (float)emitter_visible(g, q + up * lift, target);
         }
-        if (keep)
+        if (keep) {
             shared->seen[s] = seen;
+            shared->trapped = (shared->trapped & ~(1u << s)) | ((uint)traps << s);
+        }
         if (traps || all(radiant == 0.0f))
             continue;
         const float cos_n = dot(n, normalize(target - p));
@@ -458,9 +489,9 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
     uint surfaces = 0;
     float open_sides = 0.0f; /* the fragments' sides not hidden, in halves */
     /* lights and emitters keep apart: each has its own shared rays */
-    shared_rays lit = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0},
-                glow = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0},
-                rim = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0};
+    shared_rays lit = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0u, 0},
+                glow = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0u, 0},
+                rim = {(float3)(0.0f), (float3)(0.0f), {0}, 0u, 0u, 0};
     /* what leaves gaps under emitters (gap_escape), and the side it leaves on */
     float3 escape = (float3)(0.0f), escape_side = (float3)(0.0f);
     /* Each fragment weighs by its triangle's area inside the voxel, as the
@@ -513,7 +544,8 @@ __kernel void inject_direct(ACCEL_ARGS, LIGHT_BINS_ARGS, vct_volume_desc vol,
                 glow.valid = ev.samples <= SHARED_LIGHTS;
             }
             /* once per plane: the fragments of one surface share its rim */
-            const int same_rim = shared_plane(&rim, n, q, plane);
+            const int same_rim =
+                shared_plane(&rim, n, q, plane) || shared_plane(&rim, -n, q, plane);
             float3 out_side;
             const float3 out =
                 same_rim ? (float3)(0.0f)

@@ -5,9 +5,14 @@
  * bricks, the default, and directional ones, the path tracer, Whitted ray
  * trees, photon mapping) as it stands, with every triangle's winding
  * reversed, and with every other triangle's reversed (mixed, as real exports
- * are). Each copy must lie within 1% NRMSE of the original, with the same
- * mean within 1%. The path tracer and photon mapping are compared at the
- * same seed and sample (pass) count, so that only the winding differs. */
+ * are). Each copy must lie within 0.2% NRMSE of the original, with the
+ * same mean within 1%. The path tracer and photon mapping are compared at
+ * the same seed and sample (pass) count, so that only the winding differs.
+ * Measured: at most 5.3e-4 (thin fins, cone tracing, mixed). In the room
+ * lit by a lamp under its ceiling, cone tracing's voxels took the lamp's
+ * light on the ceiling by which fragment of a voxel traced first (a
+ * fragment beside the lamp's edge borrowed the trapped one's rays): 3.7e-3
+ * mixed, 0.0147 with the diffuse gather's picks, which aim at those voxels. */
 #include <math.h>
 #include <string.h>
 
@@ -81,7 +86,7 @@ static void check_scene(const char *name, vct_scene *s) {
             vct_error err = {0};
             REQUIRE_OK(vct_image_compare(&im, &ref, &e, &err), err);
             const double ratio = e.test_mean / e.reference_mean;
-            CHECK(e.reference_mean > 0.0 && e.nrmse < 0.01 && fabs(ratio - 1.0) < 0.01 &&
+            CHECK(e.reference_mean > 0.0 && e.nrmse < 0.002 && fabs(ratio - 1.0) < 0.01 &&
                       e.nonfinite == 0,
                   "%s, %s, %s: NRMSE %.4f, mean ratio %.4f against the original", name,
                   method_names[m], copy_names[c], e.nrmse, ratio);

@@ -7,7 +7,7 @@
 #include "accel/accel.h"
 #include "light/emitters.h"
 #include "frame/frame.h"
-#include "vct/parallel.h"
+#include "conetrace/gather_picks.h"
 #include "conetrace/vct_caustics.h"
 #include "conetrace/vct_indirect_filter.h"
 #include "conetrace/vct_relight.h"
@@ -359,10 +359,7 @@ typedef struct frame {
     cl_mem reflection;       /* glass reflections, when refraction and specular are planned */
     vct_scene_buffers scene; /* materials and lights, uploaded once per frame */
     vct_emitters emitters;   /* emissive triangles, sampled as lights */
-    /* the diffuse gather's picks (kernels/render/gather_picks.h): the leaf
-     * voxels' running sum of weights, with how many and their sum (0: none) */
-    cl_mem pick_cdf;
-    cl_uint pick_count, pick_total;
+    vct_gather_picks picks;  /* the diffuse gather's (kernels/render/gather_picks.h) */
     vct_cone_desc desc;
     cl_uint size[2];
 } frame;
@@ -397,60 +394,11 @@ static int gather_args(frame *f, cl_kernel k, const char *stage, int first, vct_
                           VCT_ARG(voxel_total_side, v->side), VCT_ARG(voxel_direct, direct),
                           VCT_ARG(voxel_direct_side, direct_side));
     /* without picks any buffer will do: none is read */
-    const cl_mem cdf = f->pick_cdf ? f->pick_cdf : v->keys;
+    const cl_mem cdf = f->picks.cdf ? f->picks.cdf : v->keys;
     if (rc == VCT_OK)
         rc = vct_set_args(err, stage, k, first + 15, 4, VCT_ARG(pick_cdf, cdf),
-                          VCT_ARG(voxel_keys, v->keys), VCT_ARG_OF(f->pick_count),
-                          VCT_ARG_OF(f->pick_total));
-    return rc;
-}
-
-/* The diffuse gather's picks (kernels/render/gather_picks.h): the leaf
- * voxels' weights by their direct light, and their running sum. Only where
- * the voxels that weigh anything (those at least PICK_FLOOR as bright as the
- * brightest) are few, at most one in PICK_HOT_VOXELS: a small patch far
- * brighter than the rest, which the cosine's rays rarely meet. Where they
- * are more (a sunlit floor, walls lit evenly) the cosine's rays meet them
- * often enough: picks cost a quarter more gather time there and changed no
- * suite scene's error by more than its noise (measured shares, 128^3: the
- * lamp room 0.6 %, the panel room 0.3 %, the spot gallery 2 %, the Cornell
- * box 16 %, the blinds 54 %). */
-#define PICK_HOT_VOXELS 100u
-static int gather_picks_build(frame *f, vct_error *err) {
-    const vct_voxels *v = f->v;
-    const cl_uint n = (cl_uint)v->info.voxels;
-    const cl_mem direct = v->bounces > 0 && v->direct_radiance ? v->direct_radiance : v->radiance;
-    if (n == 0)
-        return VCT_OK;
-    /* the weights' sum below 2^32; finer than 2^24 changes nothing */
-    const cl_uint peak_weight = 0xffffffffu / n < (1u << 24) ? 0xffffffffu / n : 1u << 24;
-    /* the brightest luminance's bits, and how many voxels weigh anything */
-    cl_mem peak =
-        vct_buffer_create(f->ctx, DIFFUSE_STAGE, "pick peak", 8, CL_MEM_READ_WRITE, NULL, err);
-    f->pick_cdf = peak ? vct_buffer_create(f->ctx, DIFFUSE_STAGE, "pick weights", 4 * (size_t)n,
-                                           CL_MEM_READ_WRITE, NULL, err)
-                       : NULL;
-    int rc = f->pick_cdf ? vct_buffer_fill_u32(f->ctx, DIFFUSE_STAGE, peak, 0, 2, err)
-                         : (int)err->status;
-    if (rc == VCT_OK)
-        rc = vct_run_kernel(f->ctx, f->program, "gather_pick_peak", DIFFUSE_STAGE,
-                            (n + VCT_PICK_SPAN - 1) / VCT_PICK_SPAN, err, 3,
-                            VCT_ARG(direct, direct), VCT_ARG(voxels, n), VCT_ARG_OF(peak));
-    if (rc == VCT_OK)
-        rc = vct_run_kernel(f->ctx, f->program, "gather_pick_weights", DIFFUSE_STAGE, n, err, 5,
-                            VCT_ARG(direct, direct), VCT_ARG(voxels, n), VCT_ARG_OF(peak),
-                            VCT_ARG_OF(peak_weight), VCT_ARG(weights, f->pick_cdf));
-    uint32_t hot = 0;
-    if (rc == VCT_OK)
-        rc = vct_buffer_read(f->ctx, DIFFUSE_STAGE, peak, 4, 4, &hot, err);
-    uint64_t total = 0;
-    if (rc == VCT_OK && hot > 0 && hot <= n / PICK_HOT_VOXELS)
-        rc = vct_scan_u32(f->ctx, f->pick_cdf, f->pick_cdf, n, 1, &total, err);
-    if (rc == VCT_OK && total > 0) {
-        f->pick_count = n;
-        f->pick_total = (cl_uint)total;
-    }
-    vct_buffer_release(f->ctx, peak);
+                          VCT_ARG(voxel_keys, v->keys), VCT_ARG(pick_count, f->picks.count),
+                          VCT_ARG(pick_total, f->picks.total));
     return rc;
 }
 
@@ -576,7 +524,9 @@ static int cone_pass(frame *f, const char *stage, const char *name, cl_mem list,
  * diffuse, those of every other pixel per axis and the rest filled in. */
 static int diffuse_pass(frame *f, cl_mem cones, cl_uint count, int sparse, int indirect,
                         vct_error *err) {
-    int rc = indirect ? gather_picks_build(f, err) : VCT_OK;
+    int rc = indirect
+                 ? vct_gather_picks_build(f->ctx, f->program, f->v, DIFFUSE_STAGE, &f->picks, err)
+                 : VCT_OK;
     if (rc == VCT_OK && !sparse)
         rc = cone_pass_with(f, DIFFUSE_STAGE, "vct_diffuse_cones", 1, cones, count, NULL, 0, err);
     if (rc != VCT_OK || !sparse)
@@ -743,7 +693,7 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
         rc = vct_frame_deliver(ctx, "vct image", image, err);
     vct_scene_buffers_release(ctx, &f.scene);
     vct_emitters_release(ctx, &f.emitters);
-    vct_buffer_release(ctx, f.pick_cdf);
+    vct_buffer_release(ctx, f.picks.cdf);
     vct_buffer_release(ctx, f.aov);
     vct_buffer_release(ctx, f.gbuf);
     vct_buffer_release(ctx, f.reflection);
