@@ -141,12 +141,15 @@ inline float3 pick_dir(const gather_picks *gp, const vct_cone_desc *c, float3 p,
     *v = pick_find(gp, i, k, seed);
     float3 axis, t, b;
     float cos_max;
-    if (!(pick_cone(c, gp->keys[*v], p, &axis, &cos_max) > 0.0f))
+    const float omega = pick_cone(c, gp->keys[*v], p, &axis, &cos_max);
+    if (!(omega > 0.0f))
         return (float3)(0.0f);
     const uint s1 = rng_hash(seed ^ 0x68e31da4u), s2 = rng_hash(s1);
-    const float u1 = (float)(s1 >> 8) * (1.0f / 16777216.0f);
-    const float cos_theta = 1.0f - u1 * (1.0f - cos_max);
-    const float sin_theta = sqrt(fmax(1.0f - cos_theta * cos_theta, 0.0f));
+    /* 1 - cos theta, uniform in [0, 1 - cos_max): from the solid angle, as
+     * 1 - cos_max itself cancels to 0 for a voxel far away */
+    const float below = (float)(s1 >> 8) * (1.0f / 16777216.0f) * (omega * (1.0f / 6.28318530718f));
+    const float cos_theta = 1.0f - below;
+    const float sin_theta = sqrt(fmax(below * (2.0f - below), 0.0f));
     const float2 cs = turn_cos_sin((float)(s2 >> 8) * (1.0f / 16777216.0f));
     basis_of(axis, &t, &b);
     return normalize(cos_theta * axis + sin_theta * (cs.x * t + cs.y * b));
