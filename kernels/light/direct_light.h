@@ -61,6 +61,8 @@ typedef struct direct_terms {
     /* What the shadow rays found: the lights (the first 32) that reach the
      * point, and how many emitter samples face it and how many it sees. */
     uint lights_seen, emitters_facing, emitters_seen;
+    /* the variance of the emitter samples' irradiance (its luminance) */
+    float emitter_variance;
 } direct_terms;
 
 /* The Phong lobe's part of a light's sample (normalised: (e + 2) / 2pi). */
@@ -96,7 +98,7 @@ inline int light_is_soft(__global const vct_light_desc *lights, uint i) {
 inline direct_terms direct_gather(const accel_view *g, __global const vct_light_desc *lights,
                                   uint light_count, float3 p, float3 n, int shadows, float3 r,
                                   float e, int skip_soft) {
-    direct_terms sum = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u};
+    direct_terms sum = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u, 0.0f};
     const float eps = surface_epsilon(g, p);
     for (uint i = 0; i < light_count; ++i) {
         if (skip_soft && light_is_soft(lights, i))

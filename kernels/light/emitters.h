@@ -210,7 +210,8 @@ inline float3 emitters_near_sum(const emitter_view *e, const accel_view *g,
  * taking its part (the pixel's mean is then the whole stratified sum).
  * The irradiance is the samples' unoccluded light (near triangles' exact)
  * times the share of their point weight that the shadow rays see; the lobe
- * takes the point weights of the seen samples. */
+ * takes the point weights of the seen samples. sum->emitter_variance gains
+ * the variance of the irradiance's luminance by that share's spread. */
 inline void direct_emitters_part(const accel_view *g, const emitter_view *e,
                                  __global const vct_material_desc *materials,
                                  __global const uint *tri_material, float3 p, float3 n, float3 r,
@@ -222,10 +223,15 @@ inline void direct_emitters_part(const accel_view *g, const emitter_view *e,
     const float3 o = p + n * surface_epsilon(g, p);
     const float inv = 1.0f / (float)((e->samples - first + stride - 1u) / stride);
     const int exact = e->count <= EMITTER_EXACT_MAX;
-    float3 unoccluded =
+    const float3 common =
         exact ? emitters_near_sum(e, g, materials, tri_material, p, n) / inv : (float3)(0.0f);
-    float weight = 0.0f, weight_seen = 0.0f;
+    /* per half of the samples (every other one): their part of the
+     * unoccluded light, their point weight and the weight seen */
+    float3 part[2] = {(float3)(0.0f), (float3)(0.0f)};
+    float weight[2] = {0.0f, 0.0f}, weight_seen[2] = {0.0f, 0.0f};
+    uint which = 1u;
     for (uint s = first; s < e->samples; s += stride) {
+        which ^= 1u;
         float3 q;
         uint tri;
         const float3 radiant = emitter_sample(e, g, materials, tri_material, p, seed, s, &q, &tri);
@@ -242,24 +248,35 @@ inline void direct_emitters_part(const accel_view *g, const emitter_view *e,
             const float3 near = emitter_near_light(g, materials, tri_material, tri, p, n, &area);
             is_near = near.x >= 0.0f;
             if (is_near && area > 0.0f) /* over the pick's probability */
-                unoccluded += near * (e->scale[emitter_index(e, seed, s)] / area);
+                part[which] += near * (e->scale[emitter_index(e, seed, s)] / area);
         }
         if (!facing)
             continue;
         const float3 point = radiant * cos_theta;
         const float w = point.x + point.y + point.z;
         if (!is_near)
-            unoccluded += point;
-        weight += w;
+            part[which] += point;
+        weight[which] += w;
         ++sum->emitters_facing;
         if (!emitter_visible(g, o, q))
             continue;
         ++sum->emitters_seen;
-        weight_seen += w;
+        weight_seen[which] += w;
         direct_add_lobe(sum, radiant * inv, cos_theta, wi, r, exponent);
     }
-    if (weight > 0.0f)
-        sum->irradiance += unoccluded * (inv * (weight_seen / weight));
+    const float all = weight[0] + weight[1];
+    if (all > 0.0f)
+        sum->irradiance +=
+            (common + part[0] + part[1]) * (inv * ((weight_seen[0] + weight_seen[1]) / all));
+    /* the variance of that by the halves' difference (each half an estimate
+     * of its own, stratified as the whole is): the mean of two estimates
+     * a and b varies by (a - b)^2 / 4 */
+    if (weight[0] > 0.0f && weight[1] > 0.0f) {
+        const float3 w = (float3)(0.2126f, 0.7152f, 0.0722f);
+        const float a = dot(common + 2.0f * part[0], w) * weight_seen[0] / weight[0],
+                    b = dot(common + 2.0f * part[1], w) * weight_seen[1] / weight[1];
+        sum->emitter_variance += 0.25f * (a - b) * (a - b) * inv * inv;
+    }
 }
 
 /* All of the stream's samples. */

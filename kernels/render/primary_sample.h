@@ -37,10 +37,11 @@
 
 /* What one camera ray found. */
 typedef struct primary_sample {
-    float3 radiance;   /* emission and direct light, through the throughput on the way */
-    float3 sampled;    /* the part of it from emitter samples: noise, not detail */
-    float3 throughput; /* of the dielectrics and mirrors on the way to the surface */
-    int found;         /* a surface other than a dielectric or mirror was reached */
+    float3 radiance;        /* emission and direct light, through the throughput on the way */
+    float3 sampled;         /* the part of it from emitter samples: noise, not detail */
+    float sampled_variance; /* of that part's luminance, from the samples' spread */
+    float3 throughput;      /* of the dielectrics and mirrors on the way to the surface */
+    int found;              /* a surface other than a dielectric or mirror was reached */
     float4 gpos, gnormal, gview, galbedo; /* the G-buffer's slots 0, 1, 2 and 4 */
     /* The Fresnel reflection of the first dielectric entered: (point,
      * weight.x), (normal, weight.y), (mirror direction, weight.z). */
@@ -76,6 +77,7 @@ inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_de
                                     float py, uint seed, uint part, uint parts) {
     primary_sample out;
     out.radiance = out.sampled = (float3)(0.0f);
+    out.sampled_variance = 0.0f;
     out.throughput = (float3)(1.0f);
     out.found = 0;
     out.gpos = out.gnormal = out.gview = out.galbedo = (float4)(0.0f);
@@ -154,11 +156,15 @@ inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_de
          * top half) would all take the same strata (the same of a quad's two
          * triangles), and an edge that one side of them sees alone would be
          * lit by those strata alone. */
-        direct_terms de = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u};
+        direct_terms de = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u, 0.0f};
         direct_emitters_part(&ps->g, &ps->e, ps->materials, ps->tri_material, p, n, r, e, seed,
                              rng_permute(part, parts, seed), parts, &de);
         out.sampled = out.throughput * direct_shade(&m, de, e);
         out.radiance += out.sampled;
+        const float reflect =
+            dot(out.throughput * diffuse_color(&m), (float3)(0.2126f, 0.7152f, 0.0722f)) *
+            VCT_INV_PI;
+        out.sampled_variance = reflect * reflect * de.emitter_variance;
         /* None, some or all of the emitter samples seen: an area light's
          * shadow edge. */
         const uint seen_class =

@@ -39,7 +39,8 @@
  * pixel's second surface (second_surface): its point and share of the
  * pixel's samples, its normal and material id (as bits), its albedo. AOVs, AOV_SLOTS
  * float4 per pixel when given: direct, indirect diffuse, specular, (open
- * fraction, the indirect light's variance, 0, 1), position and normal (w 1 where a
+ * fraction, the indirect light's variance, the variance of the direct light
+ * from emitter samples, 1), position and normal (w 1 where a
  * surface was found, else the slot stays 0), and the denoiser's albedo and
  * normal-depth guides (guide_write). Glass reflections, 3 float4
  * per pixel, when refraction and specular are both planned: (point,
@@ -209,6 +210,8 @@ __kernel void vct_primary(PRIMARY_ARGS, __global uint *keys) {
     image[pixel] = (float4)(s.radiance, 1.0f);
     if (aov) {
         aov[AOV_SLOTS * pixel] = (float4)(s.radiance, 1.0f);
+        /* z: the emitter samples' variance (the diffuse pass fills x, y) */
+        aov[AOV_SLOTS * pixel + 3u] = (float4)(0.0f, 0.0f, s.sampled_variance, 1.0f);
         aov[AOV_SLOTS * pixel + 4u] = (float4)(s.gpos.xyz, s.gnormal.w);
         aov[AOV_SLOTS * pixel + 5u] = s.gnormal;
     }
@@ -381,6 +384,7 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     int found = gbuf[GBUF_SLOTS * pixel + 1u].w != 0.0f; /* the centre's surface */
     int reflected = reflection && any(reflection[3u * pixel + 2u].xyz != 0.0f);
     float3 radiance = (float3)(0.0f), cover = (float3)(0.0f), rweight = (float3)(0.0f);
+    float sampled_variance = 0.0f;
     /* The albedo the cone passes shade with: the mean over the samples on
      * the kept surface's material, so that a texture's detail within the
      * pixel is averaged as a converged image averages it. */
@@ -407,6 +411,7 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
         const primary_sample t = primary_trace(&ps, &cam, px, py, id, s, n * n);
         guide_add(&guide, &t, materials, cam.position.xyz);
         radiance += t.radiance;
+        sampled_variance += t.sampled_variance;
         rweight += (float3)(t.rpos.w, t.rnormal.w, t.rdir.w);
         const float shade = sample_shade(&t);
         lo = fmin(lo, shade);
@@ -466,8 +471,12 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
         gbuf[GBUF_SLOTS * pixel + 5u] = (float4)(0.0f);
     }
     image[pixel] = (float4)(mean, 1.0f);
-    if (aov)
+    if (aov) {
         aov[AOV_SLOTS * pixel] = (float4)(mean, 1.0f);
+        /* the mean's: of the n x n samples, or none counted of the finer
+         * grid on a sharp edge, whose pixels the filter must keep */
+        aov[AOV_SLOTS * pixel + 3u].z = scale > 1u ? 0.0f : sampled_variance * inv * inv;
+    }
     if (reflection && reflected) {
         rweight *= inv;
         reflection[3u * pixel].w = rweight.x;
@@ -551,7 +560,7 @@ __kernel void vct_soft_shadows(CONE_POOLS, __global const uint *child, vct_cone_
     float3 r;
     const float e = direct_lobe(&g.m, g.wo, g.n, &r);
     const float3 origin = cone_origin(&cd, g.p, g.n);
-    direct_terms sum = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u};
+    direct_terms sum = {(float3)(0.0f), (float3)(0.0f), 0u, 0u, 0u, 0.0f};
     vct_cone_desc sd = cd;
     sd.march.x *= SOFT_STEP_SCALE;
     for (uint i = 0; i < light_count; ++i) {
@@ -629,8 +638,8 @@ inline void diffuse_write(__global float4 *image, __global float4 *aov, uint pix
         variance = keep * keep * variance + share * share * variance2;
     }
     pixel_add(image, aov, pixel, 1u, add);
-    if (aov)
-        aov[AOV_SLOTS * pixel + 3u] = (float4)(open, variance, 0.0f, 1.0f);
+    if (aov) /* z: the primary pass's */
+        aov[AOV_SLOTS * pixel + 3u] = (float4)(open, variance, aov[AOV_SLOTS * pixel + 3u].z, 1.0f);
 }
 
 #if (defined(VCT_INDIRECT) || defined(VCT_AO)) && !defined(VCT_SPARSE_DIFFUSE)

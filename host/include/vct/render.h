@@ -167,9 +167,12 @@ typedef struct vct_vct_options {
     /* The indirect diffuse light through this many of the denoiser's
      * passes (vct/denoise.h), guided by the first hit's albedo, normal and
      * depth and by each pixel's variance (vct_aovs.indirect_variance); the
-     * direct light and the specular cone are kept as they are. Over the
-     * scene suite 3 passes take the error as far down as 4 or 5 do. 0: not
-     * filtered. At most VCT_INDIRECT_PASSES_MAX. */
+     * direct light's part from emitter samples too (at most 3 passes, by
+     * the spread of the samples' two halves; exact light from punctual
+     * lights kept where the filter would move it more than that noise
+     * explains); the specular cone is kept as it is. Over the scene suite 3
+     * passes take the error as far down as 4 or 5 do. 0: not filtered. At
+     * most VCT_INDIRECT_PASSES_MAX. */
     uint32_t indirect_passes;
 } vct_vct_options;
 
@@ -183,7 +186,7 @@ typedef struct vct_vct_options {
 VCT_API vct_vct_options vct_vct_options_default(int width, int height);
 
 typedef struct vct_aovs {
-    vct_image direct;   /* direct light and emission */
+    vct_image direct;   /* direct light and emission (filtered as indirect_passes says) */
     vct_image indirect; /* indirect diffuse (or ambient light times AO) */
     vct_image specular; /* the specular cone */
     vct_image ao;       /* fraction of the hemisphere open within the AO distance */

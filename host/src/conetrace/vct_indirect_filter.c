@@ -2,8 +2,9 @@
  * interface: the frame read back, vct_denoise with the indirect light alone
  * and the guides of the surfaces it was gathered at, and the result written
  * into the frame again (a frame kept on the device, as the viewer's, shows
- * it too). */
+ * it too); and its direct light from emitter samples likewise, apart. */
 #include "conetrace/vct_indirect_filter.h"
+#include "denoise/denoise_parts.h"
 #include "frame/frame.h"
 #include "vct/denoise.h"
 
@@ -34,5 +35,29 @@ int vct_indirect_filter(vct_context *ctx, const vct_image *albedo, const vct_ima
     vct_image *all[] = {&frame, &filtered};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         vct_image_release(all[i]);
+    return rc;
+}
+
+int vct_direct_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
+                      const vct_image *variance, uint32_t passes, vct_image *direct,
+                      vct_error *err) {
+    const int width = direct->width, height = direct->height;
+    vct_denoise_options o = vct_denoise_options_default();
+    o.iterations = passes;
+    const vct_denoise_guides guides = {albedo, normal_depth, variance, NULL, 0};
+    vct_image frame = {0}, filtered = {0};
+    int rc = vct_denoise_direct(ctx, direct, &guides, &o, &filtered, err);
+    if (rc == VCT_OK)
+        rc = vct_image_read_device(ctx, STAGE, ctx->frame, width, height, &frame, err);
+    const size_t values = 4 * (size_t)width * height;
+    for (size_t i = 0; rc == VCT_OK && i < values; ++i)
+        if (i % 4 != 3) {
+            frame.rgba[i] += filtered.rgba[i] - direct->rgba[i];
+            direct->rgba[i] = filtered.rgba[i];
+        }
+    if (rc == VCT_OK)
+        rc = vct_buffer_write(ctx, STAGE, ctx->frame, 0, 4 * values, frame.rgba, err);
+    vct_image_release(&frame);
+    vct_image_release(&filtered);
     return rc;
 }

@@ -21,4 +21,12 @@ int vct_indirect_filter(vct_context *ctx, const vct_image *albedo, const vct_ima
                         const vct_image *variance, uint32_t passes, vct_image *indirect,
                         vct_error *err);
 
+/* The same for the frame's direct light (at most 3 passes), where emitters
+ * are sampled: `variance` the emitter samples' (0 where the light is exact,
+ * which each pixel keeps where the filter moved it by more than the noise
+ * around explains: a point light's shadow edge stays sharp). */
+int vct_direct_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
+                      const vct_image *variance, uint32_t passes, vct_image *direct,
+                      vct_error *err);
+
 #endif

@@ -546,19 +546,22 @@ static int diffuse_pass(frame *f, cl_mem cones, cl_uint count, int sparse, int i
 /* The AOV buffer (AOV_SLOTS float4 per pixel, kernels/render/vct_render.cl) split
  * into images: a slot's float4 as it is, or one of its components as grey. */
 #define AOV_SLOTS 8
-static int read_aovs(frame *f, vct_aovs *a, vct_error *err) {
+static int read_aovs(frame *f, vct_aovs *a, vct_image *direct_variance, vct_error *err) {
     const struct {
         vct_image *image;
         int slot, component; /* component -1: the whole float4 */
-    } outs[] = {{&a->direct, 0, -1}, {&a->indirect, 1, -1},     {&a->specular, 2, -1},
-                {&a->ao, 3, 0},      {&a->position, 4, -1},     {&a->normal, 5, -1},
-                {&a->albedo, 6, -1}, {&a->normal_depth, 7, -1}, {&a->indirect_variance, 3, 1}};
+    } outs[] = {{&a->direct, 0, -1},    {&a->indirect, 1, -1},     {&a->specular, 2, -1},
+                {&a->ao, 3, 0},         {&a->position, 4, -1},     {&a->normal, 5, -1},
+                {&a->albedo, 6, -1},    {&a->normal_depth, 7, -1}, {&a->indirect_variance, 3, 1},
+                {direct_variance, 3, 2}};
     const size_t pixels = (size_t)f->size[0] * f->size[1], bytes = 16 * AOV_SLOTS * pixels;
     float *raw = malloc(bytes);
     int rc = raw ? vct_buffer_read(f->ctx, "vct AOVs", f->aov, 0, bytes, raw, err)
                  : vct_fail(err, VCT_ERR_MEMORY, "vct AOVs: out of host memory");
     for (size_t i = 0; i < sizeof outs / sizeof outs[0] && rc == VCT_OK; ++i) {
         vct_image *im = outs[i].image;
+        if (!im)
+            continue;
         im->width = (int)f->size[0];
         im->height = (int)f->size[1];
         im->rgba = malloc(16 * pixels);
@@ -614,8 +617,10 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
     if (f.v)
         vct_cone_desc_make(f.v, &opt->cones, s->ambient, &f.desc);
     char own[256], options[320];
-    program_options(plan, vct_scene_emissive_triangles(s) > 0 && !plan->emitters_by_cones,
-                    opt->sparse_diffuse, f.v, &opt->cones, own, sizeof own);
+    /* emissive triangles sampled as lights (VCT_EMITTERS) */
+    const int emitters = vct_scene_emissive_triangles(s) > 0 && !plan->emitters_by_cones &&
+                         plan->on[VCT_EFFECT_DIRECT];
+    program_options(plan, emitters, opt->sparse_diffuse, f.v, &opt->cones, own, sizeof own);
     vct_accel_options_join(g, own, options, sizeof options);
     const size_t pixels = (size_t)opt->width * opt->height;
 
@@ -682,12 +687,19 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
     }
     /* the filter reads the indirect AOV and leaves it as the image holds it */
     vct_aovs for_filter = {0};
+    vct_image direct_variance = {0};
     if (rc == VCT_OK && (aovs || filter))
-        rc = read_aovs(&f, aovs ? aovs : &for_filter, err);
+        rc = read_aovs(&f, aovs ? aovs : &for_filter, filter && emitters ? &direct_variance : NULL,
+                       err);
     vct_aovs *kept = aovs ? aovs : &for_filter;
     if (rc == VCT_OK && filter)
         rc = vct_indirect_filter(ctx, &kept->albedo, &kept->normal_depth, &kept->indirect_variance,
                                  opt->indirect_passes, &kept->indirect, err);
+    /* the emitter samples' noise in the direct light, where there are any */
+    if (rc == VCT_OK && filter && emitters)
+        rc = vct_direct_filter(ctx, &kept->albedo, &kept->normal_depth, &direct_variance,
+                               opt->indirect_passes, &kept->direct, err);
+    vct_image_release(&direct_variance);
     vct_aovs_release(&for_filter);
     if (rc == VCT_OK)
         rc = vct_frame_deliver(ctx, "vct image", image, err);

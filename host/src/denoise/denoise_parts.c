@@ -83,6 +83,17 @@ static int variance_channel(const vct_image *v, int c, vct_image *out, vct_error
     return VCT_OK;
 }
 
+int vct_denoise_direct(vct_context *ctx, const vct_image *direct, const vct_denoise_guides *g,
+                       const vct_denoise_options *o, vct_image *out, vct_error *err) {
+    vct_denoise_options direct_options = *o;
+    if (direct_options.iterations > DIRECT_PASSES)
+        direct_options.iterations = DIRECT_PASSES;
+    const int rc = vct_denoise_whole(ctx, direct, g, &direct_options, out, err);
+    if (rc == VCT_OK && g->variance)
+        keep_unexplained(direct, g->variance, out);
+    return rc;
+}
+
 /* The direct part (color less g->indirect) and the indirect part filtered
  * apart, each with its own variance (g and b), and added again. */
 int vct_denoise_parts(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
@@ -104,13 +115,8 @@ int vct_denoise_parts(vct_context *ctx, const vct_image *color, const vct_denois
         direct.rgba[i] = i % 4 == 3 ? 1.0f : color->rgba[i] - g->indirect->rgba[i];
     vct_denoise_guides part = *g;
     part.variance = g->variance ? &var_direct : NULL;
-    vct_denoise_options direct_options = *o;
-    if (direct_options.iterations > DIRECT_PASSES)
-        direct_options.iterations = DIRECT_PASSES;
     if (rc == VCT_OK)
-        rc = vct_denoise_whole(ctx, &direct, &part, &direct_options, out, err);
-    if (rc == VCT_OK && g->variance)
-        keep_unexplained(&direct, &var_direct, out);
+        rc = vct_denoise_direct(ctx, &direct, &part, o, out, err);
     part.variance = g->variance ? &var_indirect : NULL;
     vct_denoise_options indirect_options = *o;
     indirect_options.sigma_luminance *= INDIRECT_SIGMA_SCALE;

@@ -13,6 +13,11 @@ int vct_denoise_check(const vct_image *color, const vct_denoise_guides *g,
  * unread. Inputs checked by the caller. */
 int vct_denoise_whole(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
                       const vct_denoise_options *o, vct_image *out, vct_error *err);
+/* Direct light through at most 3 passes with g's variance (in r), each
+ * pixel keeping its own value where the filter moved it by more than the
+ * noise around explains (a shadow's edge); g->indirect unread. */
+int vct_denoise_direct(vct_context *ctx, const vct_image *direct, const vct_denoise_guides *g,
+                       const vct_denoise_options *o, vct_image *out, vct_error *err);
 /* The direct part (color less g->indirect) and the indirect part filtered
  * apart and added again. */
 int vct_denoise_parts(vct_context *ctx, const vct_image *color, const vct_denoise_guides *g,
