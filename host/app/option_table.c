@@ -139,8 +139,8 @@ static const cli_option vct_rows[] = {
      "in from traced neighbours on the same surface)"},
     {"indirect-filter", 0, OPT_INDIRECT_FILTER, 1, "N",
      "the indirect diffuse light through N passes of the denoiser, guided by the first hit's "
-     "albedo, normal and depth and by the variance of its gather rays (default 3; 0: none; "
-     "--denoise: 5)"},
+     "albedo, normal and depth and by the variance of its gather rays, and the direct light's "
+     "emitter samples through up to 3 (default 3; 0: none; --denoise: 5)"},
     {"edge-samples", 0, OPT_EDGE_SAMPLES, 1, "N",
      "N x N camera rays at pixels on an edge (surface, material, hard shadow), shown as their "
      "mean; 2N x 2N where the shading on its two sides is four times apart, 4N x 4N on an "
