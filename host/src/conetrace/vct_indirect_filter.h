@@ -16,17 +16,13 @@ int vct_indirect_filter_reach(uint32_t passes);
  * of it ctx renders) in place, guided by the albedo and normal-depth images
  * of the surfaces it was gathered at (vct/denoise.h) and by its variance
  * (NULL: estimated from the image), and puts what the filter changed into
- * the frame. */
+ * the frame. Where `direct` is given (emitters are sampled), the direct
+ * light too, at most 3 passes, by `direct_variance` (the emitter samples';
+ * 0 where the light is exact, which each pixel keeps where the filter moved
+ * it by more than the noise around explains: a point light's shadow edge
+ * stays sharp). One read and one write of the frame for both. */
 int vct_indirect_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
                         const vct_image *variance, uint32_t passes, vct_image *indirect,
-                        vct_error *err);
-
-/* The same for the frame's direct light (at most 3 passes), where emitters
- * are sampled: `variance` the emitter samples' (0 where the light is exact,
- * which each pixel keeps where the filter moved it by more than the noise
- * around explains: a point light's shadow edge stays sharp). */
-int vct_direct_filter(vct_context *ctx, const vct_image *albedo, const vct_image *normal_depth,
-                      const vct_image *variance, uint32_t passes, vct_image *direct,
-                      vct_error *err);
+                        const vct_image *direct_variance, vct_image *direct, vct_error *err);
 
 #endif

@@ -692,13 +692,11 @@ vct_status vct_render_vct(vct_context *ctx, const vct_scene *s, const vct_accel 
         rc = read_aovs(&f, aovs ? aovs : &for_filter, filter && emitters ? &direct_variance : NULL,
                        err);
     vct_aovs *kept = aovs ? aovs : &for_filter;
+    /* and the emitter samples' noise in the direct light, where there are any */
     if (rc == VCT_OK && filter)
         rc = vct_indirect_filter(ctx, &kept->albedo, &kept->normal_depth, &kept->indirect_variance,
-                                 opt->indirect_passes, &kept->indirect, err);
-    /* the emitter samples' noise in the direct light, where there are any */
-    if (rc == VCT_OK && filter && emitters)
-        rc = vct_direct_filter(ctx, &kept->albedo, &kept->normal_depth, &direct_variance,
-                               opt->indirect_passes, &kept->direct, err);
+                                 opt->indirect_passes, &kept->indirect, &direct_variance,
+                                 emitters ? &kept->direct : NULL, err);
     vct_image_release(&direct_variance);
     vct_aovs_release(&for_filter);
     if (rc == VCT_OK)
