@@ -15,6 +15,7 @@
 #include "accel/bvh/bvh_walk.h"
 #include "accel/hit.h"
 #include "accel/ray_tri.h"
+#include "accel/ray_packet.h"
 #include "accel/ray_tri4.h"
 #include "scene/tri_normal.h"
 #include "vct_types.h"
@@ -25,6 +26,18 @@
 #include "accel/bvh/bvh_traverse.h"
 #else
 #include "accel/grid_traverse.h"
+#endif
+
+/* accel_trace_packet: the 4-wide BVH's own on CPU devices, else each ray
+ * alone (ray_packet.h). */
+#include "accel/bvh/bvh_packet.h"
+#if !(defined(VCT_PACKETS) && defined(VCT_ACCEL_BVH))
+inline void accel_trace_packet(const accel_view *g, ray_packet *r, int any_hit, hit_record *hits,
+                               int *found) {
+    for (uint k = 0; k < r->count; ++k)
+        found[k] = accel_trace(g, packet_org(r, k), packet_dir(r, k), r->tmin[k], r->tmax[k],
+                               any_hit, &hits[k]);
+}
 #endif
 
 /* Where a hit lies: position from barycentrics, unit geometric normal ng and

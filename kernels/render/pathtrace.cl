@@ -35,6 +35,38 @@ inline float pt_luminance(float3 c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
+/* Samples are taken PT_GROUP at a time: on CPU devices their camera rays,
+ * alike rays through one pixel, are traced as one packet. */
+#ifdef VCT_PACKETS
+#define PT_GROUP PACKET_RAYS
+#else
+#define PT_GROUP 1u
+#endif
+
+/* The camera rays of samples first .. first + n - 1 of pixel (x, y): each
+ * sample's random stream after its jitter, its direction and what it hits. */
+inline void pt_camera_rays(const accel_view *g, const vct_camera_desc *cam, uint x, uint y,
+                           uint seed, uint first, uint n, uint *rng, float3 *dir, hit_record *hit,
+                           int *found) {
+#ifdef VCT_PACKETS
+    ray_packet packet;
+    packet.count = n;
+#endif
+    for (uint k = 0; k < n; ++k) {
+        rng[k] = rng_start(seed, camera_pixel_id(cam, x, y), first + k);
+        const float jx = rng_next(&rng[k]), jy = rng_next(&rng[k]);
+        dir[k] = camera_ray_dir(cam, (float)x + jx, (float)camera_row(cam, y) + jy);
+#ifdef VCT_PACKETS
+        packet_set(&packet, k, cam->position.xyz, dir[k], 0.0f, INFINITY);
+#else
+        found[k] = accel_trace(g, cam->position.xyz, dir[k], 0.0f, INFINITY, 0, &hit[k]);
+#endif
+    }
+#ifdef VCT_PACKETS
+    accel_trace_packet(g, &packet, 0, hit, found);
+#endif
+}
+
 __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                         __global const vct_material_desc *materials,
                         __global const uint *tri_material, TEXTURE_ARGS,
@@ -55,90 +87,99 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
     exact_sum direct_r = sums[5], direct_g = sums[6], direct_b = sums[7], direct_l2 = sums[8],
               indirect_l2 = sums[9];
     uint dropped = 0;
-    for (uint s = 0; s < samples; ++s) {
-        uint rng = rng_start(seed, camera_pixel_id(&cam, x, y), sample_begin + s);
-        const float jx = rng_next(&rng), jy = rng_next(&rng);
-        float3 org = cam.position.xyz;
-        float3 dir = camera_ray_dir(&cam, (float)x + jx, (float)camera_row(&cam, y) + jy);
-        float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f), direct = (float3)(0.0f);
-        float prev_pdf = 0.0f; /* 0: camera ray or delta bounce, emission counts fully */
-        float3 prev_p = org;
-        /* max_depth surfaces gather light; one more ray leaves the last of
-         * them only to meet the emitter or sky its BSDF sample finds: the
-         * other half of that surface's multiple importance sampling, without
-         * which its next-event estimate alone fell short (a ceiling within 5
-         * cm of a panel a centimetre under it, at --max-depth 1: 0.17 of
-         * Lambert's formula) */
-        for (uint depth = 0; depth <= max_depth; ++depth) {
-            hit_record h;
-            if (!accel_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
-                radiance += throughput * ambient.xyz; /* the environment */
+    for (uint s0 = 0; s0 < samples; s0 += PT_GROUP) {
+        uint rngs[PT_GROUP];
+        float3 dirs[PT_GROUP];
+        hit_record firsts[PT_GROUP];
+        int found[PT_GROUP];
+        const uint group = min(samples - s0, PT_GROUP);
+        pt_camera_rays(&g, &cam, x, y, seed, sample_begin + s0, group, rngs, dirs, firsts, found);
+        for (uint s = 0; s < group; ++s) {
+            uint rng = rngs[s];
+            float3 org = cam.position.xyz;
+            float3 dir = dirs[s];
+            float3 throughput = (float3)(1.0f), radiance = (float3)(0.0f), direct = (float3)(0.0f);
+            float prev_pdf = 0.0f; /* 0: camera ray or delta bounce, emission counts fully */
+            float3 prev_p = org;
+            /* max_depth surfaces gather light; one more ray leaves the last of
+             * them only to meet the emitter or sky its BSDF sample finds: the
+             * other half of that surface's multiple importance sampling, without
+             * which its next-event estimate alone fell short (a ceiling within 5
+             * cm of a panel a centimetre under it, at --max-depth 1: 0.17 of
+             * Lambert's formula) */
+            for (uint depth = 0; depth <= max_depth; ++depth) {
+                hit_record h = firsts[s];
+                if (depth == 0 ? !found[s] : !accel_trace(&g, org, dir, 0.0f, INFINITY, 0, &h)) {
+                    radiance += throughput * ambient.xyz; /* the environment */
+                    if (depth == 0)
+                        direct = radiance;
+                    break;
+                }
+                float3 p, ng, n;
+                int front;
+                if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
+                    break;
+                const float3 wo = -dir;
+                vct_material_desc m = materials[tri_material[h.tri]];
+                m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
+                if (any(m.emission.xyz > 0.0f)) {
+                    float w = 1.0f;
+                    if (prev_pdf > 0.0f && emitter_count > 0) {
+                        const float3 d = p - prev_p;
+                        const float pdf_light = emitter_inv_area * dot(d, d) / fabs(dot(ng, dir));
+                        w = power_heuristic(prev_pdf, pdf_light);
+                    }
+                    radiance += throughput * m.emission.xyz * w;
+                    if (depth == 1 && prev_pdf > 0.0f) /* the first surface's light, BSDF-sampled */
+                        direct += throughput * m.emission.xyz * w;
+                }
+                if (depth == max_depth)
+                    break;
+                /* Next-event estimation (delta lobes cannot be lit this way). */
+                if (!bsdf_delta_only(&m)) {
+                    radiance +=
+                        throughput * nee_punctual(&g, lights, light_count, &m, p, n, wo, &rng);
+                    radiance += throughput * nee_emitters(&g, &em, materials, tri_material, &m, p,
+                                                          n, wo, 1, &rng);
+                }
                 if (depth == 0)
                     direct = radiance;
-                break;
-            }
-            float3 p, ng, n;
-            int front;
-            if (!surface_hit(&g, &h, dir, &p, &ng, &n, &front))
-                break;
-            const float3 wo = -dir;
-            vct_material_desc m = materials[tri_material[h.tri]];
-            m.albedo.xyz = texture_albedo(&tv, &m, h.tri, h.u, h.v);
-            if (any(m.emission.xyz > 0.0f)) {
-                float w = 1.0f;
-                if (prev_pdf > 0.0f && emitter_count > 0) {
-                    const float3 d = p - prev_p;
-                    const float pdf_light = emitter_inv_area * dot(d, d) / fabs(dot(ng, dir));
-                    w = power_heuristic(prev_pdf, pdf_light);
-                }
-                radiance += throughput * m.emission.xyz * w;
-                if (depth == 1 && prev_pdf > 0.0f) /* the first surface's light, BSDF-sampled */
-                    direct += throughput * m.emission.xyz * w;
-            }
-            if (depth == max_depth)
-                break;
-            /* Next-event estimation (delta lobes cannot be lit this way). */
-            if (!bsdf_delta_only(&m)) {
-                radiance += throughput * nee_punctual(&g, lights, light_count, &m, p, n, wo, &rng);
-                radiance += throughput *
-                            nee_emitters(&g, &em, materials, tri_material, &m, p, n, wo, 1, &rng);
-            }
-            if (depth == 0)
-                direct = radiance;
-            bsdf_sample bs;
-            const float u0 = rng_next(&rng), u1 = rng_next(&rng), u2 = rng_next(&rng);
-            if (!bsdf_sample_dir(&m, n, wo, front, u0, u1, u2, &bs))
-                break;
-            throughput *= bs.weight;
-            prev_pdf = bs.delta ? 0.0f : bs.pdf;
-            prev_p = p;
-            /* Leave the surface on the side the new direction points to. */
-            const float eps = surface_epsilon(&g, p);
-            org = p + (dot(bs.wi, n) > 0.0f ? n : -n) * eps;
-            dir = bs.wi;
-            if (depth + 1 >= RR_DEPTH) {
-                const float q = fmin(fmax(throughput.x, fmax(throughput.y, throughput.z)), 0.95f);
-                if (!(rng_next(&rng) < q))
+                bsdf_sample bs;
+                const float u0 = rng_next(&rng), u1 = rng_next(&rng), u2 = rng_next(&rng);
+                if (!bsdf_sample_dir(&m, n, wo, front, u0, u1, u2, &bs))
                     break;
-                throughput /= q;
+                throughput *= bs.weight;
+                prev_pdf = bs.delta ? 0.0f : bs.pdf;
+                prev_p = p;
+                /* Leave the surface on the side the new direction points to. */
+                const float eps = surface_epsilon(&g, p);
+                org = p + (dot(bs.wi, n) > 0.0f ? n : -n) * eps;
+                dir = bs.wi;
+                if (depth + 1 >= RR_DEPTH) {
+                    const float q =
+                        fmin(fmax(throughput.x, fmax(throughput.y, throughput.z)), 0.95f);
+                    if (!(rng_next(&rng) < q))
+                        break;
+                    throughput /= q;
+                }
             }
-        }
-        if (all(isfinite(radiance))) {
-            sum_r = exact_add(sum_r, exact_from_float(radiance.x));
-            sum_g = exact_add(sum_g, exact_from_float(radiance.y));
-            sum_b = exact_add(sum_b, exact_from_float(radiance.z));
+            if (all(isfinite(radiance))) {
+                sum_r = exact_add(sum_r, exact_from_float(radiance.x));
+                sum_g = exact_add(sum_g, exact_from_float(radiance.y));
+                sum_b = exact_add(sum_b, exact_from_float(radiance.z));
 #ifndef VCT_PT_COLOUR_ONLY
-            const float l = pt_luminance(radiance), ld = pt_luminance(direct),
-                        li = pt_luminance(radiance - direct);
-            sum_l2 = exact_add(sum_l2, exact_from_float(l * l));
-            direct_r = exact_add(direct_r, exact_from_float(direct.x));
-            direct_g = exact_add(direct_g, exact_from_float(direct.y));
-            direct_b = exact_add(direct_b, exact_from_float(direct.z));
-            direct_l2 = exact_add(direct_l2, exact_from_float(ld * ld));
-            indirect_l2 = exact_add(indirect_l2, exact_from_float(li * li));
+                const float l = pt_luminance(radiance), ld = pt_luminance(direct),
+                            li = pt_luminance(radiance - direct);
+                sum_l2 = exact_add(sum_l2, exact_from_float(l * l));
+                direct_r = exact_add(direct_r, exact_from_float(direct.x));
+                direct_g = exact_add(direct_g, exact_from_float(direct.y));
+                direct_b = exact_add(direct_b, exact_from_float(direct.z));
+                direct_l2 = exact_add(direct_l2, exact_from_float(ld * ld));
+                indirect_l2 = exact_add(indirect_l2, exact_from_float(li * li));
 #endif
-        } else {
-            ++dropped;
+            } else {
+                ++dropped;
+            }
         }
     }
     sums[0] = sum_r;

@@ -11,6 +11,7 @@
 #include "check.h"
 #include "mesh_gen.h"
 #include "ray_ref.h"
+#include "raytrace/ray_packets.h"
 
 static vct_scene *scene_of(const test_mesh *m) {
     vct_error err = {0};
@@ -133,12 +134,17 @@ static void check_watertight(vct_context *ctx, const test_mesh *m, const float c
         in[3] = out[3] = 0.0f;
         in[7] = out[7] = INFINITY;
     }
-    REQUIRE_OK(vct_trace_rays(ctx, g, rays, 2 * n, 0, hits, &err), err);
     uint32_t leaks = 0;
-    for (uint32_t i = 0; i < 2 * n; ++i)
-        leaks += !(hits[i].t > 0);
-    CHECK(leaks == 0, "%s: %u of %u rays through vertices and edges leaked", name, leaks, 2 * n);
-    printf("%s: %u rays through shared vertices and edges, %u leaks\n", name, 2 * n, leaks);
+    for (int packets = 0; packets < 2; ++packets) { /* one by one, then 16 to a packet */
+        REQUIRE_OK(
+            (packets ? vct_trace_ray_packets : vct_trace_rays)(ctx, g, rays, 2 * n, 0, hits, &err),
+            err);
+        for (uint32_t i = 0; i < 2 * n; ++i)
+            leaks += !(hits[i].t > 0);
+    }
+    CHECK(leaks == 0, "%s: %u of %u rays through vertices and edges leaked", name, leaks, 4 * n);
+    printf("%s: %u rays through shared vertices and edges, one by one and in packets, %u leaks\n",
+           name, 2 * n, leaks);
     free(rays);
     free(hits);
     vct_accel_release(g);

@@ -11,6 +11,7 @@
  * every vertex gives the hits of a rebuild. */
 #include "accel/accel.h"
 #include "ray_check.h"
+#include "raytrace/ray_packets.h"
 
 static void box_grow(float lo[3], float hi[3], const float *p) {
     for (int k = 0; k < 3; ++k) {
@@ -162,6 +163,97 @@ static void check_same_hits(vct_context *ctx, const vct_scene *s, const vct_acce
     free(hb);
 }
 
+/* Bundles of 16 alike rays, as packets take them: from one point towards
+ * nearby points of a random target (camera rays), and from nearby points
+ * towards one point, stopping short of it (shadow rays); every third
+ * bundle axis-parallel, with a lane or two turned away. */
+static float *ray_bundles(const vct_scene *s, uint32_t bundles, uint64_t seed) {
+    float *rays = malloc(32ull * 16 * bundles);
+    float ext = 0.0f;
+    for (int k = 0; k < 3; ++k)
+        ext = fmaxf(ext, s->bounds_max[k] - s->bounds_min[k]);
+    for (uint32_t b = 0; b < bundles; ++b) {
+        float from[3], to[3];
+        for (int k = 0; k < 3; ++k) {
+            const float e = s->bounds_max[k] - s->bounds_min[k];
+            from[k] = s->bounds_min[k] - 0.25f * e + 1.5f * e * check_randf(&seed);
+            to[k] = s->bounds_min[k] + e * check_randf(&seed);
+        }
+        if (b % 3 == 2) /* along an axis */
+            for (int k = 0; k < 3; ++k)
+                if (k != (int)(b / 3) % 3)
+                    to[k] = from[k];
+        const int shadow = b % 2;
+        for (uint32_t i = 0; i < 16; ++i) {
+            float *r = &rays[8 * (16 * b + i)], len = 0.0f;
+            for (int k = 0; k < 3; ++k) {
+                const float jitter =
+                    (b % 3 == 2 && i < 14) ? 0.0f : 0.02f * ext * (check_randf(&seed) - 0.5f);
+                r[k] = shadow ? from[k] + jitter : from[k];
+                r[4 + k] = shadow ? to[k] - r[k] : to[k] + jitter - from[k];
+            }
+            if (i == 7) /* a lane turned away */
+                for (int k = 0; k < 3; ++k)
+                    r[4 + k] = -r[4 + k];
+            for (int k = 0; k < 3; ++k)
+                len += r[4 + k] * r[4 + k];
+            if (!(len > 0.0f))
+                r[4] = 1.0f, len = 1.0f;
+            for (int k = 0; k < 3; ++k)
+                r[4 + k] /= sqrtf(len);
+            r[3] = 0.0f;
+            r[7] = shadow ? 0.999f * sqrtf(len) : INFINITY;
+        }
+    }
+    return rays;
+}
+
+/* Rays traced in packets (16 to a work-item) against the same rays traced
+ * one by one: the same closest hits bit for bit, the same blocked rays, on
+ * bundles of alike rays and on rays with nothing alike (random ones, a
+ * count that leaves the last packet partly empty). */
+static void check_packets(vct_context *ctx, const vct_scene *s, const vct_accel *a,
+                          const char *name) {
+    const uint32_t bundles = 160, n = 16 * bundles + 16 * 40 + 5;
+    float *rays = malloc(32ull * n), *bundled = ray_bundles(s, bundles, 91),
+          *loose = random_rays(s, n - 16 * bundles, 92);
+    memcpy(rays, bundled, 32ull * 16 * bundles);
+    memcpy(rays + 8 * 16 * bundles, loose, 32ull * (n - 16 * bundles));
+    vct_hit *one = malloc(sizeof *one * n), *packed = malloc(sizeof *packed * n);
+    vct_error err = {0};
+    uint32_t hits = 0, blocked = 0;
+    for (int any = 0; any < 2; ++any) {
+        REQUIRE_OK(vct_trace_rays(ctx, a, rays, n, any, one, &err), err);
+        REQUIRE_OK(vct_trace_ray_packets(ctx, a, rays, n, any, packed, &err), err);
+        uint32_t differ = 0;
+        for (uint32_t i = 0; i < n; ++i) {
+            const int same = any ? (one[i].t >= 0.0f) == (packed[i].t >= 0.0f)
+                                 : memcmp(&one[i], &packed[i], sizeof one[i]) == 0;
+            if (!same && differ++ < 3)
+                fprintf(stderr,
+                        "%s: ray %u (%s): one by one t=%.9g tri %u, in a packet t=%.9g tri %u\n",
+                        name, i, any ? "any hit" : "closest", one[i].t, one[i].triangle,
+                        packed[i].t, packed[i].triangle);
+            if (any)
+                blocked += one[i].t >= 0.0f;
+            else
+                hits += one[i].t >= 0.0f;
+        }
+        CHECK(differ == 0, "%s: %u of %u rays hit differently in packets (%s)", name, differ, n,
+              any ? "any hit" : "closest hit");
+    }
+    CHECK(hits > n / 20 && blocked > n / 20 && blocked < n,
+          "%s: %u closest and %u any hits of %u rays in packets: a weak test", name, hits, blocked,
+          n);
+    printf("%s: %u rays in packets, %u hits, %u blocked, the same one by one\n", name, n, hits,
+           blocked);
+    free(rays);
+    free(bundled);
+    free(loose);
+    free(one);
+    free(packed);
+}
+
 static const vct_accel_options bvh_options = {
     VCT_ACCEL_BVH, {0, 0, 0}, VCT_BVH_PLOC, VCT_BVH_LEVELS_AUTO};
 static const vct_accel_options linear_options = {
@@ -188,6 +280,7 @@ static void run_scene(vct_context *ctx, vct_scene *s, uint32_t rays, const char 
         check_structure(ctx, s, a, label);
         check_rays(ctx, s, a, rays, 42, label);
         check_same_hits(ctx, s, a, g, "as the grid", label);
+        check_packets(ctx, s, a, label);
         vct_accel_release(a);
     }
     vct_accel_release(g);
@@ -347,8 +440,13 @@ static void check_empty(vct_context *ctx) {
     REQUIRE_OK(vct_trace_rays(ctx, a, rays, n, 1, hits, &err), err);
     for (uint32_t i = 0; i < n; ++i)
         hit += hits[i].t >= 0.0f;
+    for (int any = 0; any < 2; ++any) {
+        REQUIRE_OK(vct_trace_ray_packets(ctx, a, rays, n, any, hits, &err), err);
+        for (uint32_t i = 0; i < n; ++i)
+            hit += hits[i].t >= 0.0f;
+    }
     CHECK(hit == 0, "empty scene: %u rays hit something", hit);
-    printf("empty scene: %u rays, no hits\n", 2 * n);
+    printf("empty scene: %u rays, no hits (one by one and in packets)\n", 4 * n);
     free(rays);
     free(hits);
     vct_accel_release(a);

@@ -5,6 +5,7 @@
  * continue one sample sequence, sums of the colour alone, and no NaN on adversarial geometry.
  * Bounds come from the measured spread of the samples. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -227,6 +228,29 @@ static void convergence_and_determinism(vct_context *ctx) {
     vct_image_release(&other);
     vct_image_release(&first);
     vct_image_release(&ref);
+    vct_scene_release(s);
+}
+
+/* Camera rays traced 16 to a packet (CPU devices) and one by one (the
+ * kernels built with VCT_PACKETS=0, as for GPUs): the same image bit for
+ * bit, with a sample count that leaves the last packet partly empty. */
+static void packets_change_nothing(vct_context *ctx) {
+    vct_scene *s = check_cornell_box();
+    vct_pathtrace_result r;
+    vct_image packed = trace(ctx, s, 24, 20, 37, 6, 11, &r);
+    setenv("VCT_PACKETS", "0", 1);
+    vct_context *plain = check_context();
+    vct_image one = trace(plain, s, 24, 20, 37, 6, 11, &r);
+    unsetenv("VCT_PACKETS");
+    vct_context_release(plain);
+    double sum = 0.0;
+    for (int i = 0; i < 4 * 24 * 20; ++i)
+        sum += packed.rgba[i];
+    CHECK(memcmp(packed.rgba, one.rgba, 16 * 24 * 20) == 0 && sum > 0.0,
+          "camera rays in packets change the image (sum %g)", sum);
+    printf("cornell 37 spp: the same image with camera rays in packets and one by one\n");
+    vct_image_release(&packed);
+    vct_image_release(&one);
     vct_scene_release(s);
 }
 
@@ -482,6 +506,7 @@ int main(void) {
     direct_and_indirect(ctx);
     open_scene_energy(ctx);
     convergence_and_determinism(ctx);
+    packets_change_nothing(ctx);
     adversarial(ctx);
     vct_context_release(ctx);
     return check_exit("test_pathtrace");

@@ -154,7 +154,7 @@ static char *load_one(const char *name, vct_error *err) {
     return NULL;
 }
 
-#define MAX_INCLUDES 32
+#define MAX_INCLUDES 64
 
 static int expand(text *out, const char *name, const char **seen, int *seen_n, int depth,
                   vct_error *err) {
@@ -162,7 +162,10 @@ static int expand(text *out, const char *name, const char **seen, int *seen_n, i
         if (strcmp(seen[i], name) == 0)
             return 1; /* each header once: they are include-guarded anyway */
     if (depth > 8 || *seen_n >= MAX_INCLUDES) {
-        vct_fail(err, VCT_ERR_INPUT, "kernels: includes nested too deep at %s", name);
+        vct_fail(err, VCT_ERR_INPUT,
+                 "kernels: %s is nested more than 8 includes deep or is the %dth header of one "
+                 "program (more than %d)",
+                 name, *seen_n + 1, MAX_INCLUDES);
         return 0;
     }
     char *src = load_one(name, err);

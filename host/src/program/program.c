@@ -111,6 +111,19 @@ static int device_has_fast_fma(cl_device_id device) {
     return (fp & CL_FP_FMA) && !(fp & CL_FP_SOFT_FLOAT);
 }
 
+/* Rays traced in packets (kernels/accel/ray_packet.h) on CPU devices, whose
+ * wide vector units take a packet's rays at once; VCT_PACKETS=0 builds the
+ * other variant (tests run both). The hits are the same either way. */
+static int device_wants_packets(cl_device_id device) {
+    const char *env = getenv("VCT_PACKETS");
+    if (env && strcmp(env, "0") == 0)
+        return 0;
+    cl_device_type type = 0;
+    if (clGetDeviceInfo(device, CL_DEVICE_TYPE, sizeof type, &type, NULL) != CL_SUCCESS)
+        return 0;
+    return (type & CL_DEVICE_TYPE_CPU) != 0;
+}
+
 static void store_cached(cl_program p, const char *path) {
     size_t size = 0;
     if (clGetProgramInfo(p, CL_PROGRAM_BINARY_SIZES, sizeof size, &size, NULL) != CL_SUCCESS ||
@@ -198,8 +211,9 @@ int vct_program_get(vct_context *ctx, const char *file, const char *options, cl_
                         file, VCT_MAX_PROGRAMS + 1);
 
     char full_options[1024];
-    snprintf(full_options, sizeof full_options, "-cl-std=CL1.2%s%s %s",
+    snprintf(full_options, sizeof full_options, "-cl-std=CL1.2%s%s%s %s",
              device_has_fast_fma(ctx->device) ? " -DVCT_FAST_FMA" : "",
+             device_wants_packets(ctx->device) ? " -DVCT_PACKETS" : "",
              vct_args_checked() ? " -cl-kernel-arg-info" : "", options ? options : "");
     char *source = vct_kernel_source_expand(file, err);
     if (!source)

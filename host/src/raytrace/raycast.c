@@ -6,10 +6,13 @@
 #include "runtime/runtime.h"
 #include "accel/accel.h"
 #include "frame/shaded_frame.h"
+#include "raytrace/ray_packets.h"
 #include "raytrace/whitted_as.h"
 
-vct_status vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint32_t n,
-                          int any_hit, vct_hit *hits, vct_error *err) {
+/* Hits of n rays by `kernel`, each work-item tracing `per_item` of them. */
+static vct_status trace_rays_by(vct_context *ctx, const vct_accel *g, const char *kernel,
+                                uint32_t per_item, const float *rays, uint32_t n, int any_hit,
+                                vct_hit *hits, vct_error *err) {
     const char *stage = any_hit ? "trace rays (any hit)" : "trace rays";
     if (n == 0)
         return VCT_OK;
@@ -20,7 +23,7 @@ vct_status vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *ray
     cl_mem rb = vct_buffer_create(ctx, stage, "rays", 32ull * n, CL_MEM_READ_ONLY, rays, err);
     cl_mem hb =
         rb ? vct_buffer_create(ctx, stage, "hits", 16ull * n, CL_MEM_WRITE_ONLY, NULL, err) : NULL;
-    cl_kernel k = hb ? vct_kernel_create(ctx, p, "trace_rays", err) : NULL;
+    cl_kernel k = hb ? vct_kernel_create(ctx, p, kernel, err) : NULL;
     rc = k ? vct_accel_set_args(k, g, stage, err) : (int)err->status;
     cl_uint any = any_hit != 0;
     if (rc == VCT_OK)
@@ -28,7 +31,7 @@ vct_status vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *ray
                           VCT_ARG(any_hit, any), VCT_ARG(hits, hb));
     if (rc == VCT_OK) {
         vct_stage_begin(ctx, stage);
-        rc = vct_launch(ctx, k, n, 64, err);
+        rc = vct_launch(ctx, k, (n + per_item - 1) / per_item, 64, err);
         vct_stage_end(ctx);
     }
     float *raw = rc == VCT_OK ? malloc(16ull * n) : NULL;
@@ -50,6 +53,16 @@ vct_status vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *ray
     vct_buffer_release(ctx, hb);
     vct_buffer_release(ctx, rb);
     return rc;
+}
+
+vct_status vct_trace_rays(vct_context *ctx, const vct_accel *g, const float *rays, uint32_t n,
+                          int any_hit, vct_hit *hits, vct_error *err) {
+    return trace_rays_by(ctx, g, "trace_rays", 1, rays, n, any_hit, hits, err);
+}
+
+vct_status vct_trace_ray_packets(vct_context *ctx, const vct_accel *g, const float *rays,
+                                 uint32_t n, int any_hit, vct_hit *hits, vct_error *err) {
+    return trace_rays_by(ctx, g, "trace_ray_packets", VCT_PACKET_RAYS, rays, n, any_hit, hits, err);
 }
 
 vct_status vct_render_raycast(vct_context *ctx, const vct_scene *s, const vct_accel *g,
