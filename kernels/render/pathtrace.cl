@@ -35,36 +35,18 @@ inline float pt_luminance(float3 c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
-/* Samples are taken PT_GROUP at a time: on CPU devices their camera rays,
- * alike rays through one pixel, are traced as one packet. */
-#ifdef VCT_PACKETS
-#define PT_GROUP PACKET_RAYS
-#else
-#define PT_GROUP 1u
-#endif
-
-/* The camera rays of samples first .. first + n - 1 of pixel (x, y): each
- * sample's random stream after its jitter, its direction and what it hits. */
+/* The camera rays of samples first .. first + n - 1 (n <= ACCEL_GROUP) of
+ * pixel (x, y), traced together (a packet on CPU devices): each sample's
+ * random stream after its jitter, its direction and what it hits. */
 inline void pt_camera_rays(const accel_view *g, const vct_camera_desc *cam, uint x, uint y,
                            uint seed, uint first, uint n, uint *rng, float3 *dir, hit_record *hit,
                            int *found) {
-#ifdef VCT_PACKETS
-    ray_packet packet;
-    packet.count = n;
-#endif
     for (uint k = 0; k < n; ++k) {
         rng[k] = rng_start(seed, camera_pixel_id(cam, x, y), first + k);
         const float jx = rng_next(&rng[k]), jy = rng_next(&rng[k]);
         dir[k] = camera_ray_dir(cam, (float)x + jx, (float)camera_row(cam, y) + jy);
-#ifdef VCT_PACKETS
-        packet_set(&packet, k, cam->position.xyz, dir[k], 0.0f, INFINITY);
-#else
-        found[k] = accel_trace(g, cam->position.xyz, dir[k], 0.0f, INFINITY, 0, &hit[k]);
-#endif
     }
-#ifdef VCT_PACKETS
-    accel_trace_packet(g, &packet, 0, hit, found);
-#endif
+    accel_trace_from(g, cam->position.xyz, dir, n, hit, found);
 }
 
 __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
@@ -87,12 +69,12 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
     exact_sum direct_r = sums[5], direct_g = sums[6], direct_b = sums[7], direct_l2 = sums[8],
               indirect_l2 = sums[9];
     uint dropped = 0;
-    for (uint s0 = 0; s0 < samples; s0 += PT_GROUP) {
-        uint rngs[PT_GROUP];
-        float3 dirs[PT_GROUP];
-        hit_record firsts[PT_GROUP];
-        int found[PT_GROUP];
-        const uint group = min(samples - s0, PT_GROUP);
+    for (uint s0 = 0; s0 < samples; s0 += ACCEL_GROUP) {
+        uint rngs[ACCEL_GROUP];
+        float3 dirs[ACCEL_GROUP];
+        hit_record firsts[ACCEL_GROUP];
+        int found[ACCEL_GROUP];
+        const uint group = min(samples - s0, ACCEL_GROUP);
         pt_camera_rays(&g, &cam, x, y, seed, sample_begin + s0, group, rngs, dirs, firsts, found);
         for (uint s = 0; s < group; ++s) {
             uint rng = rngs[s];

@@ -70,11 +70,12 @@ inline float3 direct_shade(const vct_material_desc *m, direct_terms d, float e) 
     return out;
 }
 
-/* The camera ray through (px, py) in the whole image's pixel coordinates;
+/* The camera ray along dir, which meets `first` (where first_found);
  * seed keys the pixel's emitter samples, of which the ray takes those from
  * `part` on, every `parts` (light/emitters.h). */
-inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_desc *cam, float px,
-                                    float py, uint seed, uint part, uint parts) {
+inline primary_sample primary_trace_hit(const shading_scene *ps, const vct_camera_desc *cam,
+                                        float3 dir, hit_record first, int first_found, uint seed,
+                                        uint part, uint parts) {
     primary_sample out;
     out.radiance = out.sampled = (float3)(0.0f);
     out.sampled_variance = 0.0f;
@@ -83,11 +84,11 @@ inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_de
     out.gpos = out.gnormal = out.gview = out.galbedo = (float4)(0.0f);
     out.rpos = out.rnormal = out.rdir = (float4)(0.0f);
     out.key = 0x9e3779b9u;
-    float3 org = cam->position.xyz, dir = camera_ray_dir(cam, px, py);
+    float3 org = cam->position.xyz;
     int reflected = 0;
     for (uint depth = 0; depth < VCT_MAX_INTERFACES; ++depth) {
-        hit_record h;
-        if (!accel_trace(&ps->g, org, dir, 0.0f, INFINITY, 0, &h)) {
+        hit_record h = first;
+        if (depth == 0 ? !first_found : !accel_trace(&ps->g, org, dir, 0.0f, INFINITY, 0, &h)) {
             out.radiance += out.throughput * ps->ambient;
             out.key = rng_hash(out.key ^ 0xFFFFFFFFu);
             break;
@@ -182,6 +183,16 @@ inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_de
         break;
     }
     return out;
+}
+
+/* primary_trace_hit for the camera ray through (px, py) in the whole
+ * image's pixel coordinates, traced alone. */
+inline primary_sample primary_trace(const shading_scene *ps, const vct_camera_desc *cam, float px,
+                                    float py, uint seed, uint part, uint parts) {
+    const float3 dir = camera_ray_dir(cam, px, py);
+    hit_record h;
+    const int found = accel_trace(&ps->g, cam->position.xyz, dir, 0.0f, INFINITY, 0, &h);
+    return primary_trace_hit(ps, cam, dir, h, found, seed, part, parts);
 }
 
 #endif

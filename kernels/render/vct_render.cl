@@ -323,13 +323,22 @@ inline float3 sharp_edge_radiance(const shading_scene *ps, const vct_camera_desc
      * m^2 x m^2 grid of its own, their places within the cells shuffled per
      * column and per row (correlated multi-jittered sampling without the
      * jitter): an emitter's corner is met as finely as its edges. */
-    for (uint s = 0; s < m * m; ++s) {
-        const uint i = s % m, j = s / m;
-        const uint sx = rng_permute(j, m, 0x68bc21ebu ^ i), sy = rng_permute(i, m, 0x02e5be93u ^ j);
-        sum +=
-            primary_trace(ps, cam, (float)x + ((float)(i * m + sx) + 0.5f) / (float)(m * m),
-                          (float)row + ((float)(j * m + sy) + 0.5f) / (float)(m * m), id, s, m * m)
-                .radiance;
+    for (uint s0 = 0; s0 < m * m; s0 += ACCEL_GROUP) {
+        const uint group = min(m * m - s0, ACCEL_GROUP);
+        float3 dirs[ACCEL_GROUP];
+        hit_record firsts[ACCEL_GROUP];
+        int found[ACCEL_GROUP];
+        for (uint k = 0; k < group; ++k) {
+            const uint s = s0 + k, i = s % m, j = s / m;
+            const uint sx = rng_permute(j, m, 0x68bc21ebu ^ i),
+                       sy = rng_permute(i, m, 0x02e5be93u ^ j);
+            dirs[k] = camera_ray_dir(cam, (float)x + ((float)(i * m + sx) + 0.5f) / (float)(m * m),
+                                     (float)row + ((float)(j * m + sy) + 0.5f) / (float)(m * m));
+        }
+        accel_trace_from(&ps->g, cam->position.xyz, dirs, group, firsts, found); /* a packet */
+        for (uint k = 0; k < group; ++k)
+            sum += primary_trace_hit(ps, cam, dirs[k], firsts[k], found[k], id, s0 + k, m * m)
+                       .radiance;
     }
     return sum / (float)(m * m);
 }
@@ -400,15 +409,27 @@ __kernel void vct_primary_refine(PRIMARY_ARGS, __global const uchar *flags, uint
     /* the samples' own contrast: an edge of high contrast between the centres */
     float lo = INFINITY, hi = 0.0f;
     guide_sum guide = {(float3)(0.0f), (float3)(0.0f), 0.0f, 0u, 0u};
+    float3 dirs[ACCEL_GROUP];
+    hit_record firsts[ACCEL_GROUP];
+    int first_found[ACCEL_GROUP];
     for (uint s = 0; s < n * n; ++s) {
-        /* Cell (i, j) of the n x n grid, and within it the sub-cell (j, i)
-         * of an n x n grid of its own: every ray on its own column and row
-         * of the n^2 x n^2 grid, so that an edge along a pixel row or
-         * column is met in n^2 steps, not n. */
-        const uint i = s % n, j = s / n;
-        const float px = (float)x + ((float)(i * n + j) + 0.5f) / (float)(n * n);
-        const float py = (float)row + ((float)(j * n + i) + 0.5f) / (float)(n * n);
-        const primary_sample t = primary_trace(&ps, &cam, px, py, id, s, n * n);
+        const uint k = s % ACCEL_GROUP;
+        if (k == 0u) { /* the next group's camera rays, traced together (a packet) */
+            for (uint q = 0; q < min(n * n - s, ACCEL_GROUP); ++q) {
+                /* Cell (i, j) of the n x n grid, and within it the sub-cell
+                 * (j, i) of an n x n grid of its own: every ray on its own
+                 * column and row of the n^2 x n^2 grid, so that an edge
+                 * along a pixel row or column is met in n^2 steps, not n. */
+                const uint i = (s + q) % n, j = (s + q) / n;
+                dirs[q] =
+                    camera_ray_dir(&cam, (float)x + ((float)(i * n + j) + 0.5f) / (float)(n * n),
+                                   (float)row + ((float)(j * n + i) + 0.5f) / (float)(n * n));
+            }
+            accel_trace_from(&ps.g, cam.position.xyz, dirs, min(n * n - s, ACCEL_GROUP), firsts,
+                             first_found);
+        }
+        const primary_sample t =
+            primary_trace_hit(&ps, &cam, dirs[k], firsts[k], first_found[k], id, s, n * n);
         guide_add(&guide, &t, materials, cam.position.xyz);
         radiance += t.radiance;
         sampled_variance += t.sampled_variance;
