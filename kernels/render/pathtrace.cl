@@ -69,6 +69,7 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
     exact_sum direct_r = sums[5], direct_g = sums[6], direct_b = sums[7], direct_l2 = sums[8],
               indirect_l2 = sums[9];
     uint dropped = 0;
+    const int lit_by_rays = emitter_count > 0 || any(ambient.xyz != 0.0f);
     for (uint s0 = 0; s0 < samples; s0 += ACCEL_GROUP) {
         uint rngs[ACCEL_GROUP];
         float3 dirs[ACCEL_GROUP];
@@ -126,6 +127,10 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                 }
                 if (depth == 0)
                     direct = radiance;
+                /* the last surface's BSDF sample looks for emitters and the
+                 * sky alone: where the scene has neither, it finds nothing */
+                if (depth + 1 == max_depth && !lit_by_rays)
+                    break;
                 bsdf_sample bs;
                 const float u0 = rng_next(&rng), u1 = rng_next(&rng), u2 = rng_next(&rng);
                 if (!bsdf_sample_dir(&m, n, wo, front, u0, u1, u2, &bs))

@@ -197,6 +197,34 @@ static void open_scene_energy(vct_context *ctx) {
     vct_scene_release(s);
 }
 
+/* An open plane under a sky and no light: its light comes from the BSDF
+ * rays that escape, each of them the sky times the albedo, so every pixel
+ * is exactly that at depth 1 (the last surface's BSDF ray) and deeper. */
+static void sky_only_plane(vct_context *ctx) {
+    const float p[] = {-50, 0, -50, 50, 0, -50, 50, 0, 50, -50, 0, 50};
+    const uint32_t t[] = {0, 1, 2, 0, 2, 3}, mats[2] = {0, 0};
+    vct_material m = vct_material_default();
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.5f;
+    vct_error err = {0};
+    vct_scene *s = vct_scene_from_arrays(p, 4, t, 2, mats, &m, 1, &err);
+    REQUIRE_OK(s ? VCT_OK : err.status, err);
+    s->camera = (vct_camera){{0.3f, 6.0f, 6.0f}, {0, 0, 0}, {0, 1, 0}, 40.0f};
+    const float sky[3] = {0.2f, 0.3f, 0.4f};
+    memcpy(s->ambient, sky, sizeof sky);
+    for (uint32_t depth = 1; depth <= 3; depth += 2) {
+        vct_pathtrace_result r;
+        vct_image im = trace(ctx, s, 16, 12, 4, depth, 3, &r);
+        double worst = 0;
+        for (int i = 0; i < 16 * 12; ++i)
+            for (int c = 0; c < 3; ++c)
+                worst = fmax(worst, fabs(im.rgba[4 * i + c] - 0.5 * sky[c]));
+        CHECK(worst < 1e-6, "plane under a sky, depth %u: off albedo x sky by %.3g", depth, worst);
+        printf("plane under a sky, depth %u: albedo x sky within %.2g\n", depth, worst);
+        vct_image_release(&im);
+    }
+    vct_scene_release(s);
+}
+
 static void convergence_and_determinism(vct_context *ctx) {
     vct_scene *s = check_cornell_box();
     vct_pathtrace_result r;
@@ -505,6 +533,7 @@ int main(void) {
     direct_matches_raycast(ctx);
     direct_and_indirect(ctx);
     open_scene_energy(ctx);
+    sky_only_plane(ctx);
     convergence_and_determinism(ctx);
     packets_change_nothing(ctx);
     adversarial(ctx);

@@ -38,7 +38,7 @@ vct_pathtrace_options vct_pathtrace_options_default(int width, int height) {
     o.height = height;
     o.spp = 64;
     o.max_depth = 16;
-    o.samples_per_pass = 8;
+    o.samples_per_pass = 16;
     return o;
 }
 
