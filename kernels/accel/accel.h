@@ -41,26 +41,17 @@ inline void accel_trace_packet(const accel_view *g, ray_packet *r, int any_hit, 
 #endif
 
 /* How many alike rays a method gathers before tracing them together: a
- * packet's worth where packets are traced at once, else one. */
-#ifdef VCT_PACKETS
+ * packet's worth (one ray where packets are not traced at once). */
 #define ACCEL_GROUP PACKET_RAYS
-#else
-#define ACCEL_GROUP 1u
-#endif
 
 /* Closest hits of n (at most PACKET_RAYS) rays from org along dirs[k]. */
 inline void accel_trace_from(const accel_view *g, float3 org, const float3 *dirs, uint n,
                              hit_record *hits, int *found) {
-#ifdef VCT_PACKETS
     ray_packet packet;
     packet.count = n;
     for (uint k = 0; k < n; ++k)
         packet_set(&packet, k, org, dirs[k], 0.0f, INFINITY);
     accel_trace_packet(g, &packet, 0, hits, found);
-#else /* no packet in private memory where none is traced */
-    for (uint k = 0; k < n; ++k)
-        found[k] = accel_trace(g, org, dirs[k], 0.0f, INFINITY, 0, &hits[k]);
-#endif
 }
 
 /* Where a hit lies: position from barycentrics, unit geometric normal ng and

@@ -10,7 +10,13 @@
 
 #include "accel/hit.h"
 
+/* Where packets are not traced at once, a packet is one ray: no arrays of
+ * 16 in private memory (GPU registers) that would hold one ray's numbers. */
+#ifdef VCT_PACKETS
 #define PACKET_RAYS 16u
+#else
+#define PACKET_RAYS 1u
+#endif
 
 /* Rays 0 .. count - 1 by component, as separate arrays so that a packet
  * loads each as one vector. */

@@ -52,25 +52,27 @@ __kernel void trace_rays(ACCEL_ARGS, __global const vct_ray_desc *rays, uint n, 
         hits[i] = (float4)(-1.0f, as_float(0xffffffffu), 0.0f, 0.0f);
 }
 
-/* The same, PACKET_RAYS consecutive rays to a work-item traced as one
- * packet (accel/ray_packet.h); an any-hit ray reports t 0 where blocked. */
+/* The same, TRACE_PACKET_SPAN consecutive rays to a work-item, traced in
+ * packets (accel/ray_packet.h: one packet of 16 on CPU devices, else one
+ * ray at a time); an any-hit ray reports t 0 where blocked. */
+#define TRACE_PACKET_SPAN 16u
 __kernel void trace_ray_packets(ACCEL_ARGS, __global const vct_ray_desc *rays, uint n, uint any_hit,
                                 __global vct_hit_desc *hits) {
-    const uint first = get_global_id(0) * PACKET_RAYS;
-    if (first >= n)
-        return;
+    const uint span = get_global_id(0) * TRACE_PACKET_SPAN;
     const accel_view g = ACCEL_VIEW();
-    ray_packet p;
-    p.count = min(n - first, PACKET_RAYS);
-    for (uint k = 0; k < p.count; ++k) {
-        const vct_ray_desc r = rays[first + k];
-        packet_set(&p, k, r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w);
+    for (uint first = span; first < min(n, span + TRACE_PACKET_SPAN); first += PACKET_RAYS) {
+        ray_packet p;
+        p.count = min(n - first, PACKET_RAYS);
+        for (uint k = 0; k < p.count; ++k) {
+            const vct_ray_desc r = rays[first + k];
+            packet_set(&p, k, r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w);
+        }
+        hit_record h[PACKET_RAYS];
+        int found[PACKET_RAYS];
+        accel_trace_packet(&g, &p, any_hit, h, found);
+        for (uint k = 0; k < p.count; ++k)
+            hits[first + k] = !found[k] ? (float4)(-1.0f, as_float(0xffffffffu), 0.0f, 0.0f)
+                              : any_hit ? (float4)(0.0f, as_float(0xffffffffu), 0.0f, 0.0f)
+                                        : (float4)(h[k].t, as_float(h[k].tri), h[k].u, h[k].v);
     }
-    hit_record h[PACKET_RAYS];
-    int found[PACKET_RAYS];
-    accel_trace_packet(&g, &p, any_hit, h, found);
-    for (uint k = 0; k < p.count; ++k)
-        hits[first + k] = !found[k] ? (float4)(-1.0f, as_float(0xffffffffu), 0.0f, 0.0f)
-                          : any_hit ? (float4)(0.0f, as_float(0xffffffffu), 0.0f, 0.0f)
-                                    : (float4)(h[k].t, as_float(h[k].tri), h[k].u, h[k].v);
 }
