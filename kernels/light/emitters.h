@@ -57,17 +57,18 @@ inline void emitter_vertices(const accel_view *g, uint t, float3 *a, float3 *b, 
     *c = v[2];
 }
 
-/* The emitter whose CDF interval holds u. */
+/* The emitter whose CDF interval holds u: the first whose CDF exceeds u
+ * (the last if none does). A search whose steps depend on the count alone,
+ * each a conditional move: a binary search's branches on the CDF went
+ * wrong half the time, a third of the path tracer's emitter sampling. */
 inline uint emitter_pick(const emitter_view *e, float u) {
-    uint lo = 0, hi = e->count - 1;
-    while (lo < hi) {
-        const uint mid = (lo + hi) / 2;
-        if (e->cdf[mid] <= u)
-            lo = mid + 1;
-        else
-            hi = mid;
+    uint base = 0u, n = e->count;
+    while (n > 1u) {
+        const uint step = n / 2u;
+        base = e->cdf[base + step] <= u ? base + step : base;
+        n -= step;
     }
-    return lo;
+    return min(base + (e->cdf[base] <= u ? 1u : 0u), e->count - 1u);
 }
 
 /* Which emitter sample s of stream `seed` picks (stratified over the CDF). */
