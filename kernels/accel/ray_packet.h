@@ -1,7 +1,7 @@
 /* A packet of up to PACKET_RAYS rays traced together (accel_trace_packet,
  * accel.h): rays that start near one another and run alike, such as a
- * pixel's camera rays or their shadow rays towards one light, visit the
- * same nodes and triangles. On CPU devices (VCT_PACKETS) the 4-wide BVH
+ * pixel's camera rays, visit the same nodes and triangles (rays that part
+ * early, such as shadow rays to points spread over a lamp, gain nothing). On CPU devices (VCT_PACKETS) the 4-wide BVH
  * meets all of them at once, one vector lane per ray (bvh/bvh_packet.h);
  * elsewhere, and on the other structures, each ray is traced alone. Either
  * way each ray gets exactly the hit accel_trace gives it. */

@@ -18,6 +18,9 @@
  * moments cost about a twentieth of the time on PoCL, and a render that no
  * denoiser reads needs none of them.
  *
+ * A pixel's samples are taken ACCEL_GROUP at a time, their camera rays
+ * traced together (a packet on CPU devices), each path then on its own.
+ *
  * max_depth: surface interactions per path (1 = direct light only). */
 #include "scene/bsdf.h"
 #include "scene/camera.h"

@@ -186,8 +186,9 @@ inline int16 packet_unmasked(__global const float4 *tri_vertices, uint slot, int
  * launch: 5 % slower in packets, at 4 as fast). */
 #define PACKET_MIN_RAYS 4u
 
-/* Hits of the packet's rays: found[k] and hits[k] for ray k < count; an
- * any-hit ray's record is left as it was. */
+/* Hits of the packet's rays: found[k] and hits[k] for ray k < count (an
+ * any-hit ray's record is not to be read). The lanes past the count are
+ * filled with copies of ray 0 that meet nothing. */
 __attribute__((noinline)) void accel_trace_packet(const accel_view *g, ray_packet *r, int any_hit,
                                                   hit_record *hits, int *found) {
     if (r->count < PACKET_MIN_RAYS) {
