@@ -98,12 +98,18 @@ static cl_program load_cached(vct_context *ctx, const char *path) {
     return p;
 }
 
+/* 1 where the environment variable `name` is "0": a kernel variant the
+ * device would get is turned off (tests build both). */
+static int turned_off(const char *name) {
+    const char *env = getenv(name);
+    return env && strcmp(env, "0") == 0;
+}
+
 /* fma in hardware, not in software: kernels may then fuse what they would
  * otherwise leave as a product and a sum (kernels/README.md, -D options).
- * VCT_FAST_FMA=0 builds the other variant (tests run both). */
+ * VCT_FAST_FMA=0 builds the other variant. */
 static int device_has_fast_fma(cl_device_id device) {
-    const char *env = getenv("VCT_FAST_FMA");
-    if (env && strcmp(env, "0") == 0)
+    if (turned_off("VCT_FAST_FMA"))
         return 0;
     cl_device_fp_config fp = 0;
     if (clGetDeviceInfo(device, CL_DEVICE_SINGLE_FP_CONFIG, sizeof fp, &fp, NULL) != CL_SUCCESS)
@@ -113,10 +119,9 @@ static int device_has_fast_fma(cl_device_id device) {
 
 /* Rays traced in packets (kernels/accel/ray_packet.h) on CPU devices, whose
  * wide vector units take a packet's rays at once; VCT_PACKETS=0 builds the
- * other variant (tests run both). The hits are the same either way. */
+ * other variant. The hits are the same either way. */
 static int device_wants_packets(cl_device_id device) {
-    const char *env = getenv("VCT_PACKETS");
-    if (env && strcmp(env, "0") == 0)
+    if (turned_off("VCT_PACKETS"))
         return 0;
     cl_device_type type = 0;
     if (clGetDeviceInfo(device, CL_DEVICE_TYPE, sizeof type, &type, NULL) != CL_SUCCESS)

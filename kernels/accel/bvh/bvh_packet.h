@@ -242,17 +242,11 @@ __attribute__((noinline)) void accel_trace_packet(const accel_view *g, ray_packe
                 bvh_order(&k0, &c0, &k2, &c2);
                 bvh_order(&k1, &c1, &k3, &c3);
                 bvh_order(&k1, &c1, &k2, &c2);
-                if (count > 3) {
-                    stack_ref[sp] = lane_geti(as_int4(refs), (int)c3);
-                    stack_t[sp++] = entry[c3];
-                }
-                if (count > 2) {
-                    stack_ref[sp] = lane_geti(as_int4(refs), (int)c2);
-                    stack_t[sp++] = entry[c2];
-                }
-                if (count > 1) {
-                    stack_ref[sp] = lane_geti(as_int4(refs), (int)c1);
-                    stack_t[sp++] = entry[c1];
+                /* the farther ones on the stack, farthest first */
+                const uint order[4] = {c0, c1, c2, c3};
+                for (int i = count - 1; i > 0; --i) {
+                    stack_ref[sp] = lane_geti(as_int4(refs), (int)order[i]);
+                    stack_t[sp++] = entry[order[i]];
                 }
                 ref = lane_geti(as_int4(refs), (int)c0);
                 cur = entry[c0];
