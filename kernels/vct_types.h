@@ -6,7 +6,7 @@
 
 /* The kernel interface's version: bumped whenever an entry point's
  * arguments, a buffer layout or the meaning of a -D option changes. */
-#define VCT_KERNEL_ABI_VERSION 27
+#define VCT_KERNEL_ABI_VERSION 28
 
 #ifdef __OPENCL_VERSION__
 typedef float4 vct_f4;

@@ -20,10 +20,12 @@ void cli_print_voxels(const cli_options *opt, const vct_voxels *v) {
     vct_brick_info b;
     vct_bricks_info_get(v, &b);
     fprintf(stderr, "voxels: %u^3, %u bricks, %s\n", info.resolution, b.bricks, b.storage_reason);
-    const double ratio = vct_voxels_bounce_ratio(v);
-    if (ratio > 0.0)
+    double r[3];
+    vct_voxels_bounce_ratios(v, r);
+    if (r[0] > 0.0 || r[1] > 0.0 || r[2] > 0.0)
         fprintf(stderr,
-                "voxel light: %d bounces, then the rest at the bounce ratio %.3f (x %.3f of "
-                "the last)\n",
-                opt->bounces, ratio, ratio / (1.0 - ratio));
+                "voxel light: %d bounces, then the rest at the bounce ratios %.3f %.3f %.3f "
+                "(red, green, blue: x %.3f %.3f %.3f of the last)\n",
+                opt->bounces, r[0], r[1], r[2], r[0] / (1.0 - r[0]), r[1] / (1.0 - r[1]),
+                r[2] / (1.0 - r[2]));
 }

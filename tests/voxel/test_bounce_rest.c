@@ -1,13 +1,15 @@
 /* The rest of the bounces (vct_voxels_bounce_rest, kernels/voxel/bounce_rest.cl)
- * in a closed box of albedo 0.5 lit by a point light inside:
+ * in a closed box lit by a point light inside:
  *  - against a plain-C reference on the light read back after injection and
- *    after each bounce: the ratio of the last two bounces' light summed over
- *    every voxel's two sides (at most the brightest albedo), and each
- *    side's light plus its last bounce's times r / (1 - r);
+ *    after each bounce: per colour channel, the ratio of the last two
+ *    bounces' light summed over every voxel's two sides (at most the
+ *    channel's brightest albedo), and each side's light plus its last
+ *    bounce's times r / (1 - r);
  *  - physically: in a closed room of one albedo, each bounce carries on all
- *    the light the one before it sent times the albedo, so the measured
- *    ratio must be near 0.5 (the cones lose some to their opacity and
- *    leave none: within 0.15);
+ *    the light the one before it sent times the albedo, channel by channel,
+ *    so the measured ratios must be near the albedo's (the rays lose some
+ *    and leave none: within 0.15), in a grey box (0.5) and in a coloured one
+ *    (0.8, 0.5, 0.2), whose red light lasts longest;
  *  - with exact_bounces, or after one bounce only, nothing is added. */
 #include <math.h>
 #include <stdlib.h>
@@ -17,6 +19,7 @@
 
 #define RES 32
 #define ALBEDO 0.5f
+static const float coloured[3] = {0.8f, 0.5f, 0.2f};
 
 static vct_context *ctx;
 
@@ -36,10 +39,6 @@ static voxel_light read_light(vct_voxels *v, uint32_t n) {
 static void light_free(voxel_light *l) {
     free(l->radiance);
     free(l->sides);
-}
-
-static double luminance(const double c[3]) {
-    return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
 }
 
 /* Voxel i's light on the side normal n points to and on the other. */
@@ -66,22 +65,24 @@ static void added(const voxel_light *after, const voxel_light *before, const flo
     }
 }
 
-static double bounce_light(const voxel_light *after, const voxel_light *before,
-                           const voxel_light *direct, uint32_t n) {
-    double total = 0.0;
+/* The light `after` added to `before` over every voxel's two sides, per
+ * channel. */
+static void bounce_light(const voxel_light *after, const voxel_light *before,
+                         const voxel_light *direct, uint32_t n, double total[3]) {
+    total[0] = total[1] = total[2] = 0.0;
     for (uint32_t i = 0; i < n; ++i) {
         double t[3], a[3];
         added(after, before, direct->sides + 8 * i + 4, i, t, a);
-        total += luminance(t) + luminance(a);
+        for (int k = 0; k < 3; ++k)
+            total[k] += t[k] + a[k];
     }
-    return total;
 }
 
 /* The closed box [2, 14]^3 facing in, a point light inside, and a plate
  * just under the light's height beside it: lit at a grazing angle from
  * above and, after the bounces, more from the floor below, so that its
  * voxels' brighter side turns from the direct light's. */
-static vct_scene *closed_box(void) {
+static vct_scene *closed_box(const float albedo[3]) {
     const float lo = 2.0f, hi = 14.0f;
     const float v[8][3] = {{lo, lo, lo}, {hi, lo, lo}, {hi, hi, lo}, {lo, hi, lo},
                            {lo, lo, hi}, {hi, lo, hi}, {hi, hi, hi}, {lo, hi, hi}};
@@ -99,7 +100,7 @@ static vct_scene *closed_box(void) {
     }
     vct_material m = vct_material_default();
     for (int c = 0; c < 3; ++c)
-        m.albedo[c] = ALBEDO;
+        m.albedo[c] = albedo[c];
     vct_error err = {0};
     vct_scene *s = vct_scene_from_arrays(pos, 28, tri, 14, mat, &m, 1, &err);
     REQUIRE_OK(s ? VCT_OK : err.status, err);
@@ -130,8 +131,8 @@ static void bounce(vct_scene *s, vct_accel *g, vct_voxels *v) {
     REQUIRE_OK(vct_voxels_inject_bounce(ctx, s, g, v, &cs, &err), err);
 }
 
-static void against_reference(void) {
-    vct_scene *s = closed_box();
+static void against_reference(const float albedo[3], const char *what) {
+    vct_scene *s = closed_box(albedo);
     vct_error err = {0};
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
@@ -145,21 +146,32 @@ static void against_reference(void) {
     REQUIRE_OK(vct_voxels_bounce_rest(ctx, v, &err), err);
     voxel_light still = read_light(v, n);
     CHECK(vct_voxels_bounce_ratio(v) == 0.0 && memcmp(still.radiance, one.radiance, 16ull * n) == 0,
-          "after one bounce the rest adds nothing (ratio %g)", vct_voxels_bounce_ratio(v));
+          "%s: after one bounce the rest adds nothing (ratio %g)", what,
+          vct_voxels_bounce_ratio(v));
     bounce(s, g, v);
     voxel_light two = read_light(v, n);
     REQUIRE_OK(vct_voxels_bounce_rest(ctx, v, &err), err);
     voxel_light rest = read_light(v, n);
 
-    const double e1 = bounce_light(&one, &direct, &direct, n),
-                 e2 = bounce_light(&two, &one, &direct, n);
-    /* at most the brightest albedo (the box's one) and VCT_BOUNCE_RATIO_MAX */
-    const double measured = e2 / e1, most = fmin(ALBEDO, VCT_BOUNCE_RATIO_MAX);
-    const double r = measured > most ? most : measured;
-    const double f = r / (1.0 - r), got_r = vct_voxels_bounce_ratio(v);
-    CHECK(fabs(got_r - r) < 1e-4 * r, "bounce ratio %.6f, the reference's %.6f", got_r, r);
+    double e1[3], e2[3], measured[3], r[3], f[3], got_r[3];
+    bounce_light(&one, &direct, &direct, n, e1);
+    bounce_light(&two, &one, &direct, n, e2);
+    vct_voxels_bounce_ratios(v, got_r);
+    for (int k = 0; k < 3; ++k) {
+        /* at most the channel's brightest albedo and VCT_BOUNCE_RATIO_MAX */
+        measured[k] = e2[k] / e1[k];
+        const double most = fmin(albedo[k], VCT_BOUNCE_RATIO_MAX);
+        r[k] = measured[k] > most ? most : measured[k];
+        f[k] = r[k] / (1.0 - r[k]);
+        CHECK(fabs(got_r[k] - r[k]) < 1e-4 * r[k],
+              "%s: channel %d's bounce ratio %.6f, the "
+              "reference's %.6f",
+              what, k, got_r[k], r[k]);
+    }
+    CHECK(vct_voxels_bounce_ratio(v) == fmax(got_r[0], fmax(got_r[1], got_r[2])),
+          "%s: the bounce ratio is not the largest channel's", what);
     int bad = 0, turned = 0;
-    double worst = 0.0, before_sum = 0.0, after_sum = 0.0;
+    double worst = 0.0;
     for (uint32_t i = 0; i < n; ++i) {
         const float *plane = direct.sides + 8 * i + 4;
         double t2[3], a2[3], dt[3], da[3], t[3], a[3];
@@ -167,7 +179,7 @@ static void against_reference(void) {
         added(&two, &one, plane, i, dt, da);
         sides_of(&rest, i, plane, t, a);
         for (int k = 0; k < 3; ++k) {
-            const double want_t = t2[k] + f * dt[k], want_a = a2[k] + f * da[k];
+            const double want_t = t2[k] + f[k] * dt[k], want_a = a2[k] + f[k] * da[k];
             const double off = fmax(fabs(t[k] - want_t), fabs(a[k] - want_a));
             const double scale = fmax(fmax(want_t, want_a), 1e-3);
             worst = fmax(worst, off / scale);
@@ -176,19 +188,20 @@ static void against_reference(void) {
         const float *up = rest.sides + 8 * i + 4;
         turned +=
             (double)up[0] * plane[0] + (double)up[1] * plane[1] + (double)up[2] * plane[2] < 0.0;
-        before_sum += luminance(t2) + luminance(a2);
-        after_sum += luminance(t) + luminance(a);
     }
     CHECK(bad == 0 && turned > 0,
-          "%d voxel sides off the reference's light plus the rest (worst %.2e); %d voxels whose "
-          "brighter side is no longer the direct light's",
-          bad, worst, turned);
-    /* A closed room of one albedo: the bounce ratio is the albedo. */
-    CHECK(fabs(measured - ALBEDO) < 0.15, "closed box of albedo %.2f: bounce ratio %.3f", ALBEDO,
-          measured);
-    printf("closed box, albedo %.2f: bounce ratio %.4f (measured %.4f, kernel %.4f), rest x %.3f "
-           "of the last bounce, %u voxels (%d turned), worst side %.1e, light %.4g -> %.4g\n",
-           ALBEDO, r, measured, got_r, f, n, turned, worst, before_sum, after_sum);
+          "%s: %d voxel sides off the reference's light plus the rest (worst %.2e); %d voxels "
+          "whose brighter side is no longer the direct light's",
+          what, bad, worst, turned);
+    /* A closed room of one albedo: each channel's bounce ratio is its albedo. */
+    for (int k = 0; k < 3; ++k)
+        CHECK(fabs(measured[k] - albedo[k]) < 0.15,
+              "%s: channel %d of albedo %.2f carries on %.3f of its light per bounce", what, k,
+              albedo[k], measured[k]);
+    printf("%s, albedo %.2f %.2f %.2f: bounce ratios %.4f %.4f %.4f (kernel %.4f %.4f %.4f), "
+           "rest x %.3f %.3f %.3f of the last bounce, %u voxels (%d turned), worst side %.1e\n",
+           what, albedo[0], albedo[1], albedo[2], r[0], r[1], r[2], got_r[0], got_r[1], got_r[2],
+           f[0], f[1], f[2], n, turned, worst);
     light_free(&direct);
     light_free(&one);
     light_free(&still);
@@ -196,6 +209,11 @@ static void against_reference(void) {
     light_free(&rest);
     vct_voxels_release(v);
 
+    if (albedo != coloured) { /* exact_bounces once */
+        vct_accel_release(g);
+        vct_scene_release(s);
+        return;
+    }
     /* exact_bounces: the same two bounces, nothing after them. */
     v = lit_voxels(s, g, 1);
     bounce(s, g, v);
@@ -238,23 +256,28 @@ static void hall_bounces_decay(void) {
     const uint32_t n = info.voxels;
     voxel_light light[4];
     light[0] = read_light(v, n);
-    double carried[3];
+    double carried[3][3];
     for (int b = 1; b <= 3; ++b) {
         bounce(s, a, v);
         light[b] = read_light(v, n);
-        carried[b - 1] = bounce_light(&light[b], &light[b - 1], &light[0], n);
+        bounce_light(&light[b], &light[b - 1], &light[0], n, carried[b - 1]);
     }
-    const double r2 = carried[1] / carried[0], r3 = carried[2] / carried[1];
-    CHECK(r2 <= 0.62 && r3 <= 0.62 && r3 > 0.0,
-          "long hall: the bounces carry on %.3f and %.3f of the light before them, more than the "
-          "brightest albedo 0.62",
-          r2, r3);
     REQUIRE_OK(vct_voxels_bounce_rest(ctx, v, &err), err);
-    CHECK(fabs(vct_voxels_bounce_ratio(v) - r3) < 1e-3 * r3,
-          "long hall: the kernel's bounce ratio %.4f, the last two bounces' %.4f",
-          vct_voxels_bounce_ratio(v), r3);
-    printf("long hall, %u voxels: the bounces carry on %.3f, then %.3f of the light before them\n",
-           n, r2, r3);
+    double got[3];
+    vct_voxels_bounce_ratios(v, got);
+    for (int k = 0; k < 3; ++k) {
+        const double r2 = carried[1][k] / carried[0][k], r3 = carried[2][k] / carried[1][k];
+        CHECK(r2 <= 0.62 && r3 <= 0.62 && r3 > 0.0,
+              "long hall: channel %d's bounces carry on %.3f and %.3f of the light before them, "
+              "more than the brightest albedo 0.62",
+              k, r2, r3);
+        CHECK(fabs(got[k] - r3) < 1e-3 * r3,
+              "long hall: channel %d's bounce ratio %.4f, the last two bounces' %.4f", k, got[k],
+              r3);
+        printf("long hall, %u voxels, channel %d: the bounces carry on %.3f, then %.3f of the "
+               "light before them\n",
+               n, k, r2, r3);
+    }
     for (int b = 0; b < 4; ++b)
         light_free(&light[b]);
     vct_voxels_release(v);
@@ -264,7 +287,9 @@ static void hall_bounces_decay(void) {
 
 int main(void) {
     ctx = check_context();
-    against_reference();
+    const float grey[3] = {ALBEDO, ALBEDO, ALBEDO};
+    against_reference(grey, "grey box");
+    against_reference(coloured, "coloured box");
     hall_bounces_decay();
     vct_context_release(ctx);
     return check_exit("test_bounce_rest");

@@ -246,13 +246,18 @@ VCT_API vct_status vct_voxels_inject_bounce(vct_context *ctx, const vct_scene *s
 
 /* After the last bounce: adds the bounces still to come, as each bounce
  * adds what the one before it added times a ratio r, to each voxel its
- * last bounce's light times r / (1 - r). r is the scene's own: the light
- * the last bounce added, summed over the voxels, over what the one before
- * it added (at most VCT_BOUNCE_RATIO_MAX). Nothing with fewer than two
- * bounces since light injection, or with exact_bounces. */
+ * last bounce's light times r / (1 - r), per colour channel. r is the
+ * scene's own: the light the last bounce added, summed over the voxels,
+ * over what the one before it added, in that channel (at most the
+ * channel's brightest albedo and VCT_BOUNCE_RATIO_MAX). Nothing with fewer
+ * than two bounces since light injection, or with exact_bounces. */
 VCT_API vct_status vct_voxels_bounce_rest(vct_context *ctx, vct_voxels *voxels, vct_error *err);
 
-/* The ratio the last vct_voxels_bounce_rest used (0: none). */
+/* The ratios (red, green, blue) the last vct_voxels_bounce_rest used (0:
+ * none). */
+VCT_API void vct_voxels_bounce_ratios(const vct_voxels *voxels, double ratio[3]);
+
+/* The largest of those: the channel whose light dies out slowest (0: none). */
 VCT_API double vct_voxels_bounce_ratio(const vct_voxels *voxels);
 
 #ifdef __cplusplus

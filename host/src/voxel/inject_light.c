@@ -167,7 +167,8 @@ static int inject(vct_context *ctx, const vct_scene *s, const vct_accel *g, vct_
     v->bounces = 0; /* the radiance is direct light again */
     v->bounces_measured = 0;
     v->radiance_stale = !refresh;
-    v->bounce_ratio = 0.0;
+    for (int c = 0; c < 3; ++c)
+        v->bounce_ratio[c] = 0.0;
     if (rc == VCT_OK && refresh)
         rc = vct_bricks_refresh_radiance(ctx, v, err);
     return rc;

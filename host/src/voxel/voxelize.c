@@ -280,7 +280,7 @@ static vct_voxels *voxels_new(vct_context *ctx, const vct_scene *s, const vct_vo
         used[s->triangle_material[t]] = 1;
     for (uint32_t m = 0; m < s->material_count; ++m)
         for (int c = 0; c < 3 && (!used || used[m]); ++c)
-            v->albedo_max = fmax(v->albedo_max, (double)s->materials[m].albedo[c]);
+            v->albedo_max[c] = fmax(v->albedo_max[c], (double)s->materials[m].albedo[c]);
     free(used);
     if (o->has_bounds) {
         memcpy(info->origin, o->bounds_min, sizeof info->origin);

@@ -33,18 +33,20 @@ struct vct_voxels {
     uint32_t bounces;
     /* The rest of the bounces (bounce_rest.h), unless the voxel options
      * said exact_bounces: the light before the last bounce, the light the
-     * last two bounces added (summed over the voxels' sides), how many were
-     * measured since light injection, and the ratio the rest used. */
+     * last two bounces added (summed over the voxels' sides, per colour
+     * channel), how many were measured since light injection, and the
+     * ratios the rest used. */
     int bounce_rest;
     int dense_bounces; /* vct_voxel_options.dense_bounces */
     cl_mem before_radiance, before_side;
-    double bounce_light[2];
+    double bounce_light[2][3];
     uint32_t bounces_measured;
-    double bounce_ratio;
-    /* The brightest albedo channel of the scene's materials (textures only
-     * darken it): no bounce can keep more of the light before it, which
-     * bounds the measured ratio where a few bounces are not yet its own. */
-    double albedo_max;
+    double bounce_ratio[3];
+    /* Per colour channel, the brightest albedo of the scene's materials
+     * (textures only darken it): no bounce can keep more of the light before
+     * it, which bounds the measured ratio where a few bounces are not yet
+     * its own. */
+    double albedo_max[3];
     int radiance_stale; /* the bricks' radiance waits for the rest */
     /* Octree: built by vct_octree_build (child is NULL before). */
     cl_mem child, neighbours, tile_parent;
