@@ -149,7 +149,7 @@ static const cli_option vct_rows[] = {
      "ambient occlusion's reach as a fraction of the voxel volume (default 0.125)"},
     {"bounces", 0, OPT_BOUNCES, 1, "N",
      "light bounces gathered in the voxels, 1 to 4 (default 4), then the rest of the series at "
-     "the scene's bounce ratio"},
+     "the scene's bounce ratio, per colour channel"},
     {"exact-bounces", 0, OPT_EXACT_BOUNCES, 0, NULL, "no rest of the series after the last bounce"},
     {"dense-bounces", 0, OPT_DENSE_BOUNCES, 0, NULL,
      "every voxel gathers each bounce (by default a quarter of them do, the others take the mean "
