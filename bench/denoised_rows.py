@@ -11,7 +11,10 @@ call's time on the same CPU for OIDN. The Pareto column is recomputed over
 every row and the plot (OUT/accuracy.gp) drawn again. Without pyoidn, the
 OIDN rows are left out with a message.
 
-usage: denoised_rows.py VCT SCENE REFERENCE.pfm OUT SIZE [RENDER OPTIONS...]"""
+With --repeat N, each render and each OIDN call is timed N times and each
+stage keeps its fastest time (bench/accuracy's --repeat).
+
+usage: denoised_rows.py [--repeat N] VCT SCENE REFERENCE.pfm OUT SIZE [RENDER OPTIONS...]"""
 import csv
 import os
 import subprocess
@@ -57,21 +60,29 @@ def mark_pareto(rows):
 
 
 def main():
-    vct, scene, reference, out, size = sys.argv[1:6]
-    extra = sys.argv[6:]
+    args = sys.argv[1:]
+    repeat = 1
+    if args[:1] == ["--repeat"]:
+        repeat, args = max(int(args[1]), 1), args[2:]
+    vct, scene, reference, out, size = args[:5]
+    extra = args[5:]
     added, have_oidn = [], True
     for spp in SPPS:
         exr = os.path.join(out, f"pt_denoised_{spp}.exr")
-        stats = subprocess.run(
-            [vct, "render", scene, "--method", "pt", "--spp", str(spp), "--seed", "1", "--size",
-             size, size, "--denoise", "--aov", "--exr", "float", "--stats", "-o", exr] + extra,
-            check=True, capture_output=True, text=True)
-        text = stats.stdout + stats.stderr
-        accel = stage_ms(text, "bvh build")
-        traced = stage_ms(text, "path trace") + stage_ms(text, "guides")
+        times = {}
+        for _ in range(repeat):  # the same image each time; each stage's fastest time
+            stats = subprocess.run(
+                [vct, "render", scene, "--method", "pt", "--spp", str(spp), "--seed", "1",
+                 "--size", size, size, "--denoise", "--aov", "--exr", "float", "--stats", "-o",
+                 exr] + extra, check=True, capture_output=True, text=True)
+            text = stats.stdout + stats.stderr
+            for stage in ("bvh build", "path trace", "guides", "denoise"):
+                times[stage] = min(times.get(stage, float("inf")), stage_ms(text, stage))
+        accel = times["bvh build"]
+        traced = times["path trace"] + times["guides"]
         added.append(row(f"path trace {spp} spp + denoiser", accel,
-                         traced + stage_ms(text, "denoise"), compare(vct, exr, reference)))
-        filtered = oidn_filter(exr) if have_oidn else None
+                         traced + times["denoise"], compare(vct, exr, reference)))
+        filtered = oidn_filter(exr, repeat) if have_oidn else None
         if filtered is None:
             have_oidn = False
             continue

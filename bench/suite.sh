@@ -11,11 +11,14 @@
 # and gathers one table: out/suite/table.md, the page doc/results/suite.md
 # with the README's summary of it, and the error-time plot of every scene
 # (bench/suite_plot.py, doc/results/suite_front.png). References stay under out/suite.
-# usage: bench/suite.sh [SIZE] [REFERENCE_SPP]   (default 128 8192)
+# Every row's time is each stage's fastest of REPEAT renders (default 3): one
+# run on a shared CPU moves by a fifth.
+# usage: bench/suite.sh [SIZE] [REFERENCE_SPP] [REPEAT]   (default 128 8192 3)
 set -eu
 cd "$(dirname "$0")/.."
 SIZE=${1:-128}
 REF_SPP=${2:-8192}
+REPEAT=${3:-3}
 export VCT_DEVICE="${VCT_DEVICE:-Portable Computing Language}"
 export POCL_MAX_PTHREAD_COUNT=${POCL_MAX_PTHREAD_COUNT:-2} POCL_CPU_MAX_CU_COUNT=${POCL_CPU_MAX_CU_COUNT:-2}
 tools/python.sh scenes/suite/make_suite.py >/dev/null
@@ -38,13 +41,13 @@ grep -v '^#' scenes/suite/suite.txt | while read -r name file extra; do
     echo "== $name" >&2
     # shellcheck disable=SC2086
     ./build/bench/accuracy "scenes/suite/$file" --quick --size "$SIZE" "$SIZE" \
-        --reference-spp "$REF_SPP" --max-spp 1024 --pm --out "$out" $ref $extra >/dev/null ||
+        --reference-spp "$REF_SPP" --max-spp 1024 --pm --repeat "$REPEAT" --out "$out" $ref $extra >/dev/null ||
         echo "suite: $name failed; the table goes on without it" >&2
     [ -n "$ref" ] || [ ! -f "$out/reference.pfm" ] || echo "$spp" >"$out/reference.spp"
     # the path tracer denoised by the engine's filter and by OIDN
     ambient=$(echo "$extra" | grep -o -- '--ambient [0-9. ]*' || true)
     # shellcheck disable=SC2086
-    tools/python.sh bench/denoised_rows.py ./build/vct "scenes/suite/$file" "$out/reference.pfm" \
+    tools/python.sh bench/denoised_rows.py --repeat "$REPEAT" ./build/vct "scenes/suite/$file" "$out/reference.pfm" \
         "$out" "$SIZE" $ambient || echo "suite: $name's denoised rows failed" >&2
 done
 tools/python.sh bench/suite_table.py out/suite scenes/suite/suite.txt > out/suite/table.md
@@ -66,7 +69,8 @@ tools/python.sh bench/suite_plot.py out/suite scenes/suite/suite.txt doc/results
     echo "over all pixels and channels over the reference's mean; device ms is the sum of the"
     echo "stages' device time: the acceleration structure, the voxels and their light, and the"
     echo "image; for a denoised path tracer, the guides and the filter too (OIDN's: its filter"
-    echo "call on the same CPU). The last columns are"
+    echo "call on the same CPU), each stage's fastest of $REPEAT renders (the image is the same"
+    echo "bits each time; one run on a shared CPU moves by a fifth). The last columns are"
     echo "the time the path tracer needs for the same error, read between its sample counts (1 to"
     echo "1024 spp; denoised, 1 to 256 spp): as it is, denoised by the engine's filter, and by OIDN."
     echo
