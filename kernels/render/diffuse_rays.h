@@ -78,12 +78,24 @@ inline float3 gather_bounced(__global const uint *child, const vct_cone_desc *c,
  * d meets within `reach`, as the voxels see the scene (glass lets light
  * through them unlit, and shadow rays stop at it: the light through glass
  * is the caustics pass's). h->t is the distance from `from`. */
+inline int gather_trace_on(const shading_scene *ps, float3 from, float3 d, float reach,
+                           int found, hit_record *h);
+
 inline int gather_trace(const shading_scene *ps, float3 from, float3 d, float reach,
                         hit_record *h) {
+    return gather_trace_on(ps, from, d, reach, accel_trace(&ps->g, from, d, 0.0f, reach, 0, h), h);
+}
+
+/* gather_trace once the ray's first segment is traced (found, *h: what
+ * accel_trace gave it, as a packet gives it too). */
+inline int gather_trace_on(const shading_scene *ps, float3 from, float3 d, float reach,
+                           int found, hit_record *h) {
     float3 o = from;
     float travelled = 0.0f;
     for (uint pane = 0; pane <= GATHER_GLASS_MAX; ++pane) {
-        if (!accel_trace(&ps->g, o, d, 0.0f, reach - travelled, 0, h))
+        if (pane > 0u)
+            found = accel_trace(&ps->g, o, d, 0.0f, reach - travelled, 0, h);
+        if (!found)
             return GATHER_MISS;
         const float t = h->t;
         h->t += travelled;
@@ -254,30 +266,50 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
      * of its square */
     float2 lum = (float2)(0.0f), squares = (float2)(0.0f);
     uint open_rays = 0u;
-    for (uint r = 0; r < m + k; ++r) {
-        const int by_cosine = r < m;
-        uint aimed = OCT_NULL;
-        const float3 d = by_cosine
-                             ? gather_dir(n, t, b, r, m)
-                             : pick_dir(&gv->picks, c, from, r - m, k, rng_hash(seed ^ r), &aimed);
-        const float cos_n = dot(d, n);
-        if (!by_cosine && !(cos_n > 0.0f))
-            continue; /* below the surface, or a voxel too near */
-        hit_record h;
-        const int found = gather_trace(ps, from, d, reach, &h);
-        const uint v = k && found == GATHER_HIT ? pick_voxel_of(child, c, from, d, h.t) : OCT_NULL;
-        if (!by_cosine && v != aimed)
-            continue; /* the picks' light is their voxel's alone */
-        int is_open;
-        const float3 light = gather_ray_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, found, &h,
-                                              tan_half, rng_hash(seed ^ r), near, &is_open);
-        if (by_cosine)
-            open_rays += is_open;
-        const float3 share = light * gather_mis(gv, c, from, cos_n, v, m, k, !by_cosine);
-        sum += share;
-        const float y = side_luminance(share);
-        lum += by_cosine ? (float2)(y, 0.0f) : (float2)(0.0f, y);
-        squares += by_cosine ? (float2)(y * y, 0.0f) : (float2)(0.0f, y * y);
+    /* The rays leave one point: their first segments are traced together,
+     * ACCEL_GROUP at a time (a packet on CPU devices, the same hits). */
+    for (uint r0 = 0; r0 < m + k; r0 += ACCEL_GROUP) {
+        const uint group = min(m + k - r0, ACCEL_GROUP);
+        ray_packet rays;
+        rays.count = 0u;
+        uint ray_of[ACCEL_GROUP], aimed_of[ACCEL_GROUP];
+        for (uint j = 0; j < group; ++j) {
+            const uint r = r0 + j;
+            uint aimed = OCT_NULL;
+            const float3 d =
+                r < m ? gather_dir(n, t, b, r, m)
+                      : pick_dir(&gv->picks, c, from, r - m, k, rng_hash(seed ^ r), &aimed);
+            if (r >= m && !(dot(d, n) > 0.0f))
+                continue; /* below the surface, or a voxel too near */
+            ray_of[rays.count] = r;
+            aimed_of[rays.count] = aimed;
+            packet_set(&rays, rays.count++, from, d, 0.0f, reach);
+        }
+        hit_record hits[ACCEL_GROUP];
+        int met[ACCEL_GROUP];
+        accel_trace_packet(&ps->g, &rays, 0, hits, met);
+        for (uint j = 0; j < rays.count; ++j) {
+            const uint r = ray_of[j];
+            const int by_cosine = r < m;
+            const float3 d = packet_dir(&rays, j);
+            const float cos_n = dot(d, n);
+            hit_record h = hits[j];
+            const int found = gather_trace_on(ps, from, d, reach, met[j], &h);
+            const uint v =
+                k && found == GATHER_HIT ? pick_voxel_of(child, c, from, d, h.t) : OCT_NULL;
+            if (!by_cosine && v != aimed_of[j])
+                continue; /* the picks' light is their voxel's alone */
+            int is_open;
+            const float3 light = gather_ray_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, found,
+                                                  &h, tan_half, rng_hash(seed ^ r), near, &is_open);
+            if (by_cosine)
+                open_rays += is_open;
+            const float3 share = light * gather_mis(gv, c, from, cos_n, v, m, k, !by_cosine);
+            sum += share;
+            const float y = side_luminance(share);
+            lum += by_cosine ? (float2)(y, 0.0f) : (float2)(0.0f, y);
+            squares += by_cosine ? (float2)(y * y, 0.0f) : (float2)(0.0f, y * y);
+        }
     }
     *open = (float)open_rays / (float)m;
     /* the variance of the mean's luminance, from the rays' spread: the sum
