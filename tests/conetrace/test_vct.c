@@ -6,7 +6,8 @@
  * the gather's variance against a Bernoulli sky's; sparse diffuse against
  * every pixel's cones and a plain-C fill (AO and variance); the
  * gather's rays beside a plate's edge and at a wall's foot beside a strip
- * of sunlit floor thinner than a voxel. */
+ * of sunlit floor thinner than a voxel; rays in packets and one by one
+ * give the same image. */
 #include <math.h>
 #include <string.h>
 
@@ -1085,9 +1086,15 @@ static void hot_spot_under_a_point_light(void) {
  * (depth 1, 4096 spp), its NRMSE must fall below 0.6 of the unfiltered
  * one's, its mean stay within 1 %, and the AOVs still add up to the
  * image. Measured (48 x 48, 64^3): 0.038 filtered, 0.099 not; mean 1.003. */
-static void emitter_samples_filtered(void) {
-    float quads[(6 + 16) * 12];
+/* A room 6 x 2.8 x 5 (albedo 0.6) lit by a lamp shade alone: 16 emissive
+ * quads round a ring, seen from beside it; with `panel`, a standing panel
+ * in view that the lamp lights on the side seen, with lit wall behind it. */
+static vct_scene *lamp_shade_room(int panel) {
+    float quads[(6 + 16 + 1) * 12];
     box_quads(6, 2.8f, 5, quads);
+    const float standing[12] = {5.2f, 0.0f, 3.8f, 5.2f, 0.0f, 4.6f,
+                                5.2f, 1.4f, 4.6f, 5.2f, 1.4f, 3.8f};
+    memcpy(quads + (6 + 16) * 12, standing, sizeof standing);
     for (int k = 0; k < 16; ++k) {
         const double a0 = 2 * CHECK_PI * k / 16, a1 = 2 * CHECK_PI * (k + 1) / 16;
         const float x0 = 3.0f + 0.22f * (float)cos(a0), z0 = 2.5f + 0.22f * (float)sin(a0),
@@ -1095,9 +1102,9 @@ static void emitter_samples_filtered(void) {
         const float q[12] = {x0, 1.6f, z0, x1, 1.6f, z1, x1, 1.95f, z1, x0, 1.95f, z0};
         memcpy(quads + (6 + k) * 12, q, sizeof q);
     }
-    test_mesh t = mesh_quads(quads, 6 + 16);
+    test_mesh t = mesh_quads(quads, 6 + 16 + (panel ? 1 : 0));
     uint32_t *mat = calloc(t.nt, 4);
-    for (uint32_t i = 12; i < t.nt; ++i)
+    for (uint32_t i = 12; i < 2 * (6 + 16); ++i)
         mat[i] = 1; /* the shade */
     vct_material m[2] = {vct_material_default(), vct_material_default()};
     m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.6f;
@@ -1110,6 +1117,12 @@ static void emitter_samples_filtered(void) {
     mesh_free(&t);
     s->camera = (vct_camera){{3.6f, 1.7f, 3.1f}, {5.9f, 1.0f, 4.9f}, {0, 1, 0}, 60.0f};
     s->has_camera = 1;
+    return s;
+}
+
+static void emitter_samples_filtered(void) {
+    vct_scene *s = lamp_shade_room(0);
+    vct_error err = {0};
     const int w = 48, h = 48;
     vct_accel *g = vct_accel_build(ctx, s, NULL, &err);
     REQUIRE_OK(g ? VCT_OK : err.status, err);
@@ -1144,6 +1157,37 @@ static void emitter_samples_filtered(void) {
     vct_image_release(&ref);
     vct_aovs_release(&fa);
     vct_aovs_release(&ra);
+    vct_scene_release(s);
+}
+
+/* Rays traced in packets (CPU devices: camera rays, edge samples, the
+ * gather's rays from one point, the emitters' picks among them) and one by
+ * one (kernels built with VCT_PACKETS=0, as for GPUs): the same image bit
+ * for bit, at the defaults (edge samples, sparse diffuse, the filter), in
+ * the lamp-shade room with its panel: the panel's gathers aim picks at the
+ * lit voxels before it and skip those behind it, a packet's rays then
+ * standing for rays of other indices. */
+static void packets_change_nothing(void) {
+    vct_scene *s = lamp_shade_room(1);
+    vct_plan p;
+    vct_plan_make(s, NULL, &p);
+    const int w = 40, h = 36;
+    vct_image packed = vct_case_render_default(ctx, s, &p, 64, w, h);
+    setenv("VCT_PACKETS", "0", 1);
+    vct_context *plain = check_context();
+    vct_image one = vct_case_render_default(plain, s, &p, 64, w, h);
+    unsetenv("VCT_PACKETS");
+    vct_context_release(plain);
+    size_t differ = 0;
+    for (int i = 0; i < 4 * w * h; ++i)
+        differ += packed.rgba[i] != one.rgba[i];
+    printf("lamp shade room: %zu of %d values differ between rays in packets and one by one, "
+           "mean %.4f\n",
+           differ, 4 * w * h, rgb_mean(&packed));
+    CHECK(differ == 0 && rgb_mean(&packed) > 0.0,
+          "rays in packets change the cone-traced image: %zu values differ", differ);
+    vct_image_release(&packed);
+    vct_image_release(&one);
     vct_scene_release(s);
 }
 
@@ -1436,6 +1480,7 @@ int main(void) {
     closed_room_against_path_tracer();
     hot_spot_under_a_point_light();
     emitter_samples_filtered();
+    packets_change_nothing();
     gap_under_a_plate();
     floor_beside_a_plate();
     wall_beside_a_sun_strip();
