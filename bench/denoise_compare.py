@@ -26,11 +26,11 @@ def nrmse(image, ref):
     return float(np.sqrt(np.mean((image - ref) ** 2)) / np.mean(ref))
 
 
-def oidn_filter(exr, repeat=1):
+def oidn_filter(exr):
     """The noisy layer of a `vct render --method pt --denoise --aov` EXR
     through OIDN's RT filter (HDR, its albedo and normal layers as clean
-    auxiliaries): (image, the fastest of `repeat` calls' time in ms after a
-    first call that builds the filter), or None where pyoidn cannot be had."""
+    auxiliaries): (image, the second call's time in ms), or None where
+    pyoidn cannot be had."""
     try:
         import pyoidn
     except ImportError:
@@ -42,12 +42,9 @@ def oidn_filter(exr, repeat=1):
     normal = np.where(lengths > 0, normal / np.maximum(lengths, 1e-12), 0.0).astype(np.float32)
     args = dict(hdr=True, clean_aux=True)
     pyoidn.denoise(noisy, albedo, normal, **args)  # the first call builds the filter
-    best = float("inf")
-    for _ in range(repeat):
-        start = time.perf_counter()
-        out = pyoidn.denoise(noisy, albedo, normal, **args)
-        best = min(best, (time.perf_counter() - start) * 1e3)
-    return np.asarray(out, dtype=np.float64), best
+    start = time.perf_counter()
+    out = pyoidn.denoise(noisy, albedo, normal, **args)
+    return np.asarray(out, dtype=np.float64), (time.perf_counter() - start) * 1e3
 
 
 def main():

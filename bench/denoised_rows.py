@@ -11,8 +11,8 @@ call's time on the same CPU for OIDN. The Pareto column is recomputed over
 every row and the plot (OUT/accuracy.gp) drawn again. Without pyoidn, the
 OIDN rows are left out with a message.
 
-With --repeat N, each render and each OIDN call is timed N times and each
-stage keeps its fastest time (bench/accuracy's --repeat).
+With --repeat N, every row is rendered and filtered N times, the rows in
+turn, and each stage keeps its fastest time (bench/accuracy's --repeat).
 
 usage: denoised_rows.py [--repeat N] VCT SCENE REFERENCE.pfm OUT SIZE [RENDER OPTIONS...]"""
 import csv
@@ -66,30 +66,40 @@ def main():
         repeat, args = max(int(args[1]), 1), args[2:]
     vct, scene, reference, out, size = args[:5]
     extra = args[5:]
-    added, have_oidn = [], True
-    for spp in SPPS:
-        exr = os.path.join(out, f"pt_denoised_{spp}.exr")
-        times = {}
-        for _ in range(repeat):  # the same image each time; each stage's fastest time
+    have_oidn = True
+    times = {spp: {} for spp in SPPS}  # each stage's fastest ms, OIDN's filter call's too
+    filtered = {}
+    # the sample counts in turn, `repeat` times over, so that a slow spell of
+    # a shared CPU falls on one of each row's runs; the same images each time
+    for _ in range(repeat):
+        for spp in SPPS:
+            exr = os.path.join(out, f"pt_denoised_{spp}.exr")
             stats = subprocess.run(
                 [vct, "render", scene, "--method", "pt", "--spp", str(spp), "--seed", "1",
                  "--size", size, size, "--denoise", "--aov", "--exr", "float", "--stats", "-o",
                  exr] + extra, check=True, capture_output=True, text=True)
             text = stats.stdout + stats.stderr
             for stage in ("bvh build", "path trace", "guides", "denoise"):
-                times[stage] = min(times.get(stage, float("inf")), stage_ms(text, stage))
-        accel = times["bvh build"]
-        traced = times["path trace"] + times["guides"]
-        added.append(row(f"path trace {spp} spp + denoiser", accel,
-                         traced + times["denoise"], compare(vct, exr, reference)))
-        filtered = oidn_filter(exr, repeat) if have_oidn else None
-        if filtered is None:
-            have_oidn = False
-            continue
-        pfm = os.path.join(out, f"pt_oidn_{spp}.pfm")
-        write_pfm(pfm, filtered[0])
-        added.append(row(f"path trace {spp} spp + OIDN", accel, traced + filtered[1],
-                         compare(vct, pfm, reference)))
+                times[spp][stage] = min(times[spp].get(stage, float("inf")),
+                                        stage_ms(text, stage))
+            result = oidn_filter(exr) if have_oidn else None
+            if result is None:
+                have_oidn = False
+                continue
+            filtered[spp] = result[0]
+            times[spp]["oidn"] = min(times[spp].get("oidn", float("inf")), result[1])
+    added = []
+    for spp in SPPS:
+        t = times[spp]
+        accel, traced = t["bvh build"], t["path trace"] + t["guides"]
+        exr = os.path.join(out, f"pt_denoised_{spp}.exr")
+        added.append(row(f"path trace {spp} spp + denoiser", accel, traced + t["denoise"],
+                         compare(vct, exr, reference)))
+        if have_oidn:
+            pfm = os.path.join(out, f"pt_oidn_{spp}.pfm")
+            write_pfm(pfm, filtered[spp])
+            added.append(row(f"path trace {spp} spp + OIDN", accel, traced + t["oidn"],
+                             compare(vct, pfm, reference)))
     if not have_oidn:
         print("denoised_rows: pyoidn cannot be had: no OIDN rows", file=sys.stderr)
     path = os.path.join(out, "accuracy.csv")
