@@ -65,7 +65,7 @@ inline float denoise_variance_blurred(__global const float4 *signal, uint2 size,
  * a rest f in [-1/2, 1/2], whose 2^f is a Taylor polynomial of degree 6 in
  * f ln 2; 0 below 2^-126. The library's exp2 took 45 % of the passes' time
  * on PoCL, where every tap of every pass takes one. */
-inline float denoise_exp2_neg(float x) {
+__attribute__((always_inline)) inline float denoise_exp2_neg(float x) {
     if (!(x > -126.0f))
         return 0.0f;
     const int n = -(int)(0.5f - x); /* x rounded, by truncation of a positive value */
@@ -80,7 +80,7 @@ inline float denoise_exp2_neg(float x) {
 
 /* c^e for c in (0, 1]: by repeated squaring where e is a whole number
  * below 4096 (the normals' exponent, 128 by default), else exp2(e log2 c). */
-inline float denoise_power(float c, float e) {
+__attribute__((always_inline)) inline float denoise_power(float c, float e) {
     if (!(e >= 0.0f && e < 4096.0f && (float)(int)e == e))
         return exp2(e * log2(c));
     const uint n = (uint)e;
@@ -101,7 +101,7 @@ inline float denoise_power(float c, float e) {
  * standard deviations of the two: differences the noise explains weigh
  * nearly alike, larger ones fall off fast). Pixels without a surface
  * weigh only by luminance, among themselves; an emitter's pixels with none. */
-inline float denoise_edge_weight(float4 gc, float2 slope_c, float4 gq, int ox, int oy, float lc,
+__attribute__((always_inline)) inline float denoise_edge_weight(float4 gc, float2 slope_c, float4 gq, int ox, int oy, float lc,
                                  float lq, float var_c, float var_q, float4 sigma) {
     if (gc.w < 0.0f || gq.w < 0.0f)
         return 0.0f;
