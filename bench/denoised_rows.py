@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The denoised path tracer in a scene's accuracy table (bench/suite.sh):
-renders the path tracer at 1, 4, 16, 64 and 256 spp with the engine's filter
+renders the path tracer at 1, 4, 16, 64, 256 and 1024 spp with the engine's filter
 (`vct render --method pt --denoise --aov`), passes the same noisy image
 through Intel Open Image Denoise (denoise_compare.oidn_filter), and appends
 both to OUT/accuracy.csv as "path trace N spp + denoiser" and "path trace N
@@ -23,7 +23,7 @@ import sys
 from denoise_compare import oidn_filter
 from pfm import write_pfm
 
-SPPS = (1, 4, 16, 64, 256)
+SPPS = (1, 4, 16, 64, 256, 1024)
 
 
 def stage_ms(stats, stage):

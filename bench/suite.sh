@@ -6,7 +6,7 @@
 # gathering, each against an 8192-spp reference of another seed,
 # or what suite.txt gives the scene; at 2048 spp the noisiest references
 # held 6 % NRMSE of their own, which every method's error took in), and
-# bench/denoised_rows.py on it (the path tracer at 1 to 256 spp denoised by
+# bench/denoised_rows.py on it (the path tracer at 1 to 1024 spp denoised by
 # the engine's filter and by OIDN),
 # and gathers one table: out/suite/table.md, the page doc/results/suite.md
 # with the README's summary of it, and the error-time plot of every scene
@@ -72,7 +72,7 @@ tools/python.sh bench/suite_plot.py out/suite scenes/suite/suite.txt doc/results
     echo "call on the same CPU), each stage's fastest of $REPEAT renders (the image is the same"
     echo "bits each time; one run on a shared CPU moves by a fifth). The last columns are"
     echo "the time the path tracer needs for the same error, read between its sample counts (1 to"
-    echo "1024 spp; denoised, 1 to 256 spp): as it is, denoised by the engine's filter, and by OIDN."
+    echo "1024 spp; denoised likewise): as it is, denoised by the engine's filter, and by OIDN."
     echo
     echo "![Error against time, every scene](suite_front.png)"
     echo
