@@ -101,8 +101,10 @@ __attribute__((always_inline)) inline float denoise_power(float c, float e) {
  * standard deviations of the two: differences the noise explains weigh
  * nearly alike, larger ones fall off fast). Pixels without a surface
  * weigh only by luminance, among themselves; an emitter's pixels with none. */
-__attribute__((always_inline)) inline float denoise_edge_weight(float4 gc, float2 slope_c, float4 gq, int ox, int oy, float lc,
-                                 float lq, float var_c, float var_q, float4 sigma) {
+__attribute__((always_inline)) inline float denoise_edge_weight(float4 gc, float2 slope_c,
+                                                                float4 gq, int ox, int oy, float lc,
+                                                                float lq, float var_c, float var_q,
+                                                                float4 sigma) {
     if (gc.w < 0.0f || gq.w < 0.0f)
         return 0.0f;
     const float u = fabs(lc - lq) / (sigma.x * sqrt(var_c + var_q) + 1e-6f), l = 0.5f * u * u;

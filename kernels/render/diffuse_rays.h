@@ -77,19 +77,11 @@ inline float3 gather_bounced(__global const uint *child, const vct_cone_desc *c,
 /* The first surface other than glass that the ray from `from` along unit
  * d meets within `reach`, as the voxels see the scene (glass lets light
  * through them unlit, and shadow rays stop at it: the light through glass
- * is the caustics pass's). h->t is the distance from `from`. */
-inline int gather_trace_on(const shading_scene *ps, float3 from, float3 d, float reach,
-                           int found, hit_record *h);
-
-inline int gather_trace(const shading_scene *ps, float3 from, float3 d, float reach,
-                        hit_record *h) {
-    return gather_trace_on(ps, from, d, reach, accel_trace(&ps->g, from, d, 0.0f, reach, 0, h), h);
-}
-
-/* gather_trace once the ray's first segment is traced (found, *h: what
- * accel_trace gave it, as a packet gives it too). */
-inline int gather_trace_on(const shading_scene *ps, float3 from, float3 d, float reach,
-                           int found, hit_record *h) {
+ * is the caustics pass's), once its first segment is traced (found, *h:
+ * what accel_trace gave it, or a packet, which gives the same).
+ * h->t is the distance from `from`. */
+inline int gather_trace_on(const shading_scene *ps, float3 from, float3 d, float reach, int found,
+                           hit_record *h) {
     float3 o = from;
     float travelled = 0.0f;
     for (uint pane = 0; pane <= GATHER_GLASS_MAX; ++pane) {
@@ -108,6 +100,12 @@ inline int gather_trace_on(const shading_scene *ps, float3 from, float3 d, float
         travelled += t + eps;
     }
     return GATHER_LOST;
+}
+
+/* gather_trace_on with the first segment traced here. */
+inline int gather_trace(const shading_scene *ps, float3 from, float3 d, float reach,
+                        hit_record *h) {
+    return gather_trace_on(ps, from, d, reach, accel_trace(&ps->g, from, d, 0.0f, reach, 0, h), h);
 }
 
 /* The direct light surface point p (unit normal n, on the ray's side)
