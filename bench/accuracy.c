@@ -32,23 +32,6 @@
 #include "bench_util.h"
 #include "heavy_scene.h"
 
-typedef struct run {
-    char name[128];
-    double accel_ms, build_ms, render_ms, total_ms; /* device time per stage, and their sum */
-    double wall_ms;
-    vct_image_metrics m;
-    int pareto;
-    int retimed; /* 1: q renders it again, for its time (--repeat) */
-    struct request {
-        enum { RQ_RAYCAST, RQ_PT, RQ_PM, RQ_VCT } kind;
-        uint32_t spp, seed;
-        int pm; /* a pm_kind */
-        uint32_t passes;
-        const struct vct_setting *vs;
-    } q;
-} run;
-typedef struct request request;
-
 typedef struct settings {
     const char *scene, *reference, *out;
     int width, height;
@@ -77,6 +60,26 @@ typedef struct vct_setting {
     int exact;         /* 1: only the bounces asked for, no rest of the series */
     int dense_bounces; /* 1: every voxel gathers each bounce (default: half of them) */
 } vct_setting;
+
+/* One row's render: the ray caster, the path tracer at spp, photon mapping
+ * of a kind after `passes`, or cone tracing at vs. */
+typedef struct request {
+    enum { RQ_RAYCAST, RQ_PT, RQ_PM, RQ_VCT } kind;
+    uint32_t spp, seed;
+    pm_kind pm;
+    uint32_t passes;
+    const vct_setting *vs;
+} request;
+
+typedef struct run {
+    char name[128];
+    double accel_ms, build_ms, render_ms, total_ms; /* device time per stage, and their sum */
+    double wall_ms;
+    vct_image_metrics m;
+    int pareto;
+    int retimed; /* 1: q renders it again, for its time (--repeat) */
+    request q;
+} run;
 
 #define MAX_RUNS 64
 
@@ -222,8 +225,7 @@ static vct_image render_pm(vct_context *ctx, const vct_scene *s, const settings 
     return im;
 }
 
-/* One row's render (run.q): the ray caster, the path tracer at spp,
- * photon mapping of a kind after `passes`, or cone tracing at vs. */
+/* One row's render (run.q). */
 static vct_image render_once(vct_context *ctx, const vct_scene *s, const settings *cfg,
                              const request *q, run *r) {
     switch (q->kind) {
@@ -232,7 +234,7 @@ static vct_image render_once(vct_context *ctx, const vct_scene *s, const setting
     case RQ_PT:
         return render(ctx, s, cfg, "pt", q->spp, q->seed, r);
     case RQ_PM:
-        return render_pm(ctx, s, cfg, (pm_kind)q->pm, q->passes, r);
+        return render_pm(ctx, s, cfg, q->pm, q->passes, r);
     default:
         return render_vct(ctx, s, cfg, q->vs, r);
     }
