@@ -85,7 +85,8 @@ def front(root, names):
     path tracer denoised by OIDN (and by the engine's filter) needs."""
     counts = {"OIDN": [0, 0, 0], "denoiser": [0, 0, 0]}
     # the frame alone (render ms, the voxels kept) against a tenth of that
-    # time: scenes within it, scenes counted, and the closest (ratio, scene)
+    # time: scenes within it, scenes counted, the closest (ratio, scene), and
+    # the scenes left undecided
     frames = {"OIDN": [0, 0, None, []], "denoiser": [0, 0, None, []]}
     for name in names:
         path = os.path.join(root, name, "accuracy.csv")
