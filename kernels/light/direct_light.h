@@ -15,6 +15,14 @@ inline float surface_epsilon(const accel_view *g, float3 p) {
     return g->desc.origin.w * 1e-5f + fmax(ap.x, fmax(ap.y, ap.z)) * 2e-6f;
 }
 
+#ifdef VCT_PACKETS
+/* surface_epsilon in vector lanes, with its operations (the first product
+ * a vector one, so that the sum fuses with it as the scalar form's does). */
+inline float16 surface_epsilon16(const accel_view *g, float16 px, float16 py, float16 pz) {
+    return (float16)(g->desc.origin.w) * 1e-5f + fmax(fabs(px), fmax(fabs(py), fabs(pz))) * 2e-6f;
+}
+#endif
+
 /* Light i as seen from p: direction wi towards it, distance (INFINITY for a
  * directional light) and incident radiant quantity before the cosine:
  * I / d^2 (times the spot falloff) or E. Returns 0 if it cannot light p. */
@@ -43,6 +51,45 @@ inline int light_incident(__global const vct_light_desc *lights, uint i, float3 
     }
     return 1;
 }
+
+#ifdef VCT_PACKETS
+/* light_incident for points in vector lanes, with its operations (dots
+ * as the library adds them); ok: -1 in the lanes it can light. */
+inline int16 light_incident16(__global const vct_light_desc *lights, uint i, float16 px, float16 py,
+                              float16 pz, float16 *wx, float16 *wy, float16 *wz, float16 *dist,
+                              float16 *rr, float16 *rg, float16 *rb) {
+    const vct_light_desc L = lights[i];
+    const uint kind = (uint)L.position.w;
+    if (kind == VCT_LIGHT_KIND_DIRECTIONAL) {
+        *wx = (float16)(-L.direction.x);
+        *wy = (float16)(-L.direction.y);
+        *wz = (float16)(-L.direction.z);
+        *dist = (float16)(INFINITY);
+        *rr = (float16)(L.color.x);
+        *rg = (float16)(L.color.y);
+        *rb = (float16)(L.color.z);
+        return (int16)(-1);
+    }
+    const float16 tx = L.position.x - px, ty = L.position.y - py, tz = L.position.z - pz;
+    const float16 d2 = (tx * tx + ty * ty) + tz * tz;
+    *dist = sqrt(d2);
+    *wx = tx / *dist;
+    *wy = ty / *dist;
+    *wz = tz / *dist;
+    *rr = L.color.x / d2;
+    *rg = L.color.y / d2;
+    *rb = L.color.z / d2;
+    if (kind == VCT_LIGHT_KIND_SPOT) {
+        const float16 cd = (-*wx * L.direction.x + -*wy * L.direction.y) + -*wz * L.direction.z;
+        const float cos_outer = L.direction.w, cos_inner = L.color.w;
+        const float16 x = clamp((cd - cos_outer) / fmax(cos_inner - cos_outer, 1e-6f), 0.0f, 1.0f);
+        *rr *= x * x;
+        *rg *= x * x;
+        *rb *= x * x;
+    }
+    return d2 > 0.0f;
+}
+#endif
 
 /* 1 if nothing blocks the segment from p (lifted off its surface along n by
  * eps) towards wi over dist; shading itself uses p. */

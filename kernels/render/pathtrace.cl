@@ -25,6 +25,8 @@
  * itself.
  *
  * max_depth: surface interactions per path (1 = direct light only). */
+/* bsdf.h first: accel/ray_tri.h turns FP_CONTRACT off for all that follows
+ * it, and the materials' arithmetic is fused where written so. */
 #include "scene/bsdf.h"
 #include "scene/camera.h"
 #include "light/nee.h"
@@ -32,115 +34,55 @@
 #include "accel/accel.h"
 #include "scene/rng.h"
 #include "render/exact_sum.h"
+#include "render/pt_path.h"
+#include "render/pt_lanes.h"
 #include "vct_types.h"
 
-#define RR_DEPTH 3
 #define PT_SUMS 10u
 
 inline float pt_luminance(float3 c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
-/* The camera rays of samples first .. first + n - 1 (n <= ACCEL_GROUP) of
- * pixel (x, y), traced together (a packet on CPU devices): each sample's
- * random stream after its jitter, its direction and what it hits. */
-inline void pt_camera_rays(const accel_view *g, const vct_camera_desc *cam, uint x, uint y,
-                           uint seed, uint first, uint n, uint *rng, float3 *dir, hit_record *hit,
-                           int *found) {
-    for (uint k = 0; k < n; ++k) {
-        rng[k] = rng_start(seed, camera_pixel_id(cam, x, y), first + k);
-        const float jx = rng_next(&rng[k]), jy = rng_next(&rng[k]);
-        dir[k] = camera_ray_dir(cam, (float)x + jx, (float)camera_row(cam, y) + jy);
+#ifndef VCT_PACKETS
+/* Samples first .. first + n - 1 (n <= ACCEL_GROUP) of pixel (x, y), each
+ * path by itself after its first bounce: each one's radiance and its direct
+ * part. */
+inline void pt_group(const pt_scene *sc, const vct_camera_desc *cam, uint x, uint y, uint seed,
+                     uint first, uint n, float3 *radiance, float3 *direct) {
+    uint rngs[ACCEL_GROUP];
+    float3 dirs[ACCEL_GROUP];
+    hit_record firsts[ACCEL_GROUP];
+    int found[ACCEL_GROUP];
+    pt_camera_rays(&sc->g, cam, x, y, seed, first, n, rngs, dirs, firsts, found);
+    pt_path paths[ACCEL_GROUP];
+    ray_packet bounce;
+    bounce.count = 0u;
+    uint lane_of[ACCEL_GROUP];
+    for (uint s = 0; s < n; ++s) {
+        pt_path *q = &paths[s];
+        q->throughput = (float3)(1.0f);
+        q->radiance = q->direct = (float3)(0.0f);
+        q->org = q->prev_p = cam->position.xyz;
+        q->dir = dirs[s];
+        q->prev_pdf = 0.0f; /* 0: camera ray or delta bounce, emission counts fully */
+        q->rng = rngs[s];
+        if (pt_walk(sc, q, 0u, 0u, firsts[s], found[s])) {
+            lane_of[bounce.count] = s;
+            packet_set(&bounce, bounce.count++, q->org, q->dir, 0.0f, INFINITY);
+        }
     }
-    accel_trace_from(g, cam->position.xyz, dir, n, hit, found);
-}
-
-/* What every path of a launch shares. */
-typedef struct pt_scene {
-    accel_view g;
-    texture_view tv;
-    emitters em;
-    __global const vct_material_desc *materials;
-    __global const uint *tri_material;
-    __global const vct_light_desc *lights;
-    uint light_count, max_depth;
-    float3 ambient;
-    int lit_by_rays;
-} pt_scene;
-
-/* A path between its vertices. */
-typedef struct pt_path {
-    float3 throughput, radiance, direct, org, dir, prev_p;
-    float prev_pdf;
-    uint rng;
-} pt_path;
-
-/* Vertices depth .. last of path q, the first of them met by h (found);
- * 1 where the path goes on past `last` (its next ray in q's org and dir). */
-inline int pt_walk(const pt_scene *sc, pt_path *q, uint depth, uint last, hit_record h, int found) {
-    for (;; ++depth) {
-        if (!found) {
-            q->radiance += q->throughput * sc->ambient; /* the environment */
-            if (depth == 0)
-                q->direct = q->radiance;
-            return 0;
-        }
-        float3 p, ng, n;
-        int front;
-        if (!surface_hit(&sc->g, &h, q->dir, &p, &ng, &n, &front))
-            return 0;
-        const float3 wo = -q->dir;
-        vct_material_desc m = sc->materials[sc->tri_material[h.tri]];
-        m.albedo.xyz = texture_albedo(&sc->tv, &m, h.tri, h.u, h.v);
-        if (any(m.emission.xyz > 0.0f)) {
-            float w = 1.0f;
-            if (q->prev_pdf > 0.0f && sc->em.view.count > 0) {
-                const float3 d = p - q->prev_p;
-                const float pdf_light = sc->em.inv_area * dot(d, d) / fabs(dot(ng, q->dir));
-                w = power_heuristic(q->prev_pdf, pdf_light);
-            }
-            q->radiance += q->throughput * m.emission.xyz * w;
-            if (depth == 1 && q->prev_pdf > 0.0f) /* the first surface's light, BSDF-sampled */
-                q->direct += q->throughput * m.emission.xyz * w;
-        }
-        if (depth == sc->max_depth)
-            return 0;
-        /* Next-event estimation (delta lobes cannot be lit this way). */
-        if (!bsdf_delta_only(&m)) {
-            q->radiance += q->throughput *
-                           nee_punctual(&sc->g, sc->lights, sc->light_count, &m, p, n, wo, &q->rng);
-            q->radiance += q->throughput * nee_emitters(&sc->g, &sc->em, sc->materials,
-                                                        sc->tri_material, &m, p, n, wo, 1, &q->rng);
-        }
-        if (depth == 0)
-            q->direct = q->radiance;
-        /* the last surface's BSDF sample looks for emitters and the sky
-         * alone: where the scene has neither, it finds nothing */
-        if (depth + 1 == sc->max_depth && !sc->lit_by_rays)
-            return 0;
-        bsdf_sample bs;
-        const float u0 = rng_next(&q->rng), u1 = rng_next(&q->rng), u2 = rng_next(&q->rng);
-        if (!bsdf_sample_dir(&m, n, wo, front, u0, u1, u2, &bs))
-            return 0;
-        q->throughput *= bs.weight;
-        q->prev_pdf = bs.delta ? 0.0f : bs.pdf;
-        q->prev_p = p;
-        /* Leave the surface on the side the new direction points to. */
-        const float eps = surface_epsilon(&sc->g, p);
-        q->org = p + (dot(bs.wi, n) > 0.0f ? n : -n) * eps;
-        q->dir = bs.wi;
-        if (depth + 1 >= RR_DEPTH) {
-            const float keep =
-                fmin(fmax(q->throughput.x, fmax(q->throughput.y, q->throughput.z)), 0.95f);
-            if (!(rng_next(&q->rng) < keep))
-                return 0;
-            q->throughput /= keep;
-        }
-        if (depth == last)
-            return 1;
-        found = accel_trace(&sc->g, q->org, q->dir, 0.0f, INFINITY, 0, &h);
+    hit_record seconds[ACCEL_GROUP];
+    int met[ACCEL_GROUP];
+    accel_trace_packet(&sc->g, &bounce, 0, seconds, met);
+    for (uint k = 0; k < bounce.count; ++k)
+        pt_walk(sc, &paths[lane_of[k]], 1u, sc->max_depth, seconds[k], met[k]);
+    for (uint s = 0; s < n; ++s) {
+        radiance[s] = paths[s].radiance;
+        direct[s] = paths[s].direct;
     }
 }
+#endif
 
 __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
                         __global const vct_material_desc *materials,
@@ -170,39 +112,15 @@ __kernel void pathtrace(ACCEL_ARGS, vct_camera_desc cam,
               indirect_l2 = sums[9];
     uint dropped = 0;
     for (uint s0 = 0; s0 < samples; s0 += ACCEL_GROUP) {
-        uint rngs[ACCEL_GROUP];
-        float3 dirs[ACCEL_GROUP];
-        hit_record firsts[ACCEL_GROUP];
-        int found[ACCEL_GROUP];
         const uint group = min(samples - s0, ACCEL_GROUP);
-        pt_camera_rays(&sc.g, &cam, x, y, seed, sample_begin + s0, group, rngs, dirs, firsts,
-                       found);
-        pt_path paths[ACCEL_GROUP];
-        int going[ACCEL_GROUP];
-        ray_packet bounce;
-        bounce.count = 0u;
-        uint lane_of[ACCEL_GROUP];
+        float3 radiances[ACCEL_GROUP], directs[ACCEL_GROUP];
+#ifdef VCT_PACKETS
+        pt_group_lanes(&sc, &cam, x, y, seed, sample_begin + s0, group, radiances, directs);
+#else
+        pt_group(&sc, &cam, x, y, seed, sample_begin + s0, group, radiances, directs);
+#endif
         for (uint s = 0; s < group; ++s) {
-            pt_path *q = &paths[s];
-            q->throughput = (float3)(1.0f);
-            q->radiance = q->direct = (float3)(0.0f);
-            q->org = q->prev_p = cam.position.xyz;
-            q->dir = dirs[s];
-            q->prev_pdf = 0.0f; /* 0: camera ray or delta bounce, emission counts fully */
-            q->rng = rngs[s];
-            going[s] = pt_walk(&sc, q, 0u, 0u, firsts[s], found[s]);
-            if (going[s]) {
-                lane_of[bounce.count] = s;
-                packet_set(&bounce, bounce.count++, q->org, q->dir, 0.0f, INFINITY);
-            }
-        }
-        hit_record seconds[ACCEL_GROUP];
-        int met[ACCEL_GROUP];
-        accel_trace_packet(&sc.g, &bounce, 0, seconds, met);
-        for (uint k = 0; k < bounce.count; ++k)
-            pt_walk(&sc, &paths[lane_of[k]], 1u, max_depth, seconds[k], met[k]);
-        for (uint s = 0; s < group; ++s) {
-            const float3 radiance = paths[s].radiance, direct = paths[s].direct;
+            const float3 radiance = radiances[s], direct = directs[s];
             if (all(isfinite(radiance))) {
                 sum_r = exact_add(sum_r, exact_from_float(radiance.x));
                 sum_g = exact_add(sum_g, exact_from_float(radiance.y));

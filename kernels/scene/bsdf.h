@@ -117,6 +117,28 @@ inline float3 cosine_dir(float3 n, float3 t, float3 b, float u1, float u2) {
     return r * cs.x * t + r * cs.y * b + cos_i * n;
 }
 
+#ifdef VCT_PACKETS
+/* The Lambert branch of bsdf_sample_dir in vector lanes (where rays go in
+ * packets): basis_of, cosine_dir and the pdf with the same operations in
+ * the same order, so each lane's direction (wx, wy, wz) and returned pdf are
+ * the scalar branch's bit for bit. */
+inline float16 bsdf_lambert16(float16 nx, float16 ny, float16 nz, float16 u1, float16 u2,
+                              float16 *wx, float16 *wy, float16 *wz) {
+    const float16 s = select((float16)(-1.0f), (float16)(1.0f), nz >= 0.0f);
+    const float16 a = -1.0f / (s + nz);
+    const float16 c = nx * ny * a;
+    const float16 tx = 1.0f + s * nx * nx * a, ty = s * c, tz = -s * nx;
+    const float16 bx = c, by = s + ny * ny * a, bz = -ny;
+    const float16 r = sqrt(u1), cos_i = sqrt(fmax(0.0f, 1.0f - u1));
+    float16 cs_x, cs_y;
+    turn_cos_sin16(u2, &cs_x, &cs_y);
+    *wx = r * cs_x * tx + r * cs_y * bx + cos_i * nx;
+    *wy = r * cs_x * ty + r * cs_y * by + cos_i * ny;
+    *wz = r * cs_x * tz + r * cs_y * bz + cos_i * nz;
+    return cos_i / BSDF_PI;
+}
+#endif
+
 /* front: the ray arrived on the side the geometric normal points to. */
 inline int bsdf_sample_dir(const vct_material_desc *m, float3 n, float3 wo, int front, float u0,
                            float u1, float u2, bsdf_sample *s) {
