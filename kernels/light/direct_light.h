@@ -91,12 +91,18 @@ inline int16 light_incident16(__global const vct_light_desc *lights, uint i, flo
 }
 #endif
 
+/* How far a shadow ray from a point lifted by eps may go towards a light
+ * dist away: short of the light by its own lift and a relative margin. */
+inline float light_reach(float dist, float eps) {
+    return dist * (1.0f - 1e-6f) - 2.0f * eps;
+}
+
 /* 1 if nothing blocks the segment from p (lifted off its surface along n by
  * eps) towards wi over dist; shading itself uses p. */
 inline int light_visible(const accel_view *g, float3 p, float3 n, float eps, float3 wi,
                          float dist) {
     hit_record h;
-    return !accel_trace(g, p + n * eps, wi, 0.0f, dist * (1.0f - 1e-6f) - 2.0f * eps, 1, &h);
+    return !accel_trace(g, p + n * eps, wi, 0.0f, light_reach(dist, eps), 1, &h);
 }
 
 /* What lights send to p (normal n): the irradiance sum of radiant *

@@ -6,8 +6,9 @@
  * roulette and next ray in the lanes at once, the others one by one with
  * pt_leave. The lanes repeat pt_leave's operations in its order and each
  * path draws from its own random stream in its own order, so every path is
- * the one pt_walk traces, bit for bit. The first bounce's rays go as one
- * packet, the later ones one by one. */
+ * the one pt_walk traces, bit for bit. The first surfaces' shadow rays and
+ * the first bounce's rays (all from one spot of the scene) go as packets,
+ * the later ones one by one (as packets they ran no faster). */
 #ifndef VCT_PT_LANES_H
 #define VCT_PT_LANES_H
 
@@ -190,6 +191,11 @@ inline void pt_nee_lambert(const pt_scene *sc, pt_lanes *l, uint depth, const pt
         vstore16(wz, 0, wzs);
         vstore16(dist, 0, dists);
         const int soft = light_is_soft(sc->lights, i);
+        /* The first surfaces' shadow rays, from one spot of the scene
+         * towards one light, as one packet; later ones one by one. */
+        ray_packet rays;
+        rays.count = 0u;
+        uint lane_of[PACKET_RAYS];
         for (uint k = 0; k < PACKET_RAYS; ++k) {
             seen[k] = 0;
             if (!lits[k])
@@ -202,8 +208,21 @@ inline void pt_nee_lambert(const pt_scene *sc, pt_lanes *l, uint depth, const pt
                 const float u1 = rng_next(&l->rng[k]), u2 = rng_next(&l->rng[k]);
                 towards = light_extent_sample(sc->lights, i, towards, reach, u1, u2, &reach);
             }
-            seen[k] =
-                light_visible(&sc->g, p, n, surface_epsilon(&sc->g, p), towards, reach) ? -1 : 0;
+            const float eps = surface_epsilon(&sc->g, p);
+            if (depth == 0u) {
+                lane_of[rays.count] = k;
+                packet_set(&rays, rays.count++, p + n * eps, towards, 0.0f,
+                           light_reach(reach, eps));
+            } else {
+                seen[k] = light_visible(&sc->g, p, n, eps, towards, reach) ? -1 : 0;
+            }
+        }
+        if (rays.count > 0u) {
+            hit_record blocker[PACKET_RAYS];
+            int blocked[PACKET_RAYS];
+            accel_trace_packet(&sc->g, &rays, 1, blocker, blocked);
+            for (uint j = 0; j < rays.count; ++j)
+                seen[lane_of[j]] = blocked[j] ? 0 : -1;
         }
         const int16 visible = vload16(0, seen);
         sr = select(sr, sr + rr * fr, visible);
