@@ -18,6 +18,7 @@
 #include "light/direct_light.h"
 #include "render/pt_path.h"
 #include "scene/bsdf.h"
+#include "scene/camera.h"
 #include "scene/rng.h"
 
 #ifdef VCT_PACKETS
@@ -355,23 +356,45 @@ inline int pt_trace_lanes(const pt_scene *sc, const pt_lanes *l, uint depth, hit
  * its direct part. */
 inline void pt_group_lanes(const pt_scene *sc, const vct_camera_desc *cam, uint x, uint y,
                            uint seed, uint first, uint n, float3 *radiance, float3 *direct) {
-    uint rngs[PACKET_RAYS];
-    float3 dirs[PACKET_RAYS];
+    pt_lanes l;
+    /* pt_camera_rays in the lanes: streams, jitter and directions */
+    const uint16 lane =
+        (uint16)(0u, 1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 13u, 14u, 15u);
+    uint16 rng = rng_start16(seed, camera_pixel_id(cam, x, y), first + lane);
+    const float16 jx = rng_next16(&rng), jy = rng_next16(&rng);
+    float16 dx, dy, dz;
+    camera_ray_dir16(cam, (float)x + jx, (float)camera_row(cam, y) + jy, &dx, &dy, &dz);
+    vstore16(rng, 0, l.rng);
+    vstore16(dx, 0, l.dx);
+    vstore16(dy, 0, l.dy);
+    vstore16(dz, 0, l.dz);
+    const float16 one = 1.0f, zero = 0.0f;
+    const float16 cx = cam->position.x, cy = cam->position.y, cz = cam->position.z;
+    vstore16(one, 0, l.tr);
+    vstore16(one, 0, l.tg);
+    vstore16(one, 0, l.tb);
+    vstore16(zero, 0, l.lr);
+    vstore16(zero, 0, l.lg);
+    vstore16(zero, 0, l.lb);
+    vstore16(zero, 0, l.er);
+    vstore16(zero, 0, l.eg);
+    vstore16(zero, 0, l.eb);
+    vstore16(cx, 0, l.ox);
+    vstore16(cy, 0, l.oy);
+    vstore16(cz, 0, l.oz);
+    vstore16(cx, 0, l.px);
+    vstore16(cy, 0, l.py);
+    vstore16(cz, 0, l.pz);
+    vstore16(zero, 0, l.prev_pdf); /* 0: camera ray or delta bounce, emission counts fully */
+    vstore16(as_int16(lane < n), 0, l.going);
+    ray_packet rays;
+    rays.count = n;
+    for (uint k = 0; k < n; ++k)
+        packet_set(&rays, k, cam->position.xyz, (float3)(l.dx[k], l.dy[k], l.dz[k]), 0.0f,
+                   INFINITY);
     hit_record hits[PACKET_RAYS];
     int found[PACKET_RAYS];
-    pt_camera_rays(&sc->g, cam, x, y, seed, first, n, rngs, dirs, hits, found);
-    pt_lanes l;
-    for (uint k = 0; k < PACKET_RAYS; ++k) {
-        pt_path q;
-        q.throughput = (float3)(1.0f);
-        q.radiance = q.direct = (float3)(0.0f);
-        q.org = q.prev_p = cam->position.xyz;
-        q.dir = k < n ? dirs[k] : (float3)(0.0f, 0.0f, 1.0f);
-        q.prev_pdf = 0.0f; /* 0: camera ray or delta bounce, emission counts fully */
-        q.rng = k < n ? rngs[k] : 0u;
-        pt_lane_set(&l, k, &q);
-        l.going[k] = k < n ? -1 : 0;
-    }
+    accel_trace_packet(&sc->g, &rays, 0, hits, found);
     for (uint depth = 0u;; ++depth) {
         pt_diffuse d;
         if (pt_arrive_lanes(sc, &l, depth, hits, found, &d)) {

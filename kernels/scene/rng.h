@@ -3,12 +3,13 @@
 #ifndef VCT_RNG_H
 #define VCT_RNG_H
 
-/* A well-mixing 32-bit hash (lowbias32 by C. Wellons), and the next number
- * of a stream, uniform in [0, 1): the top 24 bits of the next state. One
+/* A well-mixing 32-bit hash (lowbias32 by C. Wellons), the next number of
+ * a stream, uniform in [0, 1) (the top 24 bits of the next state), and the
+ * stream of (seed, pixel, sample). One
  * text for one stream (uint) and, where rays go in packets, for a packet's
  * streams in vector lanes (uint16), so that each lane draws the numbers its
  * own stream would. */
-#define RNG_DEFINE(hash, next, U, F, convert)                                                      \
+#define RNG_DEFINE(hash, next, start, U, F, convert)                                               \
     inline U hash(U x) {                                                                           \
         x ^= x >> 16;                                                                              \
         x *= 0x7feb352du;                                                                          \
@@ -20,17 +21,16 @@
     inline F next(U *state) {                                                                      \
         *state = hash(*state + 0x9e3779b9u);                                                       \
         return convert(*state >> 8) * (1.0f / 16777216.0f);                                        \
+    }                                                                                              \
+    inline U start(uint seed, uint pixel, U sample) {                                              \
+        return hash(seed ^ hash(pixel ^ hash(sample + 0x9e3779b9u)));                              \
     }
 
 #define RNG_TO_FLOAT(x) ((float)(x))
-RNG_DEFINE(rng_hash, rng_next, uint, float, RNG_TO_FLOAT)
+RNG_DEFINE(rng_hash, rng_next, rng_start, uint, float, RNG_TO_FLOAT)
 #ifdef VCT_PACKETS
-RNG_DEFINE(rng_hash16, rng_next16, uint16, float16, convert_float16)
+RNG_DEFINE(rng_hash16, rng_next16, rng_start16, uint16, float16, convert_float16)
 #endif
-
-inline uint rng_start(uint seed, uint pixel, uint sample) {
-    return rng_hash(seed ^ rng_hash(pixel ^ rng_hash(sample + 0x9e3779b9u)));
-}
 
 /* Where i (< n) goes in a permutation of 0 .. n - 1 chosen by key: rounds
  * of steps that are each one-to-one on the bits below n's next power of two
