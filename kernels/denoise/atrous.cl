@@ -137,6 +137,115 @@ __kernel void denoise_atrous(__global const float4 *in, __global const float4 *g
     out[p] = (float4)(sum / weights, variance / (weights * weights));
 }
 
+#ifdef VCT_PACKETS
+/* Pixels x0 .. x0 + 15 of row y of a float4 image as vectors by component
+ * (a, b, c, d); lanes past the row's ends read its nearest pixel. */
+inline void atrous_row16(__global const float4 *image, int w, int y, int x0, float16 *a, float16 *b,
+                         float16 *c, float16 *d) {
+    if (x0 >= 0 && x0 + 16 <= w) {
+        __global const float *row = (__global const float *)(image + y * w + x0);
+        const float16 p0 = vload16(0, row), p1 = vload16(1, row), p2 = vload16(2, row),
+                      p3 = vload16(3, row);
+        *a = (float16)(p0.s048c, p1.s048c, p2.s048c, p3.s048c);
+        *b = (float16)(p0.s159d, p1.s159d, p2.s159d, p3.s159d);
+        *c = (float16)(p0.s26ae, p1.s26ae, p2.s26ae, p3.s26ae);
+        *d = (float16)(p0.s37bf, p1.s37bf, p2.s37bf, p3.s37bf);
+        return;
+    }
+    float la[16], lb[16], lc[16], ld[16];
+    for (int k = 0; k < 16; ++k) {
+        const float4 v = image[y * w + clamp(x0 + k, 0, w - 1)];
+        la[k] = v.x;
+        lb[k] = v.y;
+        lc[k] = v.z;
+        ld[k] = v.w;
+    }
+    *a = vload16(0, la);
+    *b = vload16(0, lb);
+    *c = vload16(0, lc);
+    *d = vload16(0, ld);
+}
+
+/* denoise_variance_blurred for 16 pixels of a row; x: their columns. */
+inline float16 atrous_variance_blurred16(__global const float4 *signal, int w, int h, int16 x,
+                                         int x0, int y) {
+    const float k[2] = {0.25f, 0.125f};
+    float16 sum = 0.0f, weights = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy) {
+        const int qy = y + dy;
+        if (qy < 0 || qy >= h)
+            continue;
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int16 inside = x + dx >= 0 && x + dx < w;
+            float16 unused_a, unused_b, unused_c, v;
+            atrous_row16(signal, w, qy, x0 + dx, &unused_a, &unused_b, &unused_c, &v);
+            const float wk = k[abs(dx)] * k[abs(dy)] * 4.0f;
+            sum = select(sum, sum + wk * v, inside);
+            weights = select(weights, weights + wk, inside);
+        }
+    }
+    return sum / weights;
+}
+
+/* denoise_atrous for 16 pixels of a row at once, one vector lane each
+ * (CPU devices): every tap with the scalar pass's operations, in its
+ * order, so the image is the same bit for bit. Work-item (i, y) takes
+ * pixels 16 i .. 16 i + 15 of row y. */
+__kernel void denoise_atrous16(__global const float4 *in, __global const float4 *guide,
+                               __global const float2 *slope, uint2 size, int step, float4 sigma,
+                               __global float4 *out) {
+    const int x0 = 16 * (int)get_global_id(0), y = (int)get_global_id(1);
+    const int w = (int)size.x, h = (int)size.y;
+    if (x0 >= w || y >= h)
+        return;
+    const int16 x = x0 + (int16)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    float16 cx, cy, cz, cw, gcx, gcy, gcz, gcw;
+    atrous_row16(in, w, y, x0, &cx, &cy, &cz, &cw);
+    atrous_row16(guide, w, y, x0, &gcx, &gcy, &gcz, &gcw);
+    float sxs[16], sys[16];
+    for (int k = 0; k < 16; ++k) {
+        const float2 s = slope[y * w + min(x0 + k, w - 1)];
+        sxs[k] = s.x;
+        sys[k] = s.y;
+    }
+    const float16 sx = vload16(0, sxs), sy = vload16(0, sys);
+    const float16 var_c = step == 1 ? cw : atrous_variance_blurred16(in, w, h, x, x0, y);
+    const float16 lp = 0.2126f * cx + 0.7152f * cy + 0.0722f * cz; /* denoise_luminance */
+    const float kernel_weights[3] = {0.375f, 0.25f, 0.0625f};
+    float16 sum_x = 0.0f, sum_y = 0.0f, sum_z = 0.0f, weights = 0.0f, variance = 0.0f;
+    for (int dy = -2; dy <= 2; ++dy) {
+        const int qy = y + dy * step;
+        if (qy < 0 || qy >= h)
+            continue;
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int16 inside = x + dx * step >= 0 && x + dx * step < w;
+            float16 qx, qyc, qz, qw, gqx, gqy, gqz, gqw;
+            atrous_row16(in, w, qy, x0 + dx * step, &qx, &qyc, &qz, &qw);
+            const float k = kernel_weights[abs(dx)] * kernel_weights[abs(dy)];
+            float16 wq = k;
+            if (dx != 0 || dy != 0) {
+                atrous_row16(guide, w, qy, x0 + dx * step, &gqx, &gqy, &gqz, &gqw);
+                const float16 lq = 0.2126f * qx + 0.7152f * qyc + 0.0722f * qz;
+                wq = k * denoise_edge_weight16(gcx, gcy, gcz, gcw, sx, sy, gqx, gqy, gqz, gqw,
+                                               dx * step, dy * step, lp, lq, var_c, qw, sigma);
+            }
+            sum_x = select(sum_x, sum_x + wq * qx, inside);
+            sum_y = select(sum_y, sum_y + wq * qyc, inside);
+            sum_z = select(sum_z, sum_z + wq * qz, inside);
+            weights = select(weights, weights + wq, inside);
+            variance = select(variance, variance + wq * wq * qw, inside);
+        }
+    }
+    float ox[16], oy[16], oz[16], ow[16];
+    vstore16(sum_x / weights, 0, ox);
+    vstore16(sum_y / weights, 0, oy);
+    vstore16(sum_z / weights, 0, oz);
+    vstore16(variance / (weights * weights), 0, ow);
+    for (int k = 0; k < 16 && x0 + k < w; ++k)
+        out[y * w + x0 + k] = (float4)(ox[k], oy[k], oz[k], ow[k]);
+}
+#endif
+
 /* Fireflies: a pixel whose luminance lies above its 3x3 neighbours' mean by
  * more than k of their standard deviation is brought down to that bound
  * (k <= 0: none is). Rare bright paths otherwise spread into blotches that

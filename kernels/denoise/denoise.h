@@ -119,4 +119,62 @@ __attribute__((always_inline)) inline float denoise_edge_weight(float4 gc, float
     return denoise_power(cosine, sigma.y) * denoise_exp2_neg(-(l + z) * M_LOG2E_F);
 }
 
+#ifdef VCT_PACKETS
+/* The weights above for 16 taps at once, one vector lane each (the
+ * à-trous pass's lanes, denoise_atrous16): the same operations in the same
+ * order, so each lane's weight is the scalar one's bit for bit. */
+
+__attribute__((always_inline)) inline float16 denoise_exp2_neg16(float16 x) {
+    const int16 n = -convert_int16(0.5f - x);
+    const float16 t = (x - convert_float16(n)) * 0.693147181f;
+    const float16 p =
+        1.0f +
+        t * (1.0f +
+             t * (0.5f + t * (1.0f / 6.0f +
+                              t * (1.0f / 24.0f + t * (1.0f / 120.0f + t * (1.0f / 720.0f))))));
+    return select(p * as_float16((n + 127) << 23), 0.0f, !(x > -126.0f));
+}
+
+/* c^e, e the same in every lane. */
+__attribute__((always_inline)) inline float16 denoise_power16(float16 c, float e) {
+    if (!(e >= 0.0f && e < 4096.0f && (float)(int)e == e)) {
+        float lanes[16];
+        vstore16(c, 0, lanes);
+        for (uint k = 0; k < 16u; ++k)
+            lanes[k] = exp2(e * log2(lanes[k]));
+        return vload16(0, lanes);
+    }
+    const uint n = (uint)e;
+    float16 result = 1.0f, base = c;
+    for (uint bit = 0u; bit < 12u; ++bit) {
+        result = (n >> bit) & 1u ? result * base : result;
+        base *= base;
+    }
+    return result;
+}
+
+/* denoise_edge_weight with the centres' and taps' guides (gc, gq), the
+ * centres' slopes (s), luminances and variances in lanes. */
+__attribute__((always_inline)) inline float16
+denoise_edge_weight16(float16 gcx, float16 gcy, float16 gcz, float16 gcw, float16 sx, float16 sy,
+                      float16 gqx, float16 gqy, float16 gqz, float16 gqw, int ox, int oy,
+                      float16 lc, float16 lq, float16 var_c, float16 var_q, float4 sigma) {
+    const int16 none = gcw < 0.0f || gqw < 0.0f;
+    const float16 u = fabs(lc - lq) / (sigma.x * sqrt(var_c + var_q) + 1e-6f), l = 0.5f * u * u;
+    const int16 surface_c = gcw > 0.0f, surface_q = gqw > 0.0f;
+    const float16 open =
+        select((float16)(0.0f), denoise_exp2_neg16(-l * M_LOG2E_F), surface_c == surface_q);
+    /* dot(gc, gq) as the library adds it: no fused steps */
+    const float16 cx = gcx * gqx, cy = gcy * gqy, cz = gcz * gqz;
+    const float16 cxy = cx + cy;
+    const float16 cosine = cxy + cz;
+    const float16 slope = fabs(sx * (float)ox) + fabs(sy * (float)oy);
+    const float16 z = fabs(gcw - gqw) / (sigma.z * slope + 1e-3f * gcw);
+    const float16 both =
+        select(denoise_power16(cosine, sigma.y) * denoise_exp2_neg16(-(l + z) * M_LOG2E_F),
+               (float16)(0.0f), !(cosine > 0.0f));
+    return select(select(both, open, !surface_c || !surface_q), (float16)(0.0f), none);
+}
+#endif
+
 #endif

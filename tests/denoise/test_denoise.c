@@ -6,6 +6,7 @@
  * surface give no NaN; the result is the same bit for bit on every run; bad
  * guides are refused. Then the path tracer at 4 spp, denoised, against its
  * own 1024-spp image. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -457,6 +458,58 @@ static void test_sizes(vct_context *ctx) {
     }
 }
 
+/* Pixels of every kind at random: surfaces of random albedo (some black)
+ * facing random ways (some normals cancelled), no surface, emitters, noise
+ * and variance of every size. */
+static void mixed_pixels(inputs *in, int w, int h, uint32_t seed) {
+    inputs_alloc(in, w, h);
+    for (int i = 0; i < w * h; ++i) {
+        const uint32_t kind = lcg(&seed) % 8u;
+        const float n[3] = {noise(&seed), noise(&seed), noise(&seed)};
+        const float a = kind == 0 ? 0.0f : 0.5f + 0.5f * noise(&seed);
+        pixel(in, i, a, 1.0f + noise(&seed), 0.8f, kind == 1 ? none : n,
+              kind == 2 ? 0.0f : 3.0f + noise(&seed), &seed);
+        if (kind == 3) /* an emitter seen */
+            in->albedo.rgba[4 * i + 3] = 0.0f;
+        if (kind == 4)
+            in->variance.rgba[4 * i] = 0.0f;
+    }
+}
+
+/* The pass in vector lanes (16 pixels of a row per work-item, CPU devices)
+ * against the pass a pixel per work-item (the kernels built with
+ * VCT_PACKETS=0, as for GPUs): the same image bit for bit, at widths that
+ * leave a row's last lanes empty and taps 8 pixels out past its ends, with
+ * and without the estimator's variance, the normals' exponent whole and not. */
+static void test_lanes(vct_context *ctx) {
+    const int sizes[][2] = {{37, 23}, {16, 5}, {3, 9}, {100, 40}};
+    vct_context *plain = check_context();
+    for (int e = 0; e < 2; ++e) {
+        normal_exponent = e ? 127.5f : 0.0f;
+        for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
+            inputs in;
+            mixed_pixels(&in, sizes[s][0], sizes[s][1], 7u + (uint32_t)s);
+            in.with_variance = (s + e) & 1;
+            vct_error err = {0};
+            vct_image lanes, one;
+            REQUIRE_OK(run(ctx, &in, &lanes, &err), err);
+            setenv("VCT_PACKETS", "0", 1); /* read where the kernels are built */
+            REQUIRE_OK(run(plain, &in, &one, &err), err);
+            unsetenv("VCT_PACKETS");
+            const size_t bytes = 16ull * in.w * in.h;
+            CHECK(memcmp(lanes.rgba, one.rgba, bytes) == 0,
+                  "%dx%d (exponent %g): the pass in lanes changes the image", in.w, in.h,
+                  normal_exponent);
+            vct_image_release(&lanes);
+            vct_image_release(&one);
+            inputs_free(&in);
+        }
+    }
+    normal_exponent = 0.0f;
+    vct_context_release(plain);
+    printf("lanes: the same images with 16 pixels a work-item and one (4 sizes, 2 exponents)\n");
+}
+
 static void test_refusals(vct_context *ctx) {
     inputs in;
     checker_plane(&in, 16, 8);
@@ -609,6 +662,7 @@ int main(void) {
     test_degenerate(ctx);
     test_firefly(ctx);
     test_sizes(ctx);
+    test_lanes(ctx);
     test_refusals(ctx);
     test_pathtrace(ctx);
     vct_context_release(ctx);

@@ -86,9 +86,15 @@ typedef struct denoise_run {
 static int atrous_passes(denoise_run *r, const vct_denoise_options *o, int first, int *last,
                          vct_error *err) {
     cl_float4 sigma = {{o->sigma_luminance, o->sigma_normal, o->sigma_depth, 0.0f}};
-    cl_kernel k = vct_kernel_create(r->ctx, r->program, "denoise_atrous", err);
+    /* Where the program has it (CPU devices), the pass that takes 16
+     * pixels of a row per work-item in vector lanes: the same image. */
+    cl_int lanes_rc = CL_SUCCESS;
+    cl_kernel k = clCreateKernel(r->program, "denoise_atrous16", &lanes_rc);
+    const size_t span = lanes_rc == CL_SUCCESS ? 16 : 1;
+    if (lanes_rc != CL_SUCCESS)
+        k = vct_kernel_create(r->ctx, r->program, "denoise_atrous", err);
     int rc = k ? VCT_OK : (int)err->status;
-    const size_t global[2] = {r->size[0], r->size[1]}, local[2] = {8, 8};
+    const size_t global[2] = {(r->size[0] + span - 1) / span, r->size[1]}, local[2] = {8, 8};
     int from = first;
     for (uint32_t i = 0; rc == VCT_OK && i < o->iterations;
          ++i, from ^= 1, sigma.s[0] *= SIGMA_LUMINANCE_DECAY) {
