@@ -49,7 +49,10 @@ mkdir -p doc/results
     echo "estimation to every light. vct: the path-trace stage's device time on PoCL with"
     echo "$POCL_CPU_MAX_CU_COUNT compute units. Mitsuba 3 (\`llvm_ad_rgb\`: its \`path\` integrator"
     echo "vectorized by Dr.Jit's LLVM backend, rays traced by Embree) on $POCL_CPU_MAX_CU_COUNT"
-    echo "threads. Each is the fastest of 3 renders."
+    echo "threads. Each is the fastest of 3 renders. At every surface vct samples each punctual"
+    echo "light and one emitter triangle, Mitsuba one light picked at random: where a scene has"
+    echo "both (lamp_room: a point light in an emitting shade), vct traces two shadow rays a"
+    echo "surface to Mitsuba's one, for less noise a sample."
     echo
     echo "| scene | triangles | spp | vct s | Mitsuba s | vct / Mitsuba |"
     echo "|---|---:|---:|---:|---:|---:|"
