@@ -18,11 +18,11 @@
  * moments cost about a twentieth of the time on PoCL, and a render that no
  * denoiser reads needs none of them.
  *
- * A pixel's samples are taken ACCEL_GROUP at a time: their camera rays
- * are traced together (a packet on CPU devices), then the rays their first
- * surfaces send on (from one spot of the scene: the dense hall's paths 5 %
- * faster in a packet, the Cornell box's 1.5 %), then each path goes on by
- * itself.
+ * A pixel's samples are taken ACCEL_GROUP at a time. On CPU devices
+ * (VCT_PACKETS) they go through their vertices together in vector lanes
+ * (render/pt_lanes.h); elsewhere (pt_group) their camera rays and the rays
+ * their first surfaces send on are traced together, then each path goes
+ * on by itself (render/pt_path.h). Both give the same image bit for bit.
  *
  * max_depth: surface interactions per path (1 = direct light only). */
 /* bsdf.h first: accel/ray_tri.h turns FP_CONTRACT off for all that follows
