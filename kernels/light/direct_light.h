@@ -53,8 +53,8 @@ inline int light_incident(__global const vct_light_desc *lights, uint i, float3 
 }
 
 #ifdef VCT_PACKETS
-/* light_incident for points in vector lanes, with its operations (dots
- * as the library adds them); ok: -1 in the lanes it can light. */
+/* light_incident for points in vector lanes, with its operations; -1 in
+ * the lanes it can light. */
 inline int16 light_incident16(__global const vct_light_desc *lights, uint i, float16 px, float16 py,
                               float16 pz, float16 *wx, float16 *wy, float16 *wz, float16 *dist,
                               float16 *rr, float16 *rg, float16 *rb) {
@@ -71,7 +71,10 @@ inline int16 light_incident16(__global const vct_light_desc *lights, uint i, flo
         return (int16)(-1);
     }
     const float16 tx = L.position.x - px, ty = L.position.y - py, tz = L.position.z - pz;
-    const float16 d2 = (tx * tx + ty * ty) + tz * tz;
+    /* dots as the library adds them: a statement a step, nothing fused */
+    const float16 txx = tx * tx, tyy = ty * ty, tzz = tz * tz;
+    const float16 txy = txx + tyy;
+    const float16 d2 = txy + tzz;
     *dist = sqrt(d2);
     *wx = tx / *dist;
     *wy = ty / *dist;
@@ -80,7 +83,10 @@ inline int16 light_incident16(__global const vct_light_desc *lights, uint i, flo
     *rg = L.color.y / d2;
     *rb = L.color.z / d2;
     if (kind == VCT_LIGHT_KIND_SPOT) {
-        const float16 cd = (-*wx * L.direction.x + -*wy * L.direction.y) + -*wz * L.direction.z;
+        const float16 cdx = -*wx * L.direction.x, cdy = -*wy * L.direction.y,
+                      cdz = -*wz * L.direction.z;
+        const float16 cdxy = cdx + cdy;
+        const float16 cd = cdxy + cdz;
         const float cos_outer = L.direction.w, cos_inner = L.color.w;
         const float16 x = clamp((cd - cos_outer) / fmax(cos_inner - cos_outer, 1e-6f), 0.0f, 1.0f);
         *rr *= x * x;

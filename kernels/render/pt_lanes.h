@@ -176,8 +176,11 @@ inline void pt_nee_lambert(const pt_scene *sc, pt_lanes *l, uint depth, const pt
         float16 wx, wy, wz, dist, rr, rg, rb;
         int16 lit =
             light_incident16(sc->lights, i, px, py, pz, &wx, &wy, &wz, &dist, &rr, &rg, &rb) & mine;
-        /* bsdf_eval's Lambert term: dot(n, wi) as the library adds it */
-        const float16 cos_i = (nx * wx + ny * wy) + nz * wz;
+        /* bsdf_eval's Lambert term: dot(n, wi) as the library adds it, a
+         * statement a step so that nothing is fused */
+        const float16 cx = nx * wx, cy = ny * wy, cz = nz * wz;
+        const float16 cxy = cx + cy;
+        const float16 cos_i = cxy + cz;
         const float16 lambert = select(cos_i / BSDF_PI, (float16)(0.0f), cos_i <= 0.0f);
         const float16 fr = ar * lambert, fg = ag * lambert, fb = ab * lambert;
         lit &= (fr != 0.0f || fg != 0.0f || fb != 0.0f) && (rr != 0.0f || rg != 0.0f || rb != 0.0f);
