@@ -53,17 +53,31 @@ typedef struct gather_voxels {
     gather_picks picks;
 } gather_voxels;
 
-/* The light that bounced off the leaf voxel holding p, on the side of its
- * plane seen_from lies on; -1 where no leaf voxel holds p. */
-inline float3 gather_bounced(__global const uint *child, const vct_cone_desc *c,
-                             const gather_voxels *gv, float3 p, float3 seen_from) {
+/* The leaf voxel holding p, or OCT_NULL. */
+inline uint gather_voxel(__global const uint *child, const vct_cone_desc *c, float3 p) {
     const float3 at = clamp((p - c->volume.xyz) * c->ambient.w, 0.0f, 0.99999f);
-    const uint v = octree_leaf_voxel(child, convert_uint3_rtz(at * (float)c->res.x), c->res.y);
-    if (v == OCT_NULL)
-        return (float3)(-1.0f);
+    return octree_leaf_voxel(child, convert_uint3_rtz(at * (float)c->res.x), c->res.y);
+}
+
+/* What the gather reads of leaf voxel v: its light, side difference and
+ * plane, and the same of its direct part. */
+typedef struct gather_record {
+    float4 total, total_difference, total_plane, direct, direct_difference, direct_plane;
+} gather_record;
+
+inline gather_record gather_load(const gather_voxels *gv, uint v) {
+    const uint s = VCT_VOXEL_SIDE_FLOAT4S * v;
+    return (gather_record){gv->total[v],  gv->total_side[s],  gv->total_side[s + 1u],
+                           gv->direct[v], gv->direct_side[s], gv->direct_side[s + 1u]};
+}
+
+/* The light that bounced off a voxel (its record r), on the side of its
+ * plane seen_from lies on. */
+inline float3 gather_record_light(const gather_record *r, const vct_cone_desc *c,
+                                  float3 seen_from) {
     const float3 o = (seen_from - c->volume.xyz) * c->ambient.w - 0.5f;
-    return fmax(voxel_side_light(gv->total, gv->total_side, v, o) -
-                    voxel_side_light(gv->direct, gv->direct_side, v, o),
+    return fmax(voxel_side_light(r->total, r->total_difference, r->total_plane, o) -
+                    voxel_side_light(r->direct, r->direct_difference, r->direct_plane, o),
                 0.0f);
 }
 
@@ -140,12 +154,43 @@ inline float3 gather_direct(const shading_scene *ps, const vct_material_desc *m,
 #define GATHER_NEAR_VOXELS 2.0f
 #define GATHER_NEAR_DEPTH 5u
 
+/* Whether the surface at distance t along a gather ray, its vertex
+ * `depth`, is its last: far enough for the voxels to resolve, or the
+ * vertices' limit. */
+inline int gather_last_vertex(const vct_cone_desc *c, float t, uint depth) {
+    return t >= GATHER_NEAR_VOXELS * (c->volume.w / (float)c->res.x) ||
+           depth + 1u >= GATHER_NEAR_DEPTH;
+}
+
+/* The point a hit t along a gather ray (cone tan_half) is seen from: off
+ * the surface on the ray's side, a cone's diameter out (cone_hit_light). */
+inline float3 gather_seen_from(const vct_cone_desc *c, float3 p, float3 n, float t,
+                               float tan_half) {
+    return p + n * fmax(2.0f * t * tan_half, 2.0f * (c->volume.w / (float)c->res.x));
+}
+
+/* The leaf voxel that holds a surface point p met along unit d: a quarter
+ * voxel back along the ray, or where that lies in an empty one, a quarter
+ * voxel on; OCT_NULL where neither is held. */
+inline uint gather_surface_voxel(__global const uint *child, const vct_cone_desc *c, float3 p,
+                                 float3 d) {
+    const float voxel = c->volume.w / (float)c->res.x;
+    const uint v = gather_voxel(child, c, p - d * (0.25f * voxel));
+    return v != OCT_NULL ? v : gather_voxel(child, c, p + d * (0.25f * voxel));
+}
+
+/* Where a gather ray's bounced light at its first surface is not known
+ * beforehand (gather_rays reads it for a group of rays at once). */
+#define GATHER_UNKNOWN (-2.0f)
+
 /* The light a gather ray from `from` along unit d brings back from h, the
  * surface it met; tan_half: its cone's aperture, seed: its stream (emitter
- * samples, the near vertices' rays). */
+ * samples, the near vertices' rays); first: the bounced light at h where it
+ * was read beforehand (-1 where no voxel holds h), else GATHER_UNKNOWN. */
 inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global const uint *child,
                                const vct_cone_desc *c, const gather_voxels *gv, float3 from,
-                               float3 d, const hit_record *h, float tan_half, uint seed) {
+                               float3 d, const hit_record *h, float tan_half, uint seed,
+                               float3 first) {
     const float voxel = c->volume.w / (float)c->res.x;
     float3 sum = (float3)(0.0f), weight = (float3)(1.0f);
     hit_record hit = *h;
@@ -154,17 +199,19 @@ inline float3 gather_hit_light(const shading_scene *ps, CONE_POOLS, __global con
         int front;
         if (!surface_hit(&ps->g, &hit, d, &p, &ng, &n, &front))
             return sum;
-        /* off the hit on the ray's side, a cone's diameter out (cone_hit_light) */
-        const float3 seen_from = p + n * fmax(2.0f * hit.t * tan_half, 2.0f * voxel);
+        const float3 seen_from = gather_seen_from(c, p, n, hit.t, tan_half);
         vct_material_desc m = ps->materials[ps->tri_material[hit.tri]];
-        const int last = hit.t >= GATHER_NEAR_VOXELS * voxel || depth + 1u >= GATHER_NEAR_DEPTH;
+        const int last = gather_last_vertex(c, hit.t, depth);
         float3 bounced = (float3)(0.0f);
-        if (last) {
-            /* the surface's voxel: a quarter voxel back along the ray, or
-             * where that lies in an empty one, a quarter voxel on */
-            bounced = gather_bounced(child, c, gv, p - d * (0.25f * voxel), seen_from);
-            if (bounced.x < 0.0f)
-                bounced = gather_bounced(child, c, gv, p + d * (0.25f * voxel), seen_from);
+        if (last && depth == 0u && first.x != GATHER_UNKNOWN) {
+            bounced = first;
+        } else if (last) {
+            const uint v = gather_surface_voxel(child, c, p, d);
+            bounced = (float3)(-1.0f);
+            if (v != OCT_NULL) {
+                const gather_record r = gather_load(gv, v);
+                bounced = gather_record_light(&r, c, seen_from);
+            }
         }
         if (bounced.x < 0.0f || bsdf_delta_only(&m))
             return sum + weight * cone_hit_light(CONE_POOLS_PASS, child, c, from, d, hit.t,
@@ -207,18 +254,20 @@ inline float3 gather_dir(float3 n, float3 t, float3 b, uint k, uint m) {
     return normalize(sqrt(r2) * (cs.x * t + cs.y * b) + sqrt(fmax(1.0f - r2, 0.0f)) * n);
 }
 
-/* The light ray d from `from` brings back (h: what gather_trace found),
- * in *open whether it met nothing within `near`. */
+/* The light ray d from `from` brings back (h: what gather_trace found;
+ * first: as gather_hit_light takes it), in *open whether it met nothing
+ * within `near`. */
 inline float3 gather_ray_light(const shading_scene *ps, CONE_POOLS, __global const uint *child,
                                const vct_cone_desc *c, const gather_voxels *gv, float3 from,
                                float3 d, int found, const hit_record *h, float tan_half, uint seed,
-                               float near, int *open) {
+                               float near, float3 first, int *open) {
     *open = found == GATHER_MISS || (found == GATHER_HIT && h->t > near);
     if (found == GATHER_MISS)
         return c->ambient.xyz;
 #ifdef VCT_INDIRECT
     if (found == GATHER_HIT)
-        return gather_hit_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, h, tan_half, seed);
+        return gather_hit_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, h, tan_half, seed,
+                                first);
 #endif
     return (float3)(0.0f);
 }
@@ -236,6 +285,51 @@ inline float gather_mis(const gather_voxels *gv, const vct_cone_desc *c, float3 
                 by_picks = (float)k * density;
     const float both = by_cosine * by_cosine + by_picks * by_picks;
     return (picked ? by_cosine * by_picks : by_cosine * by_cosine) / both;
+}
+
+/* For a group of gather rays from `from` (rays, their first segments' hits
+ * met/hits; ray_of: each one's index, m of them by the cosine, then k
+ * picks aimed at aimed_of): where each ends (found, hits, traced on past
+ * glass), the voxel a pick met (voxel_of), and for those whose first
+ * surface is their last vertex the light that bounced off its voxel
+ * (first; GATHER_UNKNOWN for the others). The voxels are found for all of
+ * the group first and their light read after, back to back: a voxel's
+ * light lies anywhere in memory, and read ray by ray each ray waited for
+ * its own. */
+inline void gather_group_first(const shading_scene *ps, __global const uint *child,
+                               const vct_cone_desc *c, const gather_voxels *gv, float3 from,
+                               const ray_packet *rays, float reach, uint k, uint m,
+                               const uint *ray_of, const uint *aimed_of, const int *met,
+                               hit_record *hits, int *found, uint *voxel_of, float tan_half,
+                               float3 *first) {
+    uint voxel[ACCEL_GROUP];
+    float3 seen_from[ACCEL_GROUP];
+    for (uint j = 0; j < rays->count; ++j) {
+        const float3 d = packet_dir(rays, j);
+        found[j] = gather_trace_on(ps, from, d, reach, met[j], &hits[j]);
+        voxel_of[j] =
+            k && found[j] == GATHER_HIT ? pick_voxel_of(child, c, from, d, hits[j].t) : OCT_NULL;
+        first[j] = (float3)(GATHER_UNKNOWN);
+        voxel[j] = OCT_NULL;
+#ifdef VCT_INDIRECT
+        float3 p, ng, n;
+        int front;
+        if (found[j] == GATHER_HIT && (ray_of[j] < m || voxel_of[j] == aimed_of[j]) &&
+            gather_last_vertex(c, hits[j].t, 0u) &&
+            surface_hit(&ps->g, &hits[j], d, &p, &ng, &n, &front)) {
+            seen_from[j] = gather_seen_from(c, p, n, hits[j].t, tan_half);
+            voxel[j] = gather_surface_voxel(child, c, p, d);
+            first[j] = (float3)(-1.0f);
+        }
+#endif
+    }
+    gather_record records[ACCEL_GROUP];
+    for (uint j = 0; j < rays->count; ++j)
+        if (voxel[j] != OCT_NULL)
+            records[j] = gather_load(gv, voxel[j]);
+    for (uint j = 0; j < rays->count; ++j)
+        if (voxel[j] != OCT_NULL)
+            first[j] = gather_record_light(&records[j], c, seen_from[j]);
 }
 
 /* The mean light of m gather rays from surface point p (unit normal n,
@@ -286,20 +380,23 @@ inline float3 gather_rays(const shading_scene *ps, CONE_POOLS, __global const ui
         hit_record hits[ACCEL_GROUP];
         int met[ACCEL_GROUP];
         accel_trace_packet(&ps->g, &rays, 0, hits, met);
+        int found[ACCEL_GROUP];
+        uint voxel_of[ACCEL_GROUP];
+        float3 first[ACCEL_GROUP];
+        gather_group_first(ps, child, c, gv, from, &rays, reach, k, m, ray_of, aimed_of, met, hits,
+                           found, voxel_of, tan_half, first);
         for (uint j = 0; j < rays.count; ++j) {
             const uint r = ray_of[j];
             const int by_cosine = r < m;
             const float3 d = packet_dir(&rays, j);
             const float cos_n = dot(d, n);
-            hit_record h = hits[j];
-            const int found = gather_trace_on(ps, from, d, reach, met[j], &h);
-            const uint v =
-                k && found == GATHER_HIT ? pick_voxel_of(child, c, from, d, h.t) : OCT_NULL;
+            const uint v = voxel_of[j];
             if (!by_cosine && v != aimed_of[j])
                 continue; /* the picks' light is their voxel's alone */
             int is_open;
-            const float3 light = gather_ray_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, found,
-                                                  &h, tan_half, rng_hash(seed ^ r), near, &is_open);
+            const float3 light =
+                gather_ray_light(ps, CONE_POOLS_PASS, child, c, gv, from, d, found[j], &hits[j],
+                                 tan_half, rng_hash(seed ^ r), near, first[j], &is_open);
             if (by_cosine)
                 open_rays += is_open;
             const float3 share = light * gather_mis(gv, c, from, cos_n, v, m, k, !by_cosine);

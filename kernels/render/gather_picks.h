@@ -42,7 +42,7 @@ typedef struct gather_picks {
 
 /* The leaf voxel holding the hit t along unit d from `from`: the point a
  * quarter voxel back (less where t is shorter), which lies on the ray and
- * in the voxel the hit's light is read from (gather_bounced); OCT_NULL
+ * in the voxel the hit's light is read from (gather_surface_voxel); OCT_NULL
  * where none holds it. */
 inline uint pick_voxel_of(__global const uint *child, const vct_cone_desc *c, float3 from, float3 d,
                           float t) {

@@ -35,16 +35,15 @@ inline float side_luminance(float3 c) {
     return dot(c, (float3)(0.2126f, 0.7152f, 0.0722f));
 }
 
-/* The light of voxel v's side that point o (in volume units less 0.5, as
- * the plane's offset is) lies on: the front side's on the plane's normal
- * side or where the voxel has no plane, else the back side's. */
-inline float3 voxel_side_light(__global const float4 *radiance, __global const float4 *side, uint v,
-                               float3 o) {
-    const float3 front = radiance[v].xyz;
-    const float4 plane = side[VCT_VOXEL_SIDE_FLOAT4S * v + 1u];
+/* The light of a voxel's side that point o (in volume units less 0.5, as
+ * the plane's offset is) lies on, from the voxel's radiance, side
+ * difference and plane (side[2v], side[2v + 1]): the front side's on the
+ * plane's normal side or where the voxel has no plane, else the back
+ * side's. */
+inline float3 voxel_side_light(float4 front, float4 difference, float4 plane, float3 o) {
     if (all(plane.xyz == 0.0f) || dot(plane.xyz, o) >= plane.w)
-        return front;
-    return front - side[VCT_VOXEL_SIDE_FLOAT4S * v].xyz;
+        return front.xyz;
+    return front.xyz - difference.xyz;
 }
 
 /* The light a voxel's surfaces send out, by the way it leaves: per axis
