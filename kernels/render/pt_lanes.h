@@ -84,6 +84,21 @@ inline void pt_lane_set(pt_lanes *l, uint k, const pt_path *q) {
     l->rng[k] = q->rng;
 }
 
+/* The radiance (lr, lg, lb) a vertex leaves the lanes in mask with; at the
+ * first vertex it is their direct part too (pt_arrive, pt_nee). The other
+ * lanes keep theirs. */
+inline void pt_lanes_radiance(pt_lanes *l, uint depth, int16 mask, float16 lr, float16 lg,
+                              float16 lb) {
+    vstore16(select(vload16(0, l->lr), lr, mask), 0, l->lr);
+    vstore16(select(vload16(0, l->lg), lg, mask), 0, l->lg);
+    vstore16(select(vload16(0, l->lb), lb, mask), 0, l->lb);
+    if (depth == 0u) {
+        vstore16(select(vload16(0, l->er), lr, mask), 0, l->er);
+        vstore16(select(vload16(0, l->eg), lg, mask), 0, l->eg);
+        vstore16(select(vload16(0, l->eb), lb, mask), 0, l->eb);
+    }
+}
+
 /* A surface the lanes shade: it emits nothing and its BSDF sample is pure
  * Lambert (bsdf_sample_dir's last branch: no glass, no glossy or mirror
  * lobe). Its albedo, textured, is then its diffuse colour. */
@@ -145,20 +160,11 @@ inline int pt_arrive_lanes(const pt_scene *sc, pt_lanes *l, uint depth, const hi
         pt_lane_set(l, k, &q);
         l->going[k] = on ? -1 : 0;
     }
-    if (any_missed) { /* pt_arrive's sky */
-        const int16 mask = vload16(0, missed);
-        const float16 lr = vload16(0, l->lr) + vload16(0, l->tr) * sc->ambient.x,
-                      lg = vload16(0, l->lg) + vload16(0, l->tg) * sc->ambient.y,
-                      lb = vload16(0, l->lb) + vload16(0, l->tb) * sc->ambient.z;
-        vstore16(select(vload16(0, l->lr), lr, mask), 0, l->lr);
-        vstore16(select(vload16(0, l->lg), lg, mask), 0, l->lg);
-        vstore16(select(vload16(0, l->lb), lb, mask), 0, l->lb);
-        if (depth == 0u) {
-            vstore16(select(vload16(0, l->er), lr, mask), 0, l->er);
-            vstore16(select(vload16(0, l->eg), lg, mask), 0, l->eg);
-            vstore16(select(vload16(0, l->eb), lb, mask), 0, l->eb);
-        }
-    }
+    if (any_missed) /* pt_arrive's sky */
+        pt_lanes_radiance(l, depth, vload16(0, missed),
+                          vload16(0, l->lr) + vload16(0, l->tr) * sc->ambient.x,
+                          vload16(0, l->lg) + vload16(0, l->tg) * sc->ambient.y,
+                          vload16(0, l->lb) + vload16(0, l->tb) * sc->ambient.z);
     return any_left;
 }
 
@@ -260,14 +266,7 @@ inline void pt_nee_lambert(const pt_scene *sc, pt_lanes *l, uint depth, const pt
         lg = lg + tg * 0.0f;
         lb = lb + tb * 0.0f;
     }
-    vstore16(select(vload16(0, l->lr), lr, mine), 0, l->lr);
-    vstore16(select(vload16(0, l->lg), lg, mine), 0, l->lg);
-    vstore16(select(vload16(0, l->lb), lb, mine), 0, l->lb);
-    if (depth == 0u) {
-        vstore16(select(vload16(0, l->er), lr, mine), 0, l->er);
-        vstore16(select(vload16(0, l->eg), lg, mine), 0, l->eg);
-        vstore16(select(vload16(0, l->eb), lb, mine), 0, l->eb);
-    }
+    pt_lanes_radiance(l, depth, mine, lr, lg, lb);
 }
 
 /* pt_leave for the diffuse surfaces in *d, in the lanes at once. */
